@@ -1,0 +1,96 @@
+#include "feti/cholmod_factor.h"
+
+#include <cstring>
+#include <stdexcept>
+
+namespace ffeti {
+namespace {
+
+/// A cholmod_sparse header over Eigen's compressed column storage (no copy).
+cholmod_sparse view_lower(const SparseMatrix& A) {
+  cholmod_sparse view;
+  std::memset(&view, 0, sizeof view);
+  view.nrow = static_cast<size_t>(A.rows());
+  view.ncol = static_cast<size_t>(A.cols());
+  view.nzmax = static_cast<size_t>(A.nonZeros());
+  view.p = const_cast<int*>(A.outerIndexPtr());
+  view.i = const_cast<int*>(A.innerIndexPtr());
+  view.x = const_cast<double*>(A.valuePtr());
+  view.stype = -1;  // symmetric, lower triangle stored (upper entries ignored)
+  view.itype = CHOLMOD_INT;
+  view.xtype = CHOLMOD_REAL;
+  view.dtype = CHOLMOD_DOUBLE;
+  view.sorted = 1;
+  view.packed = 1;
+  return view;
+}
+
+cholmod_dense view_vector(const Eigen::VectorXd& v) {
+  cholmod_dense view;
+  std::memset(&view, 0, sizeof view);
+  view.nrow = static_cast<size_t>(v.size());
+  view.ncol = 1;
+  view.nzmax = view.nrow;
+  view.d = view.nrow;
+  view.x = const_cast<double*>(v.data());
+  view.xtype = CHOLMOD_REAL;
+  view.dtype = CHOLMOD_DOUBLE;
+  return view;
+}
+
+}  // namespace
+
+CholmodFactor::CholmodFactor(FactorKind kind) {
+  cholmod_start(&common_);
+  common_.print = 0;  // the core never prints; failures are returned as values
+  common_.error_handler = nullptr;
+  switch (kind) {
+    case FactorKind::automatic: common_.supernodal = CHOLMOD_AUTO; break;
+    case FactorKind::simplicial: common_.supernodal = CHOLMOD_SIMPLICIAL; break;
+    case FactorKind::supernodal: common_.supernodal = CHOLMOD_SUPERNODAL; break;
+  }
+}
+
+CholmodFactor::~CholmodFactor() {
+  cholmod_free_dense(&solution_, &common_);
+  cholmod_free_dense(&workspace_y_, &common_);
+  cholmod_free_dense(&workspace_e_, &common_);
+  cholmod_free_factor(&factor_, &common_);
+  cholmod_finish(&common_);
+}
+
+int CholmodFactor::factorize(const SparseMatrix& A) {
+  if (A.rows() != A.cols()) throw std::invalid_argument("CholmodFactor: matrix is not square");
+  if (!A.isCompressed()) throw std::invalid_argument("CholmodFactor: matrix is not compressed");
+  cholmod_sparse view = view_lower(A);
+  if (!factor_ || size_ != A.rows()) {
+    cholmod_free_factor(&factor_, &common_);
+    factor_ = cholmod_analyze(&view, &common_);
+    if (!factor_) throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
+    size_ = A.rows();
+  }
+  cholmod_factorize(&view, factor_, &common_);
+  if (common_.status == CHOLMOD_NOT_POSDEF) return static_cast<int>(factor_->minor);
+  if (common_.status < CHOLMOD_OK) throw std::runtime_error("CHOLMOD factorize failed");
+  return -1;
+}
+
+void CholmodFactor::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  cholmod_dense rhs = view_vector(b);
+  if (!cholmod_solve2(CHOLMOD_A, factor_, &rhs, nullptr, &solution_, nullptr, &workspace_y_,
+                      &workspace_e_, &common_))
+    throw std::runtime_error("CHOLMOD solve failed");
+  x.resize(b.size());
+  std::memcpy(x.data(), solution_->x, sizeof(double) * static_cast<size_t>(b.size()));
+}
+
+double CholmodFactor::factor_nonzeros() const {
+  if (!factor_) return 0;
+  if (factor_->is_super) return static_cast<double>(factor_->xsize);
+  const int* column_counts = static_cast<const int*>(factor_->nz);
+  double total = 0;
+  for (size_t j = 0; j < factor_->n; ++j) total += column_counts[j];
+  return total;
+}
+
+}  // namespace ffeti

@@ -1,0 +1,46 @@
+// Sparse Cholesky factor of a symmetric positive definite matrix through CHOLMOD:
+// analyze (fill-reducing ordering, once per pattern), factorize (per numeric matrix),
+// solve (many times, on preallocated workspace).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <cholmod.h>
+
+namespace ffeti {
+
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+using Vec = Eigen::VectorXd;
+
+enum class FactorKind { automatic, simplicial, supernodal };
+
+/// Owns one cholmod_common, so distinct objects may be used from distinct threads.
+/// Not copyable; a solve is not thread-safe on the same object (it reuses workspace).
+class CholmodFactor {
+ public:
+  explicit CholmodFactor(FactorKind kind = FactorKind::automatic);
+  ~CholmodFactor();
+  CholmodFactor(const CholmodFactor&) = delete;
+  CholmodFactor& operator=(const CholmodFactor&) = delete;
+
+  /// Factorizes A (its lower triangle is read; A must be square and compressed).
+  /// Returns -1 on success, else the column at which A was found not positive definite.
+  int factorize(const SparseMatrix& A);
+
+  /// x = A^{-1} b. Precondition: the last factorize succeeded.
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+
+  Eigen::Index size() const { return size_; }
+  double factor_nonzeros() const;  ///< nnz(L), for reports
+
+ private:
+  mutable cholmod_common common_;
+  cholmod_factor* factor_ = nullptr;
+  mutable cholmod_dense* solution_ = nullptr;  // reused by cholmod_solve2
+  mutable cholmod_dense* workspace_y_ = nullptr;
+  mutable cholmod_dense* workspace_e_ = nullptr;
+  Eigen::Index size_ = 0;
+};
+
+}  // namespace ffeti

@@ -1,0 +1,82 @@
+#include "feti/dual_operator.h"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace ffeti {
+
+int resolve_thread_count(int requested) {
+#ifdef _OPENMP
+  return requested > 0 ? requested : omp_get_max_threads();
+#else
+  (void)requested;
+  return 1;
+#endif
+}
+
+DualOperator::DualOperator(const SubdomainList& subdomains,
+                           const std::vector<LocalConstraints>& local, int rows, int threads)
+    : subdomains_(subdomains), local_(local), rows_(rows), threads_(resolve_thread_count(threads)) {
+  const size_t count = subdomains.size();
+  gathered_.resize(count), local_rhs_.resize(count);
+  local_solution_.resize(count), local_result_.resize(count);
+  for (size_t s = 0; s < count; ++s) {
+    gathered_[s].resize(static_cast<Eigen::Index>(local[s].rows.size()));
+    local_rhs_[s].resize(subdomains[s]->size());
+    local_solution_[s].resize(subdomains[s]->size());
+    local_result_[s].resize(static_cast<Eigen::Index>(local[s].rows.size()));
+  }
+}
+
+void DualOperator::apply(const Vec& x, Vec& y) const {
+  const int count = static_cast<int>(subdomains_.size());
+#pragma omp parallel for schedule(dynamic) num_threads(threads_)
+  for (int s = 0; s < count; ++s) {
+    const auto i = static_cast<size_t>(s);
+    if (local_[i].rows.empty()) continue;
+    for (size_t k = 0; k < local_[i].rows.size(); ++k)
+      gathered_[i][static_cast<Eigen::Index>(k)] = x[local_[i].rows[k]];
+    local_rhs_[i].noalias() = local_[i].B.transpose() * gathered_[i];  // B_s' x
+    subdomains_[i]->apply_pseudo_inverse(local_rhs_[i], local_solution_[i]);
+    local_result_[i].noalias() = local_[i].B * local_solution_[i];     // B_s K_s^+ B_s' x
+  }
+  y.setZero(rows_);
+  scatter_add(y);
+}
+
+void DualOperator::apply_B_pseudo_inverse(const std::vector<Vec>& v, Vec& y) const {
+  const int count = static_cast<int>(subdomains_.size());
+#pragma omp parallel for schedule(dynamic) num_threads(threads_)
+  for (int s = 0; s < count; ++s) {
+    const auto i = static_cast<size_t>(s);
+    if (local_[i].rows.empty()) continue;
+    subdomains_[i]->apply_pseudo_inverse(v[i], local_solution_[i]);
+    local_result_[i].noalias() = local_[i].B * local_solution_[i];
+  }
+  y.setZero(rows_);
+  scatter_add(y);
+}
+
+void DualOperator::pseudo_inverse_of_residual(const std::vector<Vec>& v, const Vec& x,
+                                              std::vector<Vec>& w) const {
+  const int count = static_cast<int>(subdomains_.size());
+  w.resize(subdomains_.size());
+#pragma omp parallel for schedule(dynamic) num_threads(threads_)
+  for (int s = 0; s < count; ++s) {
+    const auto i = static_cast<size_t>(s);
+    Vec rhs = v[i];
+    for (size_t k = 0; k < local_[i].rows.size(); ++k)
+      gathered_[i][static_cast<Eigen::Index>(k)] = x[local_[i].rows[k]];
+    if (!local_[i].rows.empty()) rhs.noalias() -= local_[i].B.transpose() * gathered_[i];
+    subdomains_[i]->apply_pseudo_inverse(rhs, w[i]);
+  }
+}
+
+void DualOperator::scatter_add(Vec& y) const {
+  for (size_t s = 0; s < subdomains_.size(); ++s)
+    for (size_t k = 0; k < local_[s].rows.size(); ++k)
+      y[local_[s].rows[k]] += local_result_[s][static_cast<Eigen::Index>(k)];
+}
+
+}  // namespace ffeti

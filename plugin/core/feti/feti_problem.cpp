@@ -1,0 +1,307 @@
+#include "feti/feti_problem.h"
+
+#include "feti/dirichlet.h"
+#include "feti/errors.h"
+#include "feti/input_checks.h"
+#include "feti/kernel.h"
+
+#include <chrono>
+#include <exception>
+
+namespace ffeti {
+namespace {
+
+class Stopwatch {
+ public:
+  double seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+ private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+/// Multipliers exactly at their bound are exactly zero in lambda (not round-off).
+Vec lambda_from_shifted(const Vec& mu, const Vec& lower, const Vec& lambda_tilde) {
+  Vec lambda = mu + lambda_tilde;
+  for (Eigen::Index i = 0; i < mu.size(); ++i)
+    if (lower[i] != kUnbounded && mu[i] <= lower[i]) lambda[i] = 0.0;
+  return lambda;
+}
+
+}  // namespace
+
+void DualSolveSettings::validate() const {
+  if (!(tolerance > 0 && tolerance < 1)) throw InputError("tol: must lie in (0, 1)");
+  if (max_hessian < 1) throw InputError("maxit: must be >= 1");
+  try {
+    smalbe.validate();
+    mprgp.validate();
+  } catch (const std::invalid_argument& error) {
+    throw InputError(error.what());
+  }
+}
+
+FetiProblem::FetiProblem(std::vector<SubdomainInput> subdomains, const NodeToNodeContact& contact,
+                         const FetiSetupSettings& settings)
+    : settings_(settings), inputs_(std::move(subdomains)) {
+  validate_input(inputs_, contact);
+  const bool eliminate = settings_.variant == FetiVariant::feti1;
+
+  Stopwatch constraints_clock;
+  constraints_ = build_constraints(inputs_, contact, settings_.variant);
+  std::vector<Eigen::Index> sizes;
+  for (const auto& sub : inputs_) sizes.push_back(sub.K.rows());
+  local_ = split_by_subdomain(constraints_, sizes);
+  setup_times_.constraints = constraints_clock.seconds();
+
+  Stopwatch factor_clock;
+  const int count = subdomain_count();
+  subdomains_.resize(inputs_.size());
+  std::vector<std::exception_ptr> failures(inputs_.size());
+#pragma omp parallel for schedule(dynamic) num_threads(resolve_thread_count(settings_.threads))
+  for (int s = 0; s < count; ++s) {
+    const SubdomainInput& in = inputs_[static_cast<size_t>(s)];
+    try {
+      SparseMatrix K = eliminate && !in.dirichlet_dofs.empty()
+                           ? eliminate_dirichlet(in.K, in.dirichlet_dofs)
+                           : in.K;
+      subdomains_[static_cast<size_t>(s)] = std::make_unique<Subdomain>(
+          s, std::move(K), candidate_kernel(in.x, in.y, in.component), settings_.factor);
+    } catch (...) {
+      failures[static_cast<size_t>(s)] = std::current_exception();
+    }
+  }
+  for (const auto& failure : failures)
+    if (failure) std::rethrow_exception(failure);
+  F_ = std::make_unique<DualOperator>(subdomains_, local_, constraints_.rows(), settings_.threads);
+  setup_times_.factorization = factor_clock.seconds();
+
+  if (floating_subdomains() > 0) {
+    Stopwatch coarse_clock;
+    std::vector<int> bodies;
+    for (const auto& sub : inputs_) bodies.push_back(sub.body);
+    coarse_ = std::make_unique<CoarseSpace>(subdomains_, local_, constraints_.rows(), bodies);
+    setup_times_.coarse_space = coarse_clock.seconds();
+  }
+  compute_dual_data();
+}
+
+void FetiProblem::set_loads(const std::vector<Vec>& loads) {
+  if (loads.size() != inputs_.size())
+    throw InputError("f: has " + std::to_string(loads.size()) + " entries for " +
+                     std::to_string(inputs_.size()) + " subdomains");
+  for (size_t s = 0; s < loads.size(); ++s)
+    if (loads[s].size() != inputs_[s].K.rows() || !loads[s].allFinite())
+      throw InputError("f[" + std::to_string(s) + "]: needs " + std::to_string(inputs_[s].K.rows()) +
+                       " finite entries");
+  for (size_t s = 0; s < loads.size(); ++s) inputs_[s].f = loads[s];
+  compute_dual_data();
+}
+
+void FetiProblem::compute_dual_data() {
+  Stopwatch clock;
+  operator_loads_.clear();
+  for (const auto& in : inputs_)
+    operator_loads_.push_back(settings_.variant == FetiVariant::feti1 && !in.dirichlet_dofs.empty()
+                                  ? eliminated_load(in.K, in.f, in.dirichlet_dofs, in.dirichlet_values)
+                                  : in.f);
+  const int m = constraints_.rows();
+  F_->apply_B_pseudo_inverse(operator_loads_, d_);
+  d_ -= Eigen::Map<const Vec>(constraints_.rhs.data(), m);  // d = B K^+ f - c
+  if (coarse_) {
+    e_ = coarse_->kernel_load(operator_loads_);              // e = R'f
+    lambda_tilde_ = coarse_->least_norm_solution(e_);        // G lambda~ = e
+    Vec F_lambda_tilde(m);
+    F_->apply(lambda_tilde_, F_lambda_tilde);
+    coarse_->project(d_ - F_lambda_tilde, b_);               // b = P(d - F lambda~)
+  } else {
+    e_.resize(0);
+    lambda_tilde_ = Vec::Zero(m);
+    b_ = d_;
+  }
+  setup_times_.dual_data = clock.seconds();
+}
+
+long FetiProblem::primal_dimension() const {
+  long n = 0;
+  for (const auto& in : inputs_) n += in.K.rows();
+  return n;
+}
+
+int FetiProblem::floating_subdomains() const {
+  int count = 0;
+  for (const auto& s : subdomains_) count += s->floating() ? 1 : 0;
+  return count;
+}
+
+double FetiProblem::factor_nonzeros() const {
+  double total = 0;
+  for (const auto& s : subdomains_) total += s->factor_nonzeros();
+  return total;
+}
+
+std::string FetiProblem::path() const {
+  const bool inequalities = constraints_.inequality_rows() > 0;
+  const bool floating = coarse_ != nullptr;
+  if (constraints_.rows() == 0) return "cholesky";
+  if (!inequalities) return floating ? "projected_cg" : "cg";
+  return floating ? "smalbe" : "mprgp";
+}
+
+double FetiProblem::operator_norm(bool projected, IterationCounts& counts, double& seconds) const {
+  std::optional<double>& cached = projected ? norm_PFP_ : norm_F_;
+  int& cost = projected ? norm_PFP_cost_ : norm_F_cost_;
+  if (!cached) {
+    Stopwatch clock;
+    const int m = constraints_.rows();
+    NormEstimate estimate;
+    if (projected) {
+      Vec Px(m), FPx(m);
+      const LinearOperator PFP = [&](const Vec& x, Vec& y) {
+        coarse_->project(x, Px);
+        F_->apply(Px, FPx);
+        coarse_->project(FPx, y);
+      };
+      estimate = estimate_norm(PFP, m, {}, [&](Vec& v) { coarse_->project(Vec(v), v); });
+    } else {
+      estimate = estimate_norm([&](const Vec& x, Vec& y) { F_->apply(x, y); }, m);
+    }
+    cached = estimate.norm;
+    cost = estimate.multiplications;
+    seconds = clock.seconds();
+  }
+  counts.hessian_norm_estimate += cost;
+  return *cached;
+}
+
+FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
+  settings.validate();
+  FetiResult result;
+  result.path = path();
+  const int m = constraints_.rows();
+  const double tolerance = settings.tolerance;
+  result.gradient_reference = b_.norm() > 0 ? b_.norm() : 1.0;
+  result.equality_reference = e_.norm() > 0 ? e_.norm() : 0.0;
+  std::string phases = "constraints,factorization";
+  if (coarse_) phases += ",coarse_space";
+  Stopwatch solve_clock;
+
+  if (result.path == "cholesky") {
+    result.status = SolveStatus::converged;
+    result.phases = phases;
+    result.times.solve = solve_clock.seconds();
+    return finish(std::move(result), Vec::Zero(0));
+  }
+  phases += ",dual_data";
+
+  Vec lambda;
+  const Vec lower_bounds = [&] {
+    Vec lower = Vec::Constant(m, kUnbounded);
+    for (int i = constraints_.equality_rows; i < m; ++i) lower[i] = -lambda_tilde_[i];  // lambda_I >= 0
+    return lower;
+  }();
+  const double b_tol = tolerance * result.gradient_reference;
+
+  if (result.path == "cg" || result.path == "projected_cg") {
+    Vec Px(m), FPx(m);
+    const LinearOperator A = [&](const Vec& x, Vec& y) {
+      if (!coarse_) return F_->apply(x, y);
+      coarse_->project(x, Px);
+      F_->apply(Px, FPx);
+      coarse_->project(FPx, y);
+    };
+    CgSettings cg;
+    cg.max_hessian = settings.max_hessian;
+    Vec mu = Vec::Zero(m), g;
+    const CgResult cg_result = conjugate_gradient(
+        A, b_, mu, g, cg, [&](const Vec&, const Vec&, double norm) { return norm <= b_tol; },
+        settings.monitor);
+    result.status = cg_result.status;
+    result.counts = cg_result.counts;
+    result.gradient_norm = cg_result.gradient_norm;
+    lambda = mu + lambda_tilde_;
+    phases += "," + result.path;
+  } else if (result.path == "mprgp") {
+    double seconds = 0;
+    const double norm = operator_norm(false, result.counts, seconds);
+    result.times.norm_estimate = seconds;
+    MprgpSettings mprgp_settings = settings.mprgp;
+    mprgp_settings.max_hessian = settings.max_hessian;
+    Vec x = Vec::Zero(m), g;
+    const MprgpResult r = mprgp(
+        [&](const Vec& v, Vec& y) { F_->apply(v, y); }, b_, lower_bounds, norm, x, g, false, mprgp_settings,
+        [&](const Vec&, const Vec&, double norm_gp) { return norm_gp <= b_tol; }, settings.monitor);
+    const IterationCounts estimate = result.counts;
+    result.counts = r.counts;
+    result.counts.hessian_norm_estimate = estimate.hessian_norm_estimate;
+    result.status = r.status;
+    result.gradient_norm = r.projected_gradient_norm;
+    lambda = lambda_from_shifted(x, lower_bounds, lambda_tilde_);
+    phases += ",norm_estimate,mprgp";
+  } else {  // smalbe
+    double seconds = 0;
+    const double norm = operator_norm(true, result.counts, seconds);
+    result.times.norm_estimate = seconds;
+    const double eq_reference =
+        result.equality_reference > 0 ? result.equality_reference : result.gradient_reference / norm;
+    result.equality_reference = eq_reference;
+    Vec Px(m), FPx(m);
+    SmalbeProblem problem;
+    problem.hessian = [&](const Vec& x, Vec& y) {
+      coarse_->project(x, Px);
+      F_->apply(Px, FPx);
+      coarse_->project(FPx, y);
+    };
+    problem.range_projector = [&](const Vec& x, Vec& y) { coarse_->project_range(x, y); };
+    problem.b = &b_;
+    problem.lower = &lower_bounds;
+    problem.hessian_norm = norm;
+    SmalbeSettings smalbe_settings = settings.smalbe;
+    smalbe_settings.max_hessian = settings.max_hessian;
+    smalbe_settings.inner = settings.mprgp;
+    Vec mu = Vec::Zero(m);
+    const SmalbeResult r = smalbe(problem, mu, smalbe_settings,
+        [&](const Vec& x, double gp_norm, const Vec&) {
+          result.equality_norm = (coarse_->G() * x).norm();  // G lambda - e = G mu
+          return gp_norm <= b_tol && result.equality_norm <= tolerance * eq_reference;
+        },
+        settings.monitor);
+    const int estimate = result.counts.hessian_norm_estimate;
+    result.counts = r.counts;
+    result.counts.hessian_norm_estimate = estimate;
+    result.status = r.status;
+    result.gradient_norm = r.projected_gradient_norm;
+    result.equality_norm = (coarse_->G() * mu).norm();
+    lambda = lambda_from_shifted(mu, lower_bounds, lambda_tilde_);
+    phases += ",norm_estimate,smalbe";
+  }
+  result.times.solve = solve_clock.seconds() - result.times.norm_estimate;
+  result.phases = phases;
+  return finish(std::move(result), lambda);
+}
+
+FetiResult FetiProblem::finish(FetiResult result, const Vec& lambda) const {
+  Stopwatch recovery_clock;
+  result.lambda = lambda;
+  if (constraints_.rows() == 0) {
+    result.u.resize(subdomains_.size());
+    for (size_t s = 0; s < subdomains_.size(); ++s)
+      subdomains_[s]->apply_pseudo_inverse(operator_loads_[s], result.u[s]);
+  } else {
+    result.u = recover_primal(*F_, coarse_.get(), subdomains_, local_, constraints_,
+                              operator_loads_, lambda);
+  }
+  result.times.recovery = recovery_clock.seconds();
+  Stopwatch kkt_clock;
+  const bool eliminated = settings_.variant == FetiVariant::feti1;
+  result.kkt = kkt_residuals(inputs_, local_, constraints_, eliminated, result.u, result.lambda);
+  result.energy = energy(inputs_, result.u);
+  for (int i = constraints_.equality_rows; i < constraints_.rows(); ++i)
+    if (constraints_.kind[static_cast<size_t>(i)] == RowKind::contact && lambda[i] > 0)
+      ++result.active_contact;
+  result.times.kkt = kkt_clock.seconds();
+  result.phases += ",recovery,kkt";
+  return result;
+}
+
+}  // namespace ffeti

@@ -1,0 +1,109 @@
+// A FETI problem set up once (constraints, kernels, factorizations, coarse space) and
+// solved for one or more load cases, choosing the solver path the scene needs.
+#pragma once
+
+#include "feti/coarse_space.h"
+#include "feti/constraints.h"
+#include "feti/dual_operator.h"
+#include "feti/primal.h"
+#include "feti/problem_input.h"
+#include "feti/subdomain.h"
+#include "qp/conjugate_gradient.h"
+#include "qp/norm_estimate.h"
+#include "qp/smalbe.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ffeti {
+
+struct FetiSetupSettings {
+  FetiVariant variant = FetiVariant::feti1;
+  FactorKind factor = FactorKind::automatic;
+  int threads = 0;  ///< OpenMP threads over subdomains; 0: the runtime default
+};
+
+/// Relative stopping test of every path (the seed's, with its "N f" read as the dual
+/// right-hand side, see docs/algorithms.md):
+///   ||gP(lambda, mu, 0)||_2 <= tolerance ||b||_2,  b = P(d - F lambda~)
+///   ||G lambda - e||_2      <= tolerance ||e||_2   (where there is a coarse space)
+struct DualSolveSettings {
+  double tolerance = 1e-4;
+  int max_hessian = 10000;          ///< over the whole solve
+  SmalbeSettings smalbe{};          ///< used on the SMALBE path (its max_hessian is overridden)
+  MprgpSettings mprgp{};            ///< used on the MPRGP path and inside SMALBE
+  NormEstimateSettings norm_estimate{};
+  Monitor monitor{};
+
+  void validate() const;  ///< throws InputError naming the setting
+};
+
+struct PhaseTimes {  ///< seconds
+  double constraints = 0, factorization = 0, coarse_space = 0, dual_data = 0;
+  double norm_estimate = 0, solve = 0, recovery = 0, kkt = 0;
+};
+
+struct FetiResult {
+  SolveStatus status = SolveStatus::invalid_input;
+  std::string path;              ///< cholesky, cg, projected_cg, mprgp or smalbe
+  std::string phases;            ///< the phases this solve ran, comma separated
+  IterationCounts counts;
+  double gradient_norm = 0;      ///< final ||gP|| (absolute) and its reference ||b||
+  double gradient_reference = 0;
+  double equality_norm = 0;      ///< final ||G lambda - e|| and its reference ||e||
+  double equality_reference = 0;
+  std::vector<Vec> u;            ///< primal solution per subdomain
+  Vec lambda;                    ///< multipliers, rows ordered as constraints()
+  double energy = 0;             ///< 1/2 u'Ku - f'u
+  KktResiduals kkt;
+  int active_contact = 0;        ///< contact rows with lambda > 0
+  PhaseTimes times;              ///< norm_estimate, solve, recovery, kkt of this call
+};
+
+class FetiProblem {
+ public:
+  /// Validates the input (InputError on bad data), builds B and c, the kernels and
+  /// factorizations, the coarse space when some subdomain floats, and the dual data.
+  FetiProblem(std::vector<SubdomainInput> subdomains, const NodeToNodeContact& contact,
+              const FetiSetupSettings& settings = {});
+
+  /// Solves the dual problem and recovers u. Never throws for non-convergence: see status.
+  FetiResult solve(const DualSolveSettings& settings = {}) const;
+
+  /// New loads, same matrices: keeps every factorization and the coarse factor.
+  void set_loads(const std::vector<Vec>& loads);
+
+  int subdomain_count() const { return static_cast<int>(inputs_.size()); }
+  long primal_dimension() const;
+  int dual_dimension() const { return constraints_.rows(); }
+  int floating_subdomains() const;
+  int coarse_dimension() const { return coarse_ ? coarse_->dimension() : 0; }
+  const Constraints& constraints() const { return constraints_; }
+  const PhaseTimes& setup_times() const { return setup_times_; }
+  FetiVariant variant() const { return settings_.variant; }
+  double factor_nonzeros() const;
+  /// The solver path the data call for (ALGORITHMS.md section 6).
+  std::string path() const;
+
+ private:
+  void compute_dual_data();
+  double operator_norm(bool projected, IterationCounts& counts, double& seconds) const;
+  FetiResult finish(FetiResult result, const Vec& lambda) const;
+
+  FetiSetupSettings settings_;
+  std::vector<SubdomainInput> inputs_;  // original K_s, f_s (energy, KKT residuals)
+  std::vector<Vec> operator_loads_;     // f_s as the operators see them (FETI-1: eliminated)
+  Constraints constraints_;
+  SubdomainList subdomains_;
+  std::vector<LocalConstraints> local_;
+  std::unique_ptr<DualOperator> F_;
+  std::unique_ptr<CoarseSpace> coarse_;
+  Vec d_, e_, lambda_tilde_, b_;        // dual data; b = P(d - F lambda~)
+  PhaseTimes setup_times_;
+  mutable std::optional<double> norm_F_, norm_PFP_;  // cached: same F for every load case
+  mutable int norm_F_cost_ = 0, norm_PFP_cost_ = 0;
+};
+
+}  // namespace ffeti

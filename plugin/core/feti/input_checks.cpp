@@ -1,0 +1,80 @@
+#include "feti/input_checks.h"
+
+#include "feti/errors.h"
+
+#include <cmath>
+#include <string>
+
+namespace ffeti {
+namespace {
+
+std::string indexed(const char* name, size_t s) { return std::string(name) + "[" + std::to_string(s) + "]"; }
+
+void check_stiffness(const SparseMatrix& K, size_t s) {
+  const std::string name = indexed("K", s);
+  if (K.rows() == 0) throw InputError(name + ": empty matrix");
+  if (K.rows() != K.cols())
+    throw InputError(name + ": not square (" + std::to_string(K.rows()) + " x " +
+                     std::to_string(K.cols()) + ")");
+  const double scale = K.coeffs().size() ? K.coeffs().cwiseAbs().maxCoeff() : 0.0;
+  if (!std::isfinite(scale)) throw InputError(name + ": has a non-finite entry (nan or inf)");
+  const SparseMatrix asymmetry = SparseMatrix(K.transpose()) - K;
+  for (int j = 0; j < asymmetry.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(asymmetry, j); it; ++it)
+      if (std::abs(it.value()) > 1e-10 * scale)
+        throw InputError(name + ": not symmetric: K(" + std::to_string(it.row()) + "," +
+                         std::to_string(j) + ") and K(" + std::to_string(j) + "," +
+                         std::to_string(it.row()) + ") differ by " + std::to_string(it.value()) +
+                         " (assemble a symmetric bilinear form; Dirichlet by tgv=-1 breaks "
+                         "symmetry, pass the dofs as Dirichlet data instead)");
+  for (Eigen::Index i = 0; i < K.rows(); ++i)
+    if (!(K.coeff(i, i) > 0))
+      throw InputError(name + ": diagonal entry " + std::to_string(i) + " is " +
+                       std::to_string(K.coeff(i, i)) + ", a stiffness matrix needs > 0");
+}
+
+void check_dofs(const std::vector<int>& dofs, Eigen::Index n, const std::string& name) {
+  for (int dof : dofs)
+    if (dof < 0 || dof >= n)
+      throw InputError(name + ": dof " + std::to_string(dof) + " is outside 0.." +
+                       std::to_string(n - 1));
+}
+
+void check_per_subdomain_lists(const std::vector<std::vector<int>>& lists, size_t count,
+                               const std::vector<SubdomainInput>& subdomains, const char* name) {
+  if (!lists.empty() && lists.size() != count)
+    throw InputError(std::string(name) + ": has " + std::to_string(lists.size()) +
+                     " entries for " + std::to_string(count) + " subdomains");
+  for (size_t s = 0; s < lists.size(); ++s) check_dofs(lists[s], subdomains[s].K.rows(), indexed(name, s));
+}
+
+}  // namespace
+
+void validate_input(const std::vector<SubdomainInput>& subdomains, const NodeToNodeContact& contact) {
+  if (subdomains.empty()) throw InputError("K: no subdomains given");
+  for (size_t s = 0; s < subdomains.size(); ++s) {
+    const SubdomainInput& sub = subdomains[s];
+    check_stiffness(sub.K, s);
+    const auto n = static_cast<size_t>(sub.K.rows());
+    if (static_cast<size_t>(sub.f.size()) != n)
+      throw InputError(indexed("f", s) + ": has " + std::to_string(sub.f.size()) +
+                       " entries, K" + "[" + std::to_string(s) + "] has " + std::to_string(n) + " rows");
+    if (!sub.f.allFinite()) throw InputError(indexed("f", s) + ": has a non-finite entry");
+    if (sub.x.size() != n || sub.y.size() != n)
+      throw InputError(indexed("X", s) + ", " + indexed("Y", s) + ": need one coordinate per dof (" +
+                       std::to_string(n) + "), got " + std::to_string(sub.x.size()) + " and " +
+                       std::to_string(sub.y.size()));
+    if (!sub.component.empty() && sub.component.size() != n)
+      throw InputError(indexed("component", s) + ": needs one entry per dof");
+    for (int c : sub.component)
+      if (c < 0 || c > 1) throw InputError(indexed("component", s) + ": components must be 0 or 1");
+    check_dofs(sub.dirichlet_dofs, sub.K.rows(), indexed("dirichlet", s));
+    if (!sub.dirichlet_values.empty() && sub.dirichlet_values.size() != sub.dirichlet_dofs.size())
+      throw InputError(indexed("dirichletValues", s) + ": needs one value per Dirichlet dof");
+  }
+  check_per_subdomain_lists(contact.slave_dofs, subdomains.size(), subdomains, "contactSlave");
+  check_per_subdomain_lists(contact.master_dofs, subdomains.size(), subdomains, "contactMaster");
+  if (!std::isfinite(contact.gap)) throw InputError("gap: must be finite");
+}
+
+}  // namespace ffeti

@@ -1,0 +1,13 @@
+// Validation of a problem's input before any numerics: sizes, finiteness, symmetry, dof
+// ranges. Each failure is an InputError naming the argument as the FreeFEM functions do.
+#pragma once
+
+#include "feti/problem_input.h"
+
+#include <vector>
+
+namespace ffeti {
+
+void validate_input(const std::vector<SubdomainInput>& subdomains, const NodeToNodeContact& contact);
+
+}  // namespace ffeti

@@ -1,0 +1,119 @@
+#include "feti/primal.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ffeti {
+namespace {
+
+bool holds_with_equality(const Constraints& constraints, const Vec& lambda, int row) {
+  return row < constraints.equality_rows || lambda[row] > 0;
+}
+
+double inf_norm(const std::vector<Vec>& u) {
+  double value = 0;
+  for (const Vec& us : u) value = std::max(value, us.size() ? us.cwiseAbs().maxCoeff() : 0.0);
+  return value;
+}
+
+double safe_ratio(double a, double b) { return b > 0 ? a / b : a; }
+
+}  // namespace
+
+Vec apply_B(const std::vector<LocalConstraints>& local, const std::vector<Vec>& u, int rows) {
+  Vec y = Vec::Zero(rows);
+  for (size_t s = 0; s < local.size(); ++s) {
+    if (local[s].rows.empty()) continue;
+    const Vec Bu = local[s].B * u[s];
+    for (size_t k = 0; k < local[s].rows.size(); ++k) y[local[s].rows[k]] += Bu[static_cast<Eigen::Index>(k)];
+  }
+  return y;
+}
+
+std::vector<Vec> recover_primal(const DualOperator& F, const CoarseSpace* coarse,
+                                const SubdomainList& subdomains,
+                                const std::vector<LocalConstraints>& local,
+                                const Constraints& constraints, const std::vector<Vec>& f,
+                                const Vec& lambda) {
+  std::vector<Vec> u;
+  F.pseudo_inverse_of_residual(f, lambda, u);  // u~ = K^+(f - B'lambda)
+  if (!coarse || coarse->empty()) return u;
+
+  // alpha from  (G_S G_S') alpha = G_S (c - B u~)_S  over the rows S holding with equality.
+  const int m = constraints.rows();
+  Vec mask = Vec::Zero(m);
+  for (int i = 0; i < m; ++i) mask[i] = holds_with_equality(constraints, lambda, i) ? 1.0 : 0.0;
+  Vec residual = Eigen::Map<const Vec>(constraints.rhs.data(), m) - apply_B(local, u, m);
+  residual = residual.cwiseProduct(mask);
+  const Eigen::SparseMatrix<double, Eigen::RowMajor, int> GS = coarse->G() * mask.asDiagonal();
+  const Eigen::MatrixXd normal = Eigen::MatrixXd(GS * GS.transpose());
+  const Vec alpha = normal.ldlt().solve(GS * residual);
+  const auto& owner = coarse->row_owner();
+  for (size_t k = 0; k < owner.size(); ++k) {
+    const auto [s, j] = owner[k];
+    u[static_cast<size_t>(s)] += alpha[static_cast<Eigen::Index>(k)] *
+                                 subdomains[static_cast<size_t>(s)]->kernel().col(j);
+  }
+  return u;
+}
+
+double KktResiduals::max() const {
+  return std::max({equilibrium, equality, inequality, dual_feasibility, complementarity});
+}
+
+KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs,
+                           const std::vector<LocalConstraints>& local,
+                           const Constraints& constraints, bool dirichlet_eliminated,
+                           const std::vector<Vec>& u, const Vec& lambda) {
+  KktResiduals r;
+  const int m = constraints.rows();
+  const double u_scale = inf_norm(u);
+  const double lambda_scale = lambda.size() ? lambda.cwiseAbs().maxCoeff() : 0.0;
+
+  double residual_sq = 0, load_sq = 0, reaction_sq = 0, dirichlet_violation = 0;
+  for (size_t s = 0; s < inputs.size(); ++s) {
+    Vec reaction = Vec::Zero(inputs[s].K.rows());  // B_s' lambda
+    if (!local[s].rows.empty()) {
+      Vec lambda_s(static_cast<Eigen::Index>(local[s].rows.size()));
+      for (size_t k = 0; k < local[s].rows.size(); ++k) lambda_s[static_cast<Eigen::Index>(k)] = lambda[local[s].rows[k]];
+      reaction = local[s].B.transpose() * lambda_s;
+    }
+    Vec residual = inputs[s].K * u[s] - inputs[s].f + reaction;
+    for (size_t k = 0; k < inputs[s].dirichlet_dofs.size(); ++k) {
+      const int dof = inputs[s].dirichlet_dofs[k];
+      const double g = inputs[s].dirichlet_values.empty() ? 0.0 : inputs[s].dirichlet_values[k];
+      dirichlet_violation = std::max(dirichlet_violation, std::abs(u[s][dof] - g));
+      if (dirichlet_eliminated) residual[dof] = 0.0;  // the reaction there is not in lambda
+    }
+    residual_sq += residual.squaredNorm();
+    load_sq += inputs[s].f.squaredNorm();
+    reaction_sq += reaction.squaredNorm();
+  }
+  r.equilibrium = safe_ratio(std::sqrt(residual_sq), std::sqrt(std::max(load_sq, reaction_sq)));
+
+  const Vec gap = apply_B(local, u, m) - Eigen::Map<const Vec>(constraints.rhs.data(), m);
+  double equality = dirichlet_violation, inequality = 0, negative = 0, complementarity = 0;
+  for (int i = 0; i < m; ++i) {
+    if (i < constraints.equality_rows) {
+      equality = std::max(equality, std::abs(gap[i]));
+    } else {
+      inequality = std::max(inequality, gap[i]);
+      negative = std::max(negative, -lambda[i]);
+      complementarity = std::max(complementarity, std::abs(lambda[i] * gap[i]));
+    }
+  }
+  r.equality = safe_ratio(equality, u_scale);
+  r.inequality = safe_ratio(inequality, u_scale);
+  r.dual_feasibility = safe_ratio(negative, lambda_scale);
+  r.complementarity = safe_ratio(complementarity, lambda_scale * u_scale);
+  return r;
+}
+
+double energy(const std::vector<SubdomainInput>& inputs, const std::vector<Vec>& u) {
+  double value = 0;
+  for (size_t s = 0; s < inputs.size(); ++s)
+    value += 0.5 * u[s].dot(inputs[s].K * u[s]) - inputs[s].f.dot(u[s]);
+  return value;
+}
+
+}  // namespace ffeti

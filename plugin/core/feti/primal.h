@@ -1,0 +1,44 @@
+// From the dual solution back to the primal one, and the KKT conditions checked there.
+#pragma once
+
+#include "feti/coarse_space.h"
+#include "feti/dual_operator.h"
+
+#include <vector>
+
+namespace ffeti {
+
+/// u = K^+(f - B'lambda) + R alpha, with alpha the least-squares solution of
+/// B R alpha = c - B K^+(f - B'lambda) on the rows that hold with equality (all equality
+/// rows and the inequality rows with lambda_i > 0). `f` are the loads the operators use.
+std::vector<Vec> recover_primal(const DualOperator& F, const CoarseSpace* coarse,
+                                const SubdomainList& subdomains,
+                                const std::vector<LocalConstraints>& local,
+                                const Constraints& constraints, const std::vector<Vec>& f,
+                                const Vec& lambda);
+
+/// KKT conditions of  min 1/2 u'Ku - f'u  s.t.  B_E u = c_E, B_I u <= c_I, recomputed in
+/// primal form from the original (not eliminated) K_s and f_s. All relative:
+///   equilibrium     = ||K u - f + B'lambda||_2 / max(||f||_2, ||B'lambda||_2)
+///                     (FETI-1: Dirichlet dofs excluded, their reactions are not in lambda)
+///   equality        = max(|B_E u - c_E|, |u_D - g|) / ||u||_inf
+///   inequality      = max(0, max(B_I u - c_I)) / ||u||_inf
+///   dual_feasibility= max(0, -min lambda_I) / ||lambda||_inf
+///   complementarity = max |lambda_i (B_I u - c_I)_i| / (||lambda||_inf ||u||_inf)
+struct KktResiduals {
+  double equilibrium = 0, equality = 0, inequality = 0, dual_feasibility = 0, complementarity = 0;
+  double max() const;
+};
+
+KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs,
+                           const std::vector<LocalConstraints>& local,
+                           const Constraints& constraints, bool dirichlet_eliminated,
+                           const std::vector<Vec>& u, const Vec& lambda);
+
+/// B u for per-subdomain vectors (length m).
+Vec apply_B(const std::vector<LocalConstraints>& local, const std::vector<Vec>& u, int rows);
+
+/// 1/2 u'Ku - f'u summed over subdomains, with the original K_s and f_s.
+double energy(const std::vector<SubdomainInput>& inputs, const std::vector<Vec>& u);
+
+}  // namespace ffeti

@@ -1,0 +1,89 @@
+#include "feti/subdomain.h"
+
+#include "feti/errors.h"
+#include "feti/kernel.h"
+
+#include <random>
+#include <string>
+
+namespace ffeti {
+namespace {
+
+/// K with the rows and columns `removed` (sorted) taken out.
+SparseMatrix remove_dofs(const SparseMatrix& K, const std::vector<int>& removed,
+                         std::vector<int>& reduced_to_full) {
+  const Eigen::Index n = K.rows();
+  std::vector<int> full_to_reduced(static_cast<size_t>(n), -1);
+  reduced_to_full.clear();
+  size_t next_removed = 0;
+  for (int i = 0; i < n; ++i) {
+    if (next_removed < removed.size() && removed[next_removed] == i) {
+      ++next_removed;
+      continue;
+    }
+    full_to_reduced[static_cast<size_t>(i)] = static_cast<int>(reduced_to_full.size());
+    reduced_to_full.push_back(i);
+  }
+  if (removed.empty()) return K;
+  std::vector<Eigen::Triplet<double, int>> entries;
+  entries.reserve(static_cast<size_t>(K.nonZeros()));
+  for (int j = 0; j < n; ++j)
+    for (SparseMatrix::InnerIterator it(K, j); it; ++it) {
+      const int ri = full_to_reduced[static_cast<size_t>(it.row())];
+      const int rj = full_to_reduced[static_cast<size_t>(j)];
+      if (ri >= 0 && rj >= 0) entries.emplace_back(ri, rj, it.value());
+    }
+  const auto m = static_cast<Eigen::Index>(reduced_to_full.size());
+  SparseMatrix reduced(m, m);
+  reduced.setFromTriplets(entries.begin(), entries.end());
+  reduced.makeCompressed();
+  return reduced;
+}
+
+}  // namespace
+
+Subdomain::Subdomain(int index, SparseMatrix K, const Eigen::MatrixXd& kernel_candidates,
+                     FactorKind factor_kind)
+    : index_(index), K_(std::move(K)), factor_(factor_kind) {
+  K_.makeCompressed();
+  const std::string name = "K[" + std::to_string(index_) + "]";
+  R_ = kernel_in_span(K_, kernel_candidates);
+  fixing_ = fixing_dofs(R_);
+  const SparseMatrix reduced = remove_dofs(K_, fixing_, reduced_to_full_);
+  const int failed = factor_.factorize(reduced);
+  if (failed >= 0)
+    throw InputError(name + ": not positive definite outside its kernel (Cholesky pivot " +
+                     std::to_string(failed) + " of " + std::to_string(reduced.rows()) +
+                     " fails; kernel dimension found " + std::to_string(R_.cols()) +
+                     "). Is the subdomain mesh connected and the matrix a stiffness matrix?");
+  reduced_rhs_.resize(reduced.rows());
+  reduced_solution_.resize(reduced.rows());
+  const double residual = pseudo_inverse_residual();
+  if (!(residual <= 1e-6))
+    throw InputError(name + ": the generalized inverse does not verify (||K K+ K v - K v|| / "
+                     "||K v|| = " + std::to_string(residual) +
+                     "): the matrix has a kernel outside the candidate rigid modes");
+}
+
+void Subdomain::apply_pseudo_inverse(const Vec& b, Vec& x) const {
+  for (size_t k = 0; k < reduced_to_full_.size(); ++k)
+    reduced_rhs_[static_cast<Eigen::Index>(k)] = b[reduced_to_full_[k]];
+  factor_.solve(reduced_rhs_, reduced_solution_);
+  x.setZero(K_.rows());
+  for (size_t k = 0; k < reduced_to_full_.size(); ++k)
+    x[reduced_to_full_[k]] = reduced_solution_[static_cast<Eigen::Index>(k)];
+}
+
+double Subdomain::pseudo_inverse_residual() const {
+  std::mt19937 generator(7u + static_cast<unsigned>(index_));
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  Vec v(K_.rows());
+  for (Eigen::Index i = 0; i < v.size(); ++i) v[i] = uniform(generator);
+  const Vec Kv = K_ * v;
+  Vec z;
+  apply_pseudo_inverse(Kv, z);
+  const double denominator = Kv.norm();
+  return denominator > 0 ? (K_ * z - Kv).norm() / denominator : 0.0;
+}
+
+}  // namespace ffeti

@@ -1,0 +1,51 @@
+// One subdomain's operator: its stiffness K_s, kernel R_s and a generalized inverse K_s^+
+// (K_s K_s^+ K_s = K_s) by "fixing dofs": K_s with r_s well-chosen dofs removed is regular.
+#pragma once
+
+#include "feti/cholmod_factor.h"
+
+#include <Eigen/Dense>
+
+#include <memory>
+#include <vector>
+
+namespace ffeti {
+
+class Subdomain {
+ public:
+  /// Computes the kernel inside span(kernel_candidates), chooses the fixing dofs and
+  /// factorizes. K is the operator the dual problem uses (for FETI-1 with the Dirichlet
+  /// dofs eliminated). Throws InputError naming "K[index]" if the factorization fails or
+  /// the generalized inverse does not verify. The object owns copies of everything.
+  Subdomain(int index, SparseMatrix K, const Eigen::MatrixXd& kernel_candidates,
+            FactorKind factor_kind);
+
+  Eigen::Index size() const { return K_.rows(); }
+  const SparseMatrix& stiffness() const { return K_; }
+  /// Orthonormal basis of Ker K_s (n_s x r_s); r_s = 0 for a regular subdomain.
+  const Eigen::MatrixXd& kernel() const { return R_; }
+  bool floating() const { return R_.cols() > 0; }
+  const std::vector<int>& fixing() const { return fixing_; }
+
+  /// x = K_s^+ b: zeros at the fixing dofs, the regular block's solution elsewhere.
+  /// Thread-safe across distinct subdomains, not on the same one.
+  void apply_pseudo_inverse(const Vec& b, Vec& x) const;
+
+  /// ||K K^+ K v - K v|| / ||K v|| for a fixed pseudo-random v (the check run at setup).
+  double pseudo_inverse_residual() const;
+  double factor_nonzeros() const { return factor_.factor_nonzeros(); }
+
+ private:
+  int index_;
+  SparseMatrix K_;
+  Eigen::MatrixXd R_;
+  std::vector<int> fixing_;
+  std::vector<int> reduced_to_full_;  // dofs kept in the regular block
+  CholmodFactor factor_;
+  mutable Vec reduced_rhs_, reduced_solution_;
+};
+
+/// Subdomains are built in parallel and hold non-movable factors: owned through pointers.
+using SubdomainList = std::vector<std::unique_ptr<Subdomain>>;
+
+}  // namespace ffeti

@@ -1,0 +1,138 @@
+#include "qp/mprgp.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace ffeti {
+namespace {
+
+bool is_free(double x, double l) { return l == kUnbounded || x > l; }
+
+/// Free gradient phi: g on the free set, 0 on the active set.
+void free_gradient(const Vec& x, const Vec& g, const Vec& lower, Vec& phi) {
+  for (Eigen::Index i = 0; i < x.size(); ++i) phi[i] = is_free(x[i], lower[i]) ? g[i] : 0.0;
+}
+
+/// Largest step a >= 0 with x - a p >= l on the bounded components.
+double feasible_step(const Vec& x, const Vec& p, const Vec& lower) {
+  double step = std::numeric_limits<double>::infinity();
+  for (Eigen::Index i = 0; i < x.size(); ++i)
+    if (lower[i] != kUnbounded && p[i] > 0) step = std::min(step, (x[i] - lower[i]) / p[i]);
+  return step;
+}
+
+void project(Vec& x, const Vec& lower) {
+  for (Eigen::Index i = 0; i < x.size(); ++i)
+    if (lower[i] != kUnbounded && x[i] < lower[i]) x[i] = lower[i];
+}
+
+}  // namespace
+
+void MprgpSettings::validate() const {
+  if (!(gamma > 0)) throw std::invalid_argument("MPRGP gamma must be > 0");
+  if (!(step_factor > 0 && step_factor <= 2))
+    throw std::invalid_argument("MPRGP step_factor must lie in (0, 2]");
+  if (max_hessian < 1) throw std::invalid_argument("MPRGP max_hessian must be >= 1");
+}
+
+Vec projected_gradient(const Vec& x, const Vec& g, const Vec& lower) {
+  Vec gp(x.size());
+  for (Eigen::Index i = 0; i < x.size(); ++i)
+    gp[i] = is_free(x[i], lower[i]) ? g[i] : std::min(g[i], 0.0);
+  return gp;
+}
+
+MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, double a_norm,
+                  Vec& x, Vec& g, bool gradient_is_current, const MprgpSettings& settings,
+                  const StopTest& stop, const Monitor& monitor) {
+  settings.validate();
+  MprgpResult result;
+  const Eigen::Index n = b.size();
+  if (x.size() != n || lower.size() != n)
+    throw std::invalid_argument("MPRGP: x, b and lower bounds differ in size");
+  if (!(a_norm > 0)) throw std::invalid_argument("MPRGP: the norm estimate of A must be > 0");
+  const double abar = settings.step_factor / a_norm;
+  IterationCounts& counts = result.counts;
+
+  auto multiply = [&](const Vec& v, Vec& Av) { A(v, Av); ++counts.hessian; };
+  Vec phi(n), beta(n), p(n), Ap(n);
+
+  if (!gradient_is_current) {
+    project(x, lower);
+    g.resize(n);
+    multiply(x, Ap);
+    g = Ap - b;  // g = A x - b
+  }
+  free_gradient(x, g, lower, phi);
+  p = phi;
+
+  for (int iteration = 0;; ++iteration) {
+    // Split the gradient; chopped gradient beta and reduced free gradient phit.
+    double beta_sq = 0, phit_phi = 0, gp_sq = 0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const bool free = is_free(x[i], lower[i]);
+      beta[i] = free ? 0.0 : std::min(g[i], 0.0);
+      const double phit =
+          (!free || lower[i] == kUnbounded) ? phi[i] : std::min((x[i] - lower[i]) / abar, phi[i]);
+      beta_sq += beta[i] * beta[i];
+      phit_phi += phit * phi[i];
+      gp_sq += phi[i] * phi[i] + beta[i] * beta[i];
+    }
+    result.projected_gradient_norm = std::sqrt(gp_sq);
+    if (monitor) monitor({"mprgp", iteration, result.projected_gradient_norm, 0.0});
+    if (stop(x, g, result.projected_gradient_norm)) {
+      result.status = SolveStatus::converged;
+      return result;
+    }
+    if (counts.hessian >= settings.max_hessian) {
+      result.status = SolveStatus::max_iterations;
+      return result;
+    }
+
+    if (beta_sq <= settings.gamma * settings.gamma * phit_phi) {
+      // x is proportional: conjugate gradient step, or expansion if it would leave the set.
+      multiply(p, Ap);
+      const double pAp = p.dot(Ap);
+      if (!(pAp > 0)) {
+        result.status = SolveStatus::not_positive_definite;
+        return result;
+      }
+      const double a_cg = g.dot(p) / pAp;
+      const double a_f = feasible_step(x, p, lower);
+      if (a_cg <= a_f) {
+        x -= a_cg * p;   // x_{k+1} = x_k - a_cg p
+        g -= a_cg * Ap;  // g = A x - b
+        free_gradient(x, g, lower, phi);
+        p = phi - (phi.dot(Ap) / pAp) * p;  // A-conjugate to the previous direction
+        ++counts.cg;
+      } else {
+        x -= a_f * p;
+        g -= a_f * Ap;
+        free_gradient(x, g, lower, phi);
+        x -= abar * phi;  // expansion: fixed-step projected gradient step
+        project(x, lower);
+        multiply(x, Ap);
+        g = Ap - b;
+        free_gradient(x, g, lower, phi);
+        p = phi;
+        ++counts.expansion;
+      }
+    } else {
+      // Proportioning: release components of the active set along the chopped gradient.
+      multiply(beta, Ap);
+      const double dAd = beta.dot(Ap);
+      if (!(dAd > 0)) {
+        result.status = SolveStatus::not_positive_definite;
+        return result;
+      }
+      const double a = g.dot(beta) / dAd;
+      x -= a * beta;
+      g -= a * Ap;
+      free_gradient(x, g, lower, phi);
+      p = phi;
+      ++counts.proportioning;
+    }
+  }
+}
+
+}  // namespace ffeti

@@ -1,0 +1,36 @@
+// MPRGP: modified proportioning with reduced gradient projections (Dostal 1997), for
+//   min 1/2 x'Ax - b'x  subject to  x_i >= l_i  (l_i = kUnbounded: component i is free).
+#pragma once
+
+#include "qp/qp_types.h"
+
+namespace ffeti {
+
+struct MprgpSettings {
+  double gamma = 1.0;         ///< proportioning threshold Gamma > 0
+  double step_factor = 1.9;   ///< fixed step abar = step_factor / ||A||, in (0, 2]
+  int max_hessian = 20000;    ///< limit on Hessian multiplications in this call
+
+  /// Throws std::invalid_argument naming the offending member.
+  void validate() const;
+};
+
+struct MprgpResult {
+  SolveStatus status = SolveStatus::max_iterations;
+  IterationCounts counts;
+  double projected_gradient_norm = 0;  ///< ||gP(x)||_2 at exit
+};
+
+/// Projected gradient gP = phi + beta of ALGORITHMS.md section 4:
+/// gP_i = g_i where x_i is free (unbounded or x_i > l_i), min(g_i, 0) where x_i = l_i.
+Vec projected_gradient(const Vec& x, const Vec& g, const Vec& lower);
+
+/// Minimizes the QP from the start x (projected onto the bounds first). On return x is the
+/// last iterate and g = Ax - b at it. If `gradient_is_current` is true, g on entry must
+/// already equal Ax - b at the (feasible) x, saving one multiplication (warm restarts).
+/// `a_norm` is an upper estimate of ||A||_2. `stop` receives ||gP(x)||_2.
+MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, double a_norm,
+                  Vec& x, Vec& g, bool gradient_is_current, const MprgpSettings& settings,
+                  const StopTest& stop, const Monitor& monitor = {});
+
+}  // namespace ffeti

@@ -1,0 +1,59 @@
+// Shared vocabulary of the QP solvers: operators, status codes, counters, monitors.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <limits>
+#include <string>
+
+namespace ffeti {
+
+using Vec = Eigen::VectorXd;
+
+/// Symmetric positive (semi)definite operator applied implicitly: y = A x.
+/// The solvers count each call as one Hessian multiplication.
+using LinearOperator = std::function<void(const Vec& x, Vec& y)>;
+
+/// Lower bound meaning "this component is not bounded" (equality multipliers).
+inline constexpr double kUnbounded = -std::numeric_limits<double>::infinity();
+
+enum class SolveStatus {
+  converged,
+  max_iterations,      ///< iteration limit reached before the stopping test held
+  stagnated,           ///< no progress possible (e.g. a vanishing curvature p'Ap)
+  not_positive_definite,
+  infeasible,          ///< equality and bound constraints cannot hold together
+  invalid_input,
+};
+
+std::string to_string(SolveStatus status);
+
+/// Machine-independent cost of one solve. Every application of the Hessian inside the
+/// solve is counted in `hessian`; the norm estimate's multiplications are kept apart.
+struct IterationCounts {
+  int outer = 0;        ///< SMALBE outer iterations (multiplier updates)
+  int hessian = 0;      ///< Hessian multiplications inside the solve
+  int hessian_norm_estimate = 0;
+  int cg = 0;           ///< conjugate gradient steps (MPRGP CG steps or plain CG)
+  int expansion = 0;    ///< MPRGP expansion steps
+  int proportioning = 0;///< MPRGP proportioning steps
+
+  IterationCounts& operator+=(const IterationCounts& other);
+};
+
+/// One progress line: iteration number, projected gradient norm, equality residual norm
+/// (0 where there is none). A monitor receives it; the solvers never print.
+struct ProgressLine {
+  const char* solver;
+  int iteration;
+  double gradient_norm;
+  double equality_norm;
+};
+using Monitor = std::function<void(const ProgressLine&)>;
+
+/// Stopping test of an iterative solver, called once per iteration with the iterate x, the
+/// gradient g = Ax - b and the norm of the (projected) gradient; true stops with `converged`.
+using StopTest = std::function<bool(const Vec& x, const Vec& g, double gradient_norm)>;
+
+}  // namespace ffeti

@@ -1,0 +1,107 @@
+#include "qp/smalbe.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace ffeti {
+
+void SmalbeSettings::validate() const {
+  if (!(rho_factor > 0)) throw std::invalid_argument("SMALBE rho_factor must be > 0");
+  if (!(M_factor > 0)) throw std::invalid_argument("SMALBE M_factor must be > 0");
+  if (!(eta_factor > 0)) throw std::invalid_argument("SMALBE eta_factor must be > 0");
+  if (!(alpha > 0 && alpha < 1)) throw std::invalid_argument("SMALBE alpha must lie in (0, 1)");
+  if (!(beta > 1)) throw std::invalid_argument("SMALBE beta must be > 1");
+  if (max_outer < 1) throw std::invalid_argument("SMALBE max_outer must be >= 1");
+  if (max_hessian < 1) throw std::invalid_argument("SMALBE max_hessian must be >= 1");
+  inner.validate();
+}
+
+SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& settings,
+                    const SmalbeStopTest& stop, const Monitor& monitor) {
+  settings.validate();
+  if (!problem.b || !problem.lower || !problem.hessian || !problem.range_projector)
+    throw std::invalid_argument("SMALBE: incomplete problem");
+  const Vec& b = *problem.b;
+  const Vec& lower = *problem.lower;
+  const Eigen::Index n = b.size();
+  if (x.size() != n || lower.size() != n)
+    throw std::invalid_argument("SMALBE: x, b and lower bounds differ in size");
+  if (!(problem.hessian_norm > 0)) throw std::invalid_argument("SMALBE: ||H|| must be > 0");
+
+  SmalbeResult result;
+  double rho = settings.rho_factor * problem.hessian_norm;
+  double M = settings.M_factor * std::max(problem.hessian_norm, rho);
+  double eta = settings.eta_factor * b.norm();
+  Vec nu = Vec::Zero(n);           // multiplier term C'mu, kept in Im C'
+  Vec shifted_b = b;               // b - nu: linear term of the inner problem
+  Vec Qx(n), Qv(n), g(n);  // Qx: Q at the iterate; Qv: scratch of the operator A
+  bool gradient_is_current = false;
+  double previous_lagrangian = std::numeric_limits<double>::infinity();
+
+  // A = H + rho Q: on Ker C it acts as H, on Im C' as rho, so ||A|| <= max(||H||, rho).
+  const LinearOperator A = [&](const Vec& v, Vec& Av) {
+    problem.hessian(v, Av);
+    problem.range_projector(v, Qv);
+    Av += rho * Qv;
+  };
+
+  for (int outer = 0;; ++outer) {
+    bool globally_done = false;
+    const StopTest inner_stop = [&](const Vec& xi, const Vec& gi, double gp_norm) {
+      problem.range_projector(xi, Qx);
+      const double q_norm = Qx.norm();
+      // Projected gradient of L(x, nu, 0): the gradient without its penalty part rho Q x.
+      const Vec gp0 = projected_gradient(xi, gi - rho * Qx, lower);
+      result.projected_gradient_norm = gp0.norm();
+      result.equality_norm = q_norm;
+      if (monitor) monitor({"smalbe", outer, result.projected_gradient_norm, q_norm});
+      if (stop(xi, result.projected_gradient_norm, Qx)) return globally_done = true;
+      const double bound = settings.variant == SmalbeVariant::smalbe_m ? std::min(M * q_norm, eta)
+                                                                        : M * q_norm;
+      return gp_norm <= bound;
+    };
+    MprgpSettings inner = settings.inner;
+    inner.max_hessian = std::max(1, settings.max_hessian - result.counts.hessian);
+    const MprgpResult inner_result =
+        mprgp(A, shifted_b, lower, std::max(problem.hessian_norm, rho), x, g,
+              gradient_is_current, inner, inner_stop);
+    result.counts += inner_result.counts;
+    result.rho = rho;
+    if (globally_done) {
+      result.status = SolveStatus::converged;
+      return result;
+    }
+    if (inner_result.status != SolveStatus::converged) {
+      result.status = inner_result.status;
+      return result;
+    }
+    if (result.counts.outer + 1 >= settings.max_outer) {
+      result.status = SolveStatus::max_iterations;
+      return result;
+    }
+    ++result.counts.outer;
+
+    // Q x is current: the inner stop test computed it at this x.
+    const double q_norm = Qx.norm();
+    const double lagrangian = 0.5 * x.dot(g - shifted_b);  // L(x, nu, rho) = 1/2 x'Ax - x'(b - nu)
+    nu += rho * Qx;          // multiplier update mu <- mu + rho C x
+    shifted_b = b - nu;
+    g += rho * Qx;           // g = A x - (b - nu) with the new nu
+    gradient_is_current = true;
+
+    if (settings.variant == SmalbeVariant::smalbe_m) {
+      if (outer > 0 && lagrangian < previous_lagrangian + 0.5 * rho * q_norm * q_norm)
+        M /= settings.beta;
+      previous_lagrangian = lagrangian;
+    } else if (q_norm <= eta) {
+      eta *= settings.alpha;
+    } else {
+      const double rho_next = settings.beta * rho;
+      g += (rho_next - rho) * Qx;  // A changed by (rho_next - rho) Q
+      rho = rho_next;
+    }
+  }
+}
+
+}  // namespace ffeti
