@@ -84,6 +84,10 @@ void CholmodFactor::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
   std::memcpy(x.data(), solution_->x, sizeof(double) * static_cast<size_t>(b.size()));
 }
 
+double CholmodFactor::reciprocal_condition() const {
+  return factor_ ? cholmod_rcond(factor_, &common_) : 0.0;
+}
+
 double CholmodFactor::factor_nonzeros() const {
   if (!factor_) return 0;
   if (factor_->is_super) return static_cast<double>(factor_->xsize);

@@ -33,6 +33,8 @@ class CholmodFactor {
 
   Eigen::Index size() const { return size_; }
   double factor_nonzeros() const;  ///< nnz(L), for reports
+  /// CHOLMOD's cheap estimate (min diag L / max diag L)^2; ~eps for a numerically singular A.
+  double reciprocal_condition() const;
 
  private:
   mutable cholmod_common common_;

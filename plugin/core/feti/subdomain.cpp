@@ -51,6 +51,13 @@ Subdomain::Subdomain(int index, SparseMatrix K, const Eigen::MatrixXd& kernel_ca
   fixing_ = fixing_dofs(R_);
   const SparseMatrix reduced = remove_dofs(K_, fixing_, reduced_to_full_);
   const int failed = factor_.factorize(reduced);
+  // A singular block may factor with a tiny positive pivot instead of failing outright.
+  const double rcond = failed < 0 ? factor_.reciprocal_condition() : 0.0;
+  if (failed < 0 && rcond < 1e-14)
+    throw InputError(name + ": singular outside its kernel (reciprocal condition estimate " +
+                     std::to_string(rcond) + " with kernel dimension " + std::to_string(R_.cols()) +
+                     "): the matrix has a kernel outside the candidate rigid modes, e.g. a "
+                     "disconnected subdomain mesh or a mechanism");
   if (failed >= 0)
     throw InputError(name + ": not positive definite outside its kernel (Cholesky pivot " +
                      std::to_string(failed) + " of " + std::to_string(reduced.rows()) +

@@ -61,8 +61,12 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
                                                                         : M * q_norm;
       return gp_norm <= bound;
     };
+    if (result.counts.hessian >= settings.max_hessian) {
+      result.status = SolveStatus::max_iterations;
+      return result;
+    }
     MprgpSettings inner = settings.inner;
-    inner.max_hessian = std::max(1, settings.max_hessian - result.counts.hessian);
+    inner.max_hessian = settings.max_hessian - result.counts.hessian;
     const MprgpResult inner_result =
         mprgp(A, shifted_b, lower, std::max(problem.hessian_norm, rho), x, g,
               gradient_is_current, inner, inner_stop);

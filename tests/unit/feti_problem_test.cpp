@@ -1,0 +1,302 @@
+#include "feti/coarse_space.h"
+#include "feti/dual_operator.h"
+#include "feti/errors.h"
+#include "feti/feti_problem.h"
+#include "feti/kernel.h"
+#include "membrane_model.h"
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace ffeti {
+namespace {
+
+test::MembraneOptions options(int n, int N) {
+  test::MembraneOptions o;
+  o.n = n;
+  o.N = N;
+  return o;
+}
+
+FetiProblem membrane_problem(const test::MembraneOptions& o, FetiVariant variant, int threads = 0) {
+  auto subs = test::membrane_subdomains(o);
+  NodeToNodeContact contact = o.with_contact ? test::membrane_contact(subs) : NodeToNodeContact{};
+  FetiSetupSettings setup;
+  setup.variant = variant;
+  setup.threads = threads;
+  return FetiProblem(std::move(subs), contact, setup);
+}
+
+std::vector<double> active_contact_y(const FetiProblem& problem, const FetiResult& result,
+                                     const std::vector<SubdomainInput>& subs) {
+  std::vector<double> ys;
+  const Constraints& c = problem.constraints();
+  for (int i = c.equality_rows; i < c.rows(); ++i) {
+    if (!(result.lambda[i] > 0)) continue;
+    const ConstraintEntry& e = c.entries[c.row_start[i]];
+    ys.push_back(subs[e.subdomain].y[e.dof]);
+  }
+  std::sort(ys.begin(), ys.end());
+  return ys;
+}
+
+/// The pieces of the dual operator built by hand, for dense comparisons.
+struct DualPieces {
+  std::vector<SubdomainInput> subs;
+  Constraints constraints;
+  std::vector<LocalConstraints> local;
+  SubdomainList subdomains;
+  Eigen::MatrixXd B, Kplus_dense, R;
+};
+
+DualPieces dual_pieces(const test::MembraneOptions& o) {
+  DualPieces p;
+  p.subs = test::membrane_subdomains(o);
+  // Total FETI: Dirichlet conditions as rows, every subdomain floats (the hardest case).
+  p.constraints = build_constraints(p.subs, test::membrane_contact(p.subs), FetiVariant::tfeti);
+  std::vector<Eigen::Index> sizes;
+  int n = 0, r = 0;
+  for (const auto& s : p.subs) sizes.push_back(s.K.rows()), n += static_cast<int>(s.K.rows());
+  p.local = split_by_subdomain(p.constraints, sizes);
+  for (size_t s = 0; s < p.subs.size(); ++s)
+    p.subdomains.push_back(std::make_unique<Subdomain>(
+        static_cast<int>(s), p.subs[s].K,
+        candidate_kernel(p.subs[s].x, p.subs[s].y, p.subs[s].component), FactorKind::automatic));
+  for (const auto& s : p.subdomains) r += static_cast<int>(s->kernel().cols());
+  p.B = Eigen::MatrixXd::Zero(p.constraints.rows(), n);
+  p.Kplus_dense = Eigen::MatrixXd::Zero(n, n);  // Moore-Penrose, independent of fixing dofs
+  p.R = Eigen::MatrixXd::Zero(n, r);
+  int offset = 0, column = 0;
+  for (size_t s = 0; s < p.subs.size(); ++s) {
+    const auto ns = static_cast<int>(p.subs[s].K.rows());
+    p.B.middleCols(offset, ns) = Eigen::MatrixXd::Zero(p.constraints.rows(), ns);
+    for (size_t k = 0; k < p.local[s].rows.size(); ++k)
+      for (int j = 0; j < ns; ++j) p.B(p.local[s].rows[k], offset + j) = p.local[s].B.coeff(static_cast<int>(k), j);
+    p.Kplus_dense.block(offset, offset, ns, ns) =
+        Eigen::MatrixXd(p.subs[s].K).completeOrthogonalDecomposition().pseudoInverse();
+    const Eigen::MatrixXd& Rs = p.subdomains[s]->kernel();
+    p.R.block(offset, column, ns, Rs.cols()) = Rs;
+    offset += ns, column += static_cast<int>(Rs.cols());
+  }
+  return p;
+}
+
+TEST(DualOperator, ProjectedOperatorMatchesDenseExplicit) {
+  DualPieces p = dual_pieces(options(8, 2));
+  std::vector<int> bodies;
+  for (const auto& s : p.subs) bodies.push_back(s.body);
+  const int m = p.constraints.rows();
+  const DualOperator F(p.subdomains, p.local, m, 1);
+  const CoarseSpace coarse(p.subdomains, p.local, m, bodies);
+  // G = R'B' and P = I - G'(GG')^{-1}G built densely; P F P does not depend on which
+  // generalized inverse K^+ is, so the fixing-dof inverse must agree with Moore-Penrose.
+  const Eigen::MatrixXd G = p.R.transpose() * p.B.transpose();
+  EXPECT_LT((Eigen::MatrixXd(coarse.G()) - G).norm(), 1e-12 * G.norm());
+  const Eigen::MatrixXd P =
+      Eigen::MatrixXd::Identity(m, m) - G.transpose() * (G * G.transpose()).ldlt().solve(G);
+  const Eigen::MatrixXd PFP_dense = P * p.B * p.Kplus_dense * p.B.transpose() * P;
+  Eigen::MatrixXd PFP(m, m);
+  Vec Px(m), FPx(m), y(m);
+  for (int j = 0; j < m; ++j) {
+    coarse.project(Vec::Unit(m, j), Px);
+    F.apply(Px, FPx);
+    coarse.project(FPx, y);
+    PFP.col(j) = y;
+  }
+  EXPECT_LT((PFP - PFP_dense).norm(), 1e-9 * PFP_dense.norm());
+  // The projector is symmetric, idempotent and annihilates G'.
+  Eigen::MatrixXd P_applied(m, m);
+  for (int j = 0; j < m; ++j) {
+    coarse.project(Vec::Unit(m, j), y);
+    P_applied.col(j) = y;
+  }
+  EXPECT_LT((P_applied - P).norm(), 1e-12 * m);
+  EXPECT_LT((P_applied * P_applied - P_applied).norm(), 1e-12 * m);
+  EXPECT_LT((G * P_applied).norm(), 1e-12 * G.norm());
+}
+
+TEST(DualOperator, CoerciveOperatorMatchesDenseExplicit) {
+  test::MembraneOptions o = options(8, 2);
+  o.with_contact = false;
+  o.body2 = false;
+  std::vector<SubdomainInput> subs = test::membrane_subdomains(o);
+  // Regularize every subdomain with a mass-like diagonal so that none floats.
+  for (auto& s : subs) {
+    for (Eigen::Index i = 0; i < s.K.rows(); ++i) s.K.coeffRef(i, i) += 0.1;
+    s.dirichlet_dofs.clear();
+  }
+  const Constraints c = build_constraints(subs, {}, FetiVariant::feti1);
+  std::vector<Eigen::Index> sizes;
+  for (const auto& s : subs) sizes.push_back(s.K.rows());
+  const auto local = split_by_subdomain(c, sizes);
+  SubdomainList subdomains;
+  for (size_t s = 0; s < subs.size(); ++s)
+    subdomains.push_back(std::make_unique<Subdomain>(static_cast<int>(s), subs[s].K,
+        candidate_kernel(subs[s].x, subs[s].y, subs[s].component), FactorKind::automatic));
+  const int m = c.rows();
+  const DualOperator F(subdomains, local, m, 2);
+  Eigen::MatrixXd F_dense = Eigen::MatrixXd::Zero(m, m);
+  for (size_t s = 0; s < subs.size(); ++s) {
+    const Eigen::MatrixXd Bs = Eigen::MatrixXd(local[s].B);
+    const Eigen::MatrixXd block = Bs * Eigen::MatrixXd(subs[s].K).inverse() * Bs.transpose();
+    for (size_t a = 0; a < local[s].rows.size(); ++a)
+      for (size_t b = 0; b < local[s].rows.size(); ++b)
+        F_dense(local[s].rows[a], local[s].rows[b]) += block(a, b);
+  }
+  Vec y(m);
+  for (int j = 0; j < m; ++j) {
+    F.apply(Vec::Unit(m, j), y);
+    EXPECT_LT((y - F_dense.col(j)).norm(), 1e-10 * F_dense.norm());
+  }
+}
+
+TEST(FetiProblem, MembraneMatchesMonolithicActiveSetReference) {
+  const int n = 16;
+  const test::ReferenceSolution reference = test::membrane_reference(n);
+  ASSERT_FALSE(reference.active_y.empty());
+  for (FetiVariant variant : {FetiVariant::feti1, FetiVariant::tfeti}) {
+    const auto subs = test::membrane_subdomains(options(n, 2));
+    const FetiProblem problem = membrane_problem(options(n, 2), variant);
+    DualSolveSettings settings;
+    settings.tolerance = 1e-10;
+    const FetiResult result = problem.solve(settings);
+    ASSERT_EQ(result.status, SolveStatus::converged) << to_string(result.status);
+    EXPECT_EQ(result.path, "smalbe");
+    EXPECT_NEAR(result.energy, reference.energy, 1e-8 * std::abs(reference.energy));
+    EXPECT_EQ(active_contact_y(problem, result, subs), reference.active_y);
+    EXPECT_LT(result.kkt.max(), 1e-7) << result.kkt.equilibrium << " " << result.kkt.equality << " "
+                                      << result.kkt.inequality << " " << result.kkt.complementarity;
+  }
+}
+
+TEST(FetiProblem, SeedToleranceGivesSmallKktResidualsAndBoundedIterations) {
+  const FetiProblem problem = membrane_problem(options(32, 2), FetiVariant::feti1);
+  const FetiResult result = problem.solve();
+  ASSERT_EQ(result.status, SolveStatus::converged);
+  EXPECT_LE(result.gradient_norm, 1e-4 * result.gradient_reference);
+  EXPECT_LE(result.equality_norm, 1e-4 * result.equality_reference);
+  EXPECT_LT(result.kkt.equilibrium, 1e-3);
+  EXPECT_LT(result.kkt.equality, 1e-3);
+  EXPECT_GE(result.counts.hessian, 5);
+  EXPECT_LE(result.counts.hessian, 100);
+  EXPECT_GT(result.active_contact, 0);
+  EXPECT_LE(result.active_contact, 33);
+}
+
+TEST(FetiProblem, PathFollowsTheScene) {
+  test::MembraneOptions single = options(8, 1);
+  single.body2 = false;
+  single.with_contact = false;
+  EXPECT_EQ(membrane_problem(single, FetiVariant::feti1).path(), "cholesky");
+
+  // Body 0 split 2 x 2 without contact: the right column floats -> projected CG.
+  test::MembraneOptions glued = options(8, 2);
+  glued.body2 = false;
+  glued.with_contact = false;
+  const FetiProblem projected = membrane_problem(glued, FetiVariant::feti1);
+  EXPECT_EQ(projected.path(), "projected_cg");
+  EXPECT_GT(projected.coarse_dimension(), 0);
+
+  // Both bodies fixed, one subdomain each: coercive contact -> MPRGP, no coarse space.
+  test::MembraneOptions coercive = options(8, 1);
+  coercive.fix_right_body = true;
+  const FetiProblem mprgp_scene = membrane_problem(coercive, FetiVariant::feti1);
+  EXPECT_EQ(mprgp_scene.path(), "mprgp");
+  EXPECT_EQ(mprgp_scene.coarse_dimension(), 0);
+  const FetiResult r = mprgp_scene.solve();
+  EXPECT_EQ(r.status, SolveStatus::converged);
+  EXPECT_EQ(r.phases.find("coarse"), std::string::npos);
+  EXPECT_GT(r.counts.hessian_norm_estimate, 0);
+
+  EXPECT_EQ(membrane_problem(options(8, 2), FetiVariant::feti1).path(), "smalbe");
+
+  // Each path's solution satisfies the primal KKT conditions.
+  for (const test::MembraneOptions& o : {single, glued, coercive}) {
+    const FetiResult result = membrane_problem(o, FetiVariant::feti1).solve();
+    EXPECT_EQ(result.status, SolveStatus::converged);
+    EXPECT_LT(result.kkt.max(), 1e-3) << result.path;
+  }
+}
+
+TEST(FetiProblem, CoarseSpaceOnlyWhereSomethingFloats) {
+  test::MembraneOptions o = options(8, 1);
+  o.fix_right_body = true;
+  const FetiProblem problem = membrane_problem(o, FetiVariant::feti1);
+  EXPECT_EQ(problem.floating_subdomains(), 0);
+  EXPECT_EQ(problem.setup_times().coarse_space, 0.0);
+  const FetiProblem total = membrane_problem(o, FetiVariant::tfeti);
+  EXPECT_EQ(total.floating_subdomains(), 2);  // Total FETI: every subdomain floats
+}
+
+TEST(FetiProblem, SecondLoadCaseReusesTheFactorizations) {
+  FetiProblem problem = membrane_problem(options(16, 2), FetiVariant::feti1);
+  auto subs = test::membrane_subdomains(options(16, 2));
+  std::vector<Vec> doubled;
+  for (auto& s : subs) doubled.push_back(2.0 * s.f);
+  problem.set_loads(doubled);
+  DualSolveSettings settings;
+  settings.tolerance = 1e-10;
+  const FetiResult reused = problem.solve(settings);
+  for (auto& s : subs) s.f *= 2.0;
+  const FetiProblem fresh(std::move(subs), test::membrane_contact(test::membrane_subdomains(options(16, 2))));
+  const FetiResult direct = fresh.solve(settings);
+  ASSERT_EQ(reused.status, SolveStatus::converged);
+  EXPECT_NEAR(reused.energy, direct.energy, 1e-9 * std::abs(direct.energy));
+  // Linear scaling: doubling the load doubles u and multiplies the energy by 4.
+  const FetiResult single = membrane_problem(options(16, 2), FetiVariant::feti1).solve(settings);
+  EXPECT_NEAR(reused.energy, 4 * single.energy, 1e-8 * std::abs(reused.energy));
+}
+
+TEST(FetiProblem, ThreadCountDoesNotChangeTheResult) {
+  const FetiResult one = membrane_problem(options(32, 4), FetiVariant::feti1, 1).solve();
+  const FetiResult two = membrane_problem(options(32, 4), FetiVariant::feti1, 2).solve();
+  EXPECT_EQ(one.counts.hessian, two.counts.hessian);
+  EXPECT_EQ(one.counts.outer, two.counts.outer);
+  EXPECT_EQ(one.lambda, two.lambda);  // bitwise: the scatter order is fixed
+}
+
+TEST(FetiProblem, NonConvergenceIsAStatusNotAnException) {
+  const FetiProblem problem = membrane_problem(options(16, 2), FetiVariant::feti1);
+  DualSolveSettings settings;
+  settings.max_hessian = 3;
+  const FetiResult result = problem.solve(settings);
+  EXPECT_EQ(result.status, SolveStatus::max_iterations);
+  EXPECT_EQ(result.u.size(), 8u);  // the last iterate is still returned
+}
+
+void expect_input_error(const std::function<void()>& action, const std::string& needle) {
+  try {
+    action();
+    FAIL() << "expected an InputError mentioning " << needle;
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find(needle), std::string::npos) << error.what();
+  }
+}
+
+TEST(FetiProblem, BadInputIsAnErrorNamingTheArgument) {
+  const auto make = [](const std::function<void(std::vector<SubdomainInput>&)>& spoil) {
+    auto subs = test::membrane_subdomains(options(8, 2));
+    const NodeToNodeContact contact = test::membrane_contact(subs);
+    spoil(subs);
+    FetiProblem problem(std::move(subs), contact);
+  };
+  expect_input_error([&] { make([](auto& s) { s[2].K.coeffRef(0, 1) += 1.0; }); }, "K[2]: not symmetric");
+  expect_input_error([&] { make([](auto& s) { s[1].f.conservativeResize(3); }); }, "f[1]");
+  expect_input_error([&] { make([](auto& s) { s[3].f[0] = NAN; }); }, "f[3]");
+  expect_input_error([&] { make([](auto& s) { s[0].K.coeffRef(0, 0) = INFINITY; }); }, "K[0]");
+  expect_input_error([&] { make([](auto& s) { s[1].x.pop_back(); }); }, "X[1]");
+  expect_input_error([&] { make([](auto& s) { s[0].dirichlet_dofs.push_back(100000); }); }, "dirichlet[0]");
+  // A floating body with no condition at all: its rigid mode is unrestrained.
+  expect_input_error([] {
+    auto subs = test::membrane_subdomains(options(8, 2));
+    FetiProblem problem(std::move(subs), NodeToNodeContact{});
+  }, "body 1");
+  DualSolveSettings bad;
+  bad.tolerance = 0;
+  expect_input_error([&] { membrane_problem(options(8, 1), FetiVariant::feti1).solve(bad); }, "tol");
+}
+
+}  // namespace
+}  // namespace ffeti

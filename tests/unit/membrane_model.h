@@ -1,0 +1,42 @@
+// The seed's two-membrane model problem assembled in C++ (P1 on structured triangles),
+// split into N x N subdomains per body, plus a monolithic reference solver (primal-dual
+// active set with a sparse direct solver) that shares no code with the FETI path.
+#pragma once
+
+#include "feti/problem_input.h"
+
+#include <functional>
+#include <vector>
+
+namespace ffeti::test {
+
+/// P1 stiffness `factor` * int grad u . grad v and load int f v on [x0,x0+w] x [y0,y0+h]
+/// with nx x ny cells, each cut along the same diagonal as FreeFEM's square().
+SubdomainInput p1_rectangle(double x0, double y0, double w, double h, int nx, int ny,
+                            double factor, const std::function<double(double, double)>& f,
+                            int body);
+
+struct MembraneOptions {
+  int n = 16;              ///< cells per unit length (h = 1/n)
+  int N = 2;               ///< subdomains per direction and body
+  bool fix_right_body = false;  ///< Dirichlet at x = 2 too: a coercive contact scene
+  bool with_contact = true;
+  bool body2 = true;
+};
+
+/// Body 0 = (0,1)^2 with u = 0 at x = 0, body 1 = (1,2)x(0,1); energy as the seed prints it
+/// (int |grad u|^2 - int f u, so K = 2 x Laplacian), f = -3 on y > 0.75 in body 0 and
+/// f = -1 on y < 0.25 in body 1.
+std::vector<SubdomainInput> membrane_subdomains(const MembraneOptions& options);
+NodeToNodeContact membrane_contact(const std::vector<SubdomainInput>& subdomains);
+
+/// Monolithic reference: the same discrete problem on the unsplit bodies, solved by a
+/// primal-dual active set method with Eigen's SparseLU.
+struct ReferenceSolution {
+  double energy;
+  std::vector<double> active_y;  ///< y of the contact nodes with a positive multiplier
+  int iterations;
+};
+ReferenceSolution membrane_reference(int n);
+
+}  // namespace ffeti::test

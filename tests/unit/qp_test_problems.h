@@ -1,0 +1,31 @@
+// Manufactured QPs with known KKT solutions (fixed seeds) for the solver unit tests.
+#pragma once
+
+#include "qp/qp_types.h"
+
+#include <Eigen/Dense>
+
+namespace ffeti::test {
+
+/// Dense symmetric positive definite matrix with eigenvalues in [1, condition].
+Eigen::MatrixXd random_spd(int n, double condition, unsigned seed);
+
+/// min 1/2 x'Ax - b'x s.t. x_i >= l_i on the bounded components, with the solution
+/// x_star known: a third of the bounded components strongly active (g > 0), one weakly
+/// active (g = 0 at the bound), the rest free.
+struct BoundQp {
+  Eigen::MatrixXd A;
+  Vec b, lower, x_star;
+};
+BoundQp manufactured_bound_qp(int n, double condition, unsigned seed, bool some_unbounded);
+
+/// The same with the equality C x = 0 (C: k x n, full row rank) and its multiplier.
+struct BoundEqualityQp {
+  Eigen::MatrixXd H, C, Q;  // Q = C'(CC')^{-1}C
+  Vec b, lower, x_star;
+};
+BoundEqualityQp manufactured_bound_equality_qp(int n, int k, double condition, unsigned seed);
+
+LinearOperator dense_operator(const Eigen::MatrixXd& A);
+
+}  // namespace ffeti::test

@@ -1,0 +1,71 @@
+#include "qp/smalbe.h"
+#include "qp_test_problems.h"
+
+#include <gtest/gtest.h>
+
+namespace ffeti {
+namespace {
+
+struct Case {
+  int n, k;
+  double condition;
+  unsigned seed;
+  SmalbeVariant variant;
+};
+
+class SmalbeManufactured : public ::testing::TestWithParam<Case> {};
+
+TEST_P(SmalbeManufactured, FindsTheKnownSolution) {
+  const Case c = GetParam();
+  const test::BoundEqualityQp qp = test::manufactured_bound_equality_qp(c.n, c.k, c.condition, c.seed);
+  SmalbeProblem problem;
+  problem.hessian = test::dense_operator(qp.H);
+  problem.range_projector = test::dense_operator(qp.Q);
+  problem.b = &qp.b;
+  problem.lower = &qp.lower;
+  problem.hessian_norm = 1.05 * c.condition;
+  SmalbeSettings settings;
+  settings.variant = c.variant;
+  settings.max_hessian = 5000;
+  Vec x = Vec::Zero(c.n);
+  const double tol = 1e-10 * qp.b.norm();
+  const SmalbeResult result = smalbe(problem, x, settings,
+      [&](const Vec&, double gp, const Vec& Qx) { return gp <= tol && Qx.norm() <= 1e-10; });
+  ASSERT_EQ(result.status, SolveStatus::converged) << to_string(result.status);
+  EXPECT_LT((x - qp.x_star).norm(), 1e-6 * qp.x_star.norm());
+  EXPECT_LT((qp.C * x).norm(), 1e-8 * qp.C.norm() * qp.x_star.norm());
+  for (int i = 0; i < c.n; ++i)
+    if (qp.lower[i] != kUnbounded) EXPECT_GE(x[i], qp.lower[i]);
+  EXPECT_GE(result.counts.outer, 1);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Seeds, SmalbeManufactured,
+    ::testing::Values(Case{30, 3, 10, 1, SmalbeVariant::smalbe_m},
+                      Case{80, 8, 100, 2, SmalbeVariant::smalbe_m},
+                      Case{30, 3, 10, 1, SmalbeVariant::seed_alg31},
+                      Case{80, 8, 100, 2, SmalbeVariant::seed_alg31}));
+
+TEST(Smalbe, IterationLimitIsAStatus) {
+  const test::BoundEqualityQp qp = test::manufactured_bound_equality_qp(60, 5, 1e3, 9);
+  SmalbeProblem problem{test::dense_operator(qp.H), test::dense_operator(qp.Q), &qp.b, &qp.lower, 1.05e3};
+  SmalbeSettings settings;
+  settings.max_hessian = 10;
+  Vec x = Vec::Zero(60);
+  const SmalbeResult result =
+      smalbe(problem, x, settings, [](const Vec&, double gp, const Vec&) { return gp <= 0; });
+  EXPECT_EQ(result.status, SolveStatus::max_iterations);
+  EXPECT_LE(result.counts.hessian, 10 + 2);  // a step in progress may finish (<= 2 products)
+}
+
+TEST(Smalbe, RejectsInvalidSettings) {
+  SmalbeSettings settings;
+  settings.beta = 1.0;
+  EXPECT_THROW(settings.validate(), std::invalid_argument);
+  settings = {};
+  settings.alpha = 1.5;
+  EXPECT_THROW(settings.validate(), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace ffeti
