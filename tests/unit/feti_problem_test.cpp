@@ -63,7 +63,7 @@ DualPieces dual_pieces(const test::MembraneOptions& o) {
   for (size_t s = 0; s < p.subs.size(); ++s)
     p.subdomains.push_back(std::make_unique<Subdomain>(
         static_cast<int>(s), p.subs[s].K,
-        candidate_kernel(p.subs[s].x, p.subs[s].y, p.subs[s].component), FactorKind::automatic));
+        candidate_kernel(p.subs[s].x, p.subs[s].y, p.subs[s].component), FactorKind::simplicial));
   for (const auto& s : p.subdomains) r += static_cast<int>(s->kernel().cols());
   p.B = Eigen::MatrixXd::Zero(p.constraints.rows(), n);
   p.Kplus_dense = Eigen::MatrixXd::Zero(n, n);  // Moore-Penrose, independent of fixing dofs
@@ -134,7 +134,7 @@ TEST(DualOperator, CoerciveOperatorMatchesDenseExplicit) {
   SubdomainList subdomains;
   for (size_t s = 0; s < subs.size(); ++s)
     subdomains.push_back(std::make_unique<Subdomain>(static_cast<int>(s), subs[s].K,
-        candidate_kernel(subs[s].x, subs[s].y, subs[s].component), FactorKind::automatic));
+        candidate_kernel(subs[s].x, subs[s].y, subs[s].component), FactorKind::simplicial));
   const int m = c.rows();
   const DualOperator F(subdomains, local, m, 2);
   Eigen::MatrixXd F_dense = Eigen::MatrixXd::Zero(m, m);

@@ -62,7 +62,7 @@ TEST(Kernel, ComputedNotAssumedForPartialConstraints) {
 
 TEST(Subdomain, GeneralizedInverseSatisfiesKKplusKEqualsK) {
   const SubdomainInput s = unit_square(5);
-  const Subdomain sub(0, s.K, candidate_kernel(s.x, s.y, s.component), FactorKind::automatic);
+  const Subdomain sub(0, s.K, candidate_kernel(s.x, s.y, s.component), FactorKind::simplicial);
   ASSERT_TRUE(sub.floating());
   const Eigen::MatrixXd K = Eigen::MatrixXd(s.K);
   Eigen::MatrixXd Kplus(K.rows(), K.cols());
@@ -102,7 +102,7 @@ TEST(Subdomain, AKernelOutsideTheCandidatesIsAnInputError) {
     }
   K.setFromTriplets(entries.begin(), entries.end());
   try {
-    Subdomain sub(3, K, Eigen::MatrixXd::Ones(2 * n, 1), FactorKind::automatic);
+    Subdomain sub(3, K, Eigen::MatrixXd::Ones(2 * n, 1), FactorKind::simplicial);
     FAIL() << "expected an InputError";
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find("K[3]"), std::string::npos) << error.what();

@@ -44,11 +44,7 @@ CholmodFactor::CholmodFactor(FactorKind kind) {
   cholmod_start(&common_);
   common_.print = 0;  // the core never prints; failures are returned as values
   common_.error_handler = nullptr;
-  switch (kind) {
-    case FactorKind::automatic: common_.supernodal = CHOLMOD_AUTO; break;
-    case FactorKind::simplicial: common_.supernodal = CHOLMOD_SIMPLICIAL; break;
-    case FactorKind::supernodal: common_.supernodal = CHOLMOD_SUPERNODAL; break;
-  }
+  common_.supernodal = kind == FactorKind::simplicial ? CHOLMOD_SIMPLICIAL : CHOLMOD_SUPERNODAL;
 }
 
 CholmodFactor::~CholmodFactor() {

@@ -44,6 +44,7 @@ void DualSolveSettings::validate() const {
 FetiProblem::FetiProblem(std::vector<SubdomainInput> subdomains, const NodeToNodeContact& contact,
                          const FetiSetupSettings& settings)
     : settings_(settings), inputs_(std::move(subdomains)) {
+  if (settings_.factor == FactorKind::supernodal) settings_.threads = 1;
   validate_input(inputs_, contact);
   const bool eliminate = settings_.variant == FetiVariant::feti1;
 

@@ -21,8 +21,10 @@ namespace ffeti {
 
 struct FetiSetupSettings {
   FetiVariant variant = FetiVariant::feti1;
-  FactorKind factor = FactorKind::automatic;
-  int threads = 0;  ///< OpenMP threads over subdomains; 0: the runtime default
+  FactorKind factor = FactorKind::simplicial;
+  /// OpenMP threads over subdomains; 0: the runtime default. Supernodal factors run on one
+  /// thread: they call BLAS, and Debian's serial OpenBLAS is not safe to call concurrently.
+  int threads = 0;
 };
 
 /// Relative stopping test of every path (the seed's, with its "N f" read as the dual

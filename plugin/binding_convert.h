@@ -1,0 +1,28 @@
+// Conversions between FreeFEM's script types and the core's types. No numerics here.
+#pragma once
+
+#include "ff++.hpp"
+
+#include "feti/problem_input.h"
+
+#include <string>
+#include <vector>
+
+namespace ffeti::binding {
+
+/// A FreeFEM sparse matrix as a full (both triangles) Eigen matrix; `half` storage
+/// (sym=1 assembly) is expanded. `name` is used in error messages, e.g. "K[3]".
+SparseMatrix to_sparse(Matrice_Creuse<double>& matrix, const std::string& name);
+
+Vec to_vec(const KN<double>& values);
+std::vector<double> to_std(const KN<double>& values);
+/// Integer list; throws InputError naming `name` for an entry outside [0, bound).
+std::vector<int> to_indices(const KN<long>& values, long bound, const std::string& name);
+
+/// Per-subdomain integer lists from an optional int[int][int] argument (nullptr: none).
+std::vector<std::vector<int>> to_index_lists(const KN<KN<long>>* lists, const std::vector<long>& bounds,
+                                             const std::string& name);
+
+void copy_to(const Vec& from, KN<double>& to);
+
+}  // namespace ffeti::binding

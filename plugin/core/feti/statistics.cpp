@@ -1,0 +1,67 @@
+#include "feti/statistics.h"
+
+#include <sstream>
+
+namespace ffeti {
+
+int status_code(SolveStatus status) { return static_cast<int>(status); }
+
+Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
+  const Constraints& c = problem.constraints();
+  const PhaseTimes& setup = problem.setup_times();
+  Statistics s = {
+      {"subdomains", problem.subdomain_count()},
+      {"primal", static_cast<double>(problem.primal_dimension())},
+      {"dual", problem.dual_dimension()},
+      {"equality_rows", c.equality_rows},
+      {"gluing_rows", c.count(RowKind::gluing)},
+      {"dirichlet_rows", c.count(RowKind::dirichlet)},
+      {"couples", c.count(RowKind::contact)},
+      {"floating", problem.floating_subdomains()},
+      {"coarse", problem.coarse_dimension()},
+      {"factor_nnz", problem.factor_nonzeros()},
+      {"time_constraints", setup.constraints},
+      {"time_factor", setup.factorization},
+      {"time_coarse", setup.coarse_space},
+      {"time_dual_data", setup.dual_data},
+  };
+  if (!result) return s;
+  const Statistics solve = {
+      {"status", status_code(result->status)},
+      {"active", result->active_contact},
+      {"outer", result->counts.outer},
+      {"hessian", result->counts.hessian},
+      {"hessian_norm_estimate", result->counts.hessian_norm_estimate},
+      {"cg", result->counts.cg},
+      {"expansion", result->counts.expansion},
+      {"proportioning", result->counts.proportioning},
+      {"energy", result->energy},
+      {"gradient_norm", result->gradient_norm},
+      {"gradient_reference", result->gradient_reference},
+      {"equality_norm", result->equality_norm},
+      {"equality_reference", result->equality_reference},
+      {"kkt_equilibrium", result->kkt.equilibrium},
+      {"kkt_equality", result->kkt.equality},
+      {"kkt_inequality", result->kkt.inequality},
+      {"kkt_dual", result->kkt.dual_feasibility},
+      {"kkt_complementarity", result->kkt.complementarity},
+      {"time_norm_estimate", result->times.norm_estimate},
+      {"time_solve", result->times.solve},
+      {"time_recovery", result->times.recovery},
+      {"time_kkt", result->times.kkt},
+  };
+  s.insert(s.end(), solve.begin(), solve.end());
+  return s;
+}
+
+std::string format_report(const FetiProblem& problem, const FetiResult* result) {
+  std::ostringstream out;
+  out.precision(10);
+  out << "variant=" << (problem.variant() == FetiVariant::feti1 ? "feti1" : "tfeti")
+      << " path=" << problem.path();
+  if (result) out << " status_name=" << to_string(result->status);
+  for (const auto& [key, value] : statistics(problem, result)) out << ' ' << key << '=' << value;
+  return out.str();
+}
+
+}  // namespace ffeti

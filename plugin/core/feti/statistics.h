@@ -1,0 +1,26 @@
+// The statistics of a solve as named numbers, in one fixed order: what fetiInfo returns
+// by key and fetiReport prints as "key=value" pairs.
+#pragma once
+
+#include "feti/feti_problem.h"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ffeti {
+
+using Statistics = std::vector<std::pair<std::string, double>>;
+
+/// Dimensions and setup times of the problem, and (when `result` is given) the solve's
+/// status code (0 = converged, see status_code), counts, residuals, energy and times.
+Statistics statistics(const FetiProblem& problem, const FetiResult* result);
+
+/// 0 converged, 1 max_iterations, 2 stagnated, 3 not_positive_definite, 4 infeasible,
+/// 5 invalid_input: the integer fetiSolve returns.
+int status_code(SolveStatus status);
+
+/// "key=value key=value ..." with the path and status as words.
+std::string format_report(const FetiProblem& problem, const FetiResult* result);
+
+}  // namespace ffeti

@@ -1,0 +1,284 @@
+// FreeFEM binding of ffeti: converts script data to core types, keeps problems behind
+// integer handles between calls, prints progress on request, turns core errors into
+// FreeFEM errors. No numerics here: everything numerical lives in plugin/core.
+#include "ff++.hpp"
+
+#include "binding_convert.h"
+#include "feti/errors.h"
+#include "feti/feti_problem.h"
+#include "feti/statistics.h"
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <optional>
+
+namespace {
+
+using namespace ffeti;
+
+/// A set-up problem and its last solution. Lives until fetiFree or the end of the process.
+struct Handle {
+  std::unique_ptr<FetiProblem> problem;
+  std::optional<FetiResult> result;
+};
+
+std::map<long, Handle>& handles() {
+  static std::map<long, Handle> registry;
+  return registry;
+}
+
+Handle& handle(long id, const char* function) {
+  const auto it = handles().find(id);
+  if (it == handles().end())
+    throw InputError(std::string(function) + ": no ffeti problem with handle " + std::to_string(id) +
+                     " (freed, or not returned by fetiSetup)");
+  return it->second;
+}
+
+/// Runs `body`, turning every core exception into a FreeFEM error the script can catch.
+template <class F>
+auto guarded(const char* function, F&& body) -> decltype(body()) {
+  try {
+    return body();
+  } catch (const std::exception& error) {
+    const std::string message = std::string(function) + ": " + error.what();
+    ExecError(message.c_str());
+  }
+  return decltype(body())();
+}
+
+template <class T>
+T* optional_pointer(Expression e, Stack stack) {
+  return e ? GetAny<T*>((*e)(stack)) : nullptr;
+}
+double optional_real(Expression e, Stack stack, double fallback) {
+  return e ? GetAny<double>((*e)(stack)) : fallback;
+}
+long optional_int(Expression e, Stack stack, long fallback) {
+  return e ? GetAny<long>((*e)(stack)) : fallback;
+}
+std::string optional_string(Expression e, Stack stack, const std::string& fallback) {
+  return e ? *GetAny<std::string*>((*e)(stack)) : fallback;
+}
+
+// ---- int P = fetiSetup(K, F, X, Y, body, dirichlet=..., contactSlave=..., ...) ----------
+class FetiSetup : public E_F0mps {
+ public:
+  typedef long Result;
+  static const int n_name_param = 9;
+  static basicAC_F0::name_and_type name_param[];
+  Expression nargs[n_name_param];
+  Expression K, F, X, Y, body;
+
+  explicit FetiSetup(const basicAC_F0& args) {
+    args.SetNameParam(n_name_param, name_param, nargs);
+    K = to<KN<Matrice_Creuse<double>>*>(args[0]);
+    F = to<KN<KN<double>>*>(args[1]);
+    X = to<KN<KN<double>>*>(args[2]);
+    Y = to<KN<KN<double>>*>(args[3]);
+    body = to<KN<long>*>(args[4]);
+  }
+  static ArrayOfaType typeargs() {
+    return ArrayOfaType(atype<KN<Matrice_Creuse<double>>*>(), atype<KN<KN<double>>*>(),
+                        atype<KN<KN<double>>*>(), atype<KN<KN<double>>*>(), atype<KN<long>*>());
+  }
+  static E_F0* f(const basicAC_F0& args) { return new FetiSetup(args); }
+
+  AnyType operator()(Stack stack) const {
+    return SetAny<long>(guarded("fetiSetup", [&] { return setup(stack); }));
+  }
+
+ private:
+  long setup(Stack stack) const {
+    auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
+    auto& Fs = *GetAny<KN<KN<double>>*>((*F)(stack));
+    auto& Xs = *GetAny<KN<KN<double>>*>((*X)(stack));
+    auto& Ys = *GetAny<KN<KN<double>>*>((*Y)(stack));
+    auto& bodies = *GetAny<KN<long>*>((*body)(stack));
+    const long count = Ks.N();
+    const std::pair<const char*, long> sizes[] = {{"F", Fs.N()}, {"X", Xs.N()}, {"Y", Ys.N()}, {"body", bodies.N()}};
+    for (const auto& [name, n] : sizes)
+      if (n != count)
+        throw InputError(std::string(name) + ": has " + std::to_string(n) + " entries, K has " +
+                         std::to_string(count) + " subdomains");
+
+    std::vector<SubdomainInput> subdomains(static_cast<size_t>(count));
+    std::vector<long> dofs;
+    for (long s = 0; s < count; ++s) {
+      SubdomainInput& sub = subdomains[static_cast<size_t>(s)];
+      sub.K = binding::to_sparse(Ks[s], "K[" + std::to_string(s) + "]");
+      sub.f = binding::to_vec(Fs[s]);
+      sub.x = binding::to_std(Xs[s]);
+      sub.y = binding::to_std(Ys[s]);
+      sub.body = static_cast<int>(bodies[s]);
+      dofs.push_back(sub.K.rows());
+    }
+    const auto dirichlet = binding::to_index_lists(optional_pointer<KN<KN<long>>>(nargs[0], stack), dofs, "dirichlet");
+    const auto* values = optional_pointer<KN<KN<double>>>(nargs[1], stack);
+    const auto components = binding::to_index_lists(optional_pointer<KN<KN<long>>>(nargs[5], stack), dofs, "component");
+    if (values && values->N() != count)
+      throw InputError("dirichletValues: has " + std::to_string(values->N()) + " entries for " +
+                       std::to_string(count) + " subdomains");
+    for (long s = 0; s < count; ++s) {
+      SubdomainInput& sub = subdomains[static_cast<size_t>(s)];
+      if (!dirichlet.empty()) sub.dirichlet_dofs = dirichlet[static_cast<size_t>(s)];
+      if (values) sub.dirichlet_values = binding::to_std((*values)[s]);
+      if (!components.empty())
+        sub.component.assign(components[static_cast<size_t>(s)].begin(), components[static_cast<size_t>(s)].end());
+    }
+
+    NodeToNodeContact contact;
+    contact.slave_dofs = binding::to_index_lists(optional_pointer<KN<KN<long>>>(nargs[2], stack), dofs, "contactSlave");
+    contact.master_dofs = binding::to_index_lists(optional_pointer<KN<KN<long>>>(nargs[3], stack), dofs, "contactMaster");
+    contact.gap = optional_real(nargs[4], stack, 0.0);
+
+    FetiSetupSettings settings;
+    const std::string variant = optional_string(nargs[6], stack, "feti1");
+    if (variant == "feti1") settings.variant = FetiVariant::feti1;
+    else if (variant == "tfeti") settings.variant = FetiVariant::tfeti;
+    else throw InputError("variant: \"" + variant + "\" is not one of \"feti1\", \"tfeti\"");
+    const std::string factor = optional_string(nargs[7], stack, "simplicial");
+    if (factor == "simplicial") settings.factor = FactorKind::simplicial;
+    else if (factor == "supernodal") settings.factor = FactorKind::supernodal;
+    else throw InputError("factor: \"" + factor + "\" is not one of \"simplicial\", \"supernodal\"");
+    settings.threads = static_cast<int>(optional_int(nargs[8], stack, 0));
+    if (settings.threads < 0) throw InputError("threads: must be >= 0 (0: OpenMP's default)");
+
+    const long id = handles().empty() ? 1 : handles().rbegin()->first + 1;
+    handles()[id].problem = std::make_unique<FetiProblem>(std::move(subdomains), contact, settings);
+    return id;
+  }
+};
+
+basicAC_F0::name_and_type FetiSetup::name_param[] = {
+    {"dirichlet", &typeid(KN<KN<long>>*)},       {"dirichletValues", &typeid(KN<KN<double>>*)},
+    {"contactSlave", &typeid(KN<KN<long>>*)},    {"contactMaster", &typeid(KN<KN<long>>*)},
+    {"gap", &typeid(double)},                    {"component", &typeid(KN<KN<long>>*)},
+    {"variant", &typeid(std::string*)},          {"factor", &typeid(std::string*)},
+    {"threads", &typeid(long)}};
+
+// ---- int status = fetiSolve(P, U, lambda=..., tol=..., maxit=..., algorithm=..., verbosity=...)
+class FetiSolve : public E_F0mps {
+ public:
+  typedef long Result;
+  static const int n_name_param = 9;
+  static basicAC_F0::name_and_type name_param[];
+  Expression nargs[n_name_param];
+  Expression id, U;
+
+  explicit FetiSolve(const basicAC_F0& args) {
+    args.SetNameParam(n_name_param, name_param, nargs);
+    id = to<long>(args[0]);
+    U = to<KN<KN<double>>*>(args[1]);
+  }
+  static ArrayOfaType typeargs() { return ArrayOfaType(atype<long>(), atype<KN<KN<double>>*>()); }
+  static E_F0* f(const basicAC_F0& args) { return new FetiSolve(args); }
+
+  AnyType operator()(Stack stack) const {
+    return SetAny<long>(guarded("fetiSolve", [&] { return solve(stack); }));
+  }
+
+ private:
+  long solve(Stack stack) const {
+    Handle& h = handle(GetAny<long>((*id)(stack)), "fetiSolve");
+    DualSolveSettings settings;
+    settings.tolerance = optional_real(nargs[1], stack, settings.tolerance);
+    settings.max_hessian = static_cast<int>(optional_int(nargs[2], stack, settings.max_hessian));
+    const std::string algorithm = optional_string(nargs[3], stack, "smalbe-m");
+    if (algorithm == "smalbe-m") settings.smalbe.variant = SmalbeVariant::smalbe_m;
+    else if (algorithm == "seed") settings.smalbe.variant = SmalbeVariant::seed_alg31;
+    else throw InputError("algorithm: \"" + algorithm + "\" is not one of \"smalbe-m\", \"seed\"");
+    const long verbosity = optional_int(nargs[4], stack, 0);
+    settings.smalbe.rho_factor = optional_real(nargs[5], stack, settings.smalbe.rho_factor);
+    settings.smalbe.M_factor = optional_real(nargs[6], stack, settings.smalbe.M_factor);
+    settings.smalbe.eta_factor = optional_real(nargs[7], stack, settings.smalbe.eta_factor);
+    settings.mprgp.gamma = optional_real(nargs[8], stack, settings.mprgp.gamma);
+    if (verbosity >= 2)
+      settings.monitor = [](const ProgressLine& line) {
+        std::printf("  ffeti %-6s %4d  ||gP|| %.3e  ||G l - e|| %.3e\n", line.solver, line.iteration,
+                    line.gradient_norm, line.equality_norm);
+      };
+
+    h.result = h.problem->solve(settings);
+    const FetiResult& r = *h.result;
+    auto& u = *GetAny<KN<KN<double>>*>((*U)(stack));
+    u.resize(static_cast<long>(r.u.size()));
+    for (size_t s = 0; s < r.u.size(); ++s) binding::copy_to(r.u[s], u[static_cast<long>(s)]);
+    if (auto* lambda = optional_pointer<KN<double>>(nargs[0], stack)) binding::copy_to(r.lambda, *lambda);
+    if (verbosity >= 1)
+      std::printf("ffeti: %s after %d Hessian multiplications (%d outer), path %s, ||gP||/||b|| %.2e\n",
+                  to_string(r.status).c_str(), r.counts.hessian, r.counts.outer, r.path.c_str(),
+                  r.gradient_norm / r.gradient_reference);
+    std::fflush(stdout);
+    return status_code(r.status);
+  }
+};
+
+basicAC_F0::name_and_type FetiSolve::name_param[] = {
+    {"lambda", &typeid(KN<double>*)}, {"tol", &typeid(double)},       {"maxit", &typeid(long)},
+    {"algorithm", &typeid(std::string*)}, {"verbosity", &typeid(long)}, {"rho", &typeid(double)},
+    {"M", &typeid(double)},           {"eta", &typeid(double)},       {"gamma", &typeid(double)}};
+
+// ---- small functions -------------------------------------------------------------------
+double feti_info(const long& id, std::string* const& key) {
+  return guarded("fetiInfo", [&] {
+    const Handle& h = handle(id, "fetiInfo");
+    const FetiResult* result = h.result ? &*h.result : nullptr;
+    std::string known;
+    for (const auto& [name, value] : statistics(*h.problem, result)) {
+      if (name == *key) return value;
+      known += " " + name;
+    }
+    throw InputError("key: \"" + *key + "\" is not a statistic" +
+                     (result ? "" : " before fetiSolve") + "; known keys:" + known);
+  });
+}
+
+std::string* feti_report(Stack stack, const long& id) {
+  const std::string text = guarded("fetiReport", [&] {
+    const Handle& h = handle(id, "fetiReport");
+    return format_report(*h.problem, h.result ? &*h.result : nullptr);
+  });
+  return Add2StackOfPtr2Free(stack, new std::string(text));
+}
+
+long feti_set_loads(const long& id, KN<KN<double>>* const& loads) {
+  return guarded("fetiSetLoads", [&] {
+    Handle& h = handle(id, "fetiSetLoads");
+    std::vector<Vec> f;
+    for (long s = 0; s < loads->N(); ++s) f.push_back(binding::to_vec((*loads)[s]));
+    h.problem->set_loads(f);
+    h.result.reset();
+    return 0L;
+  });
+}
+
+/// Wall-clock seconds since an arbitrary origin: FreeFEM's clock() is CPU time, which
+/// overstates the time of threaded phases.
+double feti_wall_time() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+long feti_free(const long& id) {
+  return guarded("fetiFree", [&] {
+    handle(id, "fetiFree");
+    handles().erase(id);
+    return 0L;
+  });
+}
+
+}  // namespace
+
+static void Load_Init() {
+  Global.Add("fetiSetup", "(", new OneOperatorCode<FetiSetup>());
+  Global.Add("fetiSolve", "(", new OneOperatorCode<FetiSolve>());
+  Global.Add("fetiInfo", "(", new OneOperator2_<double, long, std::string*>(feti_info));
+  Global.Add("fetiReport", "(", new OneOperator1s_<std::string*, long>(feti_report));
+  Global.Add("fetiSetLoads", "(", new OneOperator2_<long, long, KN<KN<double>>*>(feti_set_loads));
+  Global.Add("fetiFree", "(", new OneOperator1_<long, long>(feti_free));
+  Global.Add("fetiWallTime", "(", new OneOperator0<double>(feti_wall_time));
+}
+
+LOADFUNC(Load_Init)
