@@ -32,7 +32,10 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
   SmalbeResult result;
   double rho = settings.rho_factor * problem.hessian_norm;
   double M = settings.M_factor * std::max(problem.hessian_norm, rho);
-  double eta = settings.eta_factor * b.norm();
+  // eta bounds ||gP|| in SMALBE-M (units of b) but ||Qx|| in the seed's Algorithm 3.1
+  // (units of x): scale it by 1/||A|| there.
+  double eta = settings.eta_factor * b.norm() /
+               (settings.variant == SmalbeVariant::smalbe_m ? 1.0 : std::max(problem.hessian_norm, rho));
   Vec nu = Vec::Zero(n);           // multiplier term C'mu, kept in Im C'
   Vec shifted_b = b;               // b - nu: linear term of the inner problem
   Vec Qx(n), Qv(n), g(n);  // Qx: Q at the iterate; Qv: scratch of the operator A
