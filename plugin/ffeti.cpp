@@ -29,10 +29,10 @@ std::map<long, Handle>& handles() {
   return registry;
 }
 
-Handle& handle(long id, const char* function) {
+Handle& handle(long id) {
   const auto it = handles().find(id);
   if (it == handles().end())
-    throw InputError(std::string(function) + ": no ffeti problem with handle " + std::to_string(id) +
+    throw InputError("P: no ffeti problem with handle " + std::to_string(id) +
                      " (freed, or not returned by fetiSetup)");
   return it->second;
 }
@@ -182,7 +182,7 @@ class FetiSolve : public E_F0mps {
 
  private:
   long solve(Stack stack) const {
-    Handle& h = handle(GetAny<long>((*id)(stack)), "fetiSolve");
+    Handle& h = handle(GetAny<long>((*id)(stack)));
     DualSolveSettings settings;
     settings.tolerance = optional_real(nargs[1], stack, settings.tolerance);
     settings.max_hessian = static_cast<int>(optional_int(nargs[2], stack, settings.max_hessian));
@@ -224,7 +224,7 @@ basicAC_F0::name_and_type FetiSolve::name_param[] = {
 // ---- small functions -------------------------------------------------------------------
 double feti_info(const long& id, std::string* const& key) {
   return guarded("fetiInfo", [&] {
-    const Handle& h = handle(id, "fetiInfo");
+    const Handle& h = handle(id);
     const FetiResult* result = h.result ? &*h.result : nullptr;
     std::string known;
     for (const auto& [name, value] : statistics(*h.problem, result)) {
@@ -238,7 +238,7 @@ double feti_info(const long& id, std::string* const& key) {
 
 std::string* feti_report(Stack stack, const long& id) {
   const std::string text = guarded("fetiReport", [&] {
-    const Handle& h = handle(id, "fetiReport");
+    const Handle& h = handle(id);
     return format_report(*h.problem, h.result ? &*h.result : nullptr);
   });
   return Add2StackOfPtr2Free(stack, new std::string(text));
@@ -246,7 +246,7 @@ std::string* feti_report(Stack stack, const long& id) {
 
 long feti_set_loads(const long& id, KN<KN<double>>* const& loads) {
   return guarded("fetiSetLoads", [&] {
-    Handle& h = handle(id, "fetiSetLoads");
+    Handle& h = handle(id);
     std::vector<Vec> f;
     for (long s = 0; s < loads->N(); ++s) f.push_back(binding::to_vec((*loads)[s]));
     h.problem->set_loads(f);
@@ -254,6 +254,43 @@ long feti_set_loads(const long& id, KN<KN<double>>* const& loads) {
     return 0L;
   });
 }
+
+/// Fills xc, yc with the slave positions of the contact rows and lc with their multipliers
+/// from the last solve; returns the number of contact rows.
+class FetiContact : public E_F0mps {
+ public:
+  typedef long Result;
+  Expression id, xc, yc, lc;
+  explicit FetiContact(const basicAC_F0& args) {
+    args.SetNameParam(0, nullptr, nullptr);
+    id = to<long>(args[0]);
+    xc = to<KN<double>*>(args[1]);
+    yc = to<KN<double>*>(args[2]);
+    lc = to<KN<double>*>(args[3]);
+  }
+  static ArrayOfaType typeargs() {
+    return ArrayOfaType(atype<long>(), atype<KN<double>*>(), atype<KN<double>*>(), atype<KN<double>*>());
+  }
+  static E_F0* f(const basicAC_F0& args) { return new FetiContact(args); }
+  AnyType operator()(Stack stack) const {
+    return SetAny<long>(guarded("fetiContact", [&] {
+      const Handle& h = handle(GetAny<long>((*id)(stack)));
+      if (!h.result) throw InputError("no solution yet: call fetiSolve first");
+      const auto rows = contact_multipliers(*h.problem, *h.result);
+      auto& x = *GetAny<KN<double>*>((*xc)(stack));
+      auto& y = *GetAny<KN<double>*>((*yc)(stack));
+      auto& l = *GetAny<KN<double>*>((*lc)(stack));
+      const long count = static_cast<long>(rows.size());
+      x.resize(count), y.resize(count), l.resize(count);
+      for (long k = 0; k < count; ++k) {
+        x[k] = rows[static_cast<size_t>(k)].x;
+        y[k] = rows[static_cast<size_t>(k)].y;
+        l[k] = rows[static_cast<size_t>(k)].lambda;
+      }
+      return count;
+    }));
+  }
+};
 
 /// Wall-clock seconds since an arbitrary origin: FreeFEM's clock() is CPU time, which
 /// overstates the time of threaded phases.
@@ -263,7 +300,7 @@ double feti_wall_time() {
 
 long feti_free(const long& id) {
   return guarded("fetiFree", [&] {
-    handle(id, "fetiFree");
+    handle(id);
     handles().erase(id);
     return 0L;
   });
@@ -278,6 +315,7 @@ static void Load_Init() {
   Global.Add("fetiReport", "(", new OneOperator1s_<std::string*, long>(feti_report));
   Global.Add("fetiSetLoads", "(", new OneOperator2_<long, long, KN<KN<double>>*>(feti_set_loads));
   Global.Add("fetiFree", "(", new OneOperator1_<long, long>(feti_free));
+  Global.Add("fetiContact", "(", new OneOperatorCode<FetiContact>());
   Global.Add("fetiWallTime", "(", new OneOperator0<double>(feti_wall_time));
 }
 

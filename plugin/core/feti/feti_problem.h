@@ -83,6 +83,8 @@ class FetiProblem {
   int floating_subdomains() const;
   int coarse_dimension() const { return coarse_ ? coarse_->dimension() : 0; }
   const Constraints& constraints() const { return constraints_; }
+  /// The input as given (original K_s and current loads f_s).
+  const std::vector<SubdomainInput>& inputs() const { return inputs_; }
   const PhaseTimes& setup_times() const { return setup_times_; }
   FetiVariant variant() const { return settings_.variant; }
   double factor_nonzeros() const;

@@ -54,12 +54,25 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
   return s;
 }
 
+std::vector<ContactMultiplier> contact_multipliers(const FetiProblem& problem, const FetiResult& result) {
+  const Constraints& c = problem.constraints();
+  std::vector<ContactMultiplier> rows;
+  for (int i = c.equality_rows; i < c.rows(); ++i) {
+    if (c.kind[static_cast<size_t>(i)] != RowKind::contact) continue;
+    const ConstraintEntry& slave = c.entries[static_cast<size_t>(c.row_start[static_cast<size_t>(i)])];
+    const SubdomainInput& sub = problem.inputs()[static_cast<size_t>(slave.subdomain)];
+    rows.push_back({sub.x[static_cast<size_t>(slave.dof)], sub.y[static_cast<size_t>(slave.dof)],
+                    result.lambda.size() ? result.lambda[i] : 0.0});
+  }
+  return rows;
+}
+
 std::string format_report(const FetiProblem& problem, const FetiResult* result) {
   std::ostringstream out;
   out.precision(10);
   out << "variant=" << (problem.variant() == FetiVariant::feti1 ? "feti1" : "tfeti")
       << " path=" << problem.path();
-  if (result) out << " status_name=" << to_string(result->status);
+  if (result) out << " status_name=" << to_string(result->status) << " phases=" << result->phases;
   for (const auto& [key, value] : statistics(problem, result)) out << ' ' << key << '=' << value;
   return out.str();
 }

@@ -20,6 +20,13 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result);
 /// 5 invalid_input: the integer fetiSolve returns.
 int status_code(SolveStatus status);
 
+/// One contact row: the position of its slave dof and its multiplier (the contact force).
+struct ContactMultiplier {
+  double x, y, lambda;
+};
+/// The contact rows of a solve, in row order.
+std::vector<ContactMultiplier> contact_multipliers(const FetiProblem& problem, const FetiResult& result);
+
 /// "key=value key=value ..." with the path and status as words.
 std::string format_report(const FetiProblem& problem, const FetiResult* result);
 
