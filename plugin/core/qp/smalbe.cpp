@@ -51,6 +51,7 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
 
   for (int outer = 0;; ++outer) {
     bool globally_done = false;
+    bool first_call = true;
     const StopTest inner_stop = [&](const Vec& xi, const Vec& gi, double gp_norm) {
       problem.range_projector(xi, Qx);
       const double q_norm = Qx.norm();
@@ -60,6 +61,9 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
       result.equality_norm = q_norm;
       if (monitor) monitor({"smalbe", outer, result.projected_gradient_norm, q_norm});
       if (stop(xi, result.projected_gradient_norm, Qx)) return globally_done = true;
+      // At least one inner step per outer iteration: a multiplier update that the inner
+      // solver does not answer only grows nu, and can stall the outer loop for many rounds.
+      if (first_call) return first_call = false;
       const double bound = settings.variant == SmalbeVariant::smalbe_m ? std::min(M * q_norm, eta)
                                                                         : M * q_norm;
       return gp_norm <= bound;
