@@ -92,7 +92,7 @@ def write_plots(sizes, default, direct, accuracy, reference_energy):
     left.legend(fontsize=8)
     solve_time = [f(r, "time_factor") + f(r, "time_solve") + f(r, "time_recovery") for r in default]
     right.loglog(sizes, solve_time, "o-", label="ffeti: factorization + dual solve + recovery")
-    right.loglog(sizes, [f(r, "time_assembly") for r in default], "s--", label="FreeFEM assembly (per subdomain)")
+    right.loglog(sizes, [f(r, "time_assembly") for r in default], "s--", label="FreeFEM assembly of the subdomain data")
     right.loglog(sizes, [f(r, "time_last_solve") for r in direct], "d-.", label="UMFPACK, final contact set fixed")
     right.loglog(sizes, [f(r, "time_pdas") for r in direct], "x:", label="primal-dual active set + UMFPACK")
     right.set_xscale("log", base=2)
