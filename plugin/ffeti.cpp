@@ -195,12 +195,17 @@ class FetiSolve : public E_F0mps {
     settings.smalbe.M_factor = optional_real(nargs[6], stack, settings.smalbe.M_factor);
     settings.smalbe.eta_factor = optional_real(nargs[7], stack, settings.smalbe.eta_factor);
     settings.mprgp.gamma = optional_real(nargs[8], stack, settings.mprgp.gamma);
-    if (verbosity >= 2)
-      settings.monitor = [](const ProgressLine& line) {
-        std::printf("  ffeti %-6s %4d  ||gP|| %.3e  ||G l - e|| %.3e\n", line.solver, line.iteration,
+    // Like PETSc's monitors: verbosity 1 prints one line per iteration of the outer solver
+    // (SMALBE's multiplier updates, or every MPRGP / CG step), 2 also every inner step.
+    int last_outer = -1;
+    if (verbosity >= 1)
+      settings.monitor = [verbosity, &last_outer](const ProgressLine& line) {
+        const bool outer_solver = std::string(line.solver) == "smalbe";
+        if (outer_solver && verbosity < 2 && line.iteration == last_outer) return;
+        last_outer = line.iteration;
+        std::printf("  ffeti %-6s %4d  ||gP|| %.3e  ||Q mu|| %.3e\n", line.solver, line.iteration,
                     line.gradient_norm, line.equality_norm);
       };
-
     h.result = h.problem->solve(settings);
     const FetiResult& r = *h.result;
     auto& u = *GetAny<KN<KN<double>>*>((*U)(stack));
