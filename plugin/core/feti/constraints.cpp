@@ -17,76 +17,41 @@ struct Row {
   bool equality = true;
 };
 
-/// A dof located by body, component and its node's coordinates snapped to a fine grid.
-struct LocatedDof {
-  int body, component;
+/// A record with its node snapped to a grid of the snapping length.
+struct Located {
+  const DofRecord* record;
   long long ix, iy;
-  int subdomain, dof;
-  auto position() const { return std::tie(component, ix, iy); }
-  auto key() const { return std::tie(body, component, ix, iy); }
-  bool operator<(const LocatedDof& o) const {
-    return std::tie(body, component, ix, iy, subdomain, dof) <
-           std::tie(o.body, o.component, o.ix, o.iy, o.subdomain, o.dof);
-  }
+  auto key() const { return std::tie(record->body, record->component, ix, iy); }
+  auto position() const { return std::tie(record->component, ix, iy); }
 };
 
-/// Coordinates closer than this are the same node (relative to the model's size).
-double snapping_length(const std::vector<SubdomainInput>& subdomains) {
-  double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
-  for (const auto& s : subdomains)
-    for (size_t i = 0; i < s.x.size(); ++i) {
-      lo_x = std::min(lo_x, s.x[i]), hi_x = std::max(hi_x, s.x[i]);
-      lo_y = std::min(lo_y, s.y[i]), hi_y = std::max(hi_y, s.y[i]);
-    }
-  const double diagonal = std::hypot(hi_x - lo_x, hi_y - lo_y);
-  return 1e-9 * (diagonal > 0 ? diagonal : 1.0);
+std::vector<Located> locate(const std::vector<DofRecord>& records, double snap,
+                            bool (*select)(const DofRecord&)) {
+  std::vector<Located> located;
+  for (const DofRecord& r : records)
+    if (select(r)) located.push_back({&r, std::llround(r.x / snap), std::llround(r.y / snap)});
+  std::stable_sort(located.begin(), located.end(), [](const Located& a, const Located& b) {
+    return std::tie(a.record->body, a.record->component, a.ix, a.iy, a.record->subdomain, a.record->dof) <
+           std::tie(b.record->body, b.record->component, b.ix, b.iy, b.record->subdomain, b.record->dof);
+  });
+  return located;
 }
 
-LocatedDof locate(const std::vector<SubdomainInput>& subdomains, int s, int dof, double snap) {
-  const SubdomainInput& sub = subdomains[static_cast<size_t>(s)];
-  const auto i = static_cast<size_t>(dof);
-  return {sub.body, sub.component.empty() ? 0 : sub.component[i], std::llround(sub.x[i] / snap),
-          std::llround(sub.y[i] / snap), s, dof};
-}
-
-struct DirichletLookup {
-  std::vector<std::vector<char>> is_fixed;
-  std::vector<std::vector<double>> value;
-  explicit DirichletLookup(const std::vector<SubdomainInput>& subdomains) {
-    for (const auto& sub : subdomains) {
-      is_fixed.emplace_back(sub.x.size(), 0);
-      value.emplace_back(sub.x.size(), 0.0);
-      for (size_t k = 0; k < sub.dirichlet_dofs.size(); ++k) {
-        const auto i = static_cast<size_t>(sub.dirichlet_dofs[k]);
-        is_fixed.back()[i] = 1;
-        value.back()[i] = sub.dirichlet_values.empty() ? 0.0 : sub.dirichlet_values[k];
-      }
-    }
-  }
-  bool fixed(int s, int dof) const {
-    return is_fixed[static_cast<size_t>(s)][static_cast<size_t>(dof)] != 0;
-  }
-};
-
-void add_gluing_rows(const std::vector<SubdomainInput>& subdomains, const DirichletLookup& dirichlet,
-                     double snap, std::vector<Row>& rows) {
-  std::vector<LocatedDof> dofs;
-  for (int s = 0; s < static_cast<int>(subdomains.size()); ++s)
-    for (int i = 0; i < static_cast<int>(subdomains[static_cast<size_t>(s)].x.size()); ++i)
-      dofs.push_back(locate(subdomains, s, i, snap));
-  std::sort(dofs.begin(), dofs.end());
+void add_gluing_rows(const std::vector<DofRecord>& records, double snap, std::vector<Row>& rows) {
+  const std::vector<Located> dofs = locate(records, snap, [](const DofRecord&) { return true; });
   for (size_t first = 0; first < dofs.size();) {
     size_t last = first + 1;
     while (last < dofs.size() && dofs[last].key() == dofs[first].key()) ++last;
-    std::vector<const LocatedDof*> free_copies, fixed_copies;
+    std::vector<const DofRecord*> free_copies, fixed_copies;
     for (size_t k = first; k < last; ++k) {
-      if (k > first && dofs[k].subdomain == dofs[k - 1].subdomain)
-        throw InputError("X[" + std::to_string(dofs[k].subdomain) + "], Y[" +
-                         std::to_string(dofs[k].subdomain) + "]: dofs " +
-                         std::to_string(dofs[k - 1].dof) + " and " + std::to_string(dofs[k].dof) +
-                         " of one subdomain share a position and component");
-      (dirichlet.fixed(dofs[k].subdomain, dofs[k].dof) ? fixed_copies : free_copies)
-          .push_back(&dofs[k]);
+      const DofRecord& r = *dofs[k].record;
+      if (k > first && r.subdomain == dofs[k - 1].record->subdomain) {
+        if (r.dof == dofs[k - 1].record->dof) continue;  // the same dof, recorded twice
+        throw InputError("X[" + std::to_string(r.subdomain) + "], Y[" + std::to_string(r.subdomain) +
+                         "]: dofs " + std::to_string(dofs[k - 1].record->dof) + " and " +
+                         std::to_string(r.dof) + " of one subdomain share a position and component");
+      }
+      (r.fixed ? fixed_copies : free_copies).push_back(&r);
     }
     // Chain the free copies and tie the chain to one fixed copy: with a Dirichlet row on
     // every fixed copy (Total FETI) or the fixed copies eliminated (FETI-1), B keeps full
@@ -100,67 +65,52 @@ void add_gluing_rows(const std::vector<SubdomainInput>& subdomains, const Dirich
   }
 }
 
-void add_dirichlet_rows(const std::vector<SubdomainInput>& subdomains, std::vector<Row>& rows) {
-  for (int s = 0; s < static_cast<int>(subdomains.size()); ++s) {
-    const SubdomainInput& sub = subdomains[static_cast<size_t>(s)];
-    for (size_t k = 0; k < sub.dirichlet_dofs.size(); ++k)
-      rows.push_back({{{s, sub.dirichlet_dofs[k], 1.0}},
-                      sub.dirichlet_values.empty() ? 0.0 : sub.dirichlet_values[k],
-                      RowKind::dirichlet, true});
-  }
+void add_dirichlet_rows(const std::vector<DofRecord>& records, std::vector<Row>& rows) {
+  for (const DofRecord& r : records)  // records are sorted by (subdomain, dof)
+    if (r.fixed) rows.push_back({{{r.subdomain, r.dof, 1.0}}, r.value, RowKind::dirichlet, true});
 }
 
-std::vector<LocatedDof> located_set(const std::vector<SubdomainInput>& subdomains,
-                                    const std::vector<std::vector<int>>& dofs, double snap) {
-  std::vector<LocatedDof> located;
-  for (int s = 0; s < static_cast<int>(dofs.size()); ++s)
-    for (int dof : dofs[static_cast<size_t>(s)]) located.push_back(locate(subdomains, s, dof, snap));
-  std::sort(located.begin(), located.end());
-  return located;
-}
-
-void add_contact_rows(const std::vector<SubdomainInput>& subdomains,
-                      const NodeToNodeContact& contact, double snap, std::vector<Row>& rows) {
-  std::vector<LocatedDof> slaves = located_set(subdomains, contact.slave_dofs, snap);
+void add_contact_rows(const std::vector<DofRecord>& records, double gap, double snap, std::vector<Row>& rows) {
+  std::vector<Located> slaves = locate(records, snap, [](const DofRecord& r) { return r.slave; });
   // One row per physical slave node: its copies in other subdomains are glued to it.
   slaves.erase(std::unique(slaves.begin(), slaves.end(),
-                           [](const LocatedDof& a, const LocatedDof& b) { return a.key() == b.key(); }),
+                           [](const Located& a, const Located& b) { return a.key() == b.key(); }),
                slaves.end());
-  std::vector<LocatedDof> masters = located_set(subdomains, contact.master_dofs, snap);
-  const auto by_position = [](const LocatedDof& a, const LocatedDof& b) {
-    return a.position() < b.position();
-  };
-  std::sort(masters.begin(), masters.end(), [&](const LocatedDof& a, const LocatedDof& b) {
-    return std::tie(a.component, a.ix, a.iy, a.subdomain, a.dof) <
-           std::tie(b.component, b.ix, b.iy, b.subdomain, b.dof);
-  });
-  for (const LocatedDof& slave : slaves) {
+  std::vector<Located> masters = locate(records, snap, [](const DofRecord& r) { return r.master; });
+  std::stable_sort(masters.begin(), masters.end(),
+                   [](const Located& a, const Located& b) { return a.position() < b.position(); });
+  const auto by_position = [](const Located& a, const Located& b) { return a.position() < b.position(); };
+  for (const Located& slave : slaves) {
     auto range = std::equal_range(masters.begin(), masters.end(), slave, by_position);
     auto master = std::find_if(range.first, range.second,
-                               [&](const LocatedDof& m) { return m.body != slave.body; });
-    if (master == range.second) {
-      const SubdomainInput& sub = subdomains[static_cast<size_t>(slave.subdomain)];
-      throw InputError("contactSlave[" + std::to_string(slave.subdomain) + "]: dof " +
-                       std::to_string(slave.dof) + " at (" +
-                       std::to_string(sub.x[static_cast<size_t>(slave.dof)]) + ", " +
-                       std::to_string(sub.y[static_cast<size_t>(slave.dof)]) +
+                               [&](const Located& m) { return m.record->body != slave.record->body; });
+    if (master == range.second)
+      throw InputError("contactSlave[" + std::to_string(slave.record->subdomain) + "]: dof " +
+                       std::to_string(slave.record->dof) + " at (" + std::to_string(slave.record->x) +
+                       ", " + std::to_string(slave.record->y) +
                        ") has no master dof of another body at the same position "
                        "(node-to-node contact needs matching meshes)");
-    }
-    rows.push_back({{{slave.subdomain, slave.dof, 1.0}, {master->subdomain, master->dof, -1.0}},
-                    contact.gap, RowKind::contact, false});
+    rows.push_back({{{slave.record->subdomain, slave.record->dof, 1.0},
+                     {master->record->subdomain, master->record->dof, -1.0}},
+                    gap, RowKind::contact, false});
   }
 }
 
 /// FETI-1: known Dirichlet values move to the right-hand side.
-void substitute_dirichlet(const DirichletLookup& dirichlet, std::vector<Row>& rows) {
+void substitute_dirichlet(const std::vector<DofRecord>& records, std::vector<Row>& rows) {
+  const auto find = [&](int s, int dof) {
+    auto it = std::lower_bound(records.begin(), records.end(), std::make_pair(s, dof),
+                               [](const DofRecord& r, const std::pair<int, int>& key) {
+                                 return std::make_pair(r.subdomain, r.dof) < key;
+                               });
+    return it != records.end() && it->subdomain == s && it->dof == dof && it->fixed ? &*it : nullptr;
+  };
   std::vector<Row> kept;
   for (Row& row : rows) {
     std::vector<ConstraintEntry> free_entries;
     for (const ConstraintEntry& e : row.entries) {
-      if (dirichlet.fixed(e.subdomain, e.dof))
-        row.rhs -= e.coefficient *
-                   dirichlet.value[static_cast<size_t>(e.subdomain)][static_cast<size_t>(e.dof)];
+      if (const DofRecord* fixed = find(e.subdomain, e.dof))
+        row.rhs -= e.coefficient * fixed->value;
       else
         free_entries.push_back(e);
     }
@@ -176,21 +126,136 @@ void substitute_dirichlet(const DirichletLookup& dirichlet, std::vector<Row>& ro
   rows = std::move(kept);
 }
 
+/// Subdomains whose inflated boxes overlap each cell of a uniform grid over all boxes:
+/// finds the boxes containing a point without testing all of them.
+class BoxGrid {
+ public:
+  BoxGrid(const std::vector<BoundingBox>& boxes, double margin) : boxes_(boxes), margin_(margin) {
+    lo_x_ = lo_y_ = INFINITY;
+    double hi_x = -INFINITY, hi_y = -INFINITY;
+    for (const BoundingBox& b : boxes) {
+      lo_x_ = std::min(lo_x_, b.x0), lo_y_ = std::min(lo_y_, b.y0);
+      hi_x = std::max(hi_x, b.x1), hi_y = std::max(hi_y, b.y1);
+    }
+    cells_ = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(boxes.size())))));
+    cell_x_ = std::max((hi_x - lo_x_) / cells_, margin), cell_y_ = std::max((hi_y - lo_y_) / cells_, margin);
+    members_.resize(static_cast<size_t>(cells_ * cells_));
+    for (int s = 0; s < static_cast<int>(boxes.size()); ++s) {
+      const BoundingBox& b = boxes[static_cast<size_t>(s)];
+      for (int j = cell(b.y0 - margin, lo_y_, cell_y_); j <= cell(b.y1 + margin, lo_y_, cell_y_); ++j)
+        for (int i = cell(b.x0 - margin, lo_x_, cell_x_); i <= cell(b.x1 + margin, lo_x_, cell_x_); ++i)
+          members_[static_cast<size_t>(j * cells_ + i)].push_back(s);
+    }
+  }
+  template <class F>
+  void for_each_containing(double x, double y, F&& visit) const {
+    const int i = cell(x, lo_x_, cell_x_), j = cell(y, lo_y_, cell_y_);
+    for (int s : members_[static_cast<size_t>(j * cells_ + i)]) {
+      const BoundingBox& b = boxes_[static_cast<size_t>(s)];
+      if (x >= b.x0 - margin_ && x <= b.x1 + margin_ && y >= b.y0 - margin_ && y <= b.y1 + margin_) visit(s);
+    }
+  }
+
+ private:
+  int cell(double v, double lo, double width) const {
+    return std::clamp(static_cast<int>(std::floor((v - lo) / width)), 0, cells_ - 1);
+  }
+  const std::vector<BoundingBox>& boxes_;
+  double margin_, lo_x_, lo_y_, cell_x_, cell_y_;
+  int cells_;
+  std::vector<std::vector<int>> members_;
+};
+
 }  // namespace
+
+BoundingBox bounding_box(const SubdomainInput& subdomain) {
+  BoundingBox b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+  for (size_t i = 0; i < subdomain.x.size(); ++i) {
+    b.x0 = std::min(b.x0, subdomain.x[i]), b.x1 = std::max(b.x1, subdomain.x[i]);
+    b.y0 = std::min(b.y0, subdomain.y[i]), b.y1 = std::max(b.y1, subdomain.y[i]);
+  }
+  return b;
+}
+
+double snapping_length(const std::vector<BoundingBox>& boxes) {
+  double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
+  for (const BoundingBox& b : boxes) {
+    lo_x = std::min(lo_x, b.x0), hi_x = std::max(hi_x, b.x1);
+    lo_y = std::min(lo_y, b.y0), hi_y = std::max(hi_y, b.y1);
+  }
+  const double diagonal = std::hypot(hi_x - lo_x, hi_y - lo_y);
+  return 1e-9 * (diagonal > 0 && std::isfinite(diagonal) ? diagonal : 1.0);
+}
+
+std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& local,
+                                             const std::vector<int>& global_ids,
+                                             const NodeToNodeContact& local_contact,
+                                             const std::vector<BoundingBox>& boxes,
+                                             const std::vector<int>& bodies, double snap) {
+  const BoxGrid grid(boxes, 4 * snap);
+  std::vector<DofRecord> records;
+  for (size_t k = 0; k < local.size(); ++k) {
+    const SubdomainInput& sub = local[k];
+    const int s = global_ids[k];
+    const size_t n = sub.x.size();
+    std::vector<char> fixed(n, 0), slave(n, 0), master(n, 0);
+    std::vector<double> value(n, 0.0);
+    for (size_t i = 0; i < sub.dirichlet_dofs.size(); ++i) {
+      fixed[static_cast<size_t>(sub.dirichlet_dofs[i])] = 1;
+      value[static_cast<size_t>(sub.dirichlet_dofs[i])] = sub.dirichlet_values.empty() ? 0.0 : sub.dirichlet_values[i];
+    }
+    if (!local_contact.slave_dofs.empty())
+      for (int dof : local_contact.slave_dofs[k]) slave[static_cast<size_t>(dof)] = 1;
+    if (!local_contact.master_dofs.empty())
+      for (int dof : local_contact.master_dofs[k]) master[static_cast<size_t>(dof)] = 1;
+    for (size_t i = 0; i < n; ++i) {
+      bool shared = false;
+      grid.for_each_containing(sub.x[i], sub.y[i], [&](int other) {
+        shared = shared || (other != s && bodies[static_cast<size_t>(other)] == sub.body);
+      });
+      if (shared || fixed[i] || slave[i] || master[i])
+        records.push_back({s, static_cast<int>(i), sub.body, sub.component.empty() ? 0 : sub.component[i],
+                           sub.x[i], sub.y[i], fixed[i] != 0, slave[i] != 0, master[i] != 0, value[i]});
+    }
+  }
+  return records;
+}
+
+std::vector<double> pack(const std::vector<DofRecord>& records) {
+  std::vector<double> packed;
+  packed.reserve(records.size() * 8);
+  for (const DofRecord& r : records) {
+    const double flags = (r.fixed ? 1 : 0) + (r.slave ? 2 : 0) + (r.master ? 4 : 0);
+    packed.insert(packed.end(), {double(r.subdomain), double(r.dof), double(r.body), double(r.component),
+                                 r.x, r.y, flags, r.value});
+  }
+  return packed;
+}
+
+std::vector<DofRecord> unpack(const std::vector<double>& packed) {
+  std::vector<DofRecord> records;
+  for (size_t k = 0; k + 8 <= packed.size(); k += 8) {
+    const int flags = static_cast<int>(packed[k + 6]);
+    records.push_back({static_cast<int>(packed[k]), static_cast<int>(packed[k + 1]), static_cast<int>(packed[k + 2]),
+                       static_cast<int>(packed[k + 3]), packed[k + 4], packed[k + 5], (flags & 1) != 0,
+                       (flags & 2) != 0, (flags & 4) != 0, packed[k + 7]});
+  }
+  return records;
+}
 
 int Constraints::count(RowKind k) const {
   return static_cast<int>(std::count(kind.begin(), kind.end(), k));
 }
 
-Constraints build_constraints(const std::vector<SubdomainInput>& subdomains,
-                              const NodeToNodeContact& contact, FetiVariant variant) {
-  const double snap = snapping_length(subdomains);
-  const DirichletLookup dirichlet(subdomains);
+Constraints build_constraints(std::vector<DofRecord> records, double gap, FetiVariant variant, double snap) {
+  std::sort(records.begin(), records.end(), [](const DofRecord& a, const DofRecord& b) {
+    return std::make_pair(a.subdomain, a.dof) < std::make_pair(b.subdomain, b.dof);
+  });
   std::vector<Row> rows;
-  add_gluing_rows(subdomains, dirichlet, snap, rows);
-  if (variant == FetiVariant::tfeti) add_dirichlet_rows(subdomains, rows);
-  add_contact_rows(subdomains, contact, snap, rows);
-  if (variant == FetiVariant::feti1) substitute_dirichlet(dirichlet, rows);
+  add_gluing_rows(records, snap, rows);
+  if (variant == FetiVariant::tfeti) add_dirichlet_rows(records, rows);
+  add_contact_rows(records, gap, snap, rows);
+  if (variant == FetiVariant::feti1) substitute_dirichlet(records, rows);
 
   std::stable_partition(rows.begin(), rows.end(), [](const Row& r) { return r.equality; });
   Constraints result;
@@ -204,18 +269,40 @@ Constraints build_constraints(const std::vector<SubdomainInput>& subdomains,
   return result;
 }
 
+Constraints build_constraints(const std::vector<SubdomainInput>& subdomains,
+                              const NodeToNodeContact& contact, FetiVariant variant) {
+  std::vector<BoundingBox> boxes;
+  std::vector<int> bodies, ids;
+  for (const auto& sub : subdomains) {
+    boxes.push_back(bounding_box(sub));
+    bodies.push_back(sub.body);
+    ids.push_back(static_cast<int>(ids.size()));
+  }
+  const double snap = snapping_length(boxes);
+  return build_constraints(constraint_candidates(subdomains, ids, contact, boxes, bodies, snap),
+                           contact.gap, variant, snap);
+}
+
 std::vector<LocalConstraints> split_by_subdomain(const Constraints& constraints,
-                                                 const std::vector<Eigen::Index>& sizes) {
+                                                 const std::vector<Eigen::Index>& sizes,
+                                                 const std::vector<int>& global_ids) {
+  std::vector<int> local_of;  // global subdomain -> local index (-1: not here)
+  for (size_t k = 0; k < sizes.size(); ++k) {
+    const int s = global_ids.empty() ? static_cast<int>(k) : global_ids[k];
+    if (s >= static_cast<int>(local_of.size())) local_of.resize(static_cast<size_t>(s) + 1, -1);
+    local_of[static_cast<size_t>(s)] = static_cast<int>(k);
+  }
   std::vector<std::vector<Eigen::Triplet<double, int>>> triplets(sizes.size());
   std::vector<LocalConstraints> local(sizes.size());
   for (int row = 0; row < constraints.rows(); ++row)
     for (int k = constraints.row_start[static_cast<size_t>(row)];
          k < constraints.row_start[static_cast<size_t>(row) + 1]; ++k) {
       const ConstraintEntry& e = constraints.entries[static_cast<size_t>(k)];
-      LocalConstraints& block = local[static_cast<size_t>(e.subdomain)];
+      if (e.subdomain >= static_cast<int>(local_of.size()) || local_of[static_cast<size_t>(e.subdomain)] < 0) continue;
+      const auto l = static_cast<size_t>(local_of[static_cast<size_t>(e.subdomain)]);
+      LocalConstraints& block = local[l];
       if (block.rows.empty() || block.rows.back() != row) block.rows.push_back(row);
-      triplets[static_cast<size_t>(e.subdomain)].emplace_back(
-          static_cast<int>(block.rows.size()) - 1, e.dof, e.coefficient);
+      triplets[l].emplace_back(static_cast<int>(block.rows.size()) - 1, e.dof, e.coefficient);
     }
   for (size_t s = 0; s < sizes.size(); ++s) {
     local[s].B.resize(static_cast<Eigen::Index>(local[s].rows.size()), sizes[s]);
@@ -223,6 +310,17 @@ std::vector<LocalConstraints> split_by_subdomain(const Constraints& constraints,
     local[s].B.makeCompressed();
   }
   return local;
+}
+
+std::vector<std::vector<int>> rows_by_subdomain(const Constraints& constraints, int count) {
+  std::vector<std::vector<int>> rows(static_cast<size_t>(count));
+  for (int row = 0; row < constraints.rows(); ++row)
+    for (int k = constraints.row_start[static_cast<size_t>(row)];
+         k < constraints.row_start[static_cast<size_t>(row) + 1]; ++k) {
+      auto& list = rows[static_cast<size_t>(constraints.entries[static_cast<size_t>(k)].subdomain)];
+      if (list.empty() || list.back() != row) list.push_back(row);
+    }
+  return rows;
 }
 
 }  // namespace ffeti

@@ -32,11 +32,49 @@ struct Constraints {
   int count(RowKind k) const;
 };
 
-/// Builds B and c. For FETI-1 the Dirichlet values are substituted into the rows instead
-/// of adding rows (rows left empty are dropped; a violated one is an InputError).
-/// Throws InputError for a contact slave without a master at its position.
+/// A dof that may take part in a constraint: an interface candidate, a Dirichlet dof or a
+/// contact dof. Records of all ranks together are all the builder needs, so no rank ever
+/// holds the whole primal problem.
+struct DofRecord {
+  int subdomain, dof, body, component;  // subdomain: global index
+  double x, y;
+  bool fixed, slave, master;
+  double value;  // Dirichlet value where fixed
+};
+
+struct BoundingBox {
+  double x0, y0, x1, y1;
+};
+
+/// Coordinates closer than this are the same node: 1e-9 of the diagonal of all boxes.
+double snapping_length(const std::vector<BoundingBox>& boxes);
+
+/// The records of the local subdomains: every Dirichlet and contact dof, and every dof
+/// inside the (slightly inflated) box of another subdomain of the same body, the only dofs
+/// that can be copies of another subdomain's. `boxes` and `bodies` cover all subdomains
+/// (global numbering); `global_ids[k]` is the global index of local subdomain k.
+std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& local,
+                                             const std::vector<int>& global_ids,
+                                             const NodeToNodeContact& local_contact,
+                                             const std::vector<BoundingBox>& boxes,
+                                             const std::vector<int>& bodies, double snap);
+
+/// Flat encodings of records for collective exchange (exact for indices below 2^53).
+std::vector<double> pack(const std::vector<DofRecord>& records);
+std::vector<DofRecord> unpack(const std::vector<double>& packed);
+
+/// Builds B and c from the records of all subdomains (any order: they are sorted first, so
+/// B does not depend on how subdomains are spread over ranks). For FETI-1 the Dirichlet
+/// values are substituted into the rows instead of adding rows (rows left empty are
+/// dropped; a violated one is an InputError). Throws InputError for a contact slave
+/// without a master at its position.
+Constraints build_constraints(std::vector<DofRecord> records, double gap, FetiVariant variant, double snap);
+
+/// The same for subdomains all held here (global index = position): one process.
 Constraints build_constraints(const std::vector<SubdomainInput>& subdomains,
                               const NodeToNodeContact& contact, FetiVariant variant);
+
+BoundingBox bounding_box(const SubdomainInput& subdomain);
 
 /// The rows touching one subdomain: their global indices and B_s restricted to them.
 struct LocalConstraints {
@@ -44,7 +82,13 @@ struct LocalConstraints {
   SparseMatrix B;  ///< rows.size() x n_s
 };
 
+/// Blocks for the local subdomains; `global_ids[k]` is local subdomain k's global index
+/// (empty: local = global) and `sizes[k]` its number of dofs.
 std::vector<LocalConstraints> split_by_subdomain(const Constraints& constraints,
-                                                 const std::vector<Eigen::Index>& sizes);
+                                                 const std::vector<Eigen::Index>& sizes,
+                                                 const std::vector<int>& global_ids = {});
+
+/// The rows touching each global subdomain (`count` subdomains), in row order.
+std::vector<std::vector<int>> rows_by_subdomain(const Constraints& constraints, int count);
 
 }  // namespace ffeti

@@ -1,0 +1,47 @@
+// The few collective operations ffeti needs across processes, behind an interface so that
+// the core runs unchanged in one process (SerialCommunicator) or over MPI ranks.
+// Every operation is collective: all ranks of the communicator call it, in the same order.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ffeti {
+
+class Communicator {
+ public:
+  virtual ~Communicator() = default;
+  virtual int rank() const = 0;
+  virtual int size() const = 0;
+
+  /// Every rank's `local` concatenated in rank order; `counts` receives each rank's length.
+  /// The same bytes arrive on every rank.
+  virtual std::vector<double> allgather(const std::vector<double>& local, std::vector<int>* counts = nullptr) const = 0;
+  virtual std::vector<long long> allgather(const std::vector<long long>& local, std::vector<int>* counts = nullptr) const = 0;
+
+  virtual double sum(double local) const = 0;
+  virtual double max(double local) const = 0;
+
+  /// The message of the lowest rank whose `local_error` is not empty ("" if none): lets all
+  /// ranks fail together instead of leaving the others waiting in a collective.
+  virtual std::string first_error(const std::string& local_error) const = 0;
+};
+
+class SerialCommunicator final : public Communicator {
+ public:
+  int rank() const override { return 0; }
+  int size() const override { return 1; }
+  std::vector<double> allgather(const std::vector<double>& local, std::vector<int>* counts) const override;
+  std::vector<long long> allgather(const std::vector<long long>& local, std::vector<int>* counts) const override;
+  double sum(double local) const override { return local; }
+  double max(double local) const override { return local; }
+  std::string first_error(const std::string& local_error) const override { return local_error; }
+};
+
+/// Runs `step` on every rank; if it throws on any rank, every rank throws an InputError
+/// with the lowest failing rank's message (prefixed by that rank when there are several).
+void collectively(const Communicator& comm, const std::function<void()>& step);
+
+}  // namespace ffeti
