@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numeric>
 
 namespace ffeti {
 namespace {
@@ -88,8 +89,13 @@ TEST(DualOperator, ProjectedOperatorMatchesDenseExplicit) {
   std::vector<int> bodies;
   for (const auto& s : p.subs) bodies.push_back(s.body);
   const int m = p.constraints.rows();
-  const DualOperator F(p.subdomains, p.local, m, 1);
-  const CoarseSpace coarse(p.subdomains, p.local, m, bodies);
+  const int S = static_cast<int>(p.subs.size());
+  const SerialCommunicator comm;
+  std::vector<int> ids(S);
+  std::iota(ids.begin(), ids.end(), 0);
+  const SubdomainSum sum(rows_by_subdomain(p.constraints, S), std::vector<int>(S, 0), m, comm);
+  const DualOperator F(p.subdomains, p.local, sum, m, 1);
+  const CoarseSpace coarse(p.subdomains, p.local, ids, m, bodies, comm);
   // G = R'B' and P = I - G'(GG')^{-1}G built densely; P F P does not depend on which
   // generalized inverse K^+ is, so the fixing-dof inverse must agree with Moore-Penrose.
   const Eigen::MatrixXd G = p.R.transpose() * p.B.transpose();
@@ -136,7 +142,10 @@ TEST(DualOperator, CoerciveOperatorMatchesDenseExplicit) {
     subdomains.push_back(std::make_unique<Subdomain>(static_cast<int>(s), subs[s].K,
         candidate_kernel(subs[s].x, subs[s].y, subs[s].component), FactorKind::simplicial));
   const int m = c.rows();
-  const DualOperator F(subdomains, local, m, 2);
+  const SerialCommunicator comm;
+  const int S = static_cast<int>(subs.size());
+  const SubdomainSum sum(rows_by_subdomain(c, S), std::vector<int>(S, 0), m, comm);
+  const DualOperator F(subdomains, local, sum, m, 2);
   Eigen::MatrixXd F_dense = Eigen::MatrixXd::Zero(m, m);
   for (size_t s = 0; s < subs.size(); ++s) {
     const Eigen::MatrixXd Bs = Eigen::MatrixXd(local[s].B);

@@ -2,26 +2,42 @@
 
 #include "feti/errors.h"
 
+#include <map>
 #include <set>
 #include <string>
 
 namespace ffeti {
 
-CoarseSpace::CoarseSpace(const SubdomainList& subdomains,
-                         const std::vector<LocalConstraints>& local, int rows,
-                         const std::vector<int>& bodies)
-    : subdomains_(subdomains) {
-  std::vector<Eigen::Triplet<double, int>> entries;
-  for (size_t s = 0; s < subdomains.size(); ++s) {
-    if (!subdomains[s]->floating()) continue;
-    const Eigen::MatrixXd BR = local[s].B * subdomains[s]->kernel();  // rows of G, restricted
+CoarseSpace::CoarseSpace(const SubdomainList& subdomains, const std::vector<LocalConstraints>& local,
+                         const std::vector<int>& global_ids, int rows, const std::vector<int>& bodies,
+                         const Communicator& comm)
+    : subdomains_(subdomains), comm_(comm) {
+  // Each rank packs, per kernel vector of its floating subdomains, (s, j, nonzeros, then
+  // row/value pairs of B_s R_s e_j); every rank unpacks all of them in the same order.
+  std::vector<double> packed;
+  for (size_t k = 0; k < subdomains.size(); ++k) {
+    if (!subdomains[k]->floating()) continue;
+    const Eigen::MatrixXd BR = local[k].B * subdomains[k]->kernel();
     for (Eigen::Index j = 0; j < BR.cols(); ++j) {
-      const int g_row = static_cast<int>(owner_.size());
-      owner_.emplace_back(static_cast<int>(s), static_cast<int>(j));
-      for (size_t k = 0; k < local[s].rows.size(); ++k)
-        if (BR(static_cast<Eigen::Index>(k), j) != 0)
-          entries.emplace_back(g_row, local[s].rows[k], BR(static_cast<Eigen::Index>(k), j));
+      packed.insert(packed.end(), {double(global_ids[k]), double(j), double(local[k].rows.size())});
+      for (size_t i = 0; i < local[k].rows.size(); ++i)
+        packed.insert(packed.end(), {double(local[k].rows[i]), BR(static_cast<Eigen::Index>(i), j)});
     }
+  }
+  const std::vector<double> all = comm.allgather(packed);
+  std::map<std::pair<int, int>, size_t> start;  // (s, j) -> offset of its block: global order
+  for (size_t p = 0; p < all.size(); p += 3 + 2 * static_cast<size_t>(all[p + 2]))
+    start[{static_cast<int>(all[p]), static_cast<int>(all[p + 1])}] = p;
+  std::map<int, int> local_index;
+  for (size_t k = 0; k < global_ids.size(); ++k) local_index[global_ids[k]] = static_cast<int>(k);
+  std::vector<Eigen::Triplet<double, int>> entries;
+  for (const auto& [key, p] : start) {
+    const int g_row = static_cast<int>(owner_.size());
+    owner_.push_back(key);
+    if (local_index.count(key.first)) local_rows_.emplace_back(g_row, local_index[key.first]);
+    const auto nonzeros = static_cast<size_t>(all[p + 2]);
+    for (size_t i = 0; i < nonzeros; ++i)
+      if (all[p + 4 + 2 * i] != 0) entries.emplace_back(g_row, static_cast<int>(all[p + 3 + 2 * i]), all[p + 4 + 2 * i]);
   }
   G_.resize(static_cast<Eigen::Index>(owner_.size()), rows);
   G_.setFromTriplets(entries.begin(), entries.end());
@@ -49,14 +65,29 @@ CoarseSpace::CoarseSpace(const SubdomainList& subdomains,
                    "(add a Dirichlet condition or a contact zone; GG' is singular)");
 }
 
+int CoarseSpace::floating_subdomains() const {
+  std::set<int> floating;
+  for (const auto& [s, j] : owner_) floating.insert(s);
+  return static_cast<int>(floating.size());
+}
+
 Vec CoarseSpace::kernel_load(const std::vector<Vec>& f) const {
-  Vec e(G_.rows());
-  for (size_t k = 0; k < owner_.size(); ++k) {
-    const auto [s, j] = owner_[k];
-    e[static_cast<Eigen::Index>(k)] =
-        subdomains_[static_cast<size_t>(s)]->kernel().col(j).dot(f[static_cast<size_t>(s)]);
+  std::vector<double> local;  // (row of G, value) pairs of this rank
+  for (const auto& [g_row, k] : local_rows_) {
+    const int j = owner_[static_cast<size_t>(g_row)].second;
+    local.insert(local.end(), {double(g_row), subdomains_[static_cast<size_t>(k)]->kernel().col(j).dot(f[static_cast<size_t>(k)])});
   }
+  const std::vector<double> all = comm_.allgather(local);
+  Vec e = Vec::Zero(G_.rows());
+  for (size_t p = 0; p < all.size(); p += 2) e[static_cast<Eigen::Index>(all[p])] = all[p + 1];
   return e;
+}
+
+void CoarseSpace::add_kernel_component(const Vec& alpha, std::vector<Vec>& u) const {
+  for (const auto& [g_row, k] : local_rows_) {
+    const int j = owner_[static_cast<size_t>(g_row)].second;
+    u[static_cast<size_t>(k)] += alpha[g_row] * subdomains_[static_cast<size_t>(k)]->kernel().col(j);
+  }
 }
 
 void CoarseSpace::project_range(const Vec& x, Vec& y) const {

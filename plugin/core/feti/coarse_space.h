@@ -1,9 +1,12 @@
 // Natural coarse space: G = R'B' (one row per kernel vector of a floating subdomain),
 // e = R'f, the factor of GG' and the orthogonal projector P = I - G'(GG')^{-1}G onto Ker G.
+// G is small (rows: rigid modes; nonzeros: interface rows of floating subdomains): every
+// rank builds it whole from the blocks B_s R_s of all ranks and factors GG' redundantly.
 #pragma once
 
 #include "feti/constraints.h"
 #include "feti/subdomain.h"
+#include "parallel/communicator.h"
 
 #include <Eigen/Dense>
 
@@ -13,19 +16,25 @@ namespace ffeti {
 
 class CoarseSpace {
  public:
-  /// Throws InputError naming the bodies whose rigid modes no constraint restrains
-  /// (GG' singular). `bodies[s]` is the body of subdomain s, for that message.
+  /// `subdomains` and `local` are this rank's, `global_ids` their global indices; `bodies`
+  /// covers all subdomains. Throws InputError naming the bodies whose rigid modes no
+  /// constraint restrains (GG' singular). Keeps a reference to `subdomains` and `comm`.
   CoarseSpace(const SubdomainList& subdomains, const std::vector<LocalConstraints>& local,
-              int rows, const std::vector<int>& bodies);
+              const std::vector<int>& global_ids, int rows, const std::vector<int>& bodies,
+              const Communicator& comm);
 
   int dimension() const { return static_cast<int>(G_.rows()); }
   bool empty() const { return G_.rows() == 0; }
   const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& G() const { return G_; }
-  /// Subdomain and kernel column behind each row of G.
+  /// Global subdomain and kernel column behind each row of G (ascending subdomain).
   const std::vector<std::pair<int, int>>& row_owner() const { return owner_; }
+  /// Number of floating subdomains over all ranks.
+  int floating_subdomains() const;
 
-  /// e = R'f for per-subdomain loads f_s.
+  /// e = R'f for this rank's loads f_s (collective; the whole e on every rank).
   Vec kernel_load(const std::vector<Vec>& f) const;
+  /// u_s += R_s alpha_s for this rank's subdomains, alpha indexed like the rows of G.
+  void add_kernel_component(const Vec& alpha, std::vector<Vec>& u) const;
   /// y = P x, P = I - G'(GG')^{-1} G.
   void project(const Vec& x, Vec& y) const;
   /// y = Q x = G'(GG')^{-1} G x = x - P x.
@@ -36,8 +45,10 @@ class CoarseSpace {
  private:
   Eigen::SparseMatrix<double, Eigen::RowMajor, int> G_;
   std::vector<std::pair<int, int>> owner_;
+  std::vector<std::pair<int, int>> local_rows_;  // (row of G, local subdomain index)
   Eigen::LLT<Eigen::MatrixXd> GGt_;
   const SubdomainList& subdomains_;
+  const Communicator& comm_;
 };
 
 }  // namespace ffeti

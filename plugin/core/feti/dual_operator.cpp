@@ -15,9 +15,9 @@ int resolve_thread_count(int requested) {
 #endif
 }
 
-DualOperator::DualOperator(const SubdomainList& subdomains,
-                           const std::vector<LocalConstraints>& local, int rows, int threads)
-    : subdomains_(subdomains), local_(local), rows_(rows), threads_(resolve_thread_count(threads)) {
+DualOperator::DualOperator(const SubdomainList& subdomains, const std::vector<LocalConstraints>& local,
+                           const SubdomainSum& sum, int rows, int threads)
+    : subdomains_(subdomains), local_(local), sum_(sum), rows_(rows), threads_(resolve_thread_count(threads)) {
   const size_t count = subdomains.size();
   gathered_.resize(count), local_rhs_.resize(count);
   local_solution_.resize(count), local_result_.resize(count);
@@ -41,8 +41,7 @@ void DualOperator::apply(const Vec& x, Vec& y) const {
     subdomains_[i]->apply_pseudo_inverse(local_rhs_[i], local_solution_[i]);
     local_result_[i].noalias() = local_[i].B * local_solution_[i];     // B_s K_s^+ B_s' x
   }
-  y.setZero(rows_);
-  scatter_add(y);
+  sum_local_results(y);
 }
 
 void DualOperator::apply_B_pseudo_inverse(const std::vector<Vec>& v, Vec& y) const {
@@ -54,8 +53,13 @@ void DualOperator::apply_B_pseudo_inverse(const std::vector<Vec>& v, Vec& y) con
     subdomains_[i]->apply_pseudo_inverse(v[i], local_solution_[i]);
     local_result_[i].noalias() = local_[i].B * local_solution_[i];
   }
-  y.setZero(rows_);
-  scatter_add(y);
+  sum_local_results(y);
+}
+
+void DualOperator::apply_B(const std::vector<Vec>& u, Vec& y) const {
+  for (size_t s = 0; s < subdomains_.size(); ++s)
+    if (!local_[s].rows.empty()) local_result_[s].noalias() = local_[s].B * u[s];
+  sum_local_results(y);
 }
 
 void DualOperator::pseudo_inverse_of_residual(const std::vector<Vec>& v, const Vec& x,
@@ -73,10 +77,11 @@ void DualOperator::pseudo_inverse_of_residual(const std::vector<Vec>& v, const V
   }
 }
 
-void DualOperator::scatter_add(Vec& y) const {
+void DualOperator::sum_local_results(Vec& y) const {
+  flat_.clear();
   for (size_t s = 0; s < subdomains_.size(); ++s)
-    for (size_t k = 0; k < local_[s].rows.size(); ++k)
-      y[local_[s].rows[k]] += local_result_[s][static_cast<Eigen::Index>(k)];
+    flat_.insert(flat_.end(), local_result_[s].data(), local_result_[s].data() + local_result_[s].size());
+  sum_.sum(flat_, y);
 }
 
 }  // namespace ffeti

@@ -4,8 +4,10 @@
 #include "feti/errors.h"
 #include "feti/input_checks.h"
 #include "feti/kernel.h"
+#include "parallel/process.h"
 
 #include <chrono>
+#include <algorithm>
 #include <exception>
 
 namespace ffeti {
@@ -43,59 +45,148 @@ void DualSolveSettings::validate() const {
 
 FetiProblem::FetiProblem(std::vector<SubdomainInput> subdomains, const NodeToNodeContact& contact,
                          const FetiSetupSettings& settings)
-    : settings_(settings), inputs_(std::move(subdomains)) {
-  if (settings_.factor == FactorKind::supernodal) settings_.threads = 1;
-  validate_input(inputs_, contact);
-  const bool eliminate = settings_.variant == FetiVariant::feti1;
+    : settings_(settings), comm_(std::make_shared<SerialCommunicator>()), inputs_(std::move(subdomains)) {
+  global_count_ = static_cast<int>(inputs_.size());
+  for (int s = 0; s < global_count_; ++s) global_ids_.push_back(s);
+  set_up(contact);
+}
 
+FetiProblem::FetiProblem(std::vector<SubdomainInput> local, std::vector<int> global_ids, int global_count,
+                         const NodeToNodeContact& local_contact, const FetiSetupSettings& settings,
+                         std::shared_ptr<const Communicator> comm)
+    : settings_(settings), comm_(std::move(comm)), inputs_(std::move(local)),
+      global_ids_(std::move(global_ids)), global_count_(global_count) {
+  set_up(local_contact);
+}
+
+void FetiProblem::set_up(const NodeToNodeContact& local_contact) {
+  if (settings_.factor == FactorKind::supernodal) settings_.threads = 1;
+  const Communicator& comm = *comm_;
   Stopwatch constraints_clock;
-  constraints_ = build_constraints(inputs_, contact, settings_.variant);
+  collectively(comm, [&] {
+    if (global_count_ < 1) throw InputError("K: no subdomains given");
+    if (global_ids_.size() != inputs_.size()) throw InputError("K: one global index per local subdomain needed");
+    for (size_t k = 0; k < global_ids_.size(); ++k)
+      if (global_ids_[k] < 0 || global_ids_[k] >= global_count_ || (k > 0 && global_ids_[k] <= global_ids_[k - 1]))
+        throw InputError("K: local subdomains need ascending global indices in 0.." + std::to_string(global_count_ - 1));
+    validate_input(inputs_, local_contact, global_ids_);
+  });
+
+  // Who holds what: boxes, bodies and owners of all subdomains on every rank.
+  std::vector<double> mine;
+  for (size_t k = 0; k < inputs_.size(); ++k) {
+    const BoundingBox b = bounding_box(inputs_[k]);
+    mine.insert(mine.end(), {double(global_ids_[k]), double(inputs_[k].body), b.x0, b.y0, b.x1, b.y1});
+  }
+  std::vector<int> counts;
+  const std::vector<double> all = comm.allgather(mine, &counts);
+  std::vector<BoundingBox> boxes(static_cast<size_t>(global_count_));
+  std::vector<int> bodies(static_cast<size_t>(global_count_)), owner(static_cast<size_t>(global_count_), -1);
+  std::string ownership_error;
+  for (size_t r = 0, p = 0; r < counts.size(); ++r)
+    for (int end = static_cast<int>(p) + counts[r]; static_cast<int>(p) < end; p += 6) {
+      const auto s = static_cast<size_t>(all[p]);
+      if (owner[s] >= 0) ownership_error = "K[" + std::to_string(s) + "]: given by two ranks";
+      owner[s] = static_cast<int>(r);
+      bodies[s] = static_cast<int>(all[p + 1]);
+      boxes[s] = {all[p + 2], all[p + 3], all[p + 4], all[p + 5]};
+    }
+  for (size_t s = 0; s < owner.size(); ++s)
+    if (owner[s] < 0) ownership_error = "K[" + std::to_string(s) + "]: given by no rank";
+  if (!ownership_error.empty()) throw InputError(ownership_error);  // the same on every rank
+
+  const double snap = snapping_length(boxes);
+  std::vector<DofRecord> records =
+      unpack(comm.allgather(pack(constraint_candidates(inputs_, global_ids_, local_contact, boxes, bodies, snap))));
+  constraints_ = build_constraints(records, local_contact.gap, settings_.variant, snap);
+  std::sort(records.begin(), records.end(), [](const DofRecord& a, const DofRecord& b) {
+    return std::make_pair(a.subdomain, a.dof) < std::make_pair(b.subdomain, b.dof);
+  });
+  for (int i = constraints_.equality_rows; i < constraints_.rows(); ++i) {
+    const ConstraintEntry& slave = constraints_.entries[static_cast<size_t>(constraints_.row_start[static_cast<size_t>(i)])];
+    const auto it = std::lower_bound(records.begin(), records.end(), std::make_pair(slave.subdomain, slave.dof),
+                                     [](const DofRecord& r, const std::pair<int, int>& key) {
+                                       return std::make_pair(r.subdomain, r.dof) < key;
+                                     });
+    contact_positions_.push_back({it->x, it->y});
+  }
   std::vector<Eigen::Index> sizes;
   for (const auto& sub : inputs_) sizes.push_back(sub.K.rows());
-  local_ = split_by_subdomain(constraints_, sizes);
+  local_ = split_by_subdomain(constraints_, sizes, global_ids_);
+  sum_ = std::make_unique<SubdomainSum>(rows_by_subdomain(constraints_, global_count_), owner,
+                                        constraints_.rows(), comm);
   setup_times_.constraints = constraints_clock.seconds();
 
   Stopwatch factor_clock;
-  const int count = subdomain_count();
-  subdomains_.resize(inputs_.size());
-  std::vector<std::exception_ptr> failures(inputs_.size());
-#pragma omp parallel for schedule(dynamic) num_threads(resolve_thread_count(settings_.threads))
-  for (int s = 0; s < count; ++s) {
-    const SubdomainInput& in = inputs_[static_cast<size_t>(s)];
-    try {
-      SparseMatrix K = eliminate && !in.dirichlet_dofs.empty()
-                           ? eliminate_dirichlet(in.K, in.dirichlet_dofs)
-                           : in.K;
-      subdomains_[static_cast<size_t>(s)] = std::make_unique<Subdomain>(
-          s, std::move(K), candidate_kernel(in.x, in.y, in.component), settings_.factor);
-    } catch (...) {
-      failures[static_cast<size_t>(s)] = std::current_exception();
-    }
-  }
-  for (const auto& failure : failures)
-    if (failure) std::rethrow_exception(failure);
-  F_ = std::make_unique<DualOperator>(subdomains_, local_, constraints_.rows(), settings_.threads);
+  factorize();
+  F_ = std::make_unique<DualOperator>(subdomains_, local_, *sum_, constraints_.rows(), settings_.threads);
   setup_times_.factorization = factor_clock.seconds();
 
-  if (floating_subdomains() > 0) {
+  int local_floating = 0;
+  for (const auto& s : subdomains_) local_floating += s->floating() ? 1 : 0;
+  if (comm.sum(local_floating) > 0) {
     Stopwatch coarse_clock;
-    std::vector<int> bodies;
-    for (const auto& sub : inputs_) bodies.push_back(sub.body);
-    coarse_ = std::make_unique<CoarseSpace>(subdomains_, local_, constraints_.rows(), bodies);
+    coarse_ = std::make_unique<CoarseSpace>(subdomains_, local_, global_ids_, constraints_.rows(), bodies, comm);
     setup_times_.coarse_space = coarse_clock.seconds();
   }
   compute_dual_data();
+
+  long local_primal = 0;
+  double local_nonzeros = 0;
+  for (size_t k = 0; k < inputs_.size(); ++k) local_primal += inputs_[k].K.rows();
+  for (const auto& s : subdomains_) local_nonzeros += s->factor_nonzeros();
+  primal_dimension_ = static_cast<long>(comm.sum(static_cast<double>(local_primal)));
+  factor_nonzeros_ = comm.sum(local_nonzeros);
+  gather_rank_statistics(0.0);
+  setup_times_ = {comm.max(setup_times_.constraints), comm.max(setup_times_.factorization),
+                  comm.max(setup_times_.coarse_space), comm.max(setup_times_.dual_data), 0, 0, 0, 0};
+}
+
+void FetiProblem::factorize() {
+  const bool eliminate = settings_.variant == FetiVariant::feti1;
+  const int count = local_subdomain_count();
+  subdomains_.resize(inputs_.size());
+  std::vector<std::exception_ptr> failures(inputs_.size());
+#pragma omp parallel for schedule(dynamic) num_threads(resolve_thread_count(settings_.threads))
+  for (int k = 0; k < count; ++k) {
+    const SubdomainInput& in = inputs_[static_cast<size_t>(k)];
+    try {
+      SparseMatrix K = eliminate && !in.dirichlet_dofs.empty() ? eliminate_dirichlet(in.K, in.dirichlet_dofs) : in.K;
+      subdomains_[static_cast<size_t>(k)] =
+          std::make_unique<Subdomain>(global_ids_[static_cast<size_t>(k)], std::move(K),
+                                      candidate_kernel(in.x, in.y, in.component), settings_.factor);
+    } catch (...) {
+      failures[static_cast<size_t>(k)] = std::current_exception();
+    }
+  }
+  collectively(*comm_, [&] {
+    for (const auto& failure : failures)
+      if (failure) std::rethrow_exception(failure);
+  });
+}
+
+void FetiProblem::gather_rank_statistics(double solve_seconds) const {
+  long primal = 0;
+  for (const auto& in : inputs_) primal += in.K.rows();
+  const std::vector<double> all = comm_->allgather(std::vector<double>{
+      double(local_subdomain_count()), double(primal), setup_times_.factorization, solve_seconds, peak_memory_mb()});
+  rank_statistics_.clear();
+  for (size_t p = 0; p + 5 <= all.size(); p += 5)
+    rank_statistics_.push_back({static_cast<int>(p / 5), static_cast<int>(all[p]), static_cast<long>(all[p + 1]),
+                                all[p + 2], all[p + 3], all[p + 4]});
 }
 
 void FetiProblem::set_loads(const std::vector<Vec>& loads) {
-  if (loads.size() != inputs_.size())
-    throw InputError("f: has " + std::to_string(loads.size()) + " entries for " +
-                     std::to_string(inputs_.size()) + " subdomains");
-  for (size_t s = 0; s < loads.size(); ++s)
-    if (loads[s].size() != inputs_[s].K.rows() || !loads[s].allFinite())
-      throw InputError("f[" + std::to_string(s) + "]: needs " + std::to_string(inputs_[s].K.rows()) +
-                       " finite entries");
-  for (size_t s = 0; s < loads.size(); ++s) inputs_[s].f = loads[s];
+  collectively(*comm_, [&] {
+    if (loads.size() != inputs_.size())
+      throw InputError("f: has " + std::to_string(loads.size()) + " entries for " +
+                       std::to_string(inputs_.size()) + " subdomains");
+    for (size_t k = 0; k < loads.size(); ++k)
+      if (loads[k].size() != inputs_[k].K.rows() || !loads[k].allFinite())
+        throw InputError("f[" + std::to_string(global_ids_[k]) + "]: needs " +
+                         std::to_string(inputs_[k].K.rows()) + " finite entries");
+  });
+  for (size_t k = 0; k < loads.size(); ++k) inputs_[k].f = loads[k];
   compute_dual_data();
 }
 
@@ -121,24 +212,6 @@ void FetiProblem::compute_dual_data() {
     b_ = d_;
   }
   setup_times_.dual_data = clock.seconds();
-}
-
-long FetiProblem::primal_dimension() const {
-  long n = 0;
-  for (const auto& in : inputs_) n += in.K.rows();
-  return n;
-}
-
-int FetiProblem::floating_subdomains() const {
-  int count = 0;
-  for (const auto& s : subdomains_) count += s->floating() ? 1 : 0;
-  return count;
-}
-
-double FetiProblem::factor_nonzeros() const {
-  double total = 0;
-  for (const auto& s : subdomains_) total += s->factor_nonzeros();
-  return total;
 }
 
 std::string FetiProblem::path() const {
@@ -289,19 +362,21 @@ FetiResult FetiProblem::finish(FetiResult result, const Vec& lambda) const {
     for (size_t s = 0; s < subdomains_.size(); ++s)
       subdomains_[s]->apply_pseudo_inverse(operator_loads_[s], result.u[s]);
   } else {
-    result.u = recover_primal(*F_, coarse_.get(), subdomains_, local_, constraints_,
-                              operator_loads_, lambda);
+    result.u = recover_primal(*F_, coarse_.get(), constraints_, operator_loads_, lambda);
   }
   result.times.recovery = recovery_clock.seconds();
   Stopwatch kkt_clock;
   const bool eliminated = settings_.variant == FetiVariant::feti1;
-  result.kkt = kkt_residuals(inputs_, local_, constraints_, eliminated, result.u, result.lambda);
-  result.energy = energy(inputs_, result.u);
+  result.kkt = kkt_residuals(inputs_, local_, *F_, constraints_, eliminated, result.u, result.lambda, *comm_);
+  result.energy = energy(inputs_, result.u, *comm_);
   for (int i = constraints_.equality_rows; i < constraints_.rows(); ++i)
     if (constraints_.kind[static_cast<size_t>(i)] == RowKind::contact && lambda[i] > 0)
       ++result.active_contact;
   result.times.kkt = kkt_clock.seconds();
   result.phases += ",recovery,kkt";
+  gather_rank_statistics(result.times.norm_estimate + result.times.solve);
+  PhaseTimes& t = result.times;
+  t = {0, 0, 0, 0, comm_->max(t.norm_estimate), comm_->max(t.solve), comm_->max(t.recovery), comm_->max(t.kkt)};
   return result;
 }
 

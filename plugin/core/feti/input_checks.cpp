@@ -40,20 +40,24 @@ void check_dofs(const std::vector<int>& dofs, Eigen::Index n, const std::string&
                        std::to_string(n - 1));
 }
 
-void check_per_subdomain_lists(const std::vector<std::vector<int>>& lists, size_t count,
+void check_per_subdomain_lists(const std::vector<std::vector<int>>& lists, const std::vector<size_t>& ids,
                                const std::vector<SubdomainInput>& subdomains, const char* name) {
-  if (!lists.empty() && lists.size() != count)
+  if (!lists.empty() && lists.size() != subdomains.size())
     throw InputError(std::string(name) + ": has " + std::to_string(lists.size()) +
-                     " entries for " + std::to_string(count) + " subdomains");
-  for (size_t s = 0; s < lists.size(); ++s) check_dofs(lists[s], subdomains[s].K.rows(), indexed(name, s));
+                     " entries for " + std::to_string(subdomains.size()) + " subdomains");
+  for (size_t k = 0; k < lists.size(); ++k) check_dofs(lists[k], subdomains[k].K.rows(), indexed(name, ids[k]));
 }
 
 }  // namespace
 
-void validate_input(const std::vector<SubdomainInput>& subdomains, const NodeToNodeContact& contact) {
-  if (subdomains.empty()) throw InputError("K: no subdomains given");
-  for (size_t s = 0; s < subdomains.size(); ++s) {
-    const SubdomainInput& sub = subdomains[s];
+void validate_input(const std::vector<SubdomainInput>& subdomains, const NodeToNodeContact& contact,
+                    const std::vector<int>& global_ids) {
+  std::vector<size_t> ids;
+  for (size_t k = 0; k < subdomains.size(); ++k)
+    ids.push_back(global_ids.empty() ? k : static_cast<size_t>(global_ids[k]));
+  for (size_t k = 0; k < subdomains.size(); ++k) {
+    const size_t s = ids[k];
+    const SubdomainInput& sub = subdomains[k];
     check_stiffness(sub.K, s);
     const auto n = static_cast<size_t>(sub.K.rows());
     if (static_cast<size_t>(sub.f.size()) != n)
@@ -72,8 +76,8 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const NodeToN
     if (!sub.dirichlet_values.empty() && sub.dirichlet_values.size() != sub.dirichlet_dofs.size())
       throw InputError(indexed("dirichletValues", s) + ": needs one value per Dirichlet dof");
   }
-  check_per_subdomain_lists(contact.slave_dofs, subdomains.size(), subdomains, "contactSlave");
-  check_per_subdomain_lists(contact.master_dofs, subdomains.size(), subdomains, "contactMaster");
+  check_per_subdomain_lists(contact.slave_dofs, ids, subdomains, "contactSlave");
+  check_per_subdomain_lists(contact.master_dofs, ids, subdomains, "contactMaster");
   if (!std::isfinite(contact.gap)) throw InputError("gap: must be finite");
 }
 

@@ -8,6 +8,8 @@
 
 namespace ffeti {
 
-void validate_input(const std::vector<SubdomainInput>& subdomains, const NodeToNodeContact& contact);
+/// `global_ids[k]` names local subdomain k in messages (empty: k itself).
+void validate_input(const std::vector<SubdomainInput>& subdomains, const NodeToNodeContact& contact,
+                    const std::vector<int>& global_ids = {});
 
 }  // namespace ffeti

@@ -20,19 +20,7 @@ double safe_ratio(double a, double b) { return b > 0 ? a / b : a; }
 
 }  // namespace
 
-Vec apply_B(const std::vector<LocalConstraints>& local, const std::vector<Vec>& u, int rows) {
-  Vec y = Vec::Zero(rows);
-  for (size_t s = 0; s < local.size(); ++s) {
-    if (local[s].rows.empty()) continue;
-    const Vec Bu = local[s].B * u[s];
-    for (size_t k = 0; k < local[s].rows.size(); ++k) y[local[s].rows[k]] += Bu[static_cast<Eigen::Index>(k)];
-  }
-  return y;
-}
-
 std::vector<Vec> recover_primal(const DualOperator& F, const CoarseSpace* coarse,
-                                const SubdomainList& subdomains,
-                                const std::vector<LocalConstraints>& local,
                                 const Constraints& constraints, const std::vector<Vec>& f,
                                 const Vec& lambda) {
   std::vector<Vec> u;
@@ -43,17 +31,13 @@ std::vector<Vec> recover_primal(const DualOperator& F, const CoarseSpace* coarse
   const int m = constraints.rows();
   Vec mask = Vec::Zero(m);
   for (int i = 0; i < m; ++i) mask[i] = holds_with_equality(constraints, lambda, i) ? 1.0 : 0.0;
-  Vec residual = Eigen::Map<const Vec>(constraints.rhs.data(), m) - apply_B(local, u, m);
-  residual = residual.cwiseProduct(mask);
+  Vec Bu;
+  F.apply_B(u, Bu);
+  const Vec residual = (Eigen::Map<const Vec>(constraints.rhs.data(), m) - Bu).cwiseProduct(mask);
   const Eigen::SparseMatrix<double, Eigen::RowMajor, int> GS = coarse->G() * mask.asDiagonal();
   const Eigen::MatrixXd normal = Eigen::MatrixXd(GS * GS.transpose());
   const Vec alpha = normal.ldlt().solve(GS * residual);
-  const auto& owner = coarse->row_owner();
-  for (size_t k = 0; k < owner.size(); ++k) {
-    const auto [s, j] = owner[k];
-    u[static_cast<size_t>(s)] += alpha[static_cast<Eigen::Index>(k)] *
-                                 subdomains[static_cast<size_t>(s)]->kernel().col(j);
-  }
+  coarse->add_kernel_component(alpha, u);
   return u;
 }
 
@@ -62,12 +46,12 @@ double KktResiduals::max() const {
 }
 
 KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs,
-                           const std::vector<LocalConstraints>& local,
+                           const std::vector<LocalConstraints>& local, const DualOperator& F,
                            const Constraints& constraints, bool dirichlet_eliminated,
-                           const std::vector<Vec>& u, const Vec& lambda) {
+                           const std::vector<Vec>& u, const Vec& lambda, const Communicator& comm) {
   KktResiduals r;
   const int m = constraints.rows();
-  const double u_scale = inf_norm(u);
+  const double u_scale = comm.max(inf_norm(u));
   const double lambda_scale = lambda.size() ? lambda.cwiseAbs().maxCoeff() : 0.0;
 
   double residual_sq = 0, load_sq = 0, reaction_sq = 0, dirichlet_violation = 0;
@@ -89,10 +73,13 @@ KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs,
     load_sq += inputs[s].f.squaredNorm();
     reaction_sq += reaction.squaredNorm();
   }
+  residual_sq = comm.sum(residual_sq), load_sq = comm.sum(load_sq), reaction_sq = comm.sum(reaction_sq);
   r.equilibrium = safe_ratio(std::sqrt(residual_sq), std::sqrt(std::max(load_sq, reaction_sq)));
 
-  const Vec gap = apply_B(local, u, m) - Eigen::Map<const Vec>(constraints.rhs.data(), m);
-  double equality = dirichlet_violation, inequality = 0, negative = 0, complementarity = 0;
+  Vec gap;
+  F.apply_B(u, gap);
+  gap -= Eigen::Map<const Vec>(constraints.rhs.data(), m);
+  double equality = comm.max(dirichlet_violation), inequality = 0, negative = 0, complementarity = 0;
   for (int i = 0; i < m; ++i) {
     if (i < constraints.equality_rows) {
       equality = std::max(equality, std::abs(gap[i]));
@@ -109,11 +96,11 @@ KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs,
   return r;
 }
 
-double energy(const std::vector<SubdomainInput>& inputs, const std::vector<Vec>& u) {
+double energy(const std::vector<SubdomainInput>& inputs, const std::vector<Vec>& u, const Communicator& comm) {
   double value = 0;
   for (size_t s = 0; s < inputs.size(); ++s)
     value += 0.5 * u[s].dot(inputs[s].K * u[s]) - inputs[s].f.dot(u[s]);
-  return value;
+  return comm.sum(value);
 }
 
 }  // namespace ffeti

@@ -11,9 +11,8 @@ namespace ffeti {
 /// u = K^+(f - B'lambda) + R alpha, with alpha the least-squares solution of
 /// B R alpha = c - B K^+(f - B'lambda) on the rows that hold with equality (all equality
 /// rows and the inequality rows with lambda_i > 0). `f` are the loads the operators use.
+/// Collective; returns u for this rank's subdomains.
 std::vector<Vec> recover_primal(const DualOperator& F, const CoarseSpace* coarse,
-                                const SubdomainList& subdomains,
-                                const std::vector<LocalConstraints>& local,
                                 const Constraints& constraints, const std::vector<Vec>& f,
                                 const Vec& lambda);
 
@@ -30,15 +29,13 @@ struct KktResiduals {
   double max() const;
 };
 
+/// Collective over the ranks of `comm`; `inputs`, `local` and `u` are this rank's.
 KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs,
-                           const std::vector<LocalConstraints>& local,
+                           const std::vector<LocalConstraints>& local, const DualOperator& F,
                            const Constraints& constraints, bool dirichlet_eliminated,
-                           const std::vector<Vec>& u, const Vec& lambda);
+                           const std::vector<Vec>& u, const Vec& lambda, const Communicator& comm);
 
-/// B u for per-subdomain vectors (length m).
-Vec apply_B(const std::vector<LocalConstraints>& local, const std::vector<Vec>& u, int rows);
-
-/// 1/2 u'Ku - f'u summed over subdomains, with the original K_s and f_s.
-double energy(const std::vector<SubdomainInput>& inputs, const std::vector<Vec>& u);
+/// 1/2 u'Ku - f'u summed over all subdomains, with the original K_s and f_s (collective).
+double energy(const std::vector<SubdomainInput>& inputs, const std::vector<Vec>& u, const Communicator& comm);
 
 }  // namespace ffeti

@@ -10,7 +10,9 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
   const Constraints& c = problem.constraints();
   const PhaseTimes& setup = problem.setup_times();
   Statistics s = {
+      {"ranks", problem.communicator().size()},
       {"subdomains", problem.subdomain_count()},
+      {"local_subdomains", problem.local_subdomain_count()},
       {"primal", static_cast<double>(problem.primal_dimension())},
       {"dual", problem.dual_dimension()},
       {"equality_rows", c.equality_rows},
@@ -58,13 +60,20 @@ std::vector<ContactMultiplier> contact_multipliers(const FetiProblem& problem, c
   const Constraints& c = problem.constraints();
   std::vector<ContactMultiplier> rows;
   for (int i = c.equality_rows; i < c.rows(); ++i) {
-    if (c.kind[static_cast<size_t>(i)] != RowKind::contact) continue;
-    const ConstraintEntry& slave = c.entries[static_cast<size_t>(c.row_start[static_cast<size_t>(i)])];
-    const SubdomainInput& sub = problem.inputs()[static_cast<size_t>(slave.subdomain)];
-    rows.push_back({sub.x[static_cast<size_t>(slave.dof)], sub.y[static_cast<size_t>(slave.dof)],
-                    result.lambda.size() ? result.lambda[i] : 0.0});
+    const auto& position = problem.contact_positions()[static_cast<size_t>(i - c.equality_rows)];
+    rows.push_back({position[0], position[1], result.lambda.size() ? result.lambda[i] : 0.0});
   }
   return rows;
+}
+
+std::string format_rank_report(const FetiProblem& problem) {
+  std::ostringstream out;
+  out.precision(4);
+  for (const RankStatistics& r : problem.rank_statistics())
+    out << "RANK rank=" << r.rank << " subdomains=" << r.subdomains << " primal=" << r.primal
+        << " time_factor=" << r.time_factor << " time_solve=" << r.time_solve
+        << " peak_memory_mb=" << r.peak_memory_mb << '\n';
+  return out.str();
 }
 
 std::string format_report(const FetiProblem& problem, const FetiResult* result) {

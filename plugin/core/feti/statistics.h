@@ -27,6 +27,10 @@ struct ContactMultiplier {
 /// The contact rows of a solve, in row order.
 std::vector<ContactMultiplier> contact_multipliers(const FetiProblem& problem, const FetiResult& result);
 
+/// One line "RANK rank=r subdomains=... primal=... time_factor=... time_solve=...
+/// peak_memory_mb=..." per rank: the load balance (subdomains, unknowns) and per-rank times.
+std::string format_rank_report(const FetiProblem& problem);
+
 /// "key=value key=value ..." with the path and status as words.
 std::string format_report(const FetiProblem& problem, const FetiResult* result);
 
