@@ -46,15 +46,15 @@ std::vector<int> to_indices(const KN<long>& values, long bound, const std::strin
   return result;
 }
 
-std::vector<std::vector<int>> to_index_lists(const KN<KN<long>>* lists, const std::vector<long>& bounds,
-                                             const std::string& name) {
+std::vector<std::vector<int>> per_subdomain(const KN<KN<long>>* lists, long count, const std::vector<int>& ids,
+                                            const std::vector<long>& bounds, const std::string& name) {
   if (!lists) return {};
-  if (static_cast<size_t>(lists->N()) != bounds.size())
-    throw InputError(name + ": has " + std::to_string(lists->N()) + " entries for " +
-                     std::to_string(bounds.size()) + " subdomains");
+  if (lists->N() != count)
+    throw InputError(name + ": has " + std::to_string(lists->N()) + " entries for " + std::to_string(count) +
+                     " subdomains");
   std::vector<std::vector<int>> result;
-  for (long s = 0; s < lists->N(); ++s)
-    result.push_back(to_indices((*lists)[s], bounds[static_cast<size_t>(s)], name + "[" + std::to_string(s) + "]"));
+  for (size_t k = 0; k < ids.size(); ++k)
+    result.push_back(to_indices((*lists)[ids[k]], bounds[k], name + "[" + std::to_string(ids[k]) + "]"));
   return result;
 }
 

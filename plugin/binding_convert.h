@@ -19,9 +19,10 @@ std::vector<double> to_std(const KN<double>& values);
 /// Integer list; throws InputError naming `name` for an entry outside [0, bound).
 std::vector<int> to_indices(const KN<long>& values, long bound, const std::string& name);
 
-/// Per-subdomain integer lists from an optional int[int][int] argument (nullptr: none).
-std::vector<std::vector<int>> to_index_lists(const KN<KN<long>>* lists, const std::vector<long>& bounds,
-                                             const std::string& name);
+/// The entries of an optional int[int][int] argument (nullptr: none) for the subdomains
+/// `ids` of this rank, each checked against the subdomain's dof count `bounds[k]`.
+std::vector<std::vector<int>> per_subdomain(const KN<KN<long>>* lists, long count, const std::vector<int>& ids,
+                                            const std::vector<long>& bounds, const std::string& name);
 
 void copy_to(const Vec& from, KN<double>& to);
 

@@ -7,6 +7,9 @@
 #include "feti/errors.h"
 #include "feti/feti_problem.h"
 #include "feti/statistics.h"
+#include "parallel/mpi_communicator.h"
+
+#include <mpi.h>
 
 #include <chrono>
 #include <cstdio>
@@ -49,6 +52,56 @@ auto guarded(const char* function, F&& body) -> decltype(body()) {
   return decltype(body())();
 }
 
+/// The script's communicator (named parameter comm) if given, else the world communicator
+/// under FreeFem++-mpi, else one process. Serial FreeFem++ never initializes MPI.
+std::shared_ptr<const Communicator> communicator(void* script_comm) {
+  int initialized = 0;
+  MPI_Initialized(&initialized);
+  if (!initialized) {
+    if (script_comm) throw InputError("comm: MPI is not initialized (run under FreeFem++-mpi)");
+    return std::make_shared<SerialCommunicator>();
+  }
+  return std::make_shared<MpiCommunicator>(script_comm ? *static_cast<MPI_Comm*>(script_comm) : MPI_COMM_WORLD);
+}
+
+/// Default OpenMP threads per rank: the node's cores shared by the ranks on the node, so
+/// that ranks and threads do not fight for the same cores.
+int default_threads(const Communicator& comm) {
+  int initialized = 0;
+  MPI_Initialized(&initialized);
+  if (!initialized || comm.size() == 1) return 0;  // OpenMP's default
+  MPI_Comm node;
+  int node_ranks = 1;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+  MPI_Comm_size(node, &node_ranks);
+  MPI_Comm_free(&node);
+  return std::max(1, resolve_thread_count(0) / node_ranks);
+}
+
+/// Owner of each subdomain: among the ranks that assembled it (non-empty K[s]), the
+/// (s mod count)-th, so that a script assembling everything on every rank is spread
+/// round-robin and a script assembling each subdomain once keeps its own split.
+std::vector<int> owners(const std::vector<long long>& assembled_here, const Communicator& comm) {
+  std::vector<int> counts;
+  const std::vector<long long> all = comm.allgather(assembled_here, &counts);
+  const size_t S = assembled_here.size();
+  for (int r = 0; r < comm.size(); ++r)
+    if (static_cast<size_t>(counts[static_cast<size_t>(r)]) != S)
+      throw InputError("K: rank " + std::to_string(r) + " has " + std::to_string(counts[static_cast<size_t>(r)]) +
+                       " subdomains, rank " + std::to_string(comm.rank()) + " has " + std::to_string(S));
+  std::vector<int> owner(S, -1);
+  for (size_t s = 0; s < S; ++s) {
+    std::vector<int> providers;
+    for (int r = 0; r < comm.size(); ++r)
+      if (all[static_cast<size_t>(r) * S + s]) providers.push_back(r);
+    if (providers.empty())
+      throw InputError("K[" + std::to_string(s) + "]: empty on every rank (no rank assembled subdomain " +
+                       std::to_string(s) + ")");
+    owner[s] = providers[s % providers.size()];
+  }
+  return owner;
+}
+
 template <class T>
 T* optional_pointer(Expression e, Stack stack) {
   return e ? GetAny<T*>((*e)(stack)) : nullptr;
@@ -67,7 +120,7 @@ std::string optional_string(Expression e, Stack stack, const std::string& fallba
 class FetiSetup : public E_F0mps {
  public:
   typedef long Result;
-  static const int n_name_param = 9;
+  static const int n_name_param = 10;
   static basicAC_F0::name_and_type name_param[];
   Expression nargs[n_name_param];
   Expression K, F, X, Y, body;
@@ -97,57 +150,72 @@ class FetiSetup : public E_F0mps {
     auto& Xs = *GetAny<KN<KN<double>>*>((*X)(stack));
     auto& Ys = *GetAny<KN<KN<double>>*>((*Y)(stack));
     auto& bodies = *GetAny<KN<long>*>((*body)(stack));
+    const std::shared_ptr<const Communicator> comm =
+        communicator(nargs[9] ? GetAny<pcommworld>((*nargs[9])(stack)) : nullptr);
     const long count = Ks.N();
-    const std::pair<const char*, long> sizes[] = {{"F", Fs.N()}, {"X", Xs.N()}, {"Y", Ys.N()}, {"body", bodies.N()}};
-    for (const auto& [name, n] : sizes)
-      if (n != count)
-        throw InputError(std::string(name) + ": has " + std::to_string(n) + " entries, K has " +
-                         std::to_string(count) + " subdomains");
 
-    std::vector<SubdomainInput> subdomains(static_cast<size_t>(count));
-    std::vector<long> dofs;
-    for (long s = 0; s < count; ++s) {
-      SubdomainInput& sub = subdomains[static_cast<size_t>(s)];
-      sub.K = binding::to_sparse(Ks[s], "K[" + std::to_string(s) + "]");
-      sub.f = binding::to_vec(Fs[s]);
-      sub.x = binding::to_std(Xs[s]);
-      sub.y = binding::to_std(Ys[s]);
-      sub.body = static_cast<int>(bodies[s]);
-      dofs.push_back(sub.K.rows());
-    }
-    const auto dirichlet = binding::to_index_lists(optional_pointer<KN<KN<long>>>(nargs[0], stack), dofs, "dirichlet");
-    const auto* values = optional_pointer<KN<KN<double>>>(nargs[1], stack);
-    const auto components = binding::to_index_lists(optional_pointer<KN<KN<long>>>(nargs[5], stack), dofs, "component");
-    if (values && values->N() != count)
-      throw InputError("dirichletValues: has " + std::to_string(values->N()) + " entries for " +
-                       std::to_string(count) + " subdomains");
-    for (long s = 0; s < count; ++s) {
-      SubdomainInput& sub = subdomains[static_cast<size_t>(s)];
-      if (!dirichlet.empty()) sub.dirichlet_dofs = dirichlet[static_cast<size_t>(s)];
-      if (values) sub.dirichlet_values = binding::to_std((*values)[s]);
-      if (!components.empty())
-        sub.component.assign(components[static_cast<size_t>(s)].begin(), components[static_cast<size_t>(s)].end());
-    }
-
+    std::vector<SubdomainInput> subdomains;
+    std::vector<int> ids;
     NodeToNodeContact contact;
-    contact.slave_dofs = binding::to_index_lists(optional_pointer<KN<KN<long>>>(nargs[2], stack), dofs, "contactSlave");
-    contact.master_dofs = binding::to_index_lists(optional_pointer<KN<KN<long>>>(nargs[3], stack), dofs, "contactMaster");
-    contact.gap = optional_real(nargs[4], stack, 0.0);
-
     FetiSetupSettings settings;
-    const std::string variant = optional_string(nargs[6], stack, "feti1");
-    if (variant == "feti1") settings.variant = FetiVariant::feti1;
-    else if (variant == "tfeti") settings.variant = FetiVariant::tfeti;
-    else throw InputError("variant: \"" + variant + "\" is not one of \"feti1\", \"tfeti\"");
-    const std::string factor = optional_string(nargs[7], stack, "simplicial");
-    if (factor == "simplicial") settings.factor = FactorKind::simplicial;
-    else if (factor == "supernodal") settings.factor = FactorKind::supernodal;
-    else throw InputError("factor: \"" + factor + "\" is not one of \"simplicial\", \"supernodal\"");
-    settings.threads = static_cast<int>(optional_int(nargs[8], stack, 0));
-    if (settings.threads < 0) throw InputError("threads: must be >= 0 (0: OpenMP's default)");
+    std::vector<long long> assembled(static_cast<size_t>(count), 0);
+    for (long s = 0; s < count; ++s) assembled[static_cast<size_t>(s)] = Ks[s].pHM() && Ks[s].pHM()->n > 0;
+    // Conversion errors are raised on every rank together, or the others would wait.
+    collectively(*comm, [&] {
+      const std::pair<const char*, long> sizes[] = {{"F", Fs.N()}, {"X", Xs.N()}, {"Y", Ys.N()}, {"body", bodies.N()}};
+      for (const auto& [name, n] : sizes)
+        if (n != count)
+          throw InputError(std::string(name) + ": has " + std::to_string(n) + " entries, K has " +
+                           std::to_string(count) + " subdomains");
+    });
+    const std::vector<int> owner = owners(assembled, *comm);
+    collectively(*comm, [&] {
+      for (long s = 0; s < count; ++s)
+        if (owner[static_cast<size_t>(s)] == comm->rank()) ids.push_back(static_cast<int>(s));
+      std::vector<long> dofs;
+      for (int s : ids) {
+        SubdomainInput sub;
+        sub.K = binding::to_sparse(Ks[s], "K[" + std::to_string(s) + "]");
+        sub.f = binding::to_vec(Fs[s]);
+        sub.x = binding::to_std(Xs[s]);
+        sub.y = binding::to_std(Ys[s]);
+        sub.body = static_cast<int>(bodies[s]);
+        dofs.push_back(sub.K.rows());
+        subdomains.push_back(std::move(sub));
+      }
+      const auto dirichlet = binding::per_subdomain(optional_pointer<KN<KN<long>>>(nargs[0], stack), count, ids, dofs, "dirichlet");
+      const auto components = binding::per_subdomain(optional_pointer<KN<KN<long>>>(nargs[5], stack), count, ids, dofs, "component");
+      const auto* values = optional_pointer<KN<KN<double>>>(nargs[1], stack);
+      if (values && values->N() != count)
+        throw InputError("dirichletValues: has " + std::to_string(values->N()) + " entries for " +
+                         std::to_string(count) + " subdomains");
+      for (size_t k = 0; k < ids.size(); ++k) {
+        SubdomainInput& sub = subdomains[k];
+        if (!dirichlet.empty()) sub.dirichlet_dofs = dirichlet[k];
+        if (values) sub.dirichlet_values = binding::to_std((*values)[ids[k]]);
+        if (!components.empty()) sub.component = components[k];
+      }
+      contact.slave_dofs = binding::per_subdomain(optional_pointer<KN<KN<long>>>(nargs[2], stack), count, ids, dofs, "contactSlave");
+      contact.master_dofs = binding::per_subdomain(optional_pointer<KN<KN<long>>>(nargs[3], stack), count, ids, dofs, "contactMaster");
+      contact.gap = optional_real(nargs[4], stack, 0.0);
 
+      const std::string variant = optional_string(nargs[6], stack, "feti1");
+      if (variant == "feti1") settings.variant = FetiVariant::feti1;
+      else if (variant == "tfeti") settings.variant = FetiVariant::tfeti;
+      else throw InputError("variant: \"" + variant + "\" is not one of \"feti1\", \"tfeti\"");
+      const std::string factor = optional_string(nargs[7], stack, "simplicial");
+      if (factor == "simplicial") settings.factor = FactorKind::simplicial;
+      else if (factor == "supernodal") settings.factor = FactorKind::supernodal;
+      else throw InputError("factor: \"" + factor + "\" is not one of \"simplicial\", \"supernodal\"");
+      settings.threads = static_cast<int>(optional_int(nargs[8], stack, 0));
+      if (settings.threads < 0) throw InputError("threads: must be >= 0 (0: the default)");
+    });
+
+    if (settings.threads == 0) settings.threads = default_threads(*comm);
     const long id = handles().empty() ? 1 : handles().rbegin()->first + 1;
-    handles()[id].problem = std::make_unique<FetiProblem>(std::move(subdomains), contact, settings);
+    auto problem = std::make_unique<FetiProblem>(std::move(subdomains), ids, static_cast<int>(count), contact,
+                                                 settings, comm);
+    handles()[id].problem = std::move(problem);
     return id;
   }
 };
@@ -157,7 +225,7 @@ basicAC_F0::name_and_type FetiSetup::name_param[] = {
     {"contactSlave", &typeid(KN<KN<long>>*)},    {"contactMaster", &typeid(KN<KN<long>>*)},
     {"gap", &typeid(double)},                    {"component", &typeid(KN<KN<long>>*)},
     {"variant", &typeid(std::string*)},          {"factor", &typeid(std::string*)},
-    {"threads", &typeid(long)}};
+    {"threads", &typeid(long)},                  {"comm", &typeid(pcommworld)}};
 
 // ---- int status = fetiSolve(P, U, lambda=..., tol=..., maxit=..., algorithm=..., verbosity=...)
 class FetiSolve : public E_F0mps {
@@ -198,7 +266,7 @@ class FetiSolve : public E_F0mps {
     // Like PETSc's monitors: verbosity 1 prints one line per iteration of the outer solver
     // (SMALBE's multiplier updates, or every MPRGP / CG step), 2 also every inner step.
     int last_outer = -1;
-    if (verbosity >= 1)
+    if (verbosity >= 1 && h.problem->communicator().rank() == 0)
       settings.monitor = [verbosity, &last_outer](const ProgressLine& line) {
         const bool outer_solver = std::string(line.solver) == "smalbe";
         if (outer_solver && verbosity < 2 && line.iteration == last_outer) return;
@@ -209,10 +277,12 @@ class FetiSolve : public E_F0mps {
     h.result = h.problem->solve(settings);
     const FetiResult& r = *h.result;
     auto& u = *GetAny<KN<KN<double>>*>((*U)(stack));
-    u.resize(static_cast<long>(r.u.size()));
-    for (size_t s = 0; s < r.u.size(); ++s) binding::copy_to(r.u[s], u[static_cast<long>(s)]);
+    const std::vector<int>& ids = h.problem->global_ids();
+    u.resize(h.problem->subdomain_count());
+    for (long s = 0; s < u.N(); ++s) u[s].resize(0);  // subdomains of other ranks stay empty
+    for (size_t k = 0; k < r.u.size(); ++k) binding::copy_to(r.u[k], u[ids[k]]);
     if (auto* lambda = optional_pointer<KN<double>>(nargs[0], stack)) binding::copy_to(r.lambda, *lambda);
-    if (verbosity >= 1)
+    if (verbosity >= 1 && h.problem->communicator().rank() == 0)
       std::printf("ffeti: %s after %d Hessian multiplications (%d outer), path %s, ||gP||/||b|| %.2e\n",
                   to_string(r.status).c_str(), r.counts.hessian, r.counts.outer, r.path.c_str(),
                   r.gradient_norm / r.gradient_reference);
@@ -297,6 +367,31 @@ class FetiContact : public E_F0mps {
   }
 };
 
+/// Rank and size of MPI's world communicator; 0 and 1 when MPI is not initialized, so that
+/// one script runs under FreeFem++ and FreeFem++-mpi (FreeFEM's mpirank exists only there).
+long feti_rank() {
+  int initialized = 0, rank = 0;
+  MPI_Initialized(&initialized);
+  if (initialized) MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  return rank;
+}
+long feti_ranks() {
+  int initialized = 0, size = 1;
+  MPI_Initialized(&initialized);
+  if (initialized) MPI_Comm_size(MPI_COMM_WORLD, &size);
+  return size;
+}
+
+/// Sum of `value` over the ranks of the problem's communicator (itself in one process).
+double feti_sum(const long& id, const double& value) {
+  return guarded("fetiSum", [&] { return handle(id).problem->communicator().sum(value); });
+}
+
+std::string* feti_rank_report(Stack stack, const long& id) {
+  const std::string text = guarded("fetiRankReport", [&] { return format_rank_report(*handle(id).problem); });
+  return Add2StackOfPtr2Free(stack, new std::string(text));
+}
+
 /// Wall-clock seconds since an arbitrary origin: FreeFEM's clock() is CPU time, which
 /// overstates the time of threaded phases.
 double feti_wall_time() {
@@ -321,6 +416,10 @@ static void Load_Init() {
   Global.Add("fetiSetLoads", "(", new OneOperator2_<long, long, KN<KN<double>>*>(feti_set_loads));
   Global.Add("fetiFree", "(", new OneOperator1_<long, long>(feti_free));
   Global.Add("fetiContact", "(", new OneOperatorCode<FetiContact>());
+  Global.Add("fetiSum", "(", new OneOperator2_<double, long, double>(feti_sum));
+  Global.Add("fetiRank", "(", new OneOperator0<long>(feti_rank));
+  Global.Add("fetiRanks", "(", new OneOperator0<long>(feti_ranks));
+  Global.Add("fetiRankReport", "(", new OneOperator1s_<std::string*, long>(feti_rank_report));
   Global.Add("fetiWallTime", "(", new OneOperator0<double>(feti_wall_time));
 }
 

@@ -120,7 +120,7 @@ void FetiProblem::set_up(const NodeToNodeContact& local_contact) {
   Stopwatch factor_clock;
   factorize();
   F_ = std::make_unique<DualOperator>(subdomains_, local_, *sum_, constraints_.rows(), settings_.threads);
-  setup_times_.factorization = factor_clock.seconds();
+  setup_times_.factorization = local_factor_seconds_ = factor_clock.seconds();
 
   int local_floating = 0;
   for (const auto& s : subdomains_) local_floating += s->floating() ? 1 : 0;
@@ -169,7 +169,7 @@ void FetiProblem::gather_rank_statistics(double solve_seconds) const {
   long primal = 0;
   for (const auto& in : inputs_) primal += in.K.rows();
   const std::vector<double> all = comm_->allgather(std::vector<double>{
-      double(local_subdomain_count()), double(primal), setup_times_.factorization, solve_seconds, peak_memory_mb()});
+      double(local_subdomain_count()), double(primal), local_factor_seconds_, solve_seconds, peak_memory_mb()});
   rank_statistics_.clear();
   for (size_t p = 0; p + 5 <= all.size(); p += 5)
     rank_statistics_.push_back({static_cast<int>(p / 5), static_cast<int>(all[p]), static_cast<long>(all[p + 1]),

@@ -146,6 +146,7 @@ class FetiProblem {
   mutable std::vector<RankStatistics> rank_statistics_;
   Vec d_, e_, lambda_tilde_, b_;        // dual data; b = P(d - F lambda~)
   PhaseTimes setup_times_;
+  double local_factor_seconds_ = 0;  // this rank's, for the rank report
   mutable std::optional<double> norm_F_, norm_PFP_;  // cached: same F for every load case
   mutable int norm_F_cost_ = 0, norm_PFP_cost_ = 0;
 };
