@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Benchmarks (not tests: they measure and report). Each writes a page with tables and
+# plots into docs/results/ from one run on this machine.
+#   ./scripts/benchmark.sh model-problem   numerical scalability, accuracy against time,
+#                                          solver variants, direct-solver floor (~2 min)
+#   ./scripts/benchmark.sh parallel        MPI ranks and OpenMP threads, h = 1/1024 (~3 min)
+#   ./scripts/benchmark.sh                 both
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+"$root/scripts/setup.sh"
+dpkg-query -W -f='${Status}' python3-matplotlib 2>/dev/null | grep -q "install ok installed" || {
+  as_root=(); [ "$(id -u)" -eq 0 ] || as_root=(sudo)
+  "${as_root[@]}" apt-get install -y -qq python3-matplotlib >/dev/null
+}
+case "${1:-all}" in
+  model-problem) /usr/bin/python3 "$root/scripts/model_problem_benchmark.py" ;;
+  parallel) /usr/bin/python3 "$root/scripts/parallel_benchmark.py" ;;
+  all) /usr/bin/python3 "$root/scripts/model_problem_benchmark.py"
+       /usr/bin/python3 "$root/scripts/parallel_benchmark.py" ;;
+  *) echo "usage: $0 [model-problem|parallel]" >&2; exit 2 ;;
+esac
