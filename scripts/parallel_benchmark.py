@@ -14,15 +14,20 @@ import matplotlib.pyplot as plt  # noqa: E402
 from ffeti_bench import OUT, f, machine, model_problem  # noqa: E402
 
 
+def fastest_of_two(n, **options):
+    """The run with the shorter dual solve of two: single runs on a shared machine vary."""
+    return min((model_problem(n, **options) for _ in range(2)), key=lambda r: f(r, "time_solve"))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--skip-1024", action="store_true", help="leave out h = 1/1024")
     options = parser.parse_args()
     started = time.time()
     strong = [
-        ("1 process, 1 thread", 1, 1, model_problem(512, threads=1)),
-        ("1 process, 2 OpenMP threads", 1, 2, model_problem(512, threads=2)),
-        ("2 MPI ranks, 1 thread each", 2, 1, model_problem(512, ranks=2)),
+        ("1 process, 1 thread", 1, 1, fastest_of_two(512, threads=1)),
+        ("1 process, 2 OpenMP threads", 1, 2, fastest_of_two(512, threads=2)),
+        ("2 MPI ranks, 1 thread each", 2, 1, fastest_of_two(512, ranks=2)),
     ]
     # Subdomains per rank about constant at H/h = 64: n = 320 gives 50 subdomains, n = 448 gives 98.
     weak = [
@@ -79,7 +84,7 @@ def write_page(strong, weak, large, elapsed):
         "factorizes its own subdomains (round-robin), the dual vectors are replicated, one",
         "allgather per dual operator application. With several ranks each rank runs",
         "cores / ranks OpenMP threads by default. Efficiency = T(1 process, 1 thread) /",
-        "(cores used x T).",
+        "(cores used x T). Strong-scaling rows are the faster of two runs.",
         "",
         "## Strong scaling, h = 1/512 (540800 unknowns, 128 subdomains)",
         "",
@@ -89,7 +94,7 @@ def write_page(strong, weak, large, elapsed):
     for name, ranks, threads, r in strong:
         cores = ranks * threads
         efficiency = f(base, "time_solve") / (cores * f(r, "time_solve"))
-        lines.append(f"| {name} | {cores} | {f(r, 'time_assembly'):.2f} | {f(r, "time_factor"):.2f} | "
+        lines.append(f"| {name} | {cores} | {f(r, 'time_assembly'):.2f} | {f(r, 'time_factor'):.2f} | "
                      f"{f(r, 'time_solve'):.2f} | {f(r, 'time_recovery'):.3f} | {r['hessian']} | "
                      f"{100 * efficiency:.0f}% | {r['energy']} |")
     lines += ["", "![strong scaling](parallel.png)", "", "Load balance with 2 ranks:", ""]
@@ -108,7 +113,7 @@ def write_page(strong, weak, large, elapsed):
     for name, ranks, r in weak:
         per_product = 1000 * f(r, "time_solve") / (f(r, "hessian") + f(r, "hessian_norm_estimate"))
         lines.append(f"| {name} | {r['subdomains']} | {r['primal']} | {int(r['subdomains']) / ranks:.0f} | "
-                     f"{f(r, "time_factor"):.2f} | {f(r, 'time_solve'):.2f} | {r['hessian']} | {per_product:.1f} |")
+                     f"{f(r, 'time_factor'):.2f} | {f(r, 'time_solve'):.2f} | {r['hessian']} | {per_product:.1f} |")
     lines.append("")
     lines.append("Weak-scaling efficiency of one dual operator application: "
                  f"{100 * (f(w1, 'time_solve') / (f(w1, 'hessian') + 15)) / (f(w2, 'time_solve') / (f(w2, 'hessian') + 15)):.0f}%.")
@@ -123,8 +128,9 @@ def write_page(strong, weak, large, elapsed):
         for name, r in large:
             memory = ", ".join(f"{float(d['peak_memory_mb']):.0f}" for d in r["ranks_detail"])
             lines.append(f"| {name} | {r['primal']} | {r['dual']} | {r['hessian']} | {f(r, 'time_assembly'):.1f} | "
-                         f"{f(r, "time_factor"):.2f} | {f(r, 'time_solve'):.2f} | {f(r, 'time_total'):.1f} | {memory} | {r['status']} |")
+                         f"{f(r, 'time_factor'):.2f} | {f(r, 'time_solve'):.2f} | {f(r, 'time_total'):.1f} | {memory} | {r['status']} |")
     lines.append("")
+    lines.append(open(os.path.join(OUT, "parallel-reading.md")).read())
     with open(os.path.join(OUT, "parallel.md"), "w") as page:
         page.write("\n".join(lines))
 
