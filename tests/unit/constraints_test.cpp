@@ -24,10 +24,7 @@ TEST(Constraints, SeedCountsForFeti1) {
   // 1 cross point: 9 + 9 - 1 = 17 interface nodes, 16 with 2 copies and 1 with 4 -> 19 rows.
   // FETI-1 drops the row on x = 0 of body 0 (both copies fixed): 18 + 19 gluing rows,
   // plus one contact row per physical node on x = 1: 9.
-  test::MembraneOptions o;
-  o.n = 8;
-  o.N = 2;
-  const auto subs = test::membrane_subdomains(o);
+  const auto subs = test::membrane_subdomains(test::membrane_options(8, 2));
   const Constraints c = build_constraints(subs, test::membrane_contact(subs), FetiVariant::feti1);
   EXPECT_EQ(c.count(RowKind::gluing), 18 + 19);
   EXPECT_EQ(c.count(RowKind::contact), 9);
@@ -38,10 +35,7 @@ TEST(Constraints, SeedCountsForFeti1) {
 }
 
 TEST(Constraints, TotalFetiAddsDirichletRowsAndStaysFullRank) {
-  test::MembraneOptions o;
-  o.n = 8;
-  o.N = 2;
-  const auto subs = test::membrane_subdomains(o);
+  const auto subs = test::membrane_subdomains(test::membrane_options(8, 2));
   const Constraints c = build_constraints(subs, test::membrane_contact(subs), FetiVariant::tfeti);
   EXPECT_EQ(c.count(RowKind::dirichlet), 10);  // 9 nodes on x = 0: two subdomains of 5
   EXPECT_EQ(c.count(RowKind::gluing), 18 + 19);
@@ -50,10 +44,7 @@ TEST(Constraints, TotalFetiAddsDirichletRowsAndStaysFullRank) {
 }
 
 TEST(Constraints, GluingRowsVanishOnContinuousFields) {
-  test::MembraneOptions o;
-  o.n = 12;
-  o.N = 3;
-  const auto subs = test::membrane_subdomains(o);
+  const auto subs = test::membrane_subdomains(test::membrane_options(12, 3));
   const Constraints c = build_constraints(subs, test::membrane_contact(subs), FetiVariant::tfeti);
   // u = x + 2y on every subdomain: every gluing row is satisfied exactly.
   std::vector<LocalConstraints> local;
@@ -72,10 +63,7 @@ TEST(Constraints, GluingRowsVanishOnContinuousFields) {
 }
 
 TEST(Constraints, ContactSlaveWithoutMasterIsAnInputError) {
-  test::MembraneOptions o;
-  o.n = 4;
-  o.N = 1;
-  auto subs = test::membrane_subdomains(o);
+  auto subs = test::membrane_subdomains(test::membrane_options(4, 1));
   NodeToNodeContact contact = test::membrane_contact(subs);
   contact.master_dofs[1].pop_back();  // one slave loses its partner
   try {

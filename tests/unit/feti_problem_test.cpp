@@ -14,13 +14,6 @@
 namespace ffeti {
 namespace {
 
-test::MembraneOptions options(int n, int N) {
-  test::MembraneOptions o;
-  o.n = n;
-  o.N = N;
-  return o;
-}
-
 FetiProblem membrane_problem(const test::MembraneOptions& o, FetiVariant variant, int threads = 0) {
   auto subs = test::membrane_subdomains(o);
   NodeToNodeContact contact = o.with_contact ? test::membrane_contact(subs) : NodeToNodeContact{};
@@ -85,7 +78,7 @@ DualPieces dual_pieces(const test::MembraneOptions& o) {
 }
 
 TEST(DualOperator, ProjectedOperatorMatchesDenseExplicit) {
-  DualPieces p = dual_pieces(options(8, 2));
+  DualPieces p = dual_pieces(test::membrane_options(8, 2));
   std::vector<int> bodies;
   for (const auto& s : p.subs) bodies.push_back(s.body);
   const int m = p.constraints.rows();
@@ -124,7 +117,7 @@ TEST(DualOperator, ProjectedOperatorMatchesDenseExplicit) {
 }
 
 TEST(DualOperator, CoerciveOperatorMatchesDenseExplicit) {
-  test::MembraneOptions o = options(8, 2);
+  test::MembraneOptions o = test::membrane_options(8, 2);
   o.with_contact = false;
   o.body2 = false;
   std::vector<SubdomainInput> subs = test::membrane_subdomains(o);
@@ -166,8 +159,8 @@ TEST(FetiProblem, MembraneMatchesMonolithicActiveSetReference) {
   const test::ReferenceSolution reference = test::membrane_reference(n);
   ASSERT_FALSE(reference.active_y.empty());
   for (FetiVariant variant : {FetiVariant::feti1, FetiVariant::tfeti}) {
-    const auto subs = test::membrane_subdomains(options(n, 2));
-    const FetiProblem problem = membrane_problem(options(n, 2), variant);
+    const auto subs = test::membrane_subdomains(test::membrane_options(n, 2));
+    const FetiProblem problem = membrane_problem(test::membrane_options(n, 2), variant);
     DualSolveSettings settings;
     settings.tolerance = 1e-10;
     const FetiResult result = problem.solve(settings);
@@ -181,7 +174,7 @@ TEST(FetiProblem, MembraneMatchesMonolithicActiveSetReference) {
 }
 
 TEST(FetiProblem, SeedToleranceGivesSmallKktResidualsAndBoundedIterations) {
-  const FetiProblem problem = membrane_problem(options(32, 2), FetiVariant::feti1);
+  const FetiProblem problem = membrane_problem(test::membrane_options(32, 2), FetiVariant::feti1);
   const FetiResult result = problem.solve();
   ASSERT_EQ(result.status, SolveStatus::converged);
   EXPECT_LE(result.gradient_norm, 1e-4 * result.gradient_reference);
@@ -195,13 +188,13 @@ TEST(FetiProblem, SeedToleranceGivesSmallKktResidualsAndBoundedIterations) {
 }
 
 TEST(FetiProblem, PathFollowsTheScene) {
-  test::MembraneOptions single = options(8, 1);
+  test::MembraneOptions single = test::membrane_options(8, 1);
   single.body2 = false;
   single.with_contact = false;
   EXPECT_EQ(membrane_problem(single, FetiVariant::feti1).path(), "cholesky");
 
   // Body 0 split 2 x 2 without contact: the right column floats -> projected CG.
-  test::MembraneOptions glued = options(8, 2);
+  test::MembraneOptions glued = test::membrane_options(8, 2);
   glued.body2 = false;
   glued.with_contact = false;
   const FetiProblem projected = membrane_problem(glued, FetiVariant::feti1);
@@ -209,7 +202,7 @@ TEST(FetiProblem, PathFollowsTheScene) {
   EXPECT_GT(projected.coarse_dimension(), 0);
 
   // Both bodies fixed, one subdomain each: coercive contact -> MPRGP, no coarse space.
-  test::MembraneOptions coercive = options(8, 1);
+  test::MembraneOptions coercive = test::membrane_options(8, 1);
   coercive.fix_right_body = true;
   const FetiProblem mprgp_scene = membrane_problem(coercive, FetiVariant::feti1);
   EXPECT_EQ(mprgp_scene.path(), "mprgp");
@@ -219,7 +212,7 @@ TEST(FetiProblem, PathFollowsTheScene) {
   EXPECT_EQ(r.phases.find("coarse"), std::string::npos);
   EXPECT_GT(r.counts.hessian_norm_estimate, 0);
 
-  EXPECT_EQ(membrane_problem(options(8, 2), FetiVariant::feti1).path(), "smalbe");
+  EXPECT_EQ(membrane_problem(test::membrane_options(8, 2), FetiVariant::feti1).path(), "smalbe");
 
   // Each path's solution satisfies the primal KKT conditions.
   for (const test::MembraneOptions& o : {single, glued, coercive}) {
@@ -230,7 +223,7 @@ TEST(FetiProblem, PathFollowsTheScene) {
 }
 
 TEST(FetiProblem, CoarseSpaceOnlyWhereSomethingFloats) {
-  test::MembraneOptions o = options(8, 1);
+  test::MembraneOptions o = test::membrane_options(8, 1);
   o.fix_right_body = true;
   const FetiProblem problem = membrane_problem(o, FetiVariant::feti1);
   EXPECT_EQ(problem.floating_subdomains(), 0);
@@ -240,8 +233,8 @@ TEST(FetiProblem, CoarseSpaceOnlyWhereSomethingFloats) {
 }
 
 TEST(FetiProblem, SecondLoadCaseReusesTheFactorizations) {
-  FetiProblem problem = membrane_problem(options(16, 2), FetiVariant::feti1);
-  auto subs = test::membrane_subdomains(options(16, 2));
+  FetiProblem problem = membrane_problem(test::membrane_options(16, 2), FetiVariant::feti1);
+  auto subs = test::membrane_subdomains(test::membrane_options(16, 2));
   std::vector<Vec> doubled;
   for (auto& s : subs) doubled.push_back(2.0 * s.f);
   problem.set_loads(doubled);
@@ -249,25 +242,25 @@ TEST(FetiProblem, SecondLoadCaseReusesTheFactorizations) {
   settings.tolerance = 1e-10;
   const FetiResult reused = problem.solve(settings);
   for (auto& s : subs) s.f *= 2.0;
-  const FetiProblem fresh(std::move(subs), test::membrane_contact(test::membrane_subdomains(options(16, 2))));
+  const FetiProblem fresh(std::move(subs), test::membrane_contact(test::membrane_subdomains(test::membrane_options(16, 2))));
   const FetiResult direct = fresh.solve(settings);
   ASSERT_EQ(reused.status, SolveStatus::converged);
   EXPECT_NEAR(reused.energy, direct.energy, 1e-9 * std::abs(direct.energy));
   // Linear scaling: doubling the load doubles u and multiplies the energy by 4.
-  const FetiResult single = membrane_problem(options(16, 2), FetiVariant::feti1).solve(settings);
+  const FetiResult single = membrane_problem(test::membrane_options(16, 2), FetiVariant::feti1).solve(settings);
   EXPECT_NEAR(reused.energy, 4 * single.energy, 1e-8 * std::abs(reused.energy));
 }
 
 TEST(FetiProblem, ThreadCountDoesNotChangeTheResult) {
-  const FetiResult one = membrane_problem(options(32, 4), FetiVariant::feti1, 1).solve();
-  const FetiResult two = membrane_problem(options(32, 4), FetiVariant::feti1, 2).solve();
+  const FetiResult one = membrane_problem(test::membrane_options(32, 4), FetiVariant::feti1, 1).solve();
+  const FetiResult two = membrane_problem(test::membrane_options(32, 4), FetiVariant::feti1, 2).solve();
   EXPECT_EQ(one.counts.hessian, two.counts.hessian);
   EXPECT_EQ(one.counts.outer, two.counts.outer);
   EXPECT_EQ(one.lambda, two.lambda);  // bitwise: the scatter order is fixed
 }
 
 TEST(FetiProblem, NonConvergenceIsAStatusNotAnException) {
-  const FetiProblem problem = membrane_problem(options(16, 2), FetiVariant::feti1);
+  const FetiProblem problem = membrane_problem(test::membrane_options(16, 2), FetiVariant::feti1);
   DualSolveSettings settings;
   settings.max_hessian = 3;
   const FetiResult result = problem.solve(settings);
@@ -286,7 +279,7 @@ void expect_input_error(const std::function<void()>& action, const std::string& 
 
 TEST(FetiProblem, BadInputIsAnErrorNamingTheArgument) {
   const auto make = [](const std::function<void(std::vector<SubdomainInput>&)>& spoil) {
-    auto subs = test::membrane_subdomains(options(8, 2));
+    auto subs = test::membrane_subdomains(test::membrane_options(8, 2));
     const NodeToNodeContact contact = test::membrane_contact(subs);
     spoil(subs);
     FetiProblem problem(std::move(subs), contact);
@@ -299,12 +292,12 @@ TEST(FetiProblem, BadInputIsAnErrorNamingTheArgument) {
   expect_input_error([&] { make([](auto& s) { s[0].dirichlet_dofs.push_back(100000); }); }, "dirichlet[0]");
   // A floating body with no condition at all: its rigid mode is unrestrained.
   expect_input_error([] {
-    auto subs = test::membrane_subdomains(options(8, 2));
+    auto subs = test::membrane_subdomains(test::membrane_options(8, 2));
     FetiProblem problem(std::move(subs), NodeToNodeContact{});
   }, "body 1");
   DualSolveSettings bad;
   bad.tolerance = 0;
-  expect_input_error([&] { membrane_problem(options(8, 1), FetiVariant::feti1).solve(bad); }, "tol");
+  expect_input_error([&] { membrane_problem(test::membrane_options(8, 1), FetiVariant::feti1).solve(bad); }, "tol");
 }
 
 }  // namespace

@@ -51,6 +51,13 @@ SubdomainInput p1_rectangle(double x0, double y0, double w, double h, int nx, in
   return s;
 }
 
+MembraneOptions membrane_options(int n, int N) {
+  MembraneOptions o;
+  o.n = n;
+  o.N = N;
+  return o;
+}
+
 std::vector<SubdomainInput> membrane_subdomains(const MembraneOptions& o) {
   const auto load = [](double x, double y) {
     if (x < 1) return y > 0.75 ? -3.0 : 0.0;
@@ -85,10 +92,7 @@ NodeToNodeContact membrane_contact(const std::vector<SubdomainInput>& subs) {
 }
 
 ReferenceSolution membrane_reference(int n) {
-  MembraneOptions o;
-  o.n = n;
-  o.N = 1;
-  const std::vector<SubdomainInput> bodies = membrane_subdomains(o);  // one subdomain each
+  const std::vector<SubdomainInput> bodies = membrane_subdomains(membrane_options(n, 1));  // one subdomain each
   const int n0 = static_cast<int>(bodies[0].K.rows()), n1 = static_cast<int>(bodies[1].K.rows());
   // Unknowns: body 0 without its Dirichlet dofs, then body 1.
   std::vector<int> index0(n0, -1);

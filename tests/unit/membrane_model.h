@@ -24,6 +24,9 @@ struct MembraneOptions {
   bool body2 = true;
 };
 
+/// Options with n cells per unit length and N x N subdomains per body, the rest default.
+MembraneOptions membrane_options(int n, int N);
+
 /// Body 0 = (0,1)^2 with u = 0 at x = 0, body 1 = (1,2)x(0,1); energy as the seed prints it
 /// (int |grad u|^2 - int f u, so K = 2 x Laplacian), f = -3 on y > 0.75 in body 0 and
 /// f = -1 on y < 0.25 in body 1.
