@@ -120,7 +120,7 @@ std::string optional_string(Expression e, Stack stack, const std::string& fallba
 class FetiSetup : public E_F0mps {
  public:
   typedef long Result;
-  static const int n_name_param = 10;
+  static const int n_name_param = 13;
   static basicAC_F0::name_and_type name_param[];
   Expression nargs[n_name_param];
   Expression K, F, X, Y, body;
@@ -156,7 +156,7 @@ class FetiSetup : public E_F0mps {
 
     std::vector<SubdomainInput> subdomains;
     std::vector<int> ids;
-    NodeToNodeContact contact;
+    ContactInput contact;
     FetiSetupSettings settings;
     std::vector<long long> assembled(static_cast<size_t>(count), 0);
     for (long s = 0; s < count; ++s) assembled[static_cast<size_t>(s)] = Ks[s].pHM() && Ks[s].pHM()->n > 0;
@@ -198,6 +198,24 @@ class FetiSetup : public E_F0mps {
       contact.slave_dofs = binding::per_subdomain(optional_pointer<KN<KN<long>>>(nargs[2], stack), count, ids, dofs, "contactSlave");
       contact.master_dofs = binding::per_subdomain(optional_pointer<KN<KN<long>>>(nargs[3], stack), count, ids, dofs, "contactMaster");
       contact.gap = optional_real(nargs[4], stack, 0.0);
+      const auto segment_dofs = binding::per_subdomain(optional_pointer<KN<KN<long>>>(nargs[10], stack), count, ids, dofs, "contactSegments");
+      for (size_t k = 0; k < segment_dofs.size(); ++k) {
+        if (segment_dofs[k].size() % 4 != 0)
+          throw InputError("contactSegments[" + std::to_string(ids[k]) + "]: needs 4 dofs per segment (a_x, a_y, b_x, b_y)");
+        contact.master_segments.emplace_back();
+        for (size_t i = 0; i < segment_dofs[k].size(); i += 4)
+          contact.master_segments.back().push_back({segment_dofs[k][i], segment_dofs[k][i + 1],
+                                                    segment_dofs[k][i + 2], segment_dofs[k][i + 3]});
+      }
+      if (const auto* obstacle = optional_pointer<KN<double>>(nargs[11], stack)) {
+        if (obstacle->N() != 4)
+          throw InputError("obstacle: needs [point x, point y, normal x, normal y], got " +
+                           std::to_string(obstacle->N()) + " entries");
+        contact.obstacle = true;
+        contact.obstacle_point = {(*obstacle)[0], (*obstacle)[1]};
+        contact.obstacle_normal = {(*obstacle)[2], (*obstacle)[3]};
+      }
+      contact.search_distance = optional_real(nargs[12], stack, contact.search_distance);
 
       const std::string variant = optional_string(nargs[6], stack, "feti1");
       if (variant == "feti1") settings.variant = FetiVariant::feti1;
@@ -225,7 +243,9 @@ basicAC_F0::name_and_type FetiSetup::name_param[] = {
     {"contactSlave", &typeid(KN<KN<long>>*)},    {"contactMaster", &typeid(KN<KN<long>>*)},
     {"gap", &typeid(double)},                    {"component", &typeid(KN<KN<long>>*)},
     {"variant", &typeid(std::string*)},          {"factor", &typeid(std::string*)},
-    {"threads", &typeid(long)},                  {"comm", &typeid(pcommworld)}};
+    {"threads", &typeid(long)},                  {"comm", &typeid(pcommworld)},
+    {"contactSegments", &typeid(KN<KN<long>>*)}, {"obstacle", &typeid(KN<double>*)},
+    {"contactRadius", &typeid(double)}};
 
 // ---- int status = fetiSolve(P, U, lambda=..., tol=..., maxit=..., algorithm=..., verbosity=...)
 class FetiSolve : public E_F0mps {

@@ -64,7 +64,7 @@ TEST(Constraints, GluingRowsVanishOnContinuousFields) {
 
 TEST(Constraints, ContactSlaveWithoutMasterIsAnInputError) {
   auto subs = test::membrane_subdomains(test::membrane_options(4, 1));
-  NodeToNodeContact contact = test::membrane_contact(subs);
+  ContactInput contact = test::membrane_contact(subs);
   contact.master_dofs[1].pop_back();  // one slave loses its partner
   try {
     build_constraints(subs, contact, FetiVariant::feti1);

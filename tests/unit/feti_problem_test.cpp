@@ -16,7 +16,7 @@ namespace {
 
 FetiProblem membrane_problem(const test::MembraneOptions& o, FetiVariant variant, int threads = 0) {
   auto subs = test::membrane_subdomains(o);
-  NodeToNodeContact contact = o.with_contact ? test::membrane_contact(subs) : NodeToNodeContact{};
+  ContactInput contact = o.with_contact ? test::membrane_contact(subs) : ContactInput{};
   FetiSetupSettings setup;
   setup.variant = variant;
   setup.threads = threads;
@@ -280,7 +280,7 @@ void expect_input_error(const std::function<void()>& action, const std::string& 
 TEST(FetiProblem, BadInputIsAnErrorNamingTheArgument) {
   const auto make = [](const std::function<void(std::vector<SubdomainInput>&)>& spoil) {
     auto subs = test::membrane_subdomains(test::membrane_options(8, 2));
-    const NodeToNodeContact contact = test::membrane_contact(subs);
+    const ContactInput contact = test::membrane_contact(subs);
     spoil(subs);
     FetiProblem problem(std::move(subs), contact);
   };
@@ -293,7 +293,7 @@ TEST(FetiProblem, BadInputIsAnErrorNamingTheArgument) {
   // A floating body with no condition at all: its rigid mode is unrestrained.
   expect_input_error([] {
     auto subs = test::membrane_subdomains(test::membrane_options(8, 2));
-    FetiProblem problem(std::move(subs), NodeToNodeContact{});
+    FetiProblem problem(std::move(subs), ContactInput{});
   }, "body 1");
   DualSolveSettings bad;
   bad.tolerance = 0;

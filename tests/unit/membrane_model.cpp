@@ -80,8 +80,8 @@ std::vector<SubdomainInput> membrane_subdomains(const MembraneOptions& o) {
   return subs;
 }
 
-NodeToNodeContact membrane_contact(const std::vector<SubdomainInput>& subs) {
-  NodeToNodeContact contact;
+ContactInput membrane_contact(const std::vector<SubdomainInput>& subs) {
+  ContactInput contact;
   contact.slave_dofs.resize(subs.size());
   contact.master_dofs.resize(subs.size());
   for (size_t s = 0; s < subs.size(); ++s)

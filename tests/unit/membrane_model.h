@@ -31,7 +31,7 @@ MembraneOptions membrane_options(int n, int N);
 /// (int |grad u|^2 - int f u, so K = 2 x Laplacian), f = -3 on y > 0.75 in body 0 and
 /// f = -1 on y < 0.25 in body 1.
 std::vector<SubdomainInput> membrane_subdomains(const MembraneOptions& options);
-NodeToNodeContact membrane_contact(const std::vector<SubdomainInput>& subdomains);
+ContactInput membrane_contact(const std::vector<SubdomainInput>& subdomains);
 
 /// Monolithic reference: the same discrete problem on the unsplit bodies, solved by a
 /// primal-dual active set method with Eigen's SparseLU.

@@ -70,12 +70,17 @@ void add_dirichlet_rows(const std::vector<DofRecord>& records, std::vector<Row>&
     if (r.fixed) rows.push_back({{{r.subdomain, r.dof, 1.0}}, r.value, RowKind::dirichlet, true});
 }
 
-void add_contact_rows(const std::vector<DofRecord>& records, double gap, double snap, std::vector<Row>& rows) {
+/// The slave dofs, one copy per physical dof: other copies are glued to it.
+std::vector<Located> unique_slaves(const std::vector<DofRecord>& records, double snap) {
   std::vector<Located> slaves = locate(records, snap, [](const DofRecord& r) { return r.slave; });
-  // One row per physical slave node: its copies in other subdomains are glued to it.
   slaves.erase(std::unique(slaves.begin(), slaves.end(),
                            [](const Located& a, const Located& b) { return a.key() == b.key(); }),
                slaves.end());
+  return slaves;
+}
+
+void add_node_to_node_rows(const std::vector<DofRecord>& records, double gap, double snap, std::vector<Row>& rows) {
+  const std::vector<Located> slaves = unique_slaves(records, snap);
   std::vector<Located> masters = locate(records, snap, [](const DofRecord& r) { return r.master; });
   std::stable_sort(masters.begin(), masters.end(),
                    [](const Located& a, const Located& b) { return a.position() < b.position(); });
@@ -93,6 +98,74 @@ void add_contact_rows(const std::vector<DofRecord>& records, double gap, double 
     rows.push_back({{{slave.record->subdomain, slave.record->dof, 1.0},
                      {master->record->subdomain, master->record->dof, -1.0}},
                     gap, RowKind::contact, false});
+  }
+}
+
+/// A slave node of the node-to-segment or obstacle contact: its two dofs and position.
+struct SlaveNode {
+  const DofRecord* x_dof;
+  const DofRecord* y_dof;
+};
+
+std::vector<SlaveNode> slave_nodes(const std::vector<DofRecord>& records, double snap) {
+  const std::vector<Located> slaves = unique_slaves(records, snap);  // sorted: component 0 first
+  std::vector<SlaveNode> nodes;
+  for (const Located& s : slaves) {
+    if (s.record->component != 0) continue;
+    const auto partner = std::find_if(slaves.begin(), slaves.end(), [&](const Located& o) {
+      return o.record->component == 1 && o.record->body == s.record->body && o.ix == s.ix && o.iy == s.iy;
+    });
+    if (partner == slaves.end())
+      throw InputError("contactSlave[" + std::to_string(s.record->subdomain) + "]: dof " +
+                       std::to_string(s.record->dof) + " has no dof of component 1 at its node: list both "
+                       "components of each slave node for node-to-segment or obstacle contact");
+    nodes.push_back({s.record, partner->record});
+  }
+  return nodes;
+}
+
+void add_node_to_segment_rows(const std::vector<DofRecord>& records, const std::vector<SegmentRecord>& segments,
+                              const ContactInput& contact, double snap, std::vector<Row>& rows) {
+  for (const SlaveNode& node : slave_nodes(records, snap)) {
+    const double sx = node.x_dof->x, sy = node.x_dof->y;
+    const SegmentRecord* best = nullptr;
+    double best_distance = contact.search_distance, best_xi = 0;
+    for (const SegmentRecord& seg : segments) {
+      if (seg.body == node.x_dof->body) continue;
+      const double dx = seg.bx - seg.ax, dy = seg.by - seg.ay, length_sq = dx * dx + dy * dy;
+      const double xi = std::clamp(((sx - seg.ax) * dx + (sy - seg.ay) * dy) / length_sq, 0.0, 1.0);
+      const double distance = std::hypot(sx - (seg.ax + xi * dx), sy - (seg.ay + xi * dy));
+      if (distance < best_distance) best = &seg, best_distance = distance, best_xi = xi;
+    }
+    if (!best) continue;  // no master segment within reach: no contact possible here
+    const double dx = best->bx - best->ax, dy = best->by - best->ay, length = std::hypot(dx, dy);
+    const double nx = dy / length, ny = -dx / length;  // outward: the body lies on the left
+    const double px = best->ax + best_xi * dx, py = best->ay + best_xi * dy;
+    Row row{{}, nx * (sx - px) + ny * (sy - py), RowKind::contact, false};  // gap along n
+    const auto add = [&](int s, int dof, double coefficient) {
+      if (coefficient != 0) row.entries.push_back({s, dof, coefficient});
+    };
+    add(node.x_dof->subdomain, node.x_dof->dof, -nx);  // n.(u_p - u_slave) <= gap
+    add(node.y_dof->subdomain, node.y_dof->dof, -ny);
+    add(best->subdomain, best->dofs[0], (1 - best_xi) * nx);
+    add(best->subdomain, best->dofs[1], (1 - best_xi) * ny);
+    add(best->subdomain, best->dofs[2], best_xi * nx);
+    add(best->subdomain, best->dofs[3], best_xi * ny);
+    rows.push_back(std::move(row));
+  }
+}
+
+void add_obstacle_rows(const std::vector<DofRecord>& records, const ContactInput& contact, double snap,
+                       std::vector<Row>& rows) {
+  const double norm = std::hypot(contact.obstacle_normal[0], contact.obstacle_normal[1]);
+  if (!(norm > 0)) throw InputError("obstacle: the normal (entries 3 and 4) must not be zero");
+  const double nx = contact.obstacle_normal[0] / norm, ny = contact.obstacle_normal[1] / norm;
+  for (const SlaveNode& node : slave_nodes(records, snap)) {
+    const double gap = nx * (node.x_dof->x - contact.obstacle_point[0]) + ny * (node.x_dof->y - contact.obstacle_point[1]);
+    Row row{{}, gap, RowKind::contact, false};  // -n.u_slave <= n.(x_slave - point)
+    if (nx != 0) row.entries.push_back({node.x_dof->subdomain, node.x_dof->dof, -nx});
+    if (ny != 0) row.entries.push_back({node.y_dof->subdomain, node.y_dof->dof, -ny});
+    rows.push_back(std::move(row));
   }
 }
 
@@ -189,7 +262,7 @@ double snapping_length(const std::vector<BoundingBox>& boxes) {
 
 std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& local,
                                              const std::vector<int>& global_ids,
-                                             const NodeToNodeContact& local_contact,
+                                             const ContactInput& local_contact,
                                              const std::vector<BoundingBox>& boxes,
                                              const std::vector<int>& bodies, double snap) {
   const BoxGrid grid(boxes, 4 * snap);
@@ -243,18 +316,51 @@ std::vector<DofRecord> unpack(const std::vector<double>& packed) {
   return records;
 }
 
+std::vector<SegmentRecord> segment_records(const std::vector<SubdomainInput>& local,
+                                           const std::vector<int>& global_ids, const ContactInput& local_contact) {
+  std::vector<SegmentRecord> segments;
+  for (size_t k = 0; k < local_contact.master_segments.size(); ++k)
+    for (const auto& dofs : local_contact.master_segments[k]) {
+      const SubdomainInput& sub = local[k];
+      const auto a = static_cast<size_t>(dofs[0]), b = static_cast<size_t>(dofs[2]);
+      segments.push_back({global_ids[k], sub.body, dofs, sub.x[a], sub.y[a], sub.x[b], sub.y[b]});
+    }
+  return segments;
+}
+
+std::vector<double> pack(const std::vector<SegmentRecord>& segments) {
+  std::vector<double> packed;
+  for (const SegmentRecord& s : segments)
+    packed.insert(packed.end(), {double(s.subdomain), double(s.body), double(s.dofs[0]), double(s.dofs[1]),
+                                 double(s.dofs[2]), double(s.dofs[3]), s.ax, s.ay, s.bx, s.by});
+  return packed;
+}
+
+std::vector<SegmentRecord> unpack_segments(const std::vector<double>& packed) {
+  std::vector<SegmentRecord> segments;
+  for (size_t k = 0; k + 10 <= packed.size(); k += 10)
+    segments.push_back({static_cast<int>(packed[k]), static_cast<int>(packed[k + 1]),
+                        {static_cast<int>(packed[k + 2]), static_cast<int>(packed[k + 3]),
+                         static_cast<int>(packed[k + 4]), static_cast<int>(packed[k + 5])},
+                        packed[k + 6], packed[k + 7], packed[k + 8], packed[k + 9]});
+  return segments;
+}
+
 int Constraints::count(RowKind k) const {
   return static_cast<int>(std::count(kind.begin(), kind.end(), k));
 }
 
-Constraints build_constraints(std::vector<DofRecord> records, double gap, FetiVariant variant, double snap) {
+Constraints build_constraints(std::vector<DofRecord> records, const std::vector<SegmentRecord>& segments,
+                              const ContactInput& contact, FetiVariant variant, double snap) {
   std::sort(records.begin(), records.end(), [](const DofRecord& a, const DofRecord& b) {
     return std::make_pair(a.subdomain, a.dof) < std::make_pair(b.subdomain, b.dof);
   });
   std::vector<Row> rows;
   add_gluing_rows(records, snap, rows);
   if (variant == FetiVariant::tfeti) add_dirichlet_rows(records, rows);
-  add_contact_rows(records, gap, snap, rows);
+  if (!segments.empty()) add_node_to_segment_rows(records, segments, contact, snap, rows);
+  if (contact.obstacle) add_obstacle_rows(records, contact, snap, rows);
+  if (segments.empty() && !contact.obstacle) add_node_to_node_rows(records, contact.gap, snap, rows);
   if (variant == FetiVariant::feti1) substitute_dirichlet(records, rows);
 
   std::stable_partition(rows.begin(), rows.end(), [](const Row& r) { return r.equality; });
@@ -270,7 +376,7 @@ Constraints build_constraints(std::vector<DofRecord> records, double gap, FetiVa
 }
 
 Constraints build_constraints(const std::vector<SubdomainInput>& subdomains,
-                              const NodeToNodeContact& contact, FetiVariant variant) {
+                              const ContactInput& contact, FetiVariant variant) {
   std::vector<BoundingBox> boxes;
   std::vector<int> bodies, ids;
   for (const auto& sub : subdomains) {
@@ -280,7 +386,7 @@ Constraints build_constraints(const std::vector<SubdomainInput>& subdomains,
   }
   const double snap = snapping_length(boxes);
   return build_constraints(constraint_candidates(subdomains, ids, contact, boxes, bodies, snap),
-                           contact.gap, variant, snap);
+                           segment_records(subdomains, ids, contact), contact, variant, snap);
 }
 
 std::vector<LocalConstraints> split_by_subdomain(const Constraints& constraints,

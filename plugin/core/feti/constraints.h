@@ -4,6 +4,7 @@
 
 #include "feti/problem_input.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -42,6 +43,19 @@ struct DofRecord {
   double value;  // Dirichlet value where fixed
 };
 
+/// A master segment of the node-to-segment contact: its dofs (a_x, a_y, b_x, b_y) and ends.
+struct SegmentRecord {
+  int subdomain, body;
+  std::array<int, 4> dofs;
+  double ax, ay, bx, by;
+};
+
+/// The master segments of the local subdomains (global subdomain indices).
+std::vector<SegmentRecord> segment_records(const std::vector<SubdomainInput>& local,
+                                           const std::vector<int>& global_ids, const ContactInput& local_contact);
+std::vector<double> pack(const std::vector<SegmentRecord>& segments);
+std::vector<SegmentRecord> unpack_segments(const std::vector<double>& packed);
+
 struct BoundingBox {
   double x0, y0, x1, y1;
 };
@@ -55,7 +69,7 @@ double snapping_length(const std::vector<BoundingBox>& boxes);
 /// (global numbering); `global_ids[k]` is the global index of local subdomain k.
 std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& local,
                                              const std::vector<int>& global_ids,
-                                             const NodeToNodeContact& local_contact,
+                                             const ContactInput& local_contact,
                                              const std::vector<BoundingBox>& boxes,
                                              const std::vector<int>& bodies, double snap);
 
@@ -68,11 +82,14 @@ std::vector<DofRecord> unpack(const std::vector<double>& packed);
 /// values are substituted into the rows instead of adding rows (rows left empty are
 /// dropped; a violated one is an InputError). Throws InputError for a contact slave
 /// without a master at its position.
-Constraints build_constraints(std::vector<DofRecord> records, double gap, FetiVariant variant, double snap);
+/// `contact` supplies the scalar parameters (gap, search distance, obstacle), the same on
+/// every rank; its per-subdomain lists are not read.
+Constraints build_constraints(std::vector<DofRecord> records, const std::vector<SegmentRecord>& segments,
+                              const ContactInput& contact, FetiVariant variant, double snap);
 
 /// The same for subdomains all held here (global index = position): one process.
 Constraints build_constraints(const std::vector<SubdomainInput>& subdomains,
-                              const NodeToNodeContact& contact, FetiVariant variant);
+                              const ContactInput& contact, FetiVariant variant);
 
 BoundingBox bounding_box(const SubdomainInput& subdomain);
 

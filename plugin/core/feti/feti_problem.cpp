@@ -43,7 +43,7 @@ void DualSolveSettings::validate() const {
   }
 }
 
-FetiProblem::FetiProblem(std::vector<SubdomainInput> subdomains, const NodeToNodeContact& contact,
+FetiProblem::FetiProblem(std::vector<SubdomainInput> subdomains, const ContactInput& contact,
                          const FetiSetupSettings& settings)
     : settings_(settings), comm_(std::make_shared<SerialCommunicator>()), inputs_(std::move(subdomains)) {
   global_count_ = static_cast<int>(inputs_.size());
@@ -52,14 +52,14 @@ FetiProblem::FetiProblem(std::vector<SubdomainInput> subdomains, const NodeToNod
 }
 
 FetiProblem::FetiProblem(std::vector<SubdomainInput> local, std::vector<int> global_ids, int global_count,
-                         const NodeToNodeContact& local_contact, const FetiSetupSettings& settings,
+                         const ContactInput& local_contact, const FetiSetupSettings& settings,
                          std::shared_ptr<const Communicator> comm)
     : settings_(settings), comm_(std::move(comm)), inputs_(std::move(local)),
       global_ids_(std::move(global_ids)), global_count_(global_count) {
   set_up(local_contact);
 }
 
-void FetiProblem::set_up(const NodeToNodeContact& local_contact) {
+void FetiProblem::set_up(const ContactInput& local_contact) {
   if (settings_.factor == FactorKind::supernodal) settings_.threads = 1;
   const Communicator& comm = *comm_;
   Stopwatch constraints_clock;
@@ -98,7 +98,9 @@ void FetiProblem::set_up(const NodeToNodeContact& local_contact) {
   const double snap = snapping_length(boxes);
   std::vector<DofRecord> records =
       unpack(comm.allgather(pack(constraint_candidates(inputs_, global_ids_, local_contact, boxes, bodies, snap))));
-  constraints_ = build_constraints(records, local_contact.gap, settings_.variant, snap);
+  const std::vector<SegmentRecord> segments =
+      unpack_segments(comm.allgather(pack(segment_records(inputs_, global_ids_, local_contact))));
+  constraints_ = build_constraints(records, segments, local_contact, settings_.variant, snap);
   std::sort(records.begin(), records.end(), [](const DofRecord& a, const DofRecord& b) {
     return std::make_pair(a.subdomain, a.dof) < std::make_pair(b.subdomain, b.dof);
   });

@@ -80,14 +80,14 @@ class FetiProblem {
   /// build B and c, the kernels and factorizations, the coarse space when some subdomain
   /// floats, and the dual data.
   /// One process: every subdomain is here (global index = position).
-  FetiProblem(std::vector<SubdomainInput> subdomains, const NodeToNodeContact& contact,
+  FetiProblem(std::vector<SubdomainInput> subdomains, const ContactInput& contact,
               const FetiSetupSettings& settings = {});
 
   /// Subdomains spread over the ranks of `comm`: this rank holds `local`, whose global
   /// indices are `global_ids` (ascending); together the ranks hold 0..global_count-1, each
   /// once. `local_contact` lists the contact dofs of the local subdomains. Collective.
   FetiProblem(std::vector<SubdomainInput> local, std::vector<int> global_ids, int global_count,
-              const NodeToNodeContact& local_contact, const FetiSetupSettings& settings,
+              const ContactInput& local_contact, const FetiSetupSettings& settings,
               std::shared_ptr<const Communicator> comm);
 
   /// Solves the dual problem and recovers u. Never throws for non-convergence: see status.
@@ -121,7 +121,7 @@ class FetiProblem {
   std::string path() const;
 
  private:
-  void set_up(const NodeToNodeContact& local_contact);
+  void set_up(const ContactInput& local_contact);
   void factorize();
   void compute_dual_data();
   void gather_rank_statistics(double solve_seconds) const;

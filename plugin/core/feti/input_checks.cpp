@@ -50,7 +50,7 @@ void check_per_subdomain_lists(const std::vector<std::vector<int>>& lists, const
 
 }  // namespace
 
-void validate_input(const std::vector<SubdomainInput>& subdomains, const NodeToNodeContact& contact,
+void validate_input(const std::vector<SubdomainInput>& subdomains, const ContactInput& contact,
                     const std::vector<int>& global_ids) {
   std::vector<size_t> ids;
   for (size_t k = 0; k < subdomains.size(); ++k)
@@ -78,6 +78,13 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const NodeToN
   }
   check_per_subdomain_lists(contact.slave_dofs, ids, subdomains, "contactSlave");
   check_per_subdomain_lists(contact.master_dofs, ids, subdomains, "contactMaster");
+  std::vector<std::vector<int>> segment_dofs;
+  for (const auto& segments : contact.master_segments) {
+    segment_dofs.emplace_back();
+    for (const auto& segment : segments) segment_dofs.back().insert(segment_dofs.back().end(), segment.begin(), segment.end());
+  }
+  check_per_subdomain_lists(segment_dofs, ids, subdomains, "contactSegments");
+  if (!(contact.search_distance > 0)) throw InputError("contactRadius: must be > 0");
   if (!std::isfinite(contact.gap)) throw InputError("gap: must be finite");
 }
 

@@ -9,7 +9,7 @@
 namespace ffeti {
 
 /// `global_ids[k]` names local subdomain k in messages (empty: k itself).
-void validate_input(const std::vector<SubdomainInput>& subdomains, const NodeToNodeContact& contact,
+void validate_input(const std::vector<SubdomainInput>& subdomains, const ContactInput& contact,
                     const std::vector<int>& global_ids = {});
 
 }  // namespace ffeti

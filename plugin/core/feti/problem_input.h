@@ -3,6 +3,7 @@
 
 #include "feti/cholmod_factor.h"
 
+#include <array>
 #include <vector>
 
 namespace ffeti {
@@ -20,13 +21,26 @@ struct SubdomainInput {
   std::vector<double> dirichlet_values; ///< their values (empty: all zero)
 };
 
-/// Node-to-node contact on matching meshes: each slave dof s pairs with the master dof m
-/// of another body at the same position and component, giving the row u_s - u_m <= gap.
-/// (For the seed's membranes, u1(1,y) <= u2(1,y): slaves on body 1, masters on body 2.)
-struct NodeToNodeContact {
+/// Contact conditions, linearized for small displacements; one row per physical slave node
+/// (its copies in other subdomains are glued to it).
+/// - Node to node (matching meshes): each slave dof pairs with the master dof of another
+///   body at the same position and component: u_slave - u_master <= gap. (For the seed's
+///   membranes, u1(1,y) <= u2(1,y): slaves on body 1, masters on body 2.)
+/// - Node to segment (2D vector fields): each slave node (both its dofs in slave_dofs) is
+///   projected on the nearest master segment of another body within search_distance; with
+///   p = (1 - xi) a + xi b and n the segment's outward normal, n.(u_p - u_slave) <=
+///   n.(x_slave - p). Segments run with their body on the left (FreeFEM's orientation of a
+///   counter-clockwise border), so n = (b - a) rotated clockwise.
+/// - Rigid obstacle: a line through obstacle_point with outward normal obstacle_normal
+///   (pointing away from the obstacle): -n.u_slave <= n.(x_slave - point).
+struct ContactInput {
   std::vector<std::vector<int>> slave_dofs;   ///< per subdomain (may be empty)
-  std::vector<std::vector<int>> master_dofs;  ///< per subdomain (may be empty)
-  double gap = 0;
+  std::vector<std::vector<int>> master_dofs;  ///< per subdomain: node-to-node partners
+  std::vector<std::vector<std::array<int, 4>>> master_segments;  ///< per subdomain: (a_x, a_y, b_x, b_y)
+  double gap = 0;                             ///< node to node only
+  double search_distance = 1e300;             ///< node to segment: farther slaves get no row
+  bool obstacle = false;
+  std::array<double, 2> obstacle_point{0, 0}, obstacle_normal{0, 1};
 };
 
 enum class FetiVariant {
