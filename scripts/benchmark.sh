@@ -4,7 +4,8 @@
 #   ./scripts/benchmark.sh model-problem   numerical scalability, accuracy against time,
 #                                          solver variants, direct-solver floor (~2 min)
 #   ./scripts/benchmark.sh parallel        MPI ranks and OpenMP threads, h = 1/1024 (~3 min)
-#   ./scripts/benchmark.sh                 both
+#   ./scripts/benchmark.sh hertz           cylinder on a block against Hertz, mesh refinement
+#   ./scripts/benchmark.sh                 all
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 "$root/scripts/setup.sh"
@@ -15,7 +16,9 @@ dpkg-query -W -f='${Status}' python3-matplotlib 2>/dev/null | grep -q "install o
 case "${1:-all}" in
   model-problem) /usr/bin/python3 "$root/scripts/model_problem_benchmark.py" ;;
   parallel) /usr/bin/python3 "$root/scripts/parallel_benchmark.py" ;;
+  hertz) /usr/bin/python3 "$root/scripts/hertz_benchmark.py" ;;
   all) /usr/bin/python3 "$root/scripts/model_problem_benchmark.py"
-       /usr/bin/python3 "$root/scripts/parallel_benchmark.py" ;;
-  *) echo "usage: $0 [model-problem|parallel]" >&2; exit 2 ;;
+       /usr/bin/python3 "$root/scripts/parallel_benchmark.py"
+       /usr/bin/python3 "$root/scripts/hertz_benchmark.py" ;;
+  *) echo "usage: $0 [model-problem|parallel|hertz]" >&2; exit 2 ;;
 esac
