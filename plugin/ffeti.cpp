@@ -217,7 +217,10 @@ class FetiSetup : public E_F0mps {
       }
       contact.search_distance = optional_real(nargs[12], stack, contact.search_distance);
 
-      const std::string variant = optional_string(nargs[6], stack, "feti1");
+      // Default: FETI-1 for scalar fields (the seed's), Total FETI for vector fields, whose
+      // partially constrained subdomains it avoids.
+      const bool vector_field = nargs[5] != nullptr;
+      const std::string variant = optional_string(nargs[6], stack, vector_field ? "tfeti" : "feti1");
       if (variant == "feti1") settings.variant = FetiVariant::feti1;
       else if (variant == "tfeti") settings.variant = FetiVariant::tfeti;
       else throw InputError("variant: \"" + variant + "\" is not one of \"feti1\", \"tfeti\"");
