@@ -410,6 +410,11 @@ double feti_sum(const long& id, const double& value) {
   return guarded("fetiSum", [&] { return handle(id).problem->communicator().sum(value); });
 }
 
+/// Largest `value` over the ranks of the problem's communicator.
+double feti_max(const long& id, const double& value) {
+  return guarded("fetiMax", [&] { return handle(id).problem->communicator().max(value); });
+}
+
 std::string* feti_rank_report(Stack stack, const long& id) {
   const std::string text = guarded("fetiRankReport", [&] { return format_rank_report(*handle(id).problem); });
   return Add2StackOfPtr2Free(stack, new std::string(text));
@@ -440,6 +445,7 @@ static void Load_Init() {
   Global.Add("fetiFree", "(", new OneOperator1_<long, long>(feti_free));
   Global.Add("fetiContact", "(", new OneOperatorCode<FetiContact>());
   Global.Add("fetiSum", "(", new OneOperator2_<double, long, double>(feti_sum));
+  Global.Add("fetiMax", "(", new OneOperator2_<double, long, double>(feti_max));
   Global.Add("fetiRank", "(", new OneOperator0<long>(feti_rank));
   Global.Add("fetiRanks", "(", new OneOperator0<long>(feti_ranks));
   Global.Add("fetiRankReport", "(", new OneOperator1s_<std::string*, long>(feti_rank_report));

@@ -5,6 +5,7 @@
 #                                          solver variants, direct-solver floor (~2 min)
 #   ./scripts/benchmark.sh parallel        MPI ranks and OpenMP threads, h = 1/1024 (~3 min)
 #   ./scripts/benchmark.sh hertz           cylinder on a block against Hertz, mesh refinement
+#   ./scripts/benchmark.sh multibody       three stacked bodies: figures and a von Mises picture
 #   ./scripts/benchmark.sh                 all
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -17,8 +18,10 @@ case "${1:-all}" in
   model-problem) /usr/bin/python3 "$root/scripts/model_problem_benchmark.py" ;;
   parallel) /usr/bin/python3 "$root/scripts/parallel_benchmark.py" ;;
   hertz) /usr/bin/python3 "$root/scripts/hertz_benchmark.py" ;;
+  multibody) /usr/bin/python3 "$root/scripts/multibody_picture.py" ;;
   all) /usr/bin/python3 "$root/scripts/model_problem_benchmark.py"
        /usr/bin/python3 "$root/scripts/parallel_benchmark.py"
-       /usr/bin/python3 "$root/scripts/hertz_benchmark.py" ;;
-  *) echo "usage: $0 [model-problem|parallel|hertz]" >&2; exit 2 ;;
+       /usr/bin/python3 "$root/scripts/hertz_benchmark.py"
+       /usr/bin/python3 "$root/scripts/multibody_picture.py" ;;
+  *) echo "usage: $0 [model-problem|parallel|hertz|multibody]" >&2; exit 2 ;;
 esac
