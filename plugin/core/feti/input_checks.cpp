@@ -2,6 +2,7 @@
 
 #include "feti/errors.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -85,6 +86,12 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
   }
   check_per_subdomain_lists(segment_dofs, ids, subdomains, "contactSegments");
   if (!(contact.search_distance > 0)) throw InputError("contactRadius: must be > 0");
+  const auto any = [](const auto& lists) {
+    return std::any_of(lists.begin(), lists.end(), [](const auto& list) { return !list.empty(); });
+  };
+  if (any(contact.master_dofs) && (any(contact.master_segments) || contact.obstacle))
+    throw InputError("contactMaster: node-to-node contact cannot be combined with contactSegments or "
+                     "obstacle in one problem (the slave dofs would belong to both)");
   if (!std::isfinite(contact.gap)) throw InputError("gap: must be finite");
 }
 
