@@ -76,3 +76,74 @@ TEST(Constraints, ContactSlaveWithoutMasterIsAnInputError) {
 
 }  // namespace
 }  // namespace ffeti
+
+namespace ffeti {
+namespace {
+
+/// A 2D vector-field subdomain whose nodes are given; K is irrelevant to the constraints.
+SubdomainInput vector_nodes(std::vector<std::array<double, 2>> nodes, int body) {
+  SubdomainInput s;
+  for (const auto& node : nodes)
+    for (int c = 0; c < 2; ++c) s.x.push_back(node[0]), s.y.push_back(node[1]), s.component.push_back(c);
+  const auto n = static_cast<Eigen::Index>(s.x.size());
+  s.K.resize(n, n);
+  s.K.setIdentity();
+  s.f = Vec::Zero(n);
+  s.body = body;
+  return s;
+}
+
+double entry(const Constraints& c, int row, int subdomain, int dof) {
+  for (int k = c.row_start[row]; k < c.row_start[row + 1]; ++k)
+    if (c.entries[k].subdomain == subdomain && c.entries[k].dof == dof) return c.entries[k].coefficient;
+  return 0.0;
+}
+
+TEST(Constraints, NodeToSegmentRowHasProjectionWeightsNormalAndGap) {
+  // Master segment from a = (2, 0) to b = (0, 0), its body below (on the left of a -> b), so
+  // the outward normal is +y; a slave node of another body at (0.5, 0.1) projects at
+  // xi = 0.75 with a gap of 0.1.
+  const std::vector<SubdomainInput> subs = {vector_nodes({{0, 0}, {2, 0}}, 0), vector_nodes({{0.5, 0.1}}, 1)};
+  ContactInput contact;
+  contact.slave_dofs = {{}, {0, 1}};
+  contact.master_segments = {{{2, 3, 0, 1}}, {}};
+  const Constraints c = build_constraints(subs, contact, FetiVariant::tfeti);
+  ASSERT_EQ(c.rows(), 1);
+  EXPECT_EQ(c.kind[0], RowKind::contact);
+  EXPECT_NEAR(c.rhs[0], 0.1, 1e-14);
+  EXPECT_NEAR(entry(c, 0, 1, 1), -1.0, 1e-14);  // -n.u_slave
+  EXPECT_NEAR(entry(c, 0, 1, 0), 0.0, 1e-14);
+  EXPECT_NEAR(entry(c, 0, 0, 3), 0.25, 1e-14);  // (1 - xi) n.u_a
+  EXPECT_NEAR(entry(c, 0, 0, 1), 0.75, 1e-14);  // xi n.u_b
+  EXPECT_NEAR(entry(c, 0, 0, 0) + entry(c, 0, 0, 2), 0.0, 1e-14);
+
+  // Beyond contactRadius there is no row at all.
+  contact.search_distance = 0.05;
+  EXPECT_EQ(build_constraints(subs, contact, FetiVariant::tfeti).rows(), 0);
+}
+
+TEST(Constraints, RigidObstacleRowUsesTheUnitNormal) {
+  const std::vector<SubdomainInput> subs = {vector_nodes({{0.5, 0.1}, {1.0, 0.3}}, 0)};
+  ContactInput contact;
+  contact.slave_dofs = {{0, 1, 2, 3}};
+  contact.obstacle = true;
+  contact.obstacle_point = {0.0, -1.0};
+  contact.obstacle_normal = {0.0, 2.0};  // not unit: normalized
+  const Constraints c = build_constraints(subs, contact, FetiVariant::tfeti);
+  ASSERT_EQ(c.rows(), 2);
+  EXPECT_NEAR(c.rhs[0], 1.1, 1e-14);
+  EXPECT_NEAR(c.rhs[1], 1.3, 1e-14);
+  EXPECT_NEAR(entry(c, 0, 0, 1), -1.0, 1e-14);
+  EXPECT_NEAR(entry(c, 1, 0, 3), -1.0, 1e-14);
+}
+
+TEST(Constraints, SlaveNodeNeedsBothComponents) {
+  const std::vector<SubdomainInput> subs = {vector_nodes({{0.5, 0.1}}, 0)};
+  ContactInput contact;
+  contact.slave_dofs = {{0}};
+  contact.obstacle = true;
+  EXPECT_THROW(build_constraints(subs, contact, FetiVariant::tfeti), InputError);
+}
+
+}  // namespace
+}  // namespace ffeti

@@ -295,6 +295,13 @@ TEST(FetiProblem, BadInputIsAnErrorNamingTheArgument) {
     auto subs = test::membrane_subdomains(test::membrane_options(8, 2));
     FetiProblem problem(std::move(subs), ContactInput{});
   }, "body 1");
+  // Node-to-node partners and an obstacle for the same slaves: ambiguous, refused.
+  expect_input_error([] {
+    auto subs = test::membrane_subdomains(test::membrane_options(8, 2));
+    ContactInput contact = test::membrane_contact(subs);
+    contact.obstacle = true;
+    FetiProblem problem(std::move(subs), contact);
+  }, "contactMaster");
   DualSolveSettings bad;
   bad.tolerance = 0;
   expect_input_error([&] { membrane_problem(test::membrane_options(8, 1), FetiVariant::feti1).solve(bad); }, "tol");
