@@ -57,3 +57,10 @@ def machine():
     except (OSError, ValueError, IndexError):
         pass
     return f"{cpu}, {os.cpu_count()} cores{memory}, {platform.system()} {platform.release()}"
+
+
+def save_page(name, lines):
+    """Writes a generated page docs/results/<name>."""
+    os.makedirs(OUT, exist_ok=True)
+    with open(os.path.join(OUT, name), "w") as page:
+        page.write("\n".join(lines))

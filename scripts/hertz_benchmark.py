@@ -11,7 +11,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from ffeti_bench import OUT, f, machine, run  # noqa: E402
+from ffeti_bench import OUT, f, machine, run, save_page  # noqa: E402
 
 SIZES = [2.0, 1.0, 0.5, 0.25]
 
@@ -79,8 +79,7 @@ def write_page(runs, elapsed):
         "line. The test suite runs the h = 1 case and requires a and p0 within 10%.",
         "",
     ]
-    with open(os.path.join(OUT, "hertz.md"), "w") as page:
-        page.write("\n".join(lines))
+    save_page("hertz.md", lines)
 
 
 if __name__ == "__main__":

@@ -11,7 +11,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from ffeti_bench import OUT, ROOT, f, machine, model_problem, run  # noqa: E402
+from ffeti_bench import OUT, ROOT, f, machine, model_problem, run, save_page  # noqa: E402
 
 SIZES = [64, 128, 256, 512]
 
@@ -163,8 +163,7 @@ def write_page(sizes, default, direct, accuracy, reference_energy, variants, ela
             f"{f(r, 'time_solve'):.3f} | {f(r, 'energy'):.8f} | {r['status']} |")
     lines.append("")
     lines.append(open(os.path.join(ROOT, "docs", "results", "model-problem-reading.md")).read())
-    with open(os.path.join(OUT, "model-problem.md"), "w") as page:
-        page.write("\n".join(lines))
+    save_page("model-problem.md", lines)
 
 
 if __name__ == "__main__":

@@ -11,7 +11,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
-from ffeti_bench import OUT, machine, run  # noqa: E402
+from ffeti_bench import OUT, machine, run, save_page  # noqa: E402
 
 
 def main():
@@ -64,8 +64,7 @@ def main():
         "zones, where the narrower body's corner presses into the wider one.",
         "",
     ]
-    with open(os.path.join(OUT, "multibody.md"), "w") as page:
-        page.write("\n".join(lines))
+    save_page("multibody.md", lines)
 
 
 if __name__ == "__main__":

@@ -11,7 +11,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from ffeti_bench import OUT, f, machine, model_problem  # noqa: E402
+from ffeti_bench import OUT, f, machine, model_problem, save_page  # noqa: E402
 
 
 def fastest_of_two(n, **options):
@@ -131,8 +131,7 @@ def write_page(strong, weak, large, elapsed):
                          f"{f(r, 'time_factor'):.2f} | {f(r, 'time_solve'):.2f} | {f(r, 'time_total'):.1f} | {memory} | {r['status']} |")
     lines.append("")
     lines.append(open(os.path.join(OUT, "parallel-reading.md")).read())
-    with open(os.path.join(OUT, "parallel.md"), "w") as page:
-        page.write("\n".join(lines))
+    save_page("parallel.md", lines)
 
 
 if __name__ == "__main__":
