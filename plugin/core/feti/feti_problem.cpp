@@ -232,13 +232,8 @@ double FetiProblem::operator_norm(bool projected, IterationCounts& counts, doubl
     const int m = constraints_.rows();
     NormEstimate estimate;
     if (projected) {
-      Vec Px(m), FPx(m);
-      const LinearOperator PFP = [&](const Vec& x, Vec& y) {
-        coarse_->project(x, Px);
-        F_->apply(Px, FPx);
-        coarse_->project(FPx, y);
-      };
-      estimate = estimate_norm(PFP, m, {}, [&](Vec& v) { coarse_->project(Vec(v), v); });
+      estimate = estimate_norm([&](const Vec& x, Vec& y) { apply_PFP(x, y); }, m, {},
+                               [&](Vec& v) { coarse_->project(Vec(v), v); });
     } else {
       estimate = estimate_norm([&](const Vec& x, Vec& y) { F_->apply(x, y); }, m);
     }
@@ -248,6 +243,12 @@ double FetiProblem::operator_norm(bool projected, IterationCounts& counts, doubl
   }
   counts.hessian_norm_estimate += cost;
   return *cached;
+}
+
+void FetiProblem::apply_PFP(const Vec& x, Vec& y) const {
+  coarse_->project(x, projected_);
+  F_->apply(projected_, applied_);
+  coarse_->project(applied_, y);  // y = P F P x
 }
 
 FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
@@ -279,12 +280,9 @@ FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
   const double b_tol = tolerance * result.gradient_reference;
 
   if (result.path == "cg" || result.path == "projected_cg") {
-    Vec Px(m), FPx(m);
     const LinearOperator A = [&](const Vec& x, Vec& y) {
-      if (!coarse_) return F_->apply(x, y);
-      coarse_->project(x, Px);
-      F_->apply(Px, FPx);
-      coarse_->project(FPx, y);
+      if (coarse_) apply_PFP(x, y);
+      else F_->apply(x, y);
     };
     CgSettings cg;
     cg.max_hessian = settings.max_hessian;
@@ -321,13 +319,8 @@ FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
     const double eq_reference =
         result.equality_reference > 0 ? result.equality_reference : result.gradient_reference / norm;
     result.equality_reference = eq_reference;
-    Vec Px(m), FPx(m);
     SmalbeProblem problem;
-    problem.hessian = [&](const Vec& x, Vec& y) {
-      coarse_->project(x, Px);
-      F_->apply(Px, FPx);
-      coarse_->project(FPx, y);
-    };
+    problem.hessian = [&](const Vec& x, Vec& y) { apply_PFP(x, y); };
     problem.range_projector = [&](const Vec& x, Vec& y) { coarse_->project_range(x, y); };
     problem.b = &b_;
     problem.lower = &lower_bounds;

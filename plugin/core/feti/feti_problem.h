@@ -126,6 +126,7 @@ class FetiProblem {
   void compute_dual_data();
   void gather_rank_statistics(double solve_seconds) const;
   double operator_norm(bool projected, IterationCounts& counts, double& seconds) const;
+  void apply_PFP(const Vec& x, Vec& y) const;  // the projected dual operator, on reused buffers
   FetiResult finish(FetiResult result, const Vec& lambda) const;
 
   FetiSetupSettings settings_;
@@ -144,6 +145,7 @@ class FetiProblem {
   long primal_dimension_ = 0;
   double factor_nonzeros_ = 0;
   mutable std::vector<RankStatistics> rank_statistics_;
+  mutable Vec projected_, applied_;  // buffers of apply_PFP
   Vec d_, e_, lambda_tilde_, b_;        // dual data; b = P(d - F lambda~)
   PhaseTimes setup_times_;
   double local_factor_seconds_ = 0;  // this rank's, for the rank report
