@@ -1,0 +1,91 @@
+// Numerically hard scenes stay stable under default options: extreme scaling of K and f,
+// large stiffness contrast between bodies, many small subdomains (small H/h, many cross
+// points), and Total FETI on all of them. Each is checked against an independent answer
+// (a scaled solution, the other FETI variant, or the monolithic active-set reference).
+#include "feti/feti_problem.h"
+#include "membrane_model.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace ffeti {
+namespace {
+
+FetiResult solve_membranes(std::vector<SubdomainInput> subs, FetiVariant variant, double tolerance) {
+  const ContactInput contact = test::membrane_contact(subs);
+  FetiSetupSettings setup;
+  setup.variant = variant;
+  const FetiProblem problem(std::move(subs), contact, setup);
+  DualSolveSettings settings;
+  settings.tolerance = tolerance;
+  return problem.solve(settings);
+}
+
+double relative_difference(const std::vector<Vec>& a, const std::vector<Vec>& b, double scale_b) {
+  double difference = 0, norm = 0;
+  for (size_t s = 0; s < a.size(); ++s) {
+    difference += (a[s] - scale_b * b[s]).squaredNorm();
+    norm += a[s].squaredNorm();
+  }
+  return std::sqrt(difference / norm);
+}
+
+class ExtremeScaling : public ::testing::TestWithParam<double> {};
+
+TEST_P(ExtremeScaling, StiffnessAndLoadScaledTogetherLeaveUUnchanged) {
+  const double factor = GetParam();
+  auto reference_subs = test::membrane_subdomains(test::membrane_options(16, 2));
+  auto scaled_subs = reference_subs;
+  for (auto& s : scaled_subs) {
+    s.K *= factor;
+    s.f *= factor;
+  }
+  const FetiResult reference = solve_membranes(reference_subs, FetiVariant::feti1, 1e-10);
+  const FetiResult scaled = solve_membranes(scaled_subs, FetiVariant::feti1, 1e-10);
+  ASSERT_EQ(scaled.status, SolveStatus::converged);
+  EXPECT_LT(relative_difference(scaled.u, reference.u, 1.0), 1e-7);
+  EXPECT_LT((scaled.lambda - factor * reference.lambda).norm(), 1e-7 * factor * reference.lambda.norm());
+  EXPECT_EQ(scaled.active_contact, reference.active_contact);
+}
+
+TEST_P(ExtremeScaling, LoadScaledAloneScalesU) {
+  const double factor = GetParam();
+  auto reference_subs = test::membrane_subdomains(test::membrane_options(16, 2));
+  auto scaled_subs = reference_subs;
+  for (auto& s : scaled_subs) s.f *= factor;
+  const FetiResult reference = solve_membranes(reference_subs, FetiVariant::feti1, 1e-10);
+  const FetiResult scaled = solve_membranes(scaled_subs, FetiVariant::feti1, 1e-10);
+  ASSERT_EQ(scaled.status, SolveStatus::converged);
+  EXPECT_LT(relative_difference(scaled.u, reference.u, factor), 1e-7);  // contact with zero gap is homogeneous
+}
+
+INSTANTIATE_TEST_SUITE_P(Factors, ExtremeScaling, ::testing::Values(1e-12, 1e-6, 1e6, 1e12));
+
+TEST(HardCases, StiffnessContrastOfSixOrdersOfMagnitude) {
+  auto subs = test::membrane_subdomains(test::membrane_options(16, 2));
+  for (auto& s : subs)
+    if (s.body == 1) s.K *= 1e6;  // a nearly rigid right membrane on a soft left one
+  const FetiResult feti1 = solve_membranes(subs, FetiVariant::feti1, 1e-10);
+  const FetiResult total = solve_membranes(subs, FetiVariant::tfeti, 1e-10);
+  ASSERT_EQ(feti1.status, SolveStatus::converged);
+  ASSERT_EQ(total.status, SolveStatus::converged);
+  EXPECT_LT(feti1.kkt.max(), 1e-6) << feti1.kkt.equilibrium << " " << feti1.kkt.equality;
+  EXPECT_NEAR(feti1.energy, total.energy, 1e-8 * std::abs(feti1.energy));
+  EXPECT_EQ(feti1.active_contact, total.active_contact);
+}
+
+TEST(HardCases, ManySmallSubdomainsMatchTheMonolithicReference) {
+  // H/h = 4: 128 subdomains of 4 x 4 cells, 49 interior cross points per body.
+  const int n = 32;
+  const test::ReferenceSolution reference = test::membrane_reference(n);
+  for (FetiVariant variant : {FetiVariant::feti1, FetiVariant::tfeti}) {
+    const FetiResult result = solve_membranes(test::membrane_subdomains(test::membrane_options(n, 8)), variant, 1e-10);
+    ASSERT_EQ(result.status, SolveStatus::converged);
+    EXPECT_NEAR(result.energy, reference.energy, 1e-8 * std::abs(reference.energy));
+    EXPECT_EQ(result.active_contact, static_cast<int>(reference.active_y.size()));
+  }
+}
+
+}  // namespace
+}  // namespace ffeti
