@@ -153,10 +153,10 @@ void FetiProblem::factorize() {
   for (int k = 0; k < count; ++k) {
     const SubdomainInput& in = inputs_[static_cast<size_t>(k)];
     try {
-      SparseMatrix K = eliminate && !in.dirichlet_dofs.empty() ? eliminate_dirichlet(in.K, in.dirichlet_dofs) : in.K;
-      subdomains_[static_cast<size_t>(k)] =
-          std::make_unique<Subdomain>(global_ids_[static_cast<size_t>(k)], std::move(K),
-                                      candidate_kernel(in.x, in.y, in.component), settings_.factor);
+      const bool eliminated = eliminate && !in.dirichlet_dofs.empty();
+      subdomains_[static_cast<size_t>(k)] = std::make_unique<Subdomain>(
+          global_ids_[static_cast<size_t>(k)], eliminated ? eliminate_dirichlet(in.K, in.dirichlet_dofs) : in.K,
+          candidate_kernel(in.x, in.y, in.component), settings_.factor);
     } catch (...) {
       failures[static_cast<size_t>(k)] = std::current_exception();
     }

@@ -24,7 +24,11 @@ SparseMatrix remove_dofs(const SparseMatrix& K, const std::vector<int>& removed,
     full_to_reduced[static_cast<size_t>(i)] = static_cast<int>(reduced_to_full.size());
     reduced_to_full.push_back(i);
   }
-  if (removed.empty()) return K;
+  if (removed.empty()) {
+    SparseMatrix copy = K;
+    copy.makeCompressed();  // CHOLMOD reads compressed columns
+    return copy;
+  }
   std::vector<Eigen::Triplet<double, int>> entries;
   entries.reserve(static_cast<size_t>(K.nonZeros()));
   for (int j = 0; j < n; ++j)
@@ -42,14 +46,13 @@ SparseMatrix remove_dofs(const SparseMatrix& K, const std::vector<int>& removed,
 
 }  // namespace
 
-Subdomain::Subdomain(int index, SparseMatrix K, const Eigen::MatrixXd& kernel_candidates,
+Subdomain::Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& kernel_candidates,
                      FactorKind factor_kind)
-    : index_(index), K_(std::move(K)), factor_(factor_kind) {
-  K_.makeCompressed();
+    : index_(index), size_(K.rows()), factor_(factor_kind) {
   const std::string name = "K[" + std::to_string(index_) + "]";
-  R_ = kernel_in_span(K_, kernel_candidates);
+  R_ = kernel_in_span(K, kernel_candidates);
   fixing_ = fixing_dofs(R_);
-  const SparseMatrix reduced = remove_dofs(K_, fixing_, reduced_to_full_);
+  const SparseMatrix reduced = remove_dofs(K, fixing_, reduced_to_full_);
   const int failed = factor_.factorize(reduced);
   // A singular block may factor with a tiny positive pivot instead of failing outright.
   const double rcond = failed < 0 ? factor_.reciprocal_condition() : 0.0;
@@ -65,7 +68,7 @@ Subdomain::Subdomain(int index, SparseMatrix K, const Eigen::MatrixXd& kernel_ca
                      "). Is the subdomain mesh connected and the matrix a stiffness matrix?");
   reduced_rhs_.resize(reduced.rows());
   reduced_solution_.resize(reduced.rows());
-  const double residual = pseudo_inverse_residual();
+  const double residual = pseudo_inverse_residual(K);
   if (!(residual <= 1e-6))
     throw InputError(name + ": the generalized inverse does not verify (||K K+ K v - K v|| / "
                      "||K v|| = " + std::to_string(residual) +
@@ -76,21 +79,21 @@ void Subdomain::apply_pseudo_inverse(const Vec& b, Vec& x) const {
   for (size_t k = 0; k < reduced_to_full_.size(); ++k)
     reduced_rhs_[static_cast<Eigen::Index>(k)] = b[reduced_to_full_[k]];
   factor_.solve(reduced_rhs_, reduced_solution_);
-  x.setZero(K_.rows());
+  x.setZero(size_);
   for (size_t k = 0; k < reduced_to_full_.size(); ++k)
     x[reduced_to_full_[k]] = reduced_solution_[static_cast<Eigen::Index>(k)];
 }
 
-double Subdomain::pseudo_inverse_residual() const {
+double Subdomain::pseudo_inverse_residual(const SparseMatrix& K) const {
   std::mt19937 generator(7u + static_cast<unsigned>(index_));
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  Vec v(K_.rows());
+  Vec v(K.rows());
   for (Eigen::Index i = 0; i < v.size(); ++i) v[i] = uniform(generator);
-  const Vec Kv = K_ * v;
+  const Vec Kv = K * v;
   Vec z;
   apply_pseudo_inverse(Kv, z);
   const double denominator = Kv.norm();
-  return denominator > 0 ? (K_ * z - Kv).norm() / denominator : 0.0;
+  return denominator > 0 ? (K * z - Kv).norm() / denominator : 0.0;
 }
 
 }  // namespace ffeti

@@ -16,12 +16,11 @@ class Subdomain {
   /// Computes the kernel inside span(kernel_candidates), chooses the fixing dofs and
   /// factorizes. K is the operator the dual problem uses (for FETI-1 with the Dirichlet
   /// dofs eliminated). Throws InputError naming "K[index]" if the factorization fails or
-  /// the generalized inverse does not verify. The object owns copies of everything.
-  Subdomain(int index, SparseMatrix K, const Eigen::MatrixXd& kernel_candidates,
+  /// the generalized inverse does not verify. The object keeps the factor and the kernel.
+  Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& kernel_candidates,
             FactorKind factor_kind);
 
-  Eigen::Index size() const { return K_.rows(); }
-  const SparseMatrix& stiffness() const { return K_; }
+  Eigen::Index size() const { return size_; }
   /// Orthonormal basis of Ker K_s (n_s x r_s); r_s = 0 for a regular subdomain.
   const Eigen::MatrixXd& kernel() const { return R_; }
   bool floating() const { return R_.cols() > 0; }
@@ -31,13 +30,14 @@ class Subdomain {
   /// Thread-safe across distinct subdomains, not on the same one.
   void apply_pseudo_inverse(const Vec& b, Vec& x) const;
 
-  /// ||K K^+ K v - K v|| / ||K v|| for a fixed pseudo-random v (the check run at setup).
-  double pseudo_inverse_residual() const;
+  /// ||K K^+ K v - K v|| / ||K v|| for a fixed pseudo-random v, K the matrix this
+  /// subdomain was built from (the check run at set-up).
+  double pseudo_inverse_residual(const SparseMatrix& K) const;
   double factor_nonzeros() const { return factor_.factor_nonzeros(); }
 
  private:
   int index_;
-  SparseMatrix K_;
+  Eigen::Index size_;  // K itself is not kept: the factor and the kernel are all a solve needs
   Eigen::MatrixXd R_;
   std::vector<int> fixing_;
   std::vector<int> reduced_to_full_;  // dofs kept in the regular block
