@@ -1,10 +1,13 @@
 #include "feti/cholmod_factor.h"
 
+#include <atomic>
 #include <cstring>
 #include <stdexcept>
 
 namespace ffeti {
 namespace {
+
+std::atomic<long> numeric_factorizations{0};
 
 /// A cholmod_sparse header over Eigen's compressed column storage (no copy).
 cholmod_sparse view_lower(const SparseMatrix& A) {
@@ -66,6 +69,7 @@ int CholmodFactor::factorize(const SparseMatrix& A) {
     size_ = A.rows();
   }
   cholmod_factorize(&view, factor_, &common_);
+  ++numeric_factorizations;
   if (common_.status == CHOLMOD_NOT_POSDEF) return static_cast<int>(factor_->minor);
   if (common_.status < CHOLMOD_OK) throw std::runtime_error("CHOLMOD factorize failed");
   return -1;
@@ -79,6 +83,8 @@ void CholmodFactor::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
   x.resize(b.size());
   std::memcpy(x.data(), solution_->x, sizeof(double) * static_cast<size_t>(b.size()));
 }
+
+long CholmodFactor::factorizations_in_process() { return numeric_factorizations.load(); }
 
 double CholmodFactor::reciprocal_condition() const {
   return factor_ ? cholmod_rcond(factor_, &common_) : 0.0;

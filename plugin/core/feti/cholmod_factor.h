@@ -33,6 +33,10 @@ class CholmodFactor {
   /// x = A^{-1} b. Precondition: the last factorize succeeded.
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
 
+  /// Numeric factorizations run by every CholmodFactor of this process so far (all
+  /// threads): lets callers prove that a phase factorized nothing.
+  static long factorizations_in_process();
+
   Eigen::Index size() const { return size_; }
   double factor_nonzeros() const;  ///< nnz(L), for reports
   /// CHOLMOD's cheap estimate (min diag L / max diag L)^2; ~eps for a numerically singular A.

@@ -15,6 +15,7 @@ struct Row {
   double rhs = 0;
   RowKind kind = RowKind::gluing;
   bool equality = true;
+  ContactRowGeometry geometry{};
 };
 
 /// A record with its node snapped to a grid of the snapping length.
@@ -129,28 +130,26 @@ void add_node_to_segment_rows(const std::vector<DofRecord>& records, const std::
   for (const SlaveNode& node : slave_nodes(records, snap)) {
     const double sx = node.x_dof->x, sy = node.x_dof->y;
     const SegmentRecord* best = nullptr;
-    double best_distance = contact.search_distance, best_xi = 0;
+    double best_distance = contact.search_distance;
     for (const SegmentRecord& seg : segments) {
       if (seg.body == node.x_dof->body) continue;
       const double dx = seg.bx - seg.ax, dy = seg.by - seg.ay, length_sq = dx * dx + dy * dy;
       const double xi = std::clamp(((sx - seg.ax) * dx + (sy - seg.ay) * dy) / length_sq, 0.0, 1.0);
       const double distance = std::hypot(sx - (seg.ax + xi * dx), sy - (seg.ay + xi * dy));
-      if (distance < best_distance) best = &seg, best_distance = distance, best_xi = xi;
+      if (distance < best_distance) best = &seg, best_distance = distance;
     }
     if (!best) continue;  // no master segment within reach: no contact possible here
-    const double dx = best->bx - best->ax, dy = best->by - best->ay, length = std::hypot(dx, dy);
-    const double nx = dy / length, ny = -dx / length;  // outward: the body lies on the left
-    const double px = best->ax + best_xi * dx, py = best->ay + best_xi * dy;
-    Row row{{}, nx * (sx - px) + ny * (sy - py), RowKind::contact, false};  // gap along n
-    const auto add = [&](int s, int dof, double coefficient) {
-      if (coefficient != 0) row.entries.push_back({s, dof, coefficient});
-    };
-    add(node.x_dof->subdomain, node.x_dof->dof, -nx);  // n.(u_p - u_slave) <= gap
-    add(node.y_dof->subdomain, node.y_dof->dof, -ny);
-    add(best->subdomain, best->dofs[0], (1 - best_xi) * nx);
-    add(best->subdomain, best->dofs[1], (1 - best_xi) * ny);
-    add(best->subdomain, best->dofs[2], best_xi * nx);
-    add(best->subdomain, best->dofs[3], best_xi * ny);
+    ContactRowGeometry geometry;
+    geometry.kind = ContactRowGeometry::Kind::node_to_segment;
+    geometry.slave = {{{node.x_dof->subdomain, node.x_dof->dof}, {node.y_dof->subdomain, node.y_dof->dof}}};
+    for (size_t k = 0; k < 4; ++k) geometry.master[k] = {best->subdomain, best->dofs[k]};
+    geometry.s = {sx, sy}, geometry.a = {best->ax, best->ay}, geometry.b = {best->bx, best->by};
+    const LinearizedRow linear = node_to_segment_row(geometry.s, geometry.a, geometry.b);
+    Row row{{}, linear.gap, RowKind::contact, false, geometry};
+    const std::array<int, 2> dofs[6] = {geometry.slave[0], geometry.slave[1], geometry.master[0],
+                                        geometry.master[1], geometry.master[2], geometry.master[3]};
+    for (size_t k = 0; k < 6; ++k)
+      if (linear.coefficients[k] != 0) row.entries.push_back({dofs[k][0], dofs[k][1], linear.coefficients[k]});
     rows.push_back(std::move(row));
   }
 }
@@ -161,10 +160,15 @@ void add_obstacle_rows(const std::vector<DofRecord>& records, const ContactInput
   if (!(norm > 0)) throw InputError("obstacle: the normal (entries 3 and 4) must not be zero");
   const double nx = contact.obstacle_normal[0] / norm, ny = contact.obstacle_normal[1] / norm;
   for (const SlaveNode& node : slave_nodes(records, snap)) {
-    const double gap = nx * (node.x_dof->x - contact.obstacle_point[0]) + ny * (node.x_dof->y - contact.obstacle_point[1]);
-    Row row{{}, gap, RowKind::contact, false};  // -n.u_slave <= n.(x_slave - point)
-    if (nx != 0) row.entries.push_back({node.x_dof->subdomain, node.x_dof->dof, -nx});
-    if (ny != 0) row.entries.push_back({node.y_dof->subdomain, node.y_dof->dof, -ny});
+    ContactRowGeometry geometry;
+    geometry.kind = ContactRowGeometry::Kind::obstacle;
+    geometry.slave = {{{node.x_dof->subdomain, node.x_dof->dof}, {node.y_dof->subdomain, node.y_dof->dof}}};
+    geometry.s = {node.x_dof->x, node.x_dof->y};
+    geometry.a = contact.obstacle_point, geometry.b = {nx, ny};
+    const LinearizedRow linear = obstacle_row(geometry.s, geometry.a, geometry.b);
+    Row row{{}, linear.gap, RowKind::contact, false, geometry};
+    for (size_t k = 0; k < 2; ++k)
+      if (linear.coefficients[k] != 0) row.entries.push_back({geometry.slave[k][0], geometry.slave[k][1], linear.coefficients[k]});
     rows.push_back(std::move(row));
   }
 }
@@ -240,6 +244,19 @@ class BoxGrid {
 };
 
 }  // namespace
+
+LinearizedRow node_to_segment_row(const Point& s, const Point& a, const Point& b, bool clamp_xi) {
+  const double dx = b[0] - a[0], dy = b[1] - a[1], length = std::hypot(dx, dy);
+  double xi = ((s[0] - a[0]) * dx + (s[1] - a[1]) * dy) / (length * length);
+  if (clamp_xi) xi = std::clamp(xi, 0.0, 1.0);
+  const double nx = dy / length, ny = -dx / length;  // outward: the body lies on the left
+  const double px = a[0] + xi * dx, py = a[1] + xi * dy;
+  return {{-nx, -ny, (1 - xi) * nx, (1 - xi) * ny, xi * nx, xi * ny}, nx * (s[0] - px) + ny * (s[1] - py)};
+}
+
+LinearizedRow obstacle_row(const Point& s, const Point& point, const Point& normal) {
+  return {{-normal[0], -normal[1], 0, 0, 0, 0}, normal[0] * (s[0] - point[0]) + normal[1] * (s[1] - point[1])};
+}
 
 BoundingBox bounding_box(const SubdomainInput& subdomain) {
   BoundingBox b{INFINITY, INFINITY, -INFINITY, -INFINITY};
@@ -371,6 +388,7 @@ Constraints build_constraints(std::vector<DofRecord> records, const std::vector<
     result.rhs.push_back(row.rhs);
     result.kind.push_back(row.kind);
     result.equality_rows += row.equality ? 1 : 0;
+    if (!row.equality) result.geometry.push_back(row.geometry);
   }
   return result;
 }

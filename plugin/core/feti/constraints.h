@@ -18,6 +18,32 @@ struct ConstraintEntry {
   double coefficient;
 };
 
+using Point = std::array<double, 2>;
+
+/// One contact row's linearized condition as a function of the positions it was built
+/// from; the sensitivity analysis differentiates it when the geometry moves.
+struct ContactRowGeometry {
+  enum class Kind : std::uint8_t { node_to_node, node_to_segment, obstacle };
+  Kind kind = Kind::node_to_node;
+  /// Node to segment and obstacle: the slave node's x and y dofs (subdomain, dof); node to
+  /// segment: the segment's a_x, a_y, b_x, b_y. Unused entries are {-1, -1}.
+  std::array<std::array<int, 2>, 2> slave{{{-1, -1}, {-1, -1}}};
+  std::array<std::array<int, 2>, 4> master{{{-1, -1}, {-1, -1}, {-1, -1}, {-1, -1}}};
+  Point s{}, a{}, b{};  ///< slave position, segment ends (obstacle: a = point, b = normal)
+};
+
+/// Node to segment: slave s projected on segment a-b (the body of the segment on its left),
+/// p = (1 - xi) a + xi b, n the outward normal; n.(u_p - u_s) <= n.(s - p).
+/// `clamp_xi` keeps p on the segment (the set-up); the derivative of a row keeps its pairing
+/// and differentiates the unclamped formula.
+struct LinearizedRow {
+  std::array<double, 6> coefficients;  ///< of (s_x, s_y, a_x, a_y, b_x, b_y); obstacle: (s_x, s_y)
+  double gap;
+};
+LinearizedRow node_to_segment_row(const Point& s, const Point& a, const Point& b, bool clamp_xi = true);
+/// Rigid obstacle through `point` with outward unit normal n: -n.u_s <= n.(s - point).
+LinearizedRow obstacle_row(const Point& s, const Point& point, const Point& normal);
+
 /// Rows in CSR form over (subdomain, dof) entries; equalities first, then inequalities
 /// B_I u <= c_I. Full row rank by construction: a node shared by k subdomains gets k-1
 /// gluing rows, and none where every copy carries a Dirichlet row.
@@ -27,6 +53,7 @@ struct Constraints {
   std::vector<double> rhs;
   std::vector<RowKind> kind;
   int equality_rows = 0;
+  std::vector<ContactRowGeometry> geometry;  ///< one per inequality row, in row order
 
   int rows() const { return static_cast<int>(rhs.size()); }
   int inequality_rows() const { return rows() - equality_rows; }

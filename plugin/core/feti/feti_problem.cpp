@@ -4,44 +4,13 @@
 #include "feti/errors.h"
 #include "feti/input_checks.h"
 #include "feti/kernel.h"
+#include "feti/stopwatch.h"
 #include "parallel/process.h"
 
-#include <chrono>
 #include <algorithm>
 #include <exception>
 
 namespace ffeti {
-namespace {
-
-class Stopwatch {
- public:
-  double seconds() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
- private:
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
-
-/// Multipliers exactly at their bound are exactly zero in lambda (not round-off).
-Vec lambda_from_shifted(const Vec& mu, const Vec& lower, const Vec& lambda_tilde) {
-  Vec lambda = mu + lambda_tilde;
-  for (Eigen::Index i = 0; i < mu.size(); ++i)
-    if (lower[i] != kUnbounded && mu[i] <= lower[i]) lambda[i] = 0.0;
-  return lambda;
-}
-
-}  // namespace
-
-void DualSolveSettings::validate() const {
-  if (!(tolerance > 0 && tolerance < 1)) throw InputError("tol: must lie in (0, 1)");
-  if (max_hessian < 1) throw InputError("maxit: must be >= 1");
-  try {
-    smalbe.validate();
-    mprgp.validate();
-  } catch (const std::invalid_argument& error) {
-    throw InputError(error.what());
-  }
-}
 
 FetiProblem::FetiProblem(std::vector<SubdomainInput> subdomains, const ContactInput& contact,
                          const FetiSetupSettings& settings)
@@ -81,7 +50,9 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   std::vector<int> counts;
   const std::vector<double> all = comm.allgather(mine, &counts);
   std::vector<BoundingBox> boxes(static_cast<size_t>(global_count_));
-  std::vector<int> bodies(static_cast<size_t>(global_count_)), owner(static_cast<size_t>(global_count_), -1);
+  std::vector<int>& bodies = bodies_;
+  std::vector<int>& owner = owner_;
+  bodies.assign(static_cast<size_t>(global_count_), 0), owner.assign(static_cast<size_t>(global_count_), -1);
   std::string ownership_error;
   for (size_t r = 0, p = 0; r < counts.size(); ++r)
     for (int end = static_cast<int>(p) + counts[r]; static_cast<int>(p) < end; p += 6) {
@@ -100,37 +71,28 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
       unpack(comm.allgather(pack(constraint_candidates(inputs_, global_ids_, local_contact, boxes, bodies, snap))));
   const std::vector<SegmentRecord> segments =
       unpack_segments(comm.allgather(pack(segment_records(inputs_, global_ids_, local_contact))));
-  constraints_ = build_constraints(records, segments, local_contact, settings_.variant, snap);
+  Constraints constraints = build_constraints(records, segments, local_contact, settings_.variant, snap);
   std::sort(records.begin(), records.end(), [](const DofRecord& a, const DofRecord& b) {
     return std::make_pair(a.subdomain, a.dof) < std::make_pair(b.subdomain, b.dof);
   });
-  for (int i = constraints_.equality_rows; i < constraints_.rows(); ++i) {
-    const ConstraintEntry& slave = constraints_.entries[static_cast<size_t>(constraints_.row_start[static_cast<size_t>(i)])];
+  for (int i = constraints.equality_rows; i < constraints.rows(); ++i) {
+    const ConstraintEntry& slave = constraints.entries[static_cast<size_t>(constraints.row_start[static_cast<size_t>(i)])];
     const auto it = std::lower_bound(records.begin(), records.end(), std::make_pair(slave.subdomain, slave.dof),
                                      [](const DofRecord& r, const std::pair<int, int>& key) {
                                        return std::make_pair(r.subdomain, r.dof) < key;
                                      });
     contact_positions_.push_back({it->x, it->y});
   }
-  std::vector<Eigen::Index> sizes;
-  for (const auto& sub : inputs_) sizes.push_back(sub.K.rows());
-  local_ = split_by_subdomain(constraints_, sizes, global_ids_);
-  sum_ = std::make_unique<SubdomainSum>(rows_by_subdomain(constraints_, global_count_), owner,
-                                        constraints_.rows(), comm);
   setup_times_.constraints = constraints_clock.seconds();
 
   Stopwatch factor_clock;
   factorize();
-  F_ = std::make_unique<DualOperator>(subdomains_, local_, *sum_, constraints_.rows(), settings_.threads);
   setup_times_.factorization = local_factor_seconds_ = factor_clock.seconds();
 
-  int local_floating = 0;
-  for (const auto& s : subdomains_) local_floating += s->floating() ? 1 : 0;
-  if (comm.sum(local_floating) > 0) {
-    Stopwatch coarse_clock;
-    coarse_ = std::make_unique<CoarseSpace>(subdomains_, local_, global_ids_, constraints_.rows(), bodies, comm);
-    setup_times_.coarse_space = coarse_clock.seconds();
-  }
+  Stopwatch coarse_clock;
+  dual_ = std::make_unique<DualSystem>(subdomains_, global_ids_, owner, bodies, std::move(constraints),
+                                       settings_.threads, comm);
+  (dual_->coarse() ? setup_times_.coarse_space : setup_times_.constraints) += coarse_clock.seconds();
   compute_dual_data();
 
   long local_primal = 0;
@@ -145,6 +107,7 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
 }
 
 void FetiProblem::factorize() {
+  const long before = CholmodFactor::factorizations_in_process();
   const bool eliminate = settings_.variant == FetiVariant::feti1;
   const int count = local_subdomain_count();
   subdomains_.resize(inputs_.size());
@@ -165,6 +128,7 @@ void FetiProblem::factorize() {
     for (const auto& failure : failures)
       if (failure) std::rethrow_exception(failure);
   });
+  factorizations_ = static_cast<long>(comm_->sum(double(CholmodFactor::factorizations_in_process() - before)));
 }
 
 void FetiProblem::gather_rank_statistics(double solve_seconds) const {
@@ -192,183 +156,60 @@ void FetiProblem::set_loads(const std::vector<Vec>& loads) {
   compute_dual_data();
 }
 
+std::vector<Vec> FetiProblem::operator_loads(const std::vector<Vec>& loads, bool homogeneous) const {
+  std::vector<Vec> result;
+  for (size_t k = 0; k < inputs_.size(); ++k) {
+    const SubdomainInput& in = inputs_[k];
+    const bool eliminated = settings_.variant == FetiVariant::feti1 && !in.dirichlet_dofs.empty();
+    result.push_back(eliminated ? eliminated_load(in.K, loads[k], in.dirichlet_dofs,
+                                                  homogeneous ? std::vector<double>{} : in.dirichlet_values)
+                                : loads[k]);
+  }
+  return result;
+}
+
 void FetiProblem::compute_dual_data() {
   Stopwatch clock;
-  operator_loads_.clear();
-  for (const auto& in : inputs_)
-    operator_loads_.push_back(settings_.variant == FetiVariant::feti1 && !in.dirichlet_dofs.empty()
-                                  ? eliminated_load(in.K, in.f, in.dirichlet_dofs, in.dirichlet_values)
-                                  : in.f);
-  const int m = constraints_.rows();
-  F_->apply_B_pseudo_inverse(operator_loads_, d_);
-  d_ -= Eigen::Map<const Vec>(constraints_.rhs.data(), m);  // d = B K^+ f - c
-  if (coarse_) {
-    e_ = coarse_->kernel_load(operator_loads_);              // e = R'f
-    lambda_tilde_ = coarse_->least_norm_solution(e_);        // G lambda~ = e
-    Vec F_lambda_tilde(m);
-    F_->apply(lambda_tilde_, F_lambda_tilde);
-    coarse_->project(d_ - F_lambda_tilde, b_);               // b = P(d - F lambda~)
-  } else {
-    e_.resize(0);
-    lambda_tilde_ = Vec::Zero(m);
-    b_ = d_;
-  }
+  std::vector<Vec> loads;
+  for (const auto& in : inputs_) loads.push_back(in.f);
+  const Constraints& c = constraints();
+  data_ = dual_->data(operator_loads(loads, false), Eigen::Map<const Vec>(c.rhs.data(), c.rows()));
   setup_times_.dual_data = clock.seconds();
 }
 
-std::string FetiProblem::path() const {
-  const bool inequalities = constraints_.inequality_rows() > 0;
-  const bool floating = coarse_ != nullptr;
-  if (constraints_.rows() == 0) return "cholesky";
-  if (!inequalities) return floating ? "projected_cg" : "cg";
-  return floating ? "smalbe" : "mprgp";
-}
-
-double FetiProblem::operator_norm(bool projected, IterationCounts& counts, double& seconds) const {
-  std::optional<double>& cached = projected ? norm_PFP_ : norm_F_;
-  int& cost = projected ? norm_PFP_cost_ : norm_F_cost_;
-  if (!cached) {
-    Stopwatch clock;
-    const int m = constraints_.rows();
-    NormEstimate estimate;
-    if (projected) {
-      estimate = estimate_norm([&](const Vec& x, Vec& y) { apply_PFP(x, y); }, m, {},
-                               [&](Vec& v) { coarse_->project(Vec(v), v); });
-    } else {
-      estimate = estimate_norm([&](const Vec& x, Vec& y) { F_->apply(x, y); }, m);
-    }
-    cached = estimate.norm;
-    cost = estimate.multiplications;
-    seconds = clock.seconds();
-  }
-  counts.hessian_norm_estimate += cost;
-  return *cached;
-}
-
-void FetiProblem::apply_PFP(const Vec& x, Vec& y) const {
-  coarse_->project(x, projected_);
-  F_->apply(projected_, applied_);
-  coarse_->project(applied_, y);  // y = P F P x
-}
-
 FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
-  settings.validate();
+  DualSolution dual = dual_->solve(data_, settings);
   FetiResult result;
-  result.path = path();
-  const int m = constraints_.rows();
-  const double tolerance = settings.tolerance;
-  result.gradient_reference = b_.norm() > 0 ? b_.norm() : 1.0;
-  result.equality_reference = e_.norm() > 0 ? e_.norm() : 0.0;
-  std::string phases = "constraints,factorization";
-  if (coarse_) phases += ",coarse_space";
-  Stopwatch solve_clock;
-
-  if (result.path == "cholesky") {
-    result.status = SolveStatus::converged;
-    result.phases = phases;
-    result.times.solve = solve_clock.seconds();
-    return finish(std::move(result), Vec::Zero(0));
-  }
-  phases += ",dual_data";
-
-  Vec lambda;
-  const Vec lower_bounds = [&] {
-    Vec lower = Vec::Constant(m, kUnbounded);
-    for (int i = constraints_.equality_rows; i < m; ++i) lower[i] = -lambda_tilde_[i];  // lambda_I >= 0
-    return lower;
-  }();
-  const double b_tol = tolerance * result.gradient_reference;
-
-  if (result.path == "cg" || result.path == "projected_cg") {
-    const LinearOperator A = [&](const Vec& x, Vec& y) {
-      if (coarse_) apply_PFP(x, y);
-      else F_->apply(x, y);
-    };
-    CgSettings cg;
-    cg.max_hessian = settings.max_hessian;
-    Vec mu = Vec::Zero(m), g;
-    const CgResult cg_result = conjugate_gradient(
-        A, b_, mu, g, cg, [&](const Vec&, const Vec&, double norm) { return norm <= b_tol; },
-        settings.monitor);
-    result.status = cg_result.status;
-    result.counts = cg_result.counts;
-    result.gradient_norm = cg_result.gradient_norm;
-    lambda = mu + lambda_tilde_;
-    phases += "," + result.path;
-  } else if (result.path == "mprgp") {
-    double seconds = 0;
-    const double norm = operator_norm(false, result.counts, seconds);
-    result.times.norm_estimate = seconds;
-    MprgpSettings mprgp_settings = settings.mprgp;
-    mprgp_settings.max_hessian = settings.max_hessian;
-    Vec x = Vec::Zero(m), g;
-    const MprgpResult r = mprgp(
-        [&](const Vec& v, Vec& y) { F_->apply(v, y); }, b_, lower_bounds, norm, x, g, false, mprgp_settings,
-        [&](const Vec&, const Vec&, double norm_gp) { return norm_gp <= b_tol; }, settings.monitor);
-    const IterationCounts estimate = result.counts;
-    result.counts = r.counts;
-    result.counts.hessian_norm_estimate = estimate.hessian_norm_estimate;
-    result.status = r.status;
-    result.gradient_norm = r.projected_gradient_norm;
-    lambda = lambda_from_shifted(x, lower_bounds, lambda_tilde_);
-    phases += ",norm_estimate,mprgp";
-  } else {  // smalbe
-    double seconds = 0;
-    const double norm = operator_norm(true, result.counts, seconds);
-    result.times.norm_estimate = seconds;
-    const double eq_reference =
-        result.equality_reference > 0 ? result.equality_reference : result.gradient_reference / norm;
-    result.equality_reference = eq_reference;
-    SmalbeProblem problem;
-    problem.hessian = [&](const Vec& x, Vec& y) { apply_PFP(x, y); };
-    problem.range_projector = [&](const Vec& x, Vec& y) { coarse_->project_range(x, y); };
-    problem.b = &b_;
-    problem.lower = &lower_bounds;
-    problem.hessian_norm = norm;
-    SmalbeSettings smalbe_settings = settings.smalbe;
-    smalbe_settings.max_hessian = settings.max_hessian;
-    smalbe_settings.inner = settings.mprgp;
-    Vec mu = Vec::Zero(m);
-    const SmalbeResult r = smalbe(problem, mu, smalbe_settings,
-        [&](const Vec& x, double gp_norm, const Vec&) {
-          result.equality_norm = (coarse_->G() * x).norm();  // G lambda - e = G mu
-          return gp_norm <= b_tol && result.equality_norm <= tolerance * eq_reference;
-        },
-        settings.monitor);
-    const int estimate = result.counts.hessian_norm_estimate;
-    result.counts = r.counts;
-    result.counts.hessian_norm_estimate = estimate;
-    result.status = r.status;
-    result.gradient_norm = r.projected_gradient_norm;
-    result.equality_norm = (coarse_->G() * mu).norm();
-    lambda = lambda_from_shifted(mu, lower_bounds, lambda_tilde_);
-    phases += ",norm_estimate,smalbe";
-  }
-  result.times.solve = solve_clock.seconds() - result.times.norm_estimate;
-  result.phases = phases;
-  return finish(std::move(result), lambda);
-}
-
-FetiResult FetiProblem::finish(FetiResult result, const Vec& lambda) const {
-  Stopwatch recovery_clock;
-  result.lambda = lambda;
-  if (constraints_.rows() == 0) {
-    result.u.resize(subdomains_.size());
-    for (size_t s = 0; s < subdomains_.size(); ++s)
-      subdomains_[s]->apply_pseudo_inverse(operator_loads_[s], result.u[s]);
-  } else {
-    result.u = recover_primal(*F_, coarse_.get(), constraints_, operator_loads_, lambda);
-  }
-  result.times.recovery = recovery_clock.seconds();
-  Stopwatch kkt_clock;
-  const bool eliminated = settings_.variant == FetiVariant::feti1;
-  result.kkt = kkt_residuals(inputs_, local_, *F_, constraints_, eliminated, result.u, result.lambda, *comm_);
-  result.energy = energy(inputs_, result.u, *comm_);
-  for (int i = constraints_.equality_rows; i < constraints_.rows(); ++i)
-    if (constraints_.kind[static_cast<size_t>(i)] == RowKind::contact && lambda[i] > 0)
-      ++result.active_contact;
-  result.times.kkt = kkt_clock.seconds();
+  result.status = dual.status;
+  result.path = dual.path;
+  result.counts = dual.counts;
+  result.gradient_norm = dual.gradient_norm;
+  result.gradient_reference = dual.gradient_reference;
+  result.equality_norm = dual.equality_norm;
+  result.equality_reference = dual.equality_reference;
+  result.u = std::move(dual.u);
+  result.lambda = std::move(dual.lambda);
+  result.times.norm_estimate = dual.norm_estimate_seconds;
+  result.times.solve = dual.solve_seconds;
+  result.times.recovery = dual.recovery_seconds;
+  result.phases = "constraints,factorization";
+  if (dual_->coarse()) result.phases += ",coarse_space";
+  if (result.path != "cholesky") result.phases += ",dual_data";
+  if (result.path == "mprgp" || result.path == "smalbe") result.phases += ",norm_estimate";
+  if (result.path != "cholesky") result.phases += "," + result.path;
   result.phases += ",recovery,kkt";
+
+  Stopwatch kkt_clock;
+  const Constraints& c = constraints();
+  std::vector<Vec> loads;
+  for (const auto& in : inputs_) loads.push_back(in.f);
+  const bool eliminated = settings_.variant == FetiVariant::feti1;
+  result.kkt = kkt_residuals(inputs_, loads, Eigen::Map<const Vec>(c.rhs.data(), c.rows()), false, dual_->local(),
+                             dual_->F(), c, eliminated, result.u, result.lambda, *comm_);
+  result.energy = energy(inputs_, result.u, *comm_);
+  for (int i = c.equality_rows; i < c.rows(); ++i)
+    if (c.kind[static_cast<size_t>(i)] == RowKind::contact && result.lambda[i] > 0) ++result.active_contact;
+  result.times.kkt = kkt_clock.seconds();
   gather_rank_statistics(result.times.norm_estimate + result.times.solve);
   PhaseTimes& t = result.times;
   t = {0, 0, 0, 0, comm_->max(t.norm_estimate), comm_->max(t.solve), comm_->max(t.recovery), comm_->max(t.kkt)};

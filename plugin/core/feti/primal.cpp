@@ -22,7 +22,7 @@ double safe_ratio(double a, double b) { return b > 0 ? a / b : a; }
 
 std::vector<Vec> recover_primal(const DualOperator& F, const CoarseSpace* coarse,
                                 const Constraints& constraints, const std::vector<Vec>& f,
-                                const Vec& lambda) {
+                                const Vec& c, const Vec& lambda) {
   std::vector<Vec> u;
   F.pseudo_inverse_of_residual(f, lambda, u);  // u~ = K^+(f - B'lambda)
   if (!coarse || coarse->empty()) return u;
@@ -33,7 +33,7 @@ std::vector<Vec> recover_primal(const DualOperator& F, const CoarseSpace* coarse
   for (int i = 0; i < m; ++i) mask[i] = holds_with_equality(constraints, lambda, i) ? 1.0 : 0.0;
   Vec Bu;
   F.apply_B(u, Bu);
-  const Vec residual = (Eigen::Map<const Vec>(constraints.rhs.data(), m) - Bu).cwiseProduct(mask);
+  const Vec residual = (c - Bu).cwiseProduct(mask);
   const Eigen::SparseMatrix<double, Eigen::RowMajor, int> GS = coarse->G() * mask.asDiagonal();
   const Eigen::MatrixXd normal = Eigen::MatrixXd(GS * GS.transpose());
   const Vec alpha = normal.ldlt().solve(GS * residual);
@@ -45,8 +45,8 @@ double KktResiduals::max() const {
   return std::max({equilibrium, equality, inequality, dual_feasibility, complementarity});
 }
 
-KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs,
-                           const std::vector<LocalConstraints>& local, const DualOperator& F,
+KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs, const std::vector<Vec>& f, const Vec& c,
+                           bool homogeneous_dirichlet, const std::vector<LocalConstraints>& local, const DualOperator& F,
                            const Constraints& constraints, bool dirichlet_eliminated,
                            const std::vector<Vec>& u, const Vec& lambda, const Communicator& comm) {
   KktResiduals r;
@@ -62,15 +62,15 @@ KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs,
       for (size_t k = 0; k < local[s].rows.size(); ++k) lambda_s[static_cast<Eigen::Index>(k)] = lambda[local[s].rows[k]];
       reaction = local[s].B.transpose() * lambda_s;
     }
-    Vec residual = inputs[s].K * u[s] - inputs[s].f + reaction;
+    Vec residual = inputs[s].K * u[s] - f[s] + reaction;
     for (size_t k = 0; k < inputs[s].dirichlet_dofs.size(); ++k) {
       const int dof = inputs[s].dirichlet_dofs[k];
-      const double g = inputs[s].dirichlet_values.empty() ? 0.0 : inputs[s].dirichlet_values[k];
+      const double g = homogeneous_dirichlet || inputs[s].dirichlet_values.empty() ? 0.0 : inputs[s].dirichlet_values[k];
       dirichlet_violation = std::max(dirichlet_violation, std::abs(u[s][dof] - g));
       if (dirichlet_eliminated) residual[dof] = 0.0;  // the reaction there is not in lambda
     }
     residual_sq += residual.squaredNorm();
-    load_sq += inputs[s].f.squaredNorm();
+    load_sq += f[s].squaredNorm();
     reaction_sq += reaction.squaredNorm();
   }
   residual_sq = comm.sum(residual_sq), load_sq = comm.sum(load_sq), reaction_sq = comm.sum(reaction_sq);
@@ -78,7 +78,7 @@ KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs,
 
   Vec gap;
   F.apply_B(u, gap);
-  gap -= Eigen::Map<const Vec>(constraints.rhs.data(), m);
+  gap -= c;
   double equality = comm.max(dirichlet_violation), inequality = 0, negative = 0, complementarity = 0;
   for (int i = 0; i < m; ++i) {
     if (i < constraints.equality_rows) {

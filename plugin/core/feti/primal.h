@@ -10,14 +10,16 @@ namespace ffeti {
 
 /// u = K^+(f - B'lambda) + R alpha, with alpha the least-squares solution of
 /// B R alpha = c - B K^+(f - B'lambda) on the rows that hold with equality (all equality
-/// rows and the inequality rows with lambda_i > 0). `f` are the loads the operators use.
-/// Collective; returns u for this rank's subdomains.
+/// rows and the inequality rows with lambda_i > 0). `f` are the loads the operators use,
+/// `c` the right-hand side of the rows. Collective; returns u for this rank's subdomains.
 std::vector<Vec> recover_primal(const DualOperator& F, const CoarseSpace* coarse,
                                 const Constraints& constraints, const std::vector<Vec>& f,
-                                const Vec& lambda);
+                                const Vec& c, const Vec& lambda);
 
 /// KKT conditions of  min 1/2 u'Ku - f'u  s.t.  B_E u = c_E, B_I u <= c_I, recomputed in
-/// primal form from the original (not eliminated) K_s and f_s. All relative:
+/// primal form from the original (not eliminated) K_s of `inputs`, the loads `f` (this
+/// rank's) and the right-hand side `c` of `constraints`; the Dirichlet values are the
+/// inputs' or, if `homogeneous_dirichlet`, zero (a sensitivity problem). All relative:
 ///   equilibrium     = ||K u - f + B'lambda||_2 / max(||f||_2, ||B'lambda||_2)
 ///                     (FETI-1: Dirichlet dofs excluded, their reactions are not in lambda)
 ///   equality        = max(|B_E u - c_E|, |u_D - g|) / ||u||_inf
@@ -30,8 +32,8 @@ struct KktResiduals {
 };
 
 /// Collective over the ranks of `comm`; `inputs`, `local` and `u` are this rank's.
-KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs,
-                           const std::vector<LocalConstraints>& local, const DualOperator& F,
+KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs, const std::vector<Vec>& f, const Vec& c,
+                           bool homogeneous_dirichlet, const std::vector<LocalConstraints>& local, const DualOperator& F,
                            const Constraints& constraints, bool dirichlet_eliminated,
                            const std::vector<Vec>& u, const Vec& lambda, const Communicator& comm);
 

@@ -1,0 +1,199 @@
+#include "feti/dual_system.h"
+
+#include "feti/errors.h"
+#include "feti/primal.h"
+#include "feti/stopwatch.h"
+#include "qp/conjugate_gradient.h"
+
+namespace ffeti {
+namespace {
+
+/// Multipliers exactly at their bound are exactly zero in lambda (not round-off).
+Vec lambda_from_shifted(const Vec& mu, const Vec& lower, const Vec& lambda_tilde) {
+  Vec lambda = mu + lambda_tilde;
+  for (Eigen::Index i = 0; i < mu.size(); ++i)
+    if (lower[i] != kUnbounded && mu[i] <= lower[i]) lambda[i] = 0.0;
+  return lambda;
+}
+
+}  // namespace
+
+void DualSolveSettings::validate() const {
+  if (!(tolerance > 0 && tolerance < 1)) throw InputError("tol: must lie in (0, 1)");
+  if (max_hessian < 1) throw InputError("maxit: must be >= 1");
+  try {
+    smalbe.validate();
+    mprgp.validate();
+  } catch (const std::invalid_argument& error) {
+    throw InputError(error.what());
+  }
+}
+
+DualSystem::DualSystem(const SubdomainList& subdomains, const std::vector<int>& global_ids,
+                       const std::vector<int>& owner, const std::vector<int>& bodies, Constraints constraints,
+                       int threads, const Communicator& comm)
+    : subdomains_(subdomains), constraints_(std::move(constraints)) {
+  std::vector<Eigen::Index> sizes;
+  for (const auto& s : subdomains) sizes.push_back(s->size());
+  local_ = split_by_subdomain(constraints_, sizes, global_ids);
+  sum_ = std::make_unique<SubdomainSum>(rows_by_subdomain(constraints_, static_cast<int>(owner.size())), owner,
+                                        constraints_.rows(), comm);
+  F_ = std::make_unique<DualOperator>(subdomains_, local_, *sum_, constraints_.rows(), threads);
+  int local_floating = 0;
+  for (const auto& s : subdomains_) local_floating += s->floating() ? 1 : 0;
+  if (comm.sum(local_floating) > 0)
+    coarse_ = std::make_unique<CoarseSpace>(subdomains_, local_, global_ids, constraints_.rows(), bodies, comm);
+}
+
+std::string DualSystem::path() const {
+  const bool inequalities = constraints_.inequality_rows() > 0;
+  const bool floating = coarse_ != nullptr;
+  if (constraints_.rows() == 0) return "cholesky";
+  if (!inequalities) return floating ? "projected_cg" : "cg";
+  return floating ? "smalbe" : "mprgp";
+}
+
+DualData DualSystem::data(std::vector<Vec> loads, const Vec& c) const {
+  DualData data;
+  data.loads = std::move(loads);
+  data.c = c;
+  const int m = constraints_.rows();
+  Vec d;
+  F_->apply_B_pseudo_inverse(data.loads, d);
+  d -= c;  // d = B K^+ f - c
+  if (coarse_) {
+    data.e = coarse_->kernel_load(data.loads);              // e = R'f
+    data.lambda_tilde = coarse_->least_norm_solution(data.e);  // G lambda~ = e
+    Vec F_lambda_tilde(m);
+    F_->apply(data.lambda_tilde, F_lambda_tilde);
+    coarse_->project(d - F_lambda_tilde, data.b);          // b = P(d - F lambda~)
+  } else {
+    data.e.resize(0);
+    data.lambda_tilde = Vec::Zero(m);
+    data.b = d;
+  }
+  return data;
+}
+
+double DualSystem::operator_norm(bool projected, const NormEstimateSettings& settings, IterationCounts& counts,
+                                 double& seconds) const {
+  std::optional<double>& cached = projected ? norm_PFP_ : norm_F_;
+  int& cost = projected ? norm_PFP_cost_ : norm_F_cost_;
+  if (!cached) {
+    Stopwatch clock;
+    NormEstimate estimate;
+    if (projected) {
+      estimate = estimate_norm([&](const Vec& x, Vec& y) { apply_PFP(x, y); }, rows(), settings,
+                               [&](Vec& v) { coarse_->project(Vec(v), v); });
+    } else {
+      estimate = estimate_norm([&](const Vec& x, Vec& y) { F_->apply(x, y); }, rows(), settings);
+    }
+    cached = estimate.norm;
+    cost = estimate.multiplications;
+    seconds = clock.seconds();
+  }
+  counts.hessian_norm_estimate += cost;
+  return *cached;
+}
+
+void DualSystem::apply_PFP(const Vec& x, Vec& y) const {
+  coarse_->project(x, projected_);
+  F_->apply(projected_, applied_);
+  coarse_->project(applied_, y);  // y = P F P x
+}
+
+DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& settings) const {
+  settings.validate();
+  DualSolution result;
+  result.path = path();
+  const int m = rows();
+  const double tolerance = settings.tolerance;
+  result.gradient_reference = data.b.norm() > 0 ? data.b.norm() : 1.0;
+  result.equality_reference = data.e.norm() > 0 ? data.e.norm() : 0.0;
+  Stopwatch solve_clock;
+
+  if (result.path == "cholesky") {
+    result.status = SolveStatus::converged;
+    result.lambda = Vec::Zero(0);
+    result.u.resize(subdomains_.size());
+    for (size_t s = 0; s < subdomains_.size(); ++s) subdomains_[s]->apply_pseudo_inverse(data.loads[s], result.u[s]);
+    result.solve_seconds = solve_clock.seconds();
+    return result;
+  }
+
+  Vec lambda;
+  const Vec lower_bounds = [&] {
+    Vec lower = Vec::Constant(m, kUnbounded);
+    for (int i = constraints_.equality_rows; i < m; ++i) lower[i] = -data.lambda_tilde[i];  // lambda_I >= 0
+    return lower;
+  }();
+  const double b_tol = tolerance * result.gradient_reference;
+
+  if (result.path == "cg" || result.path == "projected_cg") {
+    const LinearOperator A = [&](const Vec& x, Vec& y) {
+      if (coarse_) apply_PFP(x, y);
+      else F_->apply(x, y);
+    };
+    CgSettings cg;
+    cg.max_hessian = settings.max_hessian;
+    Vec mu = Vec::Zero(m), g;
+    const CgResult cg_result = conjugate_gradient(
+        A, data.b, mu, g, cg, [&](const Vec&, const Vec&, double norm) { return norm <= b_tol; },
+        settings.monitor);
+    result.status = cg_result.status;
+    result.counts = cg_result.counts;
+    result.gradient_norm = cg_result.gradient_norm;
+    lambda = mu + data.lambda_tilde;
+  } else if (result.path == "mprgp") {
+    const double norm = operator_norm(false, settings.norm_estimate, result.counts, result.norm_estimate_seconds);
+    MprgpSettings mprgp_settings = settings.mprgp;
+    mprgp_settings.max_hessian = settings.max_hessian;
+    Vec x = Vec::Zero(m), g;
+    const MprgpResult r = mprgp(
+        [&](const Vec& v, Vec& y) { F_->apply(v, y); }, data.b, lower_bounds, norm, x, g, false, mprgp_settings,
+        [&](const Vec&, const Vec&, double norm_gp) { return norm_gp <= b_tol; }, settings.monitor);
+    const int estimate = result.counts.hessian_norm_estimate;
+    result.counts = r.counts;
+    result.counts.hessian_norm_estimate = estimate;
+    result.status = r.status;
+    result.gradient_norm = r.projected_gradient_norm;
+    lambda = lambda_from_shifted(x, lower_bounds, data.lambda_tilde);
+  } else {  // smalbe
+    const double norm = operator_norm(true, settings.norm_estimate, result.counts, result.norm_estimate_seconds);
+    const double eq_reference =
+        result.equality_reference > 0 ? result.equality_reference : result.gradient_reference / norm;
+    result.equality_reference = eq_reference;
+    SmalbeProblem problem;
+    problem.hessian = [&](const Vec& x, Vec& y) { apply_PFP(x, y); };
+    problem.range_projector = [&](const Vec& x, Vec& y) { coarse_->project_range(x, y); };
+    problem.b = &data.b;
+    problem.lower = &lower_bounds;
+    problem.hessian_norm = norm;
+    SmalbeSettings smalbe_settings = settings.smalbe;
+    smalbe_settings.max_hessian = settings.max_hessian;
+    smalbe_settings.inner = settings.mprgp;
+    Vec mu = Vec::Zero(m);
+    const SmalbeResult r = smalbe(problem, mu, smalbe_settings,
+        [&](const Vec& x, double gp_norm, const Vec&) {
+          result.equality_norm = (coarse_->G() * x).norm();  // G lambda - e = G mu
+          return gp_norm <= b_tol && result.equality_norm <= tolerance * eq_reference;
+        },
+        settings.monitor);
+    const int estimate = result.counts.hessian_norm_estimate;
+    result.counts = r.counts;
+    result.counts.hessian_norm_estimate = estimate;
+    result.status = r.status;
+    result.gradient_norm = r.projected_gradient_norm;
+    result.equality_norm = (coarse_->G() * mu).norm();
+    lambda = lambda_from_shifted(mu, lower_bounds, data.lambda_tilde);
+  }
+  result.solve_seconds = solve_clock.seconds() - result.norm_estimate_seconds;
+
+  Stopwatch recovery_clock;
+  result.lambda = lambda;
+  result.u = recover_primal(*F_, coarse_.get(), constraints_, data.loads, data.c, lambda);
+  result.recovery_seconds = recovery_clock.seconds();
+  return result;
+}
+
+}  // namespace ffeti

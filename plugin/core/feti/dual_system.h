@@ -1,0 +1,100 @@
+// The dual problem of one constraint set over factorized subdomains: B split by subdomain,
+// the dual operator F, the coarse space where something floats, and the solve on the path
+// the constraints call for (ALGORITHMS.md section 6). The state problem has one; the
+// sensitivity problem of a design step (seed eq. 12: a subset of the rows) has another
+// over the same factorizations.
+#pragma once
+
+#include "feti/coarse_space.h"
+#include "feti/constraints.h"
+#include "feti/dual_operator.h"
+#include "parallel/subdomain_sum.h"
+#include "qp/norm_estimate.h"
+#include "qp/smalbe.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ffeti {
+
+/// Relative stopping test of every path (the seed's, with its "N f" read as the dual
+/// right-hand side, see docs/algorithms.md):
+///   ||gP(lambda, mu, 0)||_2 <= tolerance ||b||_2,  b = P(d - F lambda~)
+///   ||G lambda - e||_2      <= tolerance ||e||_2   (where there is a coarse space)
+struct DualSolveSettings {
+  double tolerance = 1e-4;
+  int max_hessian = 10000;          ///< over the whole solve
+  SmalbeSettings smalbe{};          ///< used on the SMALBE path (its max_hessian is overridden)
+  MprgpSettings mprgp{};            ///< used on the MPRGP path and inside SMALBE
+  NormEstimateSettings norm_estimate{};
+  Monitor monitor{};
+
+  void validate() const;  ///< throws InputError naming the setting
+};
+
+/// The right-hand side of one dual problem, for loads f (as the operators see them) and
+/// constraint right-hand side c: d = B K^+ f - c, e = R'f, lambda~ = G'(GG')^{-1} e and
+/// b = P(d - F lambda~).
+struct DualData {
+  std::vector<Vec> loads;
+  Vec c, e, lambda_tilde, b;
+};
+
+struct DualSolution {
+  SolveStatus status = SolveStatus::invalid_input;
+  std::string path;              ///< cholesky, cg, projected_cg, mprgp or smalbe
+  IterationCounts counts;
+  double gradient_norm = 0;      ///< final ||gP|| (absolute) and its reference ||b||
+  double gradient_reference = 0;
+  double equality_norm = 0;      ///< final ||G lambda - e|| and its reference ||e||
+  double equality_reference = 0;
+  Vec lambda;                    ///< multipliers, rows ordered as constraints()
+  std::vector<Vec> u;            ///< primal solution per subdomain of this rank
+  double norm_estimate_seconds = 0, solve_seconds = 0, recovery_seconds = 0;  ///< this rank's
+};
+
+class DualSystem {
+ public:
+  /// `subdomains` are this rank's (factorized), `global_ids` their global indices,
+  /// `owner[s]` the rank and `bodies[s]` the body of every global subdomain s. Builds the
+  /// coarse space when some subdomain floats (InputError if a body's rigid modes meet no
+  /// row). Keeps references to `subdomains` and `comm`: both must outlive it. Collective.
+  DualSystem(const SubdomainList& subdomains, const std::vector<int>& global_ids,
+             const std::vector<int>& owner, const std::vector<int>& bodies, Constraints constraints,
+             int threads, const Communicator& comm);
+
+  const Constraints& constraints() const { return constraints_; }
+  const std::vector<LocalConstraints>& local() const { return local_; }
+  const DualOperator& F() const { return *F_; }
+  const CoarseSpace* coarse() const { return coarse_.get(); }
+  int rows() const { return constraints_.rows(); }
+  /// The solver path the constraints call for (ALGORITHMS.md section 6).
+  std::string path() const;
+
+  /// The dual right-hand side for loads `loads` (this rank's) and constraint right-hand
+  /// side `c` (all rows). Collective: two dual operator applications.
+  DualData data(std::vector<Vec> loads, const Vec& c) const;
+
+  /// Solves the dual problem and recovers u. Never throws for non-convergence: see status.
+  /// Collective.
+  DualSolution solve(const DualData& data, const DualSolveSettings& settings) const;
+
+ private:
+  double operator_norm(bool projected, const NormEstimateSettings& settings, IterationCounts& counts,
+                       double& seconds) const;
+  void apply_PFP(const Vec& x, Vec& y) const;  // the projected dual operator, on reused buffers
+
+  const SubdomainList& subdomains_;
+  Constraints constraints_;
+  std::vector<LocalConstraints> local_;
+  std::unique_ptr<SubdomainSum> sum_;
+  std::unique_ptr<DualOperator> F_;
+  std::unique_ptr<CoarseSpace> coarse_;
+  mutable Vec projected_, applied_;                   // buffers of apply_PFP
+  mutable std::optional<double> norm_F_, norm_PFP_;  // cached: the same F for every load case
+  mutable int norm_F_cost_ = 0, norm_PFP_cost_ = 0;
+};
+
+}  // namespace ffeti
