@@ -95,6 +95,7 @@ class FetiProblem {
   /// Per-rank figures gathered at set-up and after each solve (rank order).
   const std::vector<RankStatistics>& rank_statistics() const { return rank_statistics_; }
   const Constraints& constraints() const { return dual_->constraints(); }
+  const DualSystem& dual() const { return *dual_; }
   /// This rank's factorized subdomains (kernels, generalized inverses).
   const SubdomainList& subdomains() const { return subdomains_; }
   /// The input as given (original K_s and current loads f_s).

@@ -17,7 +17,7 @@ using Statistics = std::vector<std::pair<std::string, double>>;
 Statistics statistics(const FetiProblem& problem, const FetiResult* result);
 
 /// 0 converged, 1 max_iterations, 2 stagnated, 3 not_positive_definite, 4 infeasible,
-/// 5 invalid_input: the integer fetiSolve returns.
+/// 5 invalid_input, 6 weakly_active: the integer fetiSolve (and the sensitivity calls) return.
 int status_code(SolveStatus status);
 
 /// One contact row: the position of its slave dof and its multiplier (the contact force).

@@ -10,6 +10,7 @@ std::string to_string(SolveStatus status) {
     case SolveStatus::not_positive_definite: return "not_positive_definite";
     case SolveStatus::infeasible: return "infeasible";
     case SolveStatus::invalid_input: return "invalid_input";
+    case SolveStatus::weakly_active: return "weakly_active";
   }
   return "unknown";
 }

@@ -25,6 +25,7 @@ enum class SolveStatus {
   not_positive_definite,
   infeasible,          ///< equality and bound constraints cannot hold together
   invalid_input,
+  weakly_active,       ///< sensitivity: weakly active contact rows, beta -> u' is not linear (no adjoint)
 };
 
 std::string to_string(SolveStatus status);

@@ -1,0 +1,220 @@
+#include "sens/sensitivity.h"
+
+#include "feti/errors.h"
+#include "feti/stopwatch.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+namespace ffeti {
+namespace {
+
+/// Sum of per-item values from all ranks in a fixed order of their keys, so that the
+/// result is bitwise the same for any number of ranks. `local` holds (key..., value) tuples
+/// of `width` doubles, the value last.
+double ordered_sum(const std::vector<double>& local, size_t width, const Communicator& comm) {
+  const std::vector<double> all = comm.allgather(local);
+  std::vector<size_t> order;
+  for (size_t p = 0; p + width <= all.size(); p += width) order.push_back(p);
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return std::lexicographical_compare(all.begin() + static_cast<long>(a), all.begin() + static_cast<long>(a + width - 1),
+                                        all.begin() + static_cast<long>(b), all.begin() + static_cast<long>(b + width - 1));
+  });
+  double sum = 0;
+  for (size_t p : order) sum += all[p + width - 1];
+  return sum;
+}
+
+void check_size(bool ok, const std::string& name, int subdomain, const std::string& what) {
+  if (!ok) throw InputError(name + "[" + std::to_string(subdomain) + "]: " + what);
+}
+
+}  // namespace
+
+ContactClassification classify_contact(const FetiProblem& problem, const FetiResult& state, double threshold) {
+  if (!(threshold > 0 && threshold < 1)) throw InputError("activeTol: must lie in (0, 1)");
+  const Constraints& c = problem.constraints();
+  ContactClassification result;
+  result.threshold = threshold;
+  Vec Bu;
+  problem.dual().F().apply_B(state.u, Bu);
+  double u_max = 0;
+  for (const Vec& us : state.u) u_max = std::max(u_max, us.size() ? us.cwiseAbs().maxCoeff() : 0.0);
+  result.gap_scale = problem.communicator().max(u_max);
+  for (int i = c.equality_rows; i < c.rows(); ++i) result.lambda_scale = std::max(result.lambda_scale, state.lambda[i]);
+  for (int i = c.equality_rows; i < c.rows(); ++i) {
+    const double gap = c.rhs[static_cast<size_t>(i)] - Bu[i];  // >= 0 where the row holds
+    if (state.lambda[i] > threshold * result.lambda_scale) result.strong.push_back(i);
+    else if (gap <= threshold * result.gap_scale) result.weak.push_back(i);
+    else result.inactive.push_back(i);
+  }
+  return result;
+}
+
+SensitivityProblem::SensitivityProblem(const FetiProblem& problem, const FetiResult& state, double threshold)
+    : problem_(problem), u_(state.u), lambda_(state.lambda) {
+  if (state.lambda.size() != problem.dual_dimension() || state.u.size() != problem.inputs().size())
+    throw InputError("P: the solution does not belong to this problem (call fetiSolve first)");
+  classification_ = classify_contact(problem, state, threshold);
+  const Constraints& full = problem.constraints();
+  Constraints rows;  // E, then S as equalities, then W as inequalities; right-hand sides per direction
+  const auto keep = [&](int i) {
+    for (int k = full.row_start[static_cast<size_t>(i)]; k < full.row_start[static_cast<size_t>(i) + 1]; ++k)
+      rows.entries.push_back(full.entries[static_cast<size_t>(k)]);
+    rows.row_start.push_back(static_cast<int>(rows.entries.size()));
+    rows.rhs.push_back(0.0);
+    rows.kind.push_back(full.kind[static_cast<size_t>(i)]);
+    kept_.push_back(i);
+  };
+  for (int i = 0; i < full.equality_rows; ++i) keep(i);
+  for (int i : classification_.strong) keep(i);
+  rows.equality_rows = static_cast<int>(kept_.size());
+  for (int i : classification_.weak) {
+    keep(i);
+    rows.geometry.push_back(full.geometry[static_cast<size_t>(i - full.equality_rows)]);
+  }
+  try {
+    system_ = std::make_unique<DualSystem>(problem.subdomains(), problem.global_ids(), problem.owners(),
+                                           problem.bodies(), std::move(rows), problem.settings().threads,
+                                           problem.communicator());
+  } catch (const InputError& error) {
+    throw InputError(std::string("sensitivity: without its inactive contact rows the problem is singular, ") +
+                     "so u has no unique derivative: " + error.what());
+  }
+}
+
+void SensitivityProblem::check(const DesignDerivative& d) const {
+  const auto& inputs = problem_.inputs();
+  const auto& ids = problem_.global_ids();
+  collectively(problem_.communicator(), [&] {
+    const auto count_ok = [&](size_t n) { return n == 0 || n == inputs.size(); };
+    if (!count_ok(d.dK.size()) || !count_ok(d.df.size()) || !count_ok(d.velocity_x.size()) ||
+        !count_ok(d.velocity_y.size()))
+      throw InputError("dK, dF, velocityX, velocityY: need one entry per subdomain");
+    for (size_t k = 0; k < inputs.size(); ++k) {
+      const Eigen::Index n = inputs[k].K.rows();
+      const int s = ids[k];
+      if (!d.dK.empty() && d.dK[k].size() > 0) {
+        check_size(d.dK[k].rows() == n && d.dK[k].cols() == n, "dK", s, "must be " + std::to_string(n) + " x " +
+                   std::to_string(n) + " like K[" + std::to_string(s) + "] (or empty)");
+        for (Eigen::Index j = 0; j < d.dK[k].outerSize(); ++j)
+          for (SparseMatrix::InnerIterator it(d.dK[k], j); it; ++it)
+            check_size(std::isfinite(it.value()), "dK", s, "has a non-finite entry");
+      }
+      if (!d.df.empty() && d.df[k].size() > 0)
+        check_size(d.df[k].size() == n && d.df[k].allFinite(), "dF", s, "needs " + std::to_string(n) + " finite entries (or none)");
+      for (const auto* v : {&d.velocity_x, &d.velocity_y}) {
+        if (v->empty() || (*v)[k].empty()) continue;
+        bool finite = true;
+        for (double x : (*v)[k]) finite = finite && std::isfinite(x);
+        check_size(static_cast<Eigen::Index>((*v)[k].size()) == n && finite, v == &d.velocity_x ? "velocityX" : "velocityY",
+                   s, "needs " + std::to_string(n) + " finite entries, one per dof (or none)");
+      }
+    }
+  });
+}
+
+SensitivityProblem::DirectionData SensitivityProblem::direction_data(const DesignDerivative& d) const {
+  check(d);
+  const Constraints& full = problem_.constraints();
+  const auto& inputs = problem_.inputs();
+  const auto& ids = problem_.global_ids();
+  const std::vector<RowDerivative> rows =
+      contact_row_derivatives(full, ids, d.velocity_x, d.velocity_y, problem_.communicator());
+  std::map<int, size_t> local_index;
+  for (size_t k = 0; k < ids.size(); ++k) local_index[ids[k]] = k;
+
+  DirectionData data;
+  for (size_t k = 0; k < inputs.size(); ++k) {
+    Vec fbar = !d.df.empty() && d.df[k].size() > 0 ? d.df[k] : Vec::Zero(inputs[k].K.rows());
+    if (!d.dK.empty() && d.dK[k].size() > 0) fbar.noalias() -= d.dK[k] * u_[k];  // f' - K'u
+    data.fbar.push_back(std::move(fbar));
+  }
+  for (size_t r = 0; r < rows.size(); ++r) {  // - B''lambda
+    const double lambda = lambda_[full.equality_rows + static_cast<int>(r)];
+    if (lambda == 0) continue;
+    for (const ConstraintEntry& e : rows[r].entries)
+      if (const auto it = local_index.find(e.subdomain); it != local_index.end())
+        data.fbar[it->second][e.dof] -= e.coefficient * lambda;
+  }
+
+  // c~ = c' - B'u on the kept contact rows (gluing and Dirichlet rows do not move): the
+  // products B'_ij u_j are gathered and summed in entry order, the same on every rank.
+  std::vector<double> products;
+  for (size_t j = static_cast<size_t>(full.equality_rows); j < kept_.size(); ++j) {
+    const auto& entries = rows[static_cast<size_t>(kept_[j] - full.equality_rows)].entries;
+    for (size_t k = 0; k < entries.size(); ++k)
+      if (const auto it = local_index.find(entries[k].subdomain); it != local_index.end())
+        products.insert(products.end(), {double(j), double(k), entries[k].coefficient * u_[it->second][entries[k].dof]});
+  }
+  const std::vector<double> all = problem_.communicator().allgather(products);
+  std::vector<std::vector<std::pair<int, double>>> by_row(kept_.size());
+  for (size_t p = 0; p + 3 <= all.size(); p += 3)
+    by_row[static_cast<size_t>(all[p])].emplace_back(static_cast<int>(all[p + 1]), all[p + 2]);
+  data.c = Vec::Zero(static_cast<Eigen::Index>(kept_.size()));
+  for (size_t j = static_cast<size_t>(full.equality_rows); j < kept_.size(); ++j) {
+    std::sort(by_row[j].begin(), by_row[j].end());
+    double value = rows[static_cast<size_t>(kept_[j] - full.equality_rows)].rhs;
+    for (const auto& [entry, product] : by_row[j]) value -= product;
+    data.c[static_cast<Eigen::Index>(j)] = value;
+  }
+  return data;
+}
+
+SensitivityResult SensitivityProblem::direct(const DesignDerivative& direction, const DualSolveSettings& settings) const {
+  Stopwatch clock;
+  const DirectionData d = direction_data(direction);
+  DualSolution s = system_->solve(system_->data(problem_.operator_loads(d.fbar, true), d.c), settings);
+  SensitivityResult result;
+  result.status = s.status;
+  result.path = s.path;
+  result.counts = s.counts;
+  result.kkt = kkt_residuals(problem_.inputs(), d.fbar, d.c, true, system_->local(), system_->F(),
+                             system_->constraints(), problem_.variant() == FetiVariant::feti1, s.u, s.lambda,
+                             problem_.communicator());
+  result.z = std::move(s.u);
+  result.multipliers = std::move(s.lambda);
+  result.seconds = problem_.communicator().max(clock.seconds());
+  return result;
+}
+
+AdjointResult SensitivityProblem::adjoint(const std::vector<Vec>& dJdu, const DualSolveSettings& settings) {
+  Stopwatch clock;
+  adjoint_.reset();
+  AdjointResult result;
+  const auto& inputs = problem_.inputs();
+  collectively(problem_.communicator(), [&] {
+    if (dJdu.size() != inputs.size()) throw InputError("dJdu: needs one entry per subdomain");
+    for (size_t k = 0; k < inputs.size(); ++k)
+      check_size(dJdu[k].size() == inputs[k].K.rows() && dJdu[k].allFinite(), "dJdu", problem_.global_ids()[k],
+                 "needs " + std::to_string(inputs[k].K.rows()) + " finite entries");
+  });
+  if (!classification_.weak.empty()) {
+    result.status = SolveStatus::weakly_active;
+    result.path = system_->path();
+    return result;
+  }
+  const Vec zero = Vec::Zero(system_->rows());
+  DualSolution s = system_->solve(system_->data(problem_.operator_loads(dJdu, true), zero), settings);
+  result.status = s.status;
+  result.path = s.path;
+  result.counts = s.counts;
+  result.kkt = kkt_residuals(inputs, dJdu, zero, true, system_->local(), system_->F(), system_->constraints(),
+                             problem_.variant() == FetiVariant::feti1, s.u, s.lambda, problem_.communicator());
+  if (s.status == SolveStatus::converged) adjoint_ = std::move(s);
+  result.seconds = problem_.communicator().max(clock.seconds());
+  return result;
+}
+
+double SensitivityProblem::adjoint_gradient(const DesignDerivative& direction) const {
+  if (!adjoint_) throw InputError("P: no converged adjoint solution (call fetiAdjoint first)");
+  const DirectionData d = direction_data(direction);
+  std::vector<double> local;  // (subdomain, w_s'fbar_s)
+  for (size_t k = 0; k < d.fbar.size(); ++k)
+    local.insert(local.end(), {double(problem_.global_ids()[k]), adjoint_->u[k].dot(d.fbar[k])});
+  return ordered_sum(local, 2, problem_.communicator()) + adjoint_->lambda.dot(d.c);
+}
+
+}  // namespace ffeti

@@ -1,0 +1,99 @@
+// Semi-analytic sensitivity of a solved contact problem (seed eq. 12, ALGORITHMS.md
+// section 7): the directional derivative z = u'(alpha; beta) solves
+//   min 1/2 z'K z - z'fbar  s.t.  B_E z = 0,  B_S z = c~_S,  B_W z <= c~_W,
+//   fbar = f' - K'u - B''lambda,  c~ = c' - B'u,
+// over the rows E (gluing, Dirichlet), S (strongly active contact) and W (weakly active);
+// inactive rows drop. The sign of the B' term follows from differentiating the state's
+// equilibrium K u - f + B'lambda = 0 (lambda >= 0 on B_I u <= c_I): the seed's "+N''lambda"
+// is the same term with its multipliers of the opposite sign. The QP has the state's K, so
+// it runs on the state's factorizations: a DualSystem over the rows E, S, W, built once per
+// state solution and shared by every direction. No subdomain is factorized again.
+//
+// Adjoint mode: with W empty, beta -> z is linear, and for a cost J(u, alpha)
+//   dJ/dalpha(beta) = dJ/dalpha_explicit(beta) + w'fbar + mu'c~,
+// where (w, mu) solve the same equality-constrained problem with load dJ/du and zero
+// right-hand side (K w + B'mu = dJ/du, B w = 0): one dual solve for all design variables.
+#pragma once
+
+#include "feti/feti_problem.h"
+#include "sens/contact_derivative.h"
+#include "sens/design_derivative.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ffeti {
+
+/// The contact rows of a state solution sorted into strongly active (lambda_i > t
+/// max lambda_I), weakly active (lambda_i <= t max lambda_I and gap_i = c_i - B_i u <=
+/// t max|u|) and inactive (the rest), t the threshold.
+struct ContactClassification {
+  double threshold = 0;
+  double lambda_scale = 0, gap_scale = 0;  ///< max lambda_I and max|u|: t times these are the cut-offs
+  std::vector<int> strong, weak, inactive;  ///< row indices of the state's constraints
+};
+
+ContactClassification classify_contact(const FetiProblem& problem, const FetiResult& state, double threshold);
+
+struct SensitivityResult {
+  SolveStatus status = SolveStatus::invalid_input;
+  std::string path;               ///< the sensitivity QP's: cholesky, cg, projected_cg, mprgp, smalbe
+  IterationCounts counts;
+  std::vector<Vec> z;             ///< u'(alpha; beta) per subdomain of this rank
+  Vec multipliers;                ///< lambda'(alpha; beta) on the rows E, S, W (in that row order)
+  KktResiduals kkt;               ///< of the sensitivity QP, recomputed in primal form
+  double seconds = 0;             ///< whole direction: derivatives, dual data, solve, recovery, KKT
+};
+
+struct AdjointResult {
+  SolveStatus status = SolveStatus::invalid_input;  ///< weakly_active: not solved
+  std::string path;
+  IterationCounts counts;
+  KktResiduals kkt;
+  double seconds = 0;
+};
+
+class SensitivityProblem {
+ public:
+  /// Classifies the contact rows of `state` (a solution of `problem`) with `threshold` in
+  /// (0, 1) and builds the dual system of the sensitivity QP over the same factorizations.
+  /// Keeps references to `problem` (which must outlive it) and copies what it needs of
+  /// `state`. Collective.
+  SensitivityProblem(const FetiProblem& problem, const FetiResult& state, double threshold);
+
+  const ContactClassification& classification() const { return classification_; }
+  std::string path() const { return system_->path(); }
+  int dual_dimension() const { return system_->rows(); }
+
+  /// z = u'(alpha; beta) for one direction. Never throws for non-convergence. Collective.
+  SensitivityResult direct(const DesignDerivative& direction, const DualSolveSettings& settings) const;
+
+  /// Solves the adjoint problem for the cost gradient dJ/du (this rank's subdomains) and
+  /// keeps (w, mu). Status weakly_active, and nothing solved, when some row is weakly
+  /// active: then beta -> z is not linear and only direct() is right. Collective.
+  AdjointResult adjoint(const std::vector<Vec>& dJdu, const DualSolveSettings& settings);
+
+  /// w'fbar + mu'c~ for one direction: the part of dJ/dalpha(beta) that goes through u.
+  /// Needs a converged adjoint(). No dual solve. Collective.
+  double adjoint_gradient(const DesignDerivative& direction) const;
+
+ private:
+  struct DirectionData {       // fbar (this rank's) and c~ on the rows of the system
+    std::vector<Vec> fbar;
+    Vec c;
+  };
+  DirectionData direction_data(const DesignDerivative& direction) const;
+  void check(const DesignDerivative& direction) const;
+
+  const FetiProblem& problem_;
+  std::vector<Vec> u_;          // the state, this rank's subdomains
+  Vec lambda_;                  // the state's multipliers (all rows)
+  ContactClassification classification_;
+  std::vector<int> kept_;       // row of the state's constraints behind each row of system_
+  std::unique_ptr<DualSystem> system_;
+  std::optional<DualSolution> adjoint_;
+};
+
+}  // namespace ffeti
