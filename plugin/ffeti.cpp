@@ -8,6 +8,7 @@
 #include "feti/feti_problem.h"
 #include "feti/statistics.h"
 #include "parallel/mpi_communicator.h"
+#include "sens/sensitivity_statistics.h"
 
 #include <mpi.h>
 
@@ -21,10 +22,14 @@ namespace {
 
 using namespace ffeti;
 
-/// A set-up problem and its last solution. Lives until fetiFree or the end of the process.
+/// A set-up problem, its last solution and the sensitivity problem of that solution (built
+/// by the first sensitivity call after fetiSolve). Lives until fetiFree or the end of the
+/// process.
 struct Handle {
   std::unique_ptr<FetiProblem> problem;
   std::optional<FetiResult> result;
+  double tolerance = DualSolveSettings{}.tolerance;  // of the last solve: the sensitivity's default
+  std::unique_ptr<SensitivityProblem> sensitivity;
 };
 
 std::map<long, Handle>& handles() {
@@ -100,6 +105,21 @@ std::vector<int> owners(const std::vector<long long>& assembled_here, const Comm
     owner[s] = providers[s % providers.size()];
   }
   return owner;
+}
+
+/// Like PETSc's monitors: verbosity 1 prints one line per iteration of the outer solver
+/// (SMALBE's multiplier updates, or every MPRGP / CG step), 2 also every inner step. Rank 0
+/// prints; verbosity 0 installs no monitor.
+Monitor progress_monitor(long verbosity, const Communicator& comm) {
+  if (verbosity < 1 || comm.rank() != 0) return {};
+  auto last_outer = std::make_shared<int>(-1);
+  return [verbosity, last_outer](const ProgressLine& line) {
+    const bool outer_solver = std::string(line.solver) == "smalbe";
+    if (outer_solver && verbosity < 2 && line.iteration == *last_outer) return;
+    *last_outer = line.iteration;
+    std::printf("  ffeti %-6s %4d  ||gP|| %.3e  ||Q mu|| %.3e\n", line.solver, line.iteration, line.gradient_norm,
+                line.equality_norm);
+  };
 }
 
 template <class T>
@@ -286,17 +306,10 @@ class FetiSolve : public E_F0mps {
     settings.smalbe.M_factor = optional_real(nargs[6], stack, settings.smalbe.M_factor);
     settings.smalbe.eta_factor = optional_real(nargs[7], stack, settings.smalbe.eta_factor);
     settings.mprgp.gamma = optional_real(nargs[8], stack, settings.mprgp.gamma);
-    // Like PETSc's monitors: verbosity 1 prints one line per iteration of the outer solver
-    // (SMALBE's multiplier updates, or every MPRGP / CG step), 2 also every inner step.
-    int last_outer = -1;
-    if (verbosity >= 1 && h.problem->communicator().rank() == 0)
-      settings.monitor = [verbosity, &last_outer](const ProgressLine& line) {
-        const bool outer_solver = std::string(line.solver) == "smalbe";
-        if (outer_solver && verbosity < 2 && line.iteration == last_outer) return;
-        last_outer = line.iteration;
-        std::printf("  ffeti %-6s %4d  ||gP|| %.3e  ||Q mu|| %.3e\n", line.solver, line.iteration,
-                    line.gradient_norm, line.equality_norm);
-      };
+    settings.monitor = progress_monitor(verbosity, h.problem->communicator());
+    h.sensitivity.reset();
+    h.result.reset();
+    h.tolerance = settings.tolerance;
     h.result = h.problem->solve(settings);
     const FetiResult& r = *h.result;
     auto& u = *GetAny<KN<KN<double>>*>((*U)(stack));
@@ -319,13 +332,189 @@ basicAC_F0::name_and_type FetiSolve::name_param[] = {
     {"algorithm", &typeid(std::string*)}, {"verbosity", &typeid(long)}, {"rho", &typeid(double)},
     {"M", &typeid(double)},           {"eta", &typeid(double)},       {"gamma", &typeid(double)}};
 
+// ---- sensitivities (seed eq. 12) -------------------------------------------------------
+
+/// The sensitivity problem of the handle's last solution with classification threshold
+/// `threshold`, built on first use and kept for every later direction.
+SensitivityProblem& sensitivity_problem(Handle& h, double threshold) {
+  if (!h.result) throw InputError("P: no solution yet: call fetiSolve first");
+  if (!h.sensitivity || h.sensitivity->classification().threshold != threshold)
+    h.sensitivity = std::make_unique<SensitivityProblem>(*h.problem, *h.result, threshold);
+  return *h.sensitivity;
+}
+
+/// Default threshold below which a multiplier counts as zero, relative to max lambda: ten
+/// times the state's tolerance, the accuracy to which its multipliers are known.
+double default_threshold(const Handle& h) { return std::min(1e-2, 10 * h.tolerance); }
+
+/// One design direction from the script: dK[s], dF[s] (empty entries: zero) and the node
+/// velocities velocityX[s], velocityY[s] (absent: the contact geometry does not move), for
+/// the subdomains of this rank.
+DesignDerivative design_derivative(const FetiProblem& problem, KN<Matrice_Creuse<double>>* dK, KN<KN<double>>* dF,
+                                   KN<KN<double>>* vx, KN<KN<double>>* vy) {
+  DesignDerivative d;
+  const long count = problem.subdomain_count();
+  collectively(problem.communicator(), [&] {
+    const std::pair<const char*, long> sizes[] = {
+        {"dK", dK->N()}, {"dF", dF->N()}, {"velocityX", vx ? vx->N() : count}, {"velocityY", vy ? vy->N() : count}};
+    for (const auto& [name, n] : sizes)
+      if (n != count)
+        throw InputError(std::string(name) + ": has " + std::to_string(n) + " entries for " + std::to_string(count) +
+                         " subdomains");
+    for (int s : problem.global_ids()) {
+      Matrice_Creuse<double>& matrix = (*dK)[s];
+      const bool empty = !matrix.pHM() || matrix.pHM()->n == 0;
+      d.dK.push_back(empty ? SparseMatrix() : binding::to_sparse(matrix, "dK[" + std::to_string(s) + "]"));
+      d.df.push_back(binding::to_vec((*dF)[s]));
+      if (vx) d.velocity_x.push_back(binding::to_std((*vx)[s]));
+      if (vy) d.velocity_y.push_back(binding::to_std((*vy)[s]));
+    }
+  });
+  return d;
+}
+
+DualSolveSettings sensitivity_settings(const Handle& h, Expression tol, Expression maxit, Expression verbosity,
+                                       Stack stack) {
+  DualSolveSettings settings;
+  settings.tolerance = optional_real(tol, stack, h.tolerance);
+  settings.max_hessian = static_cast<int>(optional_int(maxit, stack, settings.max_hessian));
+  settings.monitor = progress_monitor(optional_int(verbosity, stack, 0), h.problem->communicator());
+  return settings;
+}
+
+// int status = fetiSensitivity(P, dK, dF, Z, velocityX=, velocityY=, tol=, maxit=, activeTol=, verbosity=)
+class FetiSensitivity : public E_F0mps {
+ public:
+  typedef long Result;
+  static const int n_name_param = 6;
+  static basicAC_F0::name_and_type name_param[];
+  Expression nargs[n_name_param];
+  Expression id, dK, dF, Z;
+
+  explicit FetiSensitivity(const basicAC_F0& args) {
+    args.SetNameParam(n_name_param, name_param, nargs);
+    id = to<long>(args[0]);
+    dK = to<KN<Matrice_Creuse<double>>*>(args[1]);
+    dF = to<KN<KN<double>>*>(args[2]);
+    Z = to<KN<KN<double>>*>(args[3]);
+  }
+  static ArrayOfaType typeargs() {
+    return ArrayOfaType(atype<long>(), atype<KN<Matrice_Creuse<double>>*>(), atype<KN<KN<double>>*>(),
+                        atype<KN<KN<double>>*>());
+  }
+  static E_F0* f(const basicAC_F0& args) { return new FetiSensitivity(args); }
+
+  AnyType operator()(Stack stack) const {
+    return SetAny<long>(guarded("fetiSensitivity", [&] {
+      Handle& h = handle(GetAny<long>((*id)(stack)));
+      SensitivityProblem& sens = sensitivity_problem(h, optional_real(nargs[4], stack, default_threshold(h)));
+      const DesignDerivative d = design_derivative(*h.problem, GetAny<KN<Matrice_Creuse<double>>*>((*dK)(stack)),
+                                                   GetAny<KN<KN<double>>*>((*dF)(stack)),
+                                                   optional_pointer<KN<KN<double>>>(nargs[0], stack),
+                                                   optional_pointer<KN<KN<double>>>(nargs[1], stack));
+      const SensitivityResult r = sens.direct(d, sensitivity_settings(h, nargs[2], nargs[3], nargs[5], stack));
+      auto& z = *GetAny<KN<KN<double>>*>((*Z)(stack));
+      const std::vector<int>& ids = h.problem->global_ids();
+      z.resize(h.problem->subdomain_count());
+      for (long s = 0; s < z.N(); ++s) z[s].resize(0);  // subdomains of other ranks stay empty
+      for (size_t k = 0; k < r.z.size(); ++k) binding::copy_to(r.z[k], z[ids[k]]);
+      return static_cast<long>(status_code(r.status));
+    }));
+  }
+};
+
+basicAC_F0::name_and_type FetiSensitivity::name_param[] = {
+    {"velocityX", &typeid(KN<KN<double>>*)}, {"velocityY", &typeid(KN<KN<double>>*)}, {"tol", &typeid(double)},
+    {"maxit", &typeid(long)}, {"activeTol", &typeid(double)}, {"verbosity", &typeid(long)}};
+
+// int status = fetiAdjoint(P, dJdu, tol=, maxit=, activeTol=, verbosity=): 6 (weakly_active)
+// when some contact row is weakly active: use fetiSensitivity then.
+class FetiAdjoint : public E_F0mps {
+ public:
+  typedef long Result;
+  static const int n_name_param = 4;
+  static basicAC_F0::name_and_type name_param[];
+  Expression nargs[n_name_param];
+  Expression id, dJdu;
+
+  explicit FetiAdjoint(const basicAC_F0& args) {
+    args.SetNameParam(n_name_param, name_param, nargs);
+    id = to<long>(args[0]);
+    dJdu = to<KN<KN<double>>*>(args[1]);
+  }
+  static ArrayOfaType typeargs() { return ArrayOfaType(atype<long>(), atype<KN<KN<double>>*>()); }
+  static E_F0* f(const basicAC_F0& args) { return new FetiAdjoint(args); }
+
+  AnyType operator()(Stack stack) const {
+    return SetAny<long>(guarded("fetiAdjoint", [&] {
+      Handle& h = handle(GetAny<long>((*id)(stack)));
+      SensitivityProblem& sens = sensitivity_problem(h, optional_real(nargs[2], stack, default_threshold(h)));
+      const auto& g = *GetAny<KN<KN<double>>*>((*dJdu)(stack));
+      std::vector<Vec> gradient;
+      collectively(h.problem->communicator(), [&] {
+        if (g.N() != h.problem->subdomain_count())
+          throw InputError("dJdu: has " + std::to_string(g.N()) + " entries for " +
+                           std::to_string(h.problem->subdomain_count()) + " subdomains");
+        for (int s : h.problem->global_ids()) gradient.push_back(binding::to_vec(g[s]));
+      });
+      const AdjointResult r = sens.adjoint(gradient, sensitivity_settings(h, nargs[0], nargs[1], nargs[3], stack));
+      return static_cast<long>(status_code(r.status));
+    }));
+  }
+};
+
+basicAC_F0::name_and_type FetiAdjoint::name_param[] = {
+    {"tol", &typeid(double)}, {"maxit", &typeid(long)}, {"activeTol", &typeid(double)}, {"verbosity", &typeid(long)}};
+
+// real dJ = fetiAdjointGradient(P, dK, dF, velocityX=, velocityY=): w'fbar + mu'c~ for one
+// direction, after fetiAdjoint; no dual solve.
+class FetiAdjointGradient : public E_F0mps {
+ public:
+  typedef double Result;
+  static const int n_name_param = 2;
+  static basicAC_F0::name_and_type name_param[];
+  Expression nargs[n_name_param];
+  Expression id, dK, dF;
+
+  explicit FetiAdjointGradient(const basicAC_F0& args) {
+    args.SetNameParam(n_name_param, name_param, nargs);
+    id = to<long>(args[0]);
+    dK = to<KN<Matrice_Creuse<double>>*>(args[1]);
+    dF = to<KN<KN<double>>*>(args[2]);
+  }
+  static ArrayOfaType typeargs() {
+    return ArrayOfaType(atype<long>(), atype<KN<Matrice_Creuse<double>>*>(), atype<KN<KN<double>>*>());
+  }
+  static E_F0* f(const basicAC_F0& args) { return new FetiAdjointGradient(args); }
+
+  AnyType operator()(Stack stack) const {
+    return SetAny<double>(guarded("fetiAdjointGradient", [&] {
+      Handle& h = handle(GetAny<long>((*id)(stack)));
+      if (!h.sensitivity) throw InputError("P: no adjoint solution: call fetiAdjoint first");
+      const DesignDerivative d = design_derivative(*h.problem, GetAny<KN<Matrice_Creuse<double>>*>((*dK)(stack)),
+                                                   GetAny<KN<KN<double>>*>((*dF)(stack)),
+                                                   optional_pointer<KN<KN<double>>>(nargs[0], stack),
+                                                   optional_pointer<KN<KN<double>>>(nargs[1], stack));
+      return h.sensitivity->adjoint_gradient(d);
+    }));
+  }
+};
+
+basicAC_F0::name_and_type FetiAdjointGradient::name_param[] = {
+    {"velocityX", &typeid(KN<KN<double>>*)}, {"velocityY", &typeid(KN<KN<double>>*)}};
+
 // ---- small functions -------------------------------------------------------------------
 double feti_info(const long& id, std::string* const& key) {
   return guarded("fetiInfo", [&] {
     const Handle& h = handle(id);
     const FetiResult* result = h.result ? &*h.result : nullptr;
     std::string known;
-    for (const auto& [name, value] : statistics(*h.problem, result)) {
+    Statistics all = statistics(*h.problem, result);
+    if (h.sensitivity) {
+      const Statistics sens = statistics(*h.sensitivity);
+      all.insert(all.end(), sens.begin(), sens.end());
+    }
+    for (const auto& [name, value] : all) {
       if (name == *key) return value;
       known += " " + name;
     }
@@ -337,7 +526,8 @@ double feti_info(const long& id, std::string* const& key) {
 std::string* feti_report(Stack stack, const long& id) {
   const std::string text = guarded("fetiReport", [&] {
     const Handle& h = handle(id);
-    return format_report(*h.problem, h.result ? &*h.result : nullptr);
+    const std::string state = format_report(*h.problem, h.result ? &*h.result : nullptr);
+    return h.sensitivity ? state + " " + format_report(*h.sensitivity) : state;
   });
   return Add2StackOfPtr2Free(stack, new std::string(text));
 }
@@ -348,6 +538,7 @@ long feti_set_loads(const long& id, KN<KN<double>>* const& loads) {
     std::vector<Vec> f;
     for (long s = 0; s < loads->N(); ++s) f.push_back(binding::to_vec((*loads)[s]));
     h.problem->set_loads(f);
+    h.sensitivity.reset();
     h.result.reset();
     return 0L;
   });
@@ -431,6 +622,11 @@ std::string* feti_rank_report(Stack stack, const long& id) {
   return Add2StackOfPtr2Free(stack, new std::string(text));
 }
 
+/// Numeric factorizations of subdomain matrices this process has run so far: a design
+/// step that factorizes each subdomain once, whatever the number of design variables,
+/// raises it by the number of subdomains this rank holds.
+long feti_factorizations() { return CholmodFactor::factorizations_in_process(); }
+
 /// Wall-clock seconds since an arbitrary origin: FreeFEM's clock() is CPU time, which
 /// overstates the time of threaded phases.
 double feti_wall_time() {
@@ -454,6 +650,9 @@ static void Load_Init() {
   Global.Add("fetiReport", "(", new OneOperator1s_<std::string*, long>(feti_report));
   Global.Add("fetiSetLoads", "(", new OneOperator2_<long, long, KN<KN<double>>*>(feti_set_loads));
   Global.Add("fetiFree", "(", new OneOperator1_<long, long>(feti_free));
+  Global.Add("fetiSensitivity", "(", new OneOperatorCode<FetiSensitivity>());
+  Global.Add("fetiAdjoint", "(", new OneOperatorCode<FetiAdjoint>());
+  Global.Add("fetiAdjointGradient", "(", new OneOperatorCode<FetiAdjointGradient>());
   Global.Add("fetiContact", "(", new OneOperatorCode<FetiContact>());
   Global.Add("fetiSum", "(", new OneOperator2_<double, long, double>(feti_sum));
   Global.Add("fetiMax", "(", new OneOperator2_<double, long, double>(feti_max));
@@ -462,6 +661,7 @@ static void Load_Init() {
   Global.Add("fetiRanks", "(", new OneOperator0<long>(feti_ranks));
   Global.Add("fetiRankReport", "(", new OneOperator1s_<std::string*, long>(feti_rank_report));
   Global.Add("fetiWallTime", "(", new OneOperator0<double>(feti_wall_time));
+  Global.Add("fetiFactorizations", "(", new OneOperator0<long>(feti_factorizations));
 }
 
 LOADFUNC(Load_Init)

@@ -289,7 +289,7 @@ TEST(Sensitivity, MovingObstacleSlavesMatchFiniteDifferences) {
   const FetiProblem problem(at(0), contact);
   const FetiResult state = problem.solve(tight());
   ASSERT_EQ(state.status, SolveStatus::converged);
-  const SensitivityProblem sensitivity(problem, state, 1e-8);
+  SensitivityProblem sensitivity(problem, state, 1e-8);
   ASSERT_GT(sensitivity.classification().strong.size(), 0u);
   ASSERT_TRUE(sensitivity.classification().weak.empty());
   DesignDerivative d;
@@ -327,7 +327,7 @@ TEST(Sensitivity, ClassificationThresholdIsRelativeToTheMultipliersScale) {
 TEST(Sensitivity, BadDirectionIsAnErrorNamingTheArgument) {
   const MembraneDesign design;
   const FetiProblem problem = membrane_problem(design.at(0), FetiVariant::feti1);
-  const SensitivityProblem sensitivity(problem, problem.solve(), 1e-6);
+  SensitivityProblem sensitivity(problem, problem.solve(), 1e-6);
   const auto expect_error = [&](const DesignDerivative& d, const std::string& name) {
     try {
       sensitivity.direct(d, {});

@@ -22,6 +22,7 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
       {"floating", problem.floating_subdomains()},
       {"coarse", problem.coarse_dimension()},
       {"factor_nnz", problem.factor_nonzeros()},
+      {"factorizations", static_cast<double>(problem.factorizations())},
       {"time_constraints", setup.constraints},
       {"time_factor", setup.factorization},
       {"time_coarse", setup.coarse_space},

@@ -55,6 +55,7 @@ ContactClassification classify_contact(const FetiProblem& problem, const FetiRes
 
 SensitivityProblem::SensitivityProblem(const FetiProblem& problem, const FetiResult& state, double threshold)
     : problem_(problem), u_(state.u), lambda_(state.lambda) {
+  Stopwatch clock;
   if (state.lambda.size() != problem.dual_dimension() || state.u.size() != problem.inputs().size())
     throw InputError("P: the solution does not belong to this problem (call fetiSolve first)");
   classification_ = classify_contact(problem, state, threshold);
@@ -83,6 +84,7 @@ SensitivityProblem::SensitivityProblem(const FetiProblem& problem, const FetiRes
     throw InputError(std::string("sensitivity: without its inactive contact rows the problem is singular, ") +
                      "so u has no unique derivative: " + error.what());
   }
+  counters_.setup_seconds = problem.communicator().max(clock.seconds());
 }
 
 void SensitivityProblem::check(const DesignDerivative& d) const {
@@ -163,7 +165,7 @@ SensitivityProblem::DirectionData SensitivityProblem::direction_data(const Desig
   return data;
 }
 
-SensitivityResult SensitivityProblem::direct(const DesignDerivative& direction, const DualSolveSettings& settings) const {
+SensitivityResult SensitivityProblem::direct(const DesignDerivative& direction, const DualSolveSettings& settings) {
   Stopwatch clock;
   const DirectionData d = direction_data(direction);
   DualSolution s = system_->solve(system_->data(problem_.operator_loads(d.fbar, true), d.c), settings);
@@ -174,9 +176,13 @@ SensitivityResult SensitivityProblem::direct(const DesignDerivative& direction, 
   result.kkt = kkt_residuals(problem_.inputs(), d.fbar, d.c, true, system_->local(), system_->F(),
                              system_->constraints(), problem_.variant() == FetiVariant::feti1, s.u, s.lambda,
                              problem_.communicator());
+  result.seconds = problem_.communicator().max(clock.seconds());
+  counters_.directions += 1;
+  counters_.hessian += result.counts.hessian + result.counts.hessian_norm_estimate;
+  counters_.seconds += result.seconds;
+  counters_.last = result;
   result.z = std::move(s.u);
   result.multipliers = std::move(s.lambda);
-  result.seconds = problem_.communicator().max(clock.seconds());
   return result;
 }
 
@@ -194,6 +200,7 @@ AdjointResult SensitivityProblem::adjoint(const std::vector<Vec>& dJdu, const Du
   if (!classification_.weak.empty()) {
     result.status = SolveStatus::weakly_active;
     result.path = system_->path();
+    counters_.adjoint = result;
     return result;
   }
   const Vec zero = Vec::Zero(system_->rows());
@@ -205,16 +212,22 @@ AdjointResult SensitivityProblem::adjoint(const std::vector<Vec>& dJdu, const Du
                              problem_.variant() == FetiVariant::feti1, s.u, s.lambda, problem_.communicator());
   if (s.status == SolveStatus::converged) adjoint_ = std::move(s);
   result.seconds = problem_.communicator().max(clock.seconds());
+  counters_.adjoint_solves += 1;
+  counters_.adjoint = result;
   return result;
 }
 
-double SensitivityProblem::adjoint_gradient(const DesignDerivative& direction) const {
+double SensitivityProblem::adjoint_gradient(const DesignDerivative& direction) {
   if (!adjoint_) throw InputError("P: no converged adjoint solution (call fetiAdjoint first)");
+  Stopwatch clock;
   const DirectionData d = direction_data(direction);
   std::vector<double> local;  // (subdomain, w_s'fbar_s)
   for (size_t k = 0; k < d.fbar.size(); ++k)
     local.insert(local.end(), {double(problem_.global_ids()[k]), adjoint_->u[k].dot(d.fbar[k])});
-  return ordered_sum(local, 2, problem_.communicator()) + adjoint_->lambda.dot(d.c);
+  const double value = ordered_sum(local, 2, problem_.communicator()) + adjoint_->lambda.dot(d.c);
+  counters_.adjoint_gradients += 1;
+  counters_.adjoint_gradient_seconds += problem_.communicator().max(clock.seconds());
+  return value;
 }
 
 }  // namespace ffeti

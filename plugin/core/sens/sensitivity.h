@@ -55,6 +55,19 @@ struct AdjointResult {
   double seconds = 0;
 };
 
+/// What the sensitivity solves of one state solution cost so far (over all ranks).
+struct SensitivityCounters {
+  int directions = 0;            ///< direct solves (one per design direction)
+  long hessian = 0;              ///< their Hessian multiplications, all directions
+  double seconds = 0;            ///< their wall time, all directions
+  SensitivityResult last;        ///< the last direction (without z)
+  int adjoint_solves = 0;
+  AdjointResult adjoint;         ///< the last adjoint solve
+  int adjoint_gradients = 0;     ///< adjoint_gradient calls (one per design variable)
+  double adjoint_gradient_seconds = 0;
+  double setup_seconds = 0;      ///< classification and the dual system of the rows E, S, W
+};
+
 class SensitivityProblem {
  public:
   /// Classifies the contact rows of `state` (a solution of `problem`) with `threshold` in
@@ -64,11 +77,12 @@ class SensitivityProblem {
   SensitivityProblem(const FetiProblem& problem, const FetiResult& state, double threshold);
 
   const ContactClassification& classification() const { return classification_; }
+  const SensitivityCounters& counters() const { return counters_; }
   std::string path() const { return system_->path(); }
   int dual_dimension() const { return system_->rows(); }
 
   /// z = u'(alpha; beta) for one direction. Never throws for non-convergence. Collective.
-  SensitivityResult direct(const DesignDerivative& direction, const DualSolveSettings& settings) const;
+  SensitivityResult direct(const DesignDerivative& direction, const DualSolveSettings& settings);
 
   /// Solves the adjoint problem for the cost gradient dJ/du (this rank's subdomains) and
   /// keeps (w, mu). Status weakly_active, and nothing solved, when some row is weakly
@@ -77,7 +91,7 @@ class SensitivityProblem {
 
   /// w'fbar + mu'c~ for one direction: the part of dJ/dalpha(beta) that goes through u.
   /// Needs a converged adjoint(). No dual solve. Collective.
-  double adjoint_gradient(const DesignDerivative& direction) const;
+  double adjoint_gradient(const DesignDerivative& direction);
 
  private:
   struct DirectionData {       // fbar (this rank's) and c~ on the rows of the system
@@ -94,6 +108,7 @@ class SensitivityProblem {
   std::vector<int> kept_;       // row of the state's constraints behind each row of system_
   std::unique_ptr<DualSystem> system_;
   std::optional<DualSolution> adjoint_;
+  SensitivityCounters counters_;
 };
 
 }  // namespace ffeti

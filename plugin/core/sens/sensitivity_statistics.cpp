@@ -1,0 +1,43 @@
+#include "sens/sensitivity_statistics.h"
+
+#include <sstream>
+
+namespace ffeti {
+
+Statistics statistics(const SensitivityProblem& sensitivity) {
+  const ContactClassification& c = sensitivity.classification();
+  const SensitivityCounters& n = sensitivity.counters();
+  return {
+      {"sens_strong", static_cast<double>(c.strong.size())},
+      {"sens_weak", static_cast<double>(c.weak.size())},
+      {"sens_inactive", static_cast<double>(c.inactive.size())},
+      {"sens_threshold", c.threshold},
+      {"sens_dual", sensitivity.dual_dimension()},
+      {"sens_time_setup", n.setup_seconds},
+      {"sensitivity_solves", n.directions},
+      {"sens_hessian_total", static_cast<double>(n.hessian)},
+      {"sens_time_total", n.seconds},
+      {"sens_status", status_code(n.last.status)},
+      {"sens_hessian", n.last.counts.hessian + n.last.counts.hessian_norm_estimate},
+      {"sens_time", n.last.seconds},
+      {"sens_kkt", n.last.kkt.max()},
+      {"adjoint_solves", n.adjoint_solves},
+      {"adjoint_status", status_code(n.adjoint.status)},
+      {"adjoint_hessian", n.adjoint.counts.hessian},
+      {"adjoint_time", n.adjoint.seconds},
+      {"adjoint_kkt", n.adjoint.kkt.max()},
+      {"adjoint_gradients", n.adjoint_gradients},
+      {"adjoint_gradient_time_total", n.adjoint_gradient_seconds},
+  };
+}
+
+std::string format_report(const SensitivityProblem& sensitivity) {
+  std::ostringstream out;
+  out.precision(10);
+  out << "sens_path=" << sensitivity.path();
+  if (sensitivity.counters().directions > 0) out << " sens_status_name=" << to_string(sensitivity.counters().last.status);
+  for (const auto& [key, value] : statistics(sensitivity)) out << ' ' << key << '=' << value;
+  return out.str();
+}
+
+}  // namespace ffeti
