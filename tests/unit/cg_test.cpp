@@ -16,7 +16,19 @@ TEST(ConjugateGradient, SolvesAnSpdSystem) {
   ASSERT_EQ(result.status, SolveStatus::converged);
   EXPECT_LT((x - x_star).norm(), 1e-9 * x_star.norm());
   EXPECT_LE(result.counts.cg, 2 * 50);  // n steps in exact arithmetic, a few more in rounding
-  EXPECT_EQ(result.counts.hessian, result.counts.cg + 1);
+  // The initial gradient, one per step, and the true gradient checked at the end.
+  EXPECT_EQ(result.counts.hessian, result.counts.cg + 2);
+  EXPECT_LE((A * x - b).norm(), 1e-12 * b.norm());
+}
+
+TEST(ConjugateGradient, ToleranceBelowRoundOffIsStagnationNotConvergence) {
+  const Eigen::MatrixXd A = test::random_spd(50, 1e8, 5);
+  const Vec b = A * Vec::LinSpaced(50, -1, 1);
+  Vec x = Vec::Zero(50), g;
+  const CgResult result = conjugate_gradient(test::dense_operator(A), b, x, g, {},
+      [&](const Vec&, const Vec&, double norm) { return norm <= 1e-20 * b.norm(); });
+  EXPECT_EQ(result.status, SolveStatus::stagnated);
+  EXPECT_NEAR(result.gradient_norm, (A * x - b).norm(), 1e-12 * b.norm());  // the true gradient
 }
 
 TEST(ConjugateGradient, ProjectedOperatorStaysInTheSubspace) {

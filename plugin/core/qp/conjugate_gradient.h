@@ -18,7 +18,10 @@ struct CgResult {
 };
 
 /// Minimizes 1/2 x'Ax - b'x from the start x (updated in place); g = Ax - b on return.
-/// `stop` receives ||g||_2.
+/// `stop` receives ||g||_2. Convergence is declared only on the true gradient A x - b
+/// (recomputed once the updated one passes the test: one more multiplication); if it fails
+/// the test, CG restarts from it, and after two such restarts returns `stagnated`: the
+/// tolerance asked for lies below what round-off lets the data reach.
 CgResult conjugate_gradient(const LinearOperator& A, const Vec& b, Vec& x, Vec& g,
                             const CgSettings& settings, const StopTest& stop,
                             const Monitor& monitor = {});
