@@ -13,6 +13,7 @@
 #include <mpi.h>
 
 #include <chrono>
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -592,6 +593,71 @@ long feti_indices(KN<double>* const& mask, KN<long>* const& indices) {
   return count;
 }
 
+/// Makes every part of a mesh partition (`part`: one entry per triangle of Th) connected
+/// through element edges: each edge-connected piece of a part other than its largest goes
+/// to the neighbouring part it shares most edges with, until no piece is left (METIS may
+/// give a part two pieces, e.g. both jaws of a spanner, and a disconnected subdomain has
+/// rigid modes no kernel candidate covers). Returns the number of triangles moved.
+long feti_connect_parts(pmesh const& mesh, KN<long>* const& part) {
+  return guarded("fetiConnectParts", [&] {
+    const Mesh& Th = *mesh;
+    const int nt = Th.nt;
+    if (part->N() != nt)
+      throw InputError("part: has " + std::to_string(part->N()) + " entries for " + std::to_string(nt) + " triangles");
+    long moved = 0;
+    for (int round = 0; round < 100; ++round) {
+      std::vector<int> piece(static_cast<size_t>(nt), -1), size, stack;
+      for (int start = 0; start < nt; ++start) {  // edge-connected pieces of each part
+        if (piece[static_cast<size_t>(start)] >= 0) continue;
+        const int id = static_cast<int>(size.size());
+        size.push_back(0);
+        stack.assign(1, start);
+        piece[static_cast<size_t>(start)] = id;
+        while (!stack.empty()) {
+          const int k = stack.back();
+          stack.pop_back();
+          ++size[static_cast<size_t>(id)];
+          for (int e = 0; e < 3; ++e) {
+            int edge = e;
+            const int other = Th.ElementAdj(k, edge);
+            if (other >= 0 && other != k && piece[static_cast<size_t>(other)] < 0 && (*part)[other] == (*part)[k]) {
+              piece[static_cast<size_t>(other)] = id;
+              stack.push_back(other);
+            }
+          }
+        }
+      }
+      std::map<long, int> largest;  // part -> its largest piece
+      for (int k = 0; k < nt; ++k) {
+        const int id = piece[static_cast<size_t>(k)];
+        auto [it, inserted] = largest.emplace((*part)[k], id);
+        if (!inserted && size[static_cast<size_t>(id)] > size[static_cast<size_t>(it->second)]) it->second = id;
+      }
+      std::map<int, std::map<long, int>> shared;  // stray piece -> neighbouring part -> shared edges
+      for (int k = 0; k < nt; ++k) {
+        const int id = piece[static_cast<size_t>(k)];
+        if (largest[(*part)[k]] == id) continue;
+        for (int e = 0; e < 3; ++e) {
+          int edge = e;
+          const int other = Th.ElementAdj(k, edge);
+          if (other >= 0 && other != k && (*part)[other] != (*part)[k]) ++shared[id][(*part)[other]];
+        }
+      }
+      if (shared.empty()) break;
+      std::map<int, long> target;
+      for (const auto& [id, counts] : shared)
+        target[id] = std::max_element(counts.begin(), counts.end(),
+                                      [](const auto& a, const auto& b) { return a.second < b.second; })->first;
+      for (int k = 0; k < nt; ++k)
+        if (const auto it = target.find(piece[static_cast<size_t>(k)]); it != target.end()) {
+          (*part)[k] = it->second;
+          ++moved;
+        }
+    }
+    return moved;
+  });
+}
+
 /// Rank and size of MPI's world communicator; 0 and 1 when MPI is not initialized, so that
 /// one script runs under FreeFem++ and FreeFem++-mpi (FreeFEM's mpirank exists only there).
 long feti_rank() {
@@ -662,6 +728,7 @@ static void Load_Init() {
   Global.Add("fetiRankReport", "(", new OneOperator1s_<std::string*, long>(feti_rank_report));
   Global.Add("fetiWallTime", "(", new OneOperator0<double>(feti_wall_time));
   Global.Add("fetiFactorizations", "(", new OneOperator0<long>(feti_factorizations));
+  Global.Add("fetiConnectParts", "(", new OneOperator2_<long, pmesh, KN<long>*>(feti_connect_parts));
 }
 
 LOADFUNC(Load_Init)
