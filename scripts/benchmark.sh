@@ -6,6 +6,7 @@
 #   ./scripts/benchmark.sh parallel        MPI ranks and OpenMP threads, h = 1/1024 (~3 min)
 #   ./scripts/benchmark.sh hertz           cylinder on a block against Hertz, mesh refinement
 #   ./scripts/benchmark.sh multibody       three stacked bodies: figures and a von Mises picture
+#   ./scripts/benchmark.sh shape-optimization  design loops, gradient costs and checks (~10 min)
 #   ./scripts/benchmark.sh                 all
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -19,9 +20,11 @@ case "${1:-all}" in
   parallel) /usr/bin/python3 "$root/scripts/parallel_benchmark.py" ;;
   hertz) /usr/bin/python3 "$root/scripts/hertz_benchmark.py" ;;
   multibody) /usr/bin/python3 "$root/scripts/multibody_picture.py" ;;
+  shape-optimization) /usr/bin/python3 "$root/scripts/shape_optimization_benchmark.py" ;;
   all) /usr/bin/python3 "$root/scripts/model_problem_benchmark.py"
        /usr/bin/python3 "$root/scripts/parallel_benchmark.py"
        /usr/bin/python3 "$root/scripts/hertz_benchmark.py"
-       /usr/bin/python3 "$root/scripts/multibody_picture.py" ;;
-  *) echo "usage: $0 [model-problem|parallel|hertz|multibody]" >&2; exit 2 ;;
+       /usr/bin/python3 "$root/scripts/multibody_picture.py"
+       /usr/bin/python3 "$root/scripts/shape_optimization_benchmark.py" ;;
+  *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization]" >&2; exit 2 ;;
 esac

@@ -15,22 +15,7 @@ SubdomainInput unit_square(int cells) {
 
 /// Two decoupled copies of a scalar Laplacian as a 2-component field: its kernel is the
 /// two translations, not the rotation the candidate rigid modes also contain.
-SubdomainInput vector_laplacian(int cells) {
-  const SubdomainInput scalar = unit_square(cells);
-  const auto n = static_cast<int>(scalar.K.rows());
-  SubdomainInput v;
-  std::vector<Eigen::Triplet<double, int>> entries;
-  for (int j = 0; j < n; ++j)
-    for (SparseMatrix::InnerIterator it(scalar.K, j); it; ++it)
-      for (int c = 0; c < 2; ++c) entries.emplace_back(2 * it.row() + c, 2 * j + c, it.value());
-  v.K.resize(2 * n, 2 * n);
-  v.K.setFromTriplets(entries.begin(), entries.end());
-  for (int k = 0; k < n; ++k)
-    for (int c = 0; c < 2; ++c) {
-      v.x.push_back(scalar.x[k]), v.y.push_back(scalar.y[k]), v.component.push_back(c);
-    }
-  return v;
-}
+SubdomainInput vector_laplacian(int cells) { return test::two_components(unit_square(cells)); }
 
 TEST(Kernel, FloatingScalarSubdomainHasTheConstants) {
   const SubdomainInput s = unit_square(6);

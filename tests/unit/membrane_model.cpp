@@ -51,6 +51,22 @@ SubdomainInput p1_rectangle(double x0, double y0, double w, double h, int nx, in
   return s;
 }
 
+SubdomainInput two_components(const SubdomainInput& scalar) {
+  const auto n = static_cast<int>(scalar.K.rows());
+  SubdomainInput v;
+  v.body = scalar.body;
+  std::vector<Eigen::Triplet<double, int>> entries;
+  for (int j = 0; j < n; ++j)
+    for (SparseMatrix::InnerIterator it(scalar.K, j); it; ++it)
+      for (int c = 0; c < 2; ++c) entries.emplace_back(2 * it.row() + c, 2 * j + c, it.value());
+  v.K.resize(2 * n, 2 * n);
+  v.K.setFromTriplets(entries.begin(), entries.end());
+  v.f = Vec::Zero(2 * n);
+  for (int k = 0; k < n; ++k)
+    for (int c = 0; c < 2; ++c) v.x.push_back(scalar.x[k]), v.y.push_back(scalar.y[k]), v.component.push_back(c);
+  return v;
+}
+
 MembraneOptions membrane_options(int n, int N) {
   MembraneOptions o;
   o.n = n;

@@ -16,6 +16,12 @@ SubdomainInput p1_rectangle(double x0, double y0, double w, double h, int nx, in
                             double factor, const std::function<double(double, double)>& f,
                             int body);
 
+/// Two decoupled copies of a scalar problem as a 2-component field (dofs 2k, 2k+1, the same
+/// node): a vector problem whose kernel is the two translations, not the rotation the
+/// candidate rigid modes also contain, and whose stiffness does not depend on the
+/// coordinates. The load is zero.
+SubdomainInput two_components(const SubdomainInput& scalar);
+
 struct MembraneOptions {
   int n = 16;              ///< cells per unit length (h = 1/n)
   int N = 2;               ///< subdomains per direction and body

@@ -166,25 +166,6 @@ TEST(Sensitivity, WeaklyActiveRowsStayInequalitiesAndMatchOneSidedDifferences) {
 
 // ---- moving contact geometry: node to segment on non-matching meshes, and an obstacle ---
 
-/// Two decoupled Laplacians as a 2-component field (dofs 2k, 2k+1): a vector problem whose
-/// stiffness does not depend on the coordinates, so moving the nodes changes only the
-/// contact rows and the finite differences isolate B' and c'.
-SubdomainInput two_components(const SubdomainInput& scalar) {
-  const auto n = static_cast<int>(scalar.K.rows());
-  SubdomainInput v;
-  v.body = scalar.body;
-  std::vector<Eigen::Triplet<double, int>> entries;
-  for (int j = 0; j < n; ++j)
-    for (SparseMatrix::InnerIterator it(scalar.K, j); it; ++it)
-      for (int c = 0; c < 2; ++c) entries.emplace_back(2 * it.row() + c, 2 * j + c, it.value());
-  v.K.resize(2 * n, 2 * n);
-  v.K.setFromTriplets(entries.begin(), entries.end());
-  v.f = Vec::Zero(2 * n);
-  for (int k = 0; k < n; ++k)
-    for (int c = 0; c < 2; ++c) v.x.push_back(scalar.x[k]), v.y.push_back(scalar.y[k]), v.component.push_back(c);
-  return v;
-}
-
 /// Body 0 = [0,1]^2 fixed at y = 0 (8 x 8 cells); body 1 = [0.05,0.95] x [1.02, 2.02]
 /// (5 x 7 cells, non-matching) pressed down by u = (0, -0.05) at its top; body 1's bottom
 /// nodes are slaves on body 0's top segments. Node velocities tilt body 0's top face.
@@ -193,8 +174,8 @@ struct SegmentScene {
   ContactInput contact;
   SegmentScene() {
     const auto zero = [](double, double) { return 0.0; };
-    base.push_back(two_components(test::p1_rectangle(0, 0, 1, 1, 8, 8, 1.0, zero, 0)));
-    base.push_back(two_components(test::p1_rectangle(0.05, 1.02, 0.9, 1, 5, 7, 1.0, zero, 1)));
+    base.push_back(test::two_components(test::p1_rectangle(0, 0, 1, 1, 8, 8, 1.0, zero, 0)));
+    base.push_back(test::two_components(test::p1_rectangle(0.05, 1.02, 0.9, 1, 5, 7, 1.0, zero, 1)));
     for (size_t s = 0; s < 2; ++s) {
       SubdomainInput& sub = base[s];
       for (int k = 0; k < static_cast<int>(sub.x.size()); ++k) {
