@@ -4,7 +4,7 @@
 // lc: mesh size away from the nut; the nut and the jaw faces get lc/3 (1.9: 2650 unknowns,
 // about the seed's 2606; 0.4: about 50,000).
 // Physical curves: 1 upper outer curve of the head (design), 2 lower outer curve (design),
-// 3 jaw faces and slot back (contact masters), 4 handle end (load), 5 other spanner
+// 3 jaw faces, rounded corners and slot back (contact masters), 4 handle end (load), 5 other spanner
 // boundary, 6 nut outline (contact slaves), 7 bolt hole (fixed). Surfaces: 1 spanner, 2 nut.
 DefineConstant[ lc = 1.9, c = 0.01, L = 90 ];
 R = 10 / Sqrt(3);          // circumradius of the hexagon
@@ -12,14 +12,21 @@ f = 5;                     // half across flats
 xt = 6.5;                  // jaw tips
 tj = 3;                    // jaw tip thickness
 lf = lc / 3;
+rf = 1;                    // radius of the slot's back corners
 
 // Spanner outline, counter-clockwise (so that FreeFEM gets positive triangles).
 Point(1) = {-L, -5, 0, lc};
 Point(2) = {-18, -5, 0, lc};
 Point(3) = {xt, -f - c - tj, 0, lf};
 Point(4) = {xt, -f - c, 0, lf};
-Point(5) = {-R - c, -f - c, 0, lf};
-Point(6) = {-R - c, f + c, 0, lf};
+// the slot's back corners are rounded (radius rf), as on real spanners: a sharp re-entrant
+// corner would be a stress singularity that grows without bound under refinement
+Point(5) = {-R - c + rf, -f - c, 0, lf};
+Point(51) = {-R - c + rf, -f - c + rf, 0, lf};
+Point(52) = {-R - c, -f - c + rf, 0, lf};
+Point(6) = {-R - c, f + c - rf, 0, lf};
+Point(61) = {-R - c + rf, f + c - rf, 0, lf};
+Point(62) = {-R - c + rf, f + c, 0, lf};
 Point(7) = {xt, f + c, 0, lf};
 Point(8) = {xt, f + c + tj, 0, lf};
 Point(9) = {-18, 5, 0, lc};
@@ -38,13 +45,15 @@ Line(1) = {1, 2};
 Spline(2) = {2, 11, 12, 13, 14, 3};
 Line(3) = {3, 4};
 Line(4) = {4, 5};
-Line(5) = {5, 6};
-Line(6) = {6, 7};
+Circle(11) = {5, 51, 52};
+Line(5) = {52, 6};
+Circle(12) = {6, 61, 62};
+Line(6) = {62, 7};
 Line(7) = {7, 8};
 Spline(8) = {8, 15, 16, 17, 18, 9};
 Line(9) = {9, 10};
 Line(10) = {10, 1};
-Curve Loop(1) = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
+Curve Loop(1) = {1, 2, 3, 4, 11, 5, 12, 6, 7, 8, 9, 10};
 Plane Surface(1) = {1};
 
 // Nut: hexagon with flats at y = +-f, bolt hole at the centre.
@@ -71,7 +80,7 @@ Plane Surface(2) = {2, 3};
 
 Physical Curve(1) = {8};
 Physical Curve(2) = {2};
-Physical Curve(3) = {4, 5, 6};
+Physical Curve(3) = {4, 11, 5, 12, 6};
 Physical Curve(4) = {10};
 Physical Curve(5) = {1, 3, 7, 9};
 Physical Curve(6) = {21, 22, 23, 24, 25, 26};

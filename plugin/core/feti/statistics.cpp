@@ -38,6 +38,7 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
       {"cg", result->counts.cg},
       {"expansion", result->counts.expansion},
       {"proportioning", result->counts.proportioning},
+      {"penalty_increases", result->counts.penalty_increases},
       {"energy", result->energy},
       {"gradient_norm", result->gradient_norm},
       {"gradient_reference", result->gradient_reference},

@@ -22,6 +22,7 @@ IterationCounts& IterationCounts::operator+=(const IterationCounts& other) {
   cg += other.cg;
   expansion += other.expansion;
   proportioning += other.proportioning;
+  penalty_increases += other.penalty_increases;
   return *this;
 }
 

@@ -13,6 +13,7 @@ void SmalbeSettings::validate() const {
   if (!(alpha > 0 && alpha < 1)) throw std::invalid_argument("SMALBE alpha must lie in (0, 1)");
   if (!(beta > 1)) throw std::invalid_argument("SMALBE beta must be > 1");
   if (max_outer < 1) throw std::invalid_argument("SMALBE max_outer must be >= 1");
+  if (stall_rounds < 1) throw std::invalid_argument("SMALBE stall_rounds must be >= 1");
   if (max_hessian < 1) throw std::invalid_argument("SMALBE max_hessian must be >= 1");
   inner.validate();
 }
@@ -41,6 +42,8 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
   Vec Qx(n), Qv(n), g(n);  // Qx: Q at the iterate; Qv: scratch of the operator A
   bool gradient_is_current = false;
   double previous_lagrangian = std::numeric_limits<double>::infinity();
+  double best_q_norm = std::numeric_limits<double>::infinity();
+  int stalled_rounds = 0;
 
   // A = H + rho Q: on Ker C it acts as H, on Im C' as rho, so ||A|| <= max(||H||, rho).
   const LinearOperator A = [&](const Vec& v, Vec& Av) {
@@ -105,6 +108,22 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
       if (outer > 0 && lagrangian < previous_lagrangian + 0.5 * rho * q_norm * q_norm)
         M /= settings.beta;
       previous_lagrangian = lagrangian;
+      // With rho fixed, ||Qx|| can stall while the inner problems are solved well: the
+      // multiplier grows by rho Qx per round and must move far before an active bound lets
+      // go (the spanner at 50,000 unknowns: ||Qx|| flat for 160 rounds). When ||Qx|| has not
+      // fallen below 0.9 of its best for `stall_rounds` rounds, rho grows by beta, as in
+      // the seed's Algorithm 3.1.
+      if (q_norm < 0.9 * best_q_norm) {
+        best_q_norm = q_norm;
+        stalled_rounds = 0;
+      } else if (++stalled_rounds >= settings.stall_rounds) {
+        const double rho_next = settings.beta * rho;
+        g += (rho_next - rho) * Qx;  // A changed by (rho_next - rho) Q
+        rho = rho_next;
+        stalled_rounds = 0;
+        best_q_norm = q_norm;
+        ++result.counts.penalty_increases;
+      }
     } else if (q_norm <= eta) {
       eta *= settings.alpha;
     } else {

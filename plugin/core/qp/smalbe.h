@@ -23,6 +23,7 @@ struct SmalbeSettings {
   double alpha = 0.1;         ///< seed_alg31: eta <- alpha eta when ||Qx|| <= eta
   double beta = 2.0;          ///< smalbe_m: M <- M / beta; seed_alg31: rho <- beta rho
   int max_outer = 200;
+  int stall_rounds = 10;      ///< smalbe_m: rho <- beta rho after this many rounds without ||Qx|| < 0.9 its best
   int max_hessian = 20000;    ///< over all inner MPRGP calls
   MprgpSettings inner{};      ///< its max_hessian is overridden by what remains of the above
 
