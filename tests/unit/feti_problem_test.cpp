@@ -290,6 +290,14 @@ TEST(FetiProblem, BadInputIsAnErrorNamingTheArgument) {
   expect_input_error([&] { make([](auto& s) { s[0].K.coeffRef(0, 0) = INFINITY; }); }, "K[0]");
   expect_input_error([&] { make([](auto& s) { s[1].x.pop_back(); }); }, "X[1]");
   expect_input_error([&] { make([](auto& s) { s[0].dirichlet_dofs.push_back(100000); }); }, "dirichlet[0]");
+  expect_input_error([&] { make([](auto& s) { s[2].y[5] = NAN; }); }, "X[2], Y[2]: the coordinates of dof 5");
+  expect_input_error([&] { make([](auto& s) { s[3].body = -1; }); }, "body[3]");
+  expect_input_error([&] {
+    make([](auto& s) {
+      s[0].dirichlet_values.assign(s[0].dirichlet_dofs.size(), 0.0);
+      s[0].dirichlet_values[1] = NAN;
+    });
+  }, "dirichletValues[0]: entry 1");
   // A floating body with no condition at all: its rigid mode is unrestrained.
   expect_input_error([] {
     auto subs = test::membrane_subdomains(test::membrane_options(8, 2));

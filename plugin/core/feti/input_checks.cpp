@@ -69,6 +69,12 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
       throw InputError(indexed("X", s) + ", " + indexed("Y", s) + ": need one coordinate per dof (" +
                        std::to_string(n) + "), got " + std::to_string(sub.x.size()) + " and " +
                        std::to_string(sub.y.size()));
+    for (size_t i = 0; i < n; ++i)
+      if (!std::isfinite(sub.x[i]) || !std::isfinite(sub.y[i]))
+        throw InputError(indexed("X", s) + ", " + indexed("Y", s) + ": the coordinates of dof " + std::to_string(i) +
+                         " are not finite (" + std::to_string(sub.x[i]) + ", " + std::to_string(sub.y[i]) + ")");
+    if (sub.body < 0)
+      throw InputError(indexed("body", s) + ": is " + std::to_string(sub.body) + ", body numbers must be >= 0");
     if (!sub.component.empty() && sub.component.size() != n)
       throw InputError(indexed("component", s) + ": needs one entry per dof");
     for (int c : sub.component)
@@ -76,6 +82,9 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
     check_dofs(sub.dirichlet_dofs, sub.K.rows(), indexed("dirichlet", s));
     if (!sub.dirichlet_values.empty() && sub.dirichlet_values.size() != sub.dirichlet_dofs.size())
       throw InputError(indexed("dirichletValues", s) + ": needs one value per Dirichlet dof");
+    for (size_t i = 0; i < sub.dirichlet_values.size(); ++i)
+      if (!std::isfinite(sub.dirichlet_values[i]))
+        throw InputError(indexed("dirichletValues", s) + ": entry " + std::to_string(i) + " is not finite");
   }
   check_per_subdomain_lists(contact.slave_dofs, ids, subdomains, "contactSlave");
   check_per_subdomain_lists(contact.master_dofs, ids, subdomains, "contactMaster");
@@ -93,6 +102,8 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
     throw InputError("contactMaster: node-to-node contact cannot be combined with contactSegments or "
                      "obstacle in one problem (the slave dofs would belong to both)");
   if (!std::isfinite(contact.gap)) throw InputError("gap: must be finite");
+  for (double v : {contact.obstacle_point[0], contact.obstacle_point[1], contact.obstacle_normal[0], contact.obstacle_normal[1]})
+    if (contact.obstacle && !std::isfinite(v)) throw InputError("obstacle: the point and the normal must be finite");
 }
 
 }  // namespace ffeti
