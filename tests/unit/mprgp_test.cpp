@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <ostream>
+#include <string>
+
 namespace ffeti {
 namespace {
 
@@ -13,6 +16,12 @@ struct Case {
   unsigned seed;
   bool some_unbounded;
 };
+
+/// Shown by GoogleTest for a failing case (instead of a byte dump).
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << "n=" << c.n << " condition=" << c.condition << " seed=" << c.seed
+      << (c.some_unbounded ? " some unbounded" : " all bounded");
+}
 
 class MprgpManufactured : public ::testing::TestWithParam<Case> {};
 
@@ -45,7 +54,10 @@ TEST_P(MprgpManufactured, FindsTheKnownSolution) {
 
 INSTANTIATE_TEST_SUITE_P(Seeds, MprgpManufactured,
                          ::testing::Values(Case{20, 10, 1, false}, Case{60, 100, 2, true},
-                                           Case{100, 1000, 3, true}, Case{40, 1, 4, false}));
+                                           Case{100, 1000, 3, true}, Case{40, 1, 4, false}),
+                         [](const auto& info) {
+                           return "n" + std::to_string(info.param.n) + "_seed" + std::to_string(info.param.seed);
+                         });
 
 TEST(Mprgp, StartsFromAnInfeasiblePointAndProjectsIt) {
   const test::BoundQp qp = test::manufactured_bound_qp(30, 50, 11, false);

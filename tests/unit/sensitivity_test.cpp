@@ -14,6 +14,13 @@
 namespace ffeti {
 namespace {
 
+}  // namespace
+
+/// Shown by GoogleTest for a failing case (instead of a byte dump); found by ADL.
+void PrintTo(FetiVariant variant, std::ostream* os) { *os << (variant == FetiVariant::feti1 ? "feti1" : "tfeti"); }
+
+namespace {
+
 DualSolveSettings tight() {
   DualSolveSettings settings;
   settings.tolerance = 1e-12;

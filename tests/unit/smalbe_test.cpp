@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <ostream>
+#include <string>
+
 namespace ffeti {
 namespace {
 
@@ -12,6 +15,12 @@ struct Case {
   unsigned seed;
   SmalbeVariant variant;
 };
+
+/// Shown by GoogleTest for a failing case (instead of a byte dump).
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << "n=" << c.n << " k=" << c.k << " condition=" << c.condition << " seed=" << c.seed << " "
+      << (c.variant == SmalbeVariant::smalbe_m ? "smalbe_m" : "seed_alg31");
+}
 
 class SmalbeManufactured : public ::testing::TestWithParam<Case> {};
 
@@ -44,7 +53,11 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(Case{30, 3, 10, 1, SmalbeVariant::smalbe_m},
                       Case{80, 8, 100, 2, SmalbeVariant::smalbe_m},
                       Case{30, 3, 10, 1, SmalbeVariant::seed_alg31},
-                      Case{80, 8, 100, 2, SmalbeVariant::seed_alg31}));
+                      Case{80, 8, 100, 2, SmalbeVariant::seed_alg31}),
+    [](const auto& info) {
+      return std::string(info.param.variant == SmalbeVariant::smalbe_m ? "smalbe_m" : "seed_alg31") + "_n" +
+             std::to_string(info.param.n) + "_seed" + std::to_string(info.param.seed);
+    });
 
 TEST(Smalbe, IterationLimitIsAStatus) {
   const test::BoundEqualityQp qp = test::manufactured_bound_equality_qp(60, 5, 1e3, 9);
