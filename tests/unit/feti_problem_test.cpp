@@ -310,6 +310,22 @@ TEST(FetiProblem, BadInputIsAnErrorNamingTheArgument) {
     contact.obstacle = true;
     FetiProblem problem(std::move(subs), contact);
   }, "contactMaster");
+  // Positive diagonal but indefinite (a large symmetric off-diagonal pair between free
+  // dofs), in a subdomain touching the Dirichlet boundary and in a floating one: the
+  // simplicial LDL' factor would complete with a negative D and the solve find a saddle
+  // point; it must be an error naming K[s].
+  for (int s : {0, 5})
+    for (FetiVariant variant : {FetiVariant::feti1, FetiVariant::tfeti})
+      expect_input_error([&] {
+        auto subs = test::membrane_subdomains(test::membrane_options(8, 2));
+        const ContactInput contact = test::membrane_contact(subs);
+        const double d = subs[static_cast<size_t>(s)].K.coeff(12, 12);
+        subs[static_cast<size_t>(s)].K.coeffRef(12, 13) += 5 * d;
+        subs[static_cast<size_t>(s)].K.coeffRef(13, 12) += 5 * d;
+        FetiSetupSettings setup;
+        setup.variant = variant;
+        FetiProblem problem(std::move(subs), contact, setup);
+      }, "K[" + std::to_string(s) + "]: not positive definite");
   DualSolveSettings bad;
   bad.tolerance = 0;
   expect_input_error([&] { membrane_problem(test::membrane_options(8, 1), FetiVariant::feti1).solve(bad); }, "tol");

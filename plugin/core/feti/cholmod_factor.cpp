@@ -72,6 +72,15 @@ int CholmodFactor::factorize(const SparseMatrix& A) {
   ++numeric_factorizations;
   if (common_.status == CHOLMOD_NOT_POSDEF) return static_cast<int>(factor_->minor);
   if (common_.status < CHOLMOD_OK) throw std::runtime_error("CHOLMOD factorize failed");
+  // A simplicial factor is LDL' by default, which completes on an indefinite matrix with
+  // negative entries in D (CHOLMOD reports NOT_POSDEF only for LL'): check D, the first
+  // entry of each column, so that an indefinite stiffness is an error, not a saddle point.
+  if (!factor_->is_ll && !factor_->is_super) {
+    const auto* start = static_cast<const int*>(factor_->p);
+    const auto* values = static_cast<const double*>(factor_->x);
+    for (size_t j = 0; j < factor_->n; ++j)
+      if (!(values[start[j]] > 0)) return static_cast<int>(j);
+  }
   return -1;
 }
 
