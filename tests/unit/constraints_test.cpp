@@ -5,6 +5,10 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <map>
+
 namespace ffeti {
 namespace {
 
@@ -120,6 +124,52 @@ TEST(Constraints, NodeToSegmentRowHasProjectionWeightsNormalAndGap) {
   // Beyond contactRadius there is no row at all.
   contact.search_distance = 0.05;
   EXPECT_EQ(build_constraints(subs, contact, FetiVariant::tfeti).rows(), 0);
+}
+
+TEST(Constraints, NodeToSegmentPicksTheNearestSegmentAsAFullSearchWould) {
+  // A wavy master polyline of 400 segments on body 0, 300 slaves of body 1 scattered around
+  // it (some far away, some exactly on its vertices), with and without a reach: the grid
+  // search finds a segment as near as a search over all segments does, and no row beyond
+  // the reach.
+  std::vector<std::array<double, 2>> polyline, slaves;
+  for (int i = 0; i <= 400; ++i) polyline.push_back({0.01 * i, 0.05 * std::sin(0.3 * i)});
+  unsigned state = 7;
+  const auto random = [&] { state = state * 1103515245u + 12345u; return (state >> 8) % 100000 / 100000.0; };
+  for (int i = 0; i < 300; ++i) {
+    if (i % 10 == 0) slaves.push_back(polyline[static_cast<size_t>(4 * i / 3)]);
+    else slaves.push_back({-0.5 + 5 * random(), -1 + 2 * random() * (i % 7 == 0 ? 5 : 0.2)});
+  }
+  const std::vector<SubdomainInput> subs = {vector_nodes(polyline, 0), vector_nodes(slaves, 1)};
+  ContactInput contact;
+  contact.master_segments.resize(2), contact.slave_dofs.resize(2);
+  for (int i = 0; i < 400; ++i) contact.master_segments[0].push_back({2 * (i + 1), 2 * (i + 1) + 1, 2 * i, 2 * i + 1});
+  for (int k = 0; k < static_cast<int>(slaves.size()); ++k) contact.slave_dofs[1].insert(contact.slave_dofs[1].end(), {2 * k, 2 * k + 1});
+  for (const double reach : {1e300, 0.07}) {
+    contact.search_distance = reach;
+    const Constraints c = build_constraints(subs, contact, FetiVariant::tfeti);
+    std::map<int, int> master_of_slave;  // slave node -> the first node of its segment's b end
+    for (const ContactRowGeometry& g : c.geometry) master_of_slave[g.slave[0][1] / 2] = g.master[2][1] / 2;
+    int rows = 0;
+    for (size_t k = 0; k < slaves.size(); ++k) {
+      // Segment i runs from node i + 1 to node i.
+      const auto distance = [&](int i) {
+        const auto& a = polyline[static_cast<size_t>(i + 1)];
+        const auto& b = polyline[static_cast<size_t>(i)];
+        const double dx = b[0] - a[0], dy = b[1] - a[1];
+        const double xi = std::clamp(((slaves[k][0] - a[0]) * dx + (slaves[k][1] - a[1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+        return std::hypot(slaves[k][0] - a[0] - xi * dx, slaves[k][1] - a[1] - xi * dy);
+      };
+      double best_distance = reach;
+      for (int i = 0; i < 400; ++i) best_distance = std::min(best_distance, distance(i));  // the full search
+      if (best_distance >= reach) continue;
+      ASSERT_EQ(master_of_slave.count(static_cast<int>(k)), 1u) << "slave " << k;
+      // The same distance (two segments meeting at the nearest vertex are equally near).
+      EXPECT_NEAR(distance(master_of_slave[static_cast<int>(k)]), best_distance, 1e-12) << "slave " << k;
+      ++rows;
+    }
+    EXPECT_EQ(rows, c.rows());
+    EXPECT_GT(rows, reach < 1 ? 30 : 299);
+  }
 }
 
 TEST(Constraints, RigidObstacleRowUsesTheUnitNormal) {
