@@ -21,6 +21,12 @@ class Communicator {
   virtual std::vector<double> allgather(const std::vector<double>& local, std::vector<int>* counts = nullptr) const = 0;
   virtual std::vector<long long> allgather(const std::vector<long long>& local, std::vector<int>* counts = nullptr) const = 0;
 
+  /// The same with every rank's length known beforehand (`counts`, `offsets` in rank order)
+  /// into `out`, resized to the total: no exchange of lengths, no allocation once `out` has
+  /// its size (the dual operator's sums, once per application).
+  virtual void allgather_known(const std::vector<double>& local, const std::vector<int>& counts,
+                               const std::vector<int>& offsets, std::vector<double>& out) const = 0;
+
   virtual double sum(double local) const = 0;
   virtual double max(double local) const = 0;
 
@@ -35,6 +41,10 @@ class SerialCommunicator final : public Communicator {
   int size() const override { return 1; }
   std::vector<double> allgather(const std::vector<double>& local, std::vector<int>* counts) const override;
   std::vector<long long> allgather(const std::vector<long long>& local, std::vector<int>* counts) const override;
+  void allgather_known(const std::vector<double>& local, const std::vector<int>&, const std::vector<int>&,
+                       std::vector<double>& out) const override {
+    out.assign(local.begin(), local.end());
+  }
   double sum(double local) const override { return local; }
   double max(double local) const override { return local; }
   std::string first_error(const std::string& local_error) const override { return local_error; }

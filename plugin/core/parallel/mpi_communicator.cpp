@@ -28,6 +28,13 @@ std::vector<long long> MpiCommunicator::allgather(const std::vector<long long>& 
   return gather(local, MPI_LONG_LONG, counts);
 }
 
+void MpiCommunicator::allgather_known(const std::vector<double>& local, const std::vector<int>& counts,
+                                      const std::vector<int>& offsets, std::vector<double>& out) const {
+  out.resize(static_cast<size_t>(offsets.back() + counts.back()));
+  MPI_Allgatherv(local.data(), static_cast<int>(local.size()), MPI_DOUBLE, out.data(), counts.data(), offsets.data(),
+                 MPI_DOUBLE, comm_);
+}
+
 double MpiCommunicator::sum(double local) const {
   double global = 0;
   MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_SUM, comm_);

@@ -15,6 +15,8 @@ class MpiCommunicator final : public Communicator {
   int size() const override { return size_; }
   std::vector<double> allgather(const std::vector<double>& local, std::vector<int>* counts) const override;
   std::vector<long long> allgather(const std::vector<long long>& local, std::vector<int>* counts) const override;
+  void allgather_known(const std::vector<double>& local, const std::vector<int>& counts,
+                       const std::vector<int>& offsets, std::vector<double>& out) const override;
   double sum(double local) const override;
   double max(double local) const override;
   std::string first_error(const std::string& local_error) const override;

@@ -10,6 +10,10 @@ SubdomainSum::SubdomainSum(std::vector<std::vector<int>> rows, const std::vector
   for (size_t s = 0; s < rows_.size(); ++s) rank_length[static_cast<size_t>(owner[s])] += rows_[s].size();
   std::vector<size_t> next(static_cast<size_t>(comm.size()), 0);
   for (size_t r = 1; r < next.size(); ++r) next[r] = next[r - 1] + rank_length[r - 1];
+  for (size_t r = 0; r < next.size(); ++r) {
+    rank_offset_.push_back(static_cast<int>(next[r]));
+    rank_count_.push_back(static_cast<int>(rank_length[r]));
+  }
   for (size_t s = 0; s < rows_.size(); ++s) {
     position_[s] = next[static_cast<size_t>(owner[s])];
     next[static_cast<size_t>(owner[s])] += rows_[s].size();
@@ -17,10 +21,10 @@ SubdomainSum::SubdomainSum(std::vector<std::vector<int>> rows, const std::vector
 }
 
 void SubdomainSum::sum(const std::vector<double>& local, Eigen::VectorXd& y) const {
-  const std::vector<double> all = comm_.allgather(local);
+  comm_.allgather_known(local, rank_count_, rank_offset_, gathered_);
   y.setZero(row_count_);
   for (size_t s = 0; s < rows_.size(); ++s)
-    for (size_t k = 0; k < rows_[s].size(); ++k) y[rows_[s][k]] += all[position_[s] + k];
+    for (size_t k = 0; k < rows_[s].size(); ++k) y[rows_[s][k]] += gathered_[position_[s] + k];
 }
 
 }  // namespace ffeti

@@ -28,8 +28,10 @@ class SubdomainSum {
  private:
   std::vector<std::vector<int>> rows_;
   std::vector<size_t> position_;  // start of subdomain s in the gathered buffer
+  std::vector<int> rank_count_, rank_offset_;  // each rank's part of the gathered buffer
   int row_count_;
   const Communicator& comm_;
+  mutable std::vector<double> gathered_;  // reused by every sum
 };
 
 }  // namespace ffeti
