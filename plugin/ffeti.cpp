@@ -165,100 +165,139 @@ class FetiSetup : public E_F0mps {
   }
 
  private:
+  // Named parameters by position in name_param.
+  enum Named { kDirichlet, kDirichletValues, kSlave, kMaster, kGap, kComponent, kVariant, kFactor, kThreads,
+               kComm, kSegments, kObstacle, kRadius };
+
   long setup(Stack stack) const {
     auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
-    auto& Fs = *GetAny<KN<KN<double>>*>((*F)(stack));
-    auto& Xs = *GetAny<KN<KN<double>>*>((*X)(stack));
-    auto& Ys = *GetAny<KN<KN<double>>*>((*Y)(stack));
-    auto& bodies = *GetAny<KN<long>*>((*body)(stack));
     const std::shared_ptr<const Communicator> comm =
-        communicator(nargs[9] ? GetAny<pcommworld>((*nargs[9])(stack)) : nullptr);
+        communicator(nargs[kComm] ? GetAny<pcommworld>((*nargs[kComm])(stack)) : nullptr);
     const long count = Ks.N();
-
-    std::vector<SubdomainInput> subdomains;
-    std::vector<int> ids;
-    ContactInput contact;
-    FetiSetupSettings settings;
     std::vector<long long> assembled(static_cast<size_t>(count), 0);
     for (long s = 0; s < count; ++s) assembled[static_cast<size_t>(s)] = Ks[s].pHM() && Ks[s].pHM()->n > 0;
     // Conversion errors are raised on every rank together, or the others would wait.
-    collectively(*comm, [&] {
-      const std::pair<const char*, long> sizes[] = {{"F", Fs.N()}, {"X", Xs.N()}, {"Y", Ys.N()}, {"body", bodies.N()}};
-      for (const auto& [name, n] : sizes)
-        if (n != count)
-          throw InputError(std::string(name) + ": has " + std::to_string(n) + " entries, K has " +
-                           std::to_string(count) + " subdomains");
-    });
+    collectively(*comm, [&] { check_array_sizes(stack, count); });
     const std::vector<int> owner = owners(assembled, *comm);
+    std::vector<int> ids;
+    for (long s = 0; s < count; ++s)
+      if (owner[static_cast<size_t>(s)] == comm->rank()) ids.push_back(static_cast<int>(s));
+    std::vector<SubdomainInput> subdomains;
+    ContactInput contact;
+    FetiSetupSettings settings;
     collectively(*comm, [&] {
-      for (long s = 0; s < count; ++s)
-        if (owner[static_cast<size_t>(s)] == comm->rank()) ids.push_back(static_cast<int>(s));
+      subdomains = subdomain_inputs(stack, ids);
       std::vector<long> dofs;
-      for (int s : ids) {
-        SubdomainInput sub;
-        sub.K = binding::to_sparse(Ks[s], "K[" + std::to_string(s) + "]");
-        sub.f = binding::to_vec(Fs[s]);
-        sub.x = binding::to_std(Xs[s]);
-        sub.y = binding::to_std(Ys[s]);
-        sub.body = static_cast<int>(bodies[s]);
-        dofs.push_back(sub.K.rows());
-        subdomains.push_back(std::move(sub));
-      }
-      const auto dirichlet = binding::per_subdomain(optional_pointer<KN<KN<long>>>(nargs[0], stack), count, ids, dofs, "dirichlet");
-      const auto components = binding::per_subdomain(optional_pointer<KN<KN<long>>>(nargs[5], stack), count, ids, dofs, "component");
-      const auto* values = optional_pointer<KN<KN<double>>>(nargs[1], stack);
-      if (values && values->N() != count)
-        throw InputError("dirichletValues: has " + std::to_string(values->N()) + " entries for " +
-                         std::to_string(count) + " subdomains");
-      for (size_t k = 0; k < ids.size(); ++k) {
-        SubdomainInput& sub = subdomains[k];
-        if (!dirichlet.empty()) sub.dirichlet_dofs = dirichlet[k];
-        if (values) sub.dirichlet_values = binding::to_std((*values)[ids[k]]);
-        if (!components.empty()) sub.component = components[k];
-      }
-      contact.slave_dofs = binding::per_subdomain(optional_pointer<KN<KN<long>>>(nargs[2], stack), count, ids, dofs, "contactSlave");
-      contact.master_dofs = binding::per_subdomain(optional_pointer<KN<KN<long>>>(nargs[3], stack), count, ids, dofs, "contactMaster");
-      contact.gap = optional_real(nargs[4], stack, 0.0);
-      const auto segment_dofs = binding::per_subdomain(optional_pointer<KN<KN<long>>>(nargs[10], stack), count, ids, dofs, "contactSegments");
-      for (size_t k = 0; k < segment_dofs.size(); ++k) {
-        if (segment_dofs[k].size() % 4 != 0)
-          throw InputError("contactSegments[" + std::to_string(ids[k]) + "]: needs 4 dofs per segment (a_x, a_y, b_x, b_y)");
-        contact.master_segments.emplace_back();
-        for (size_t i = 0; i < segment_dofs[k].size(); i += 4)
-          contact.master_segments.back().push_back({segment_dofs[k][i], segment_dofs[k][i + 1],
-                                                    segment_dofs[k][i + 2], segment_dofs[k][i + 3]});
-      }
-      if (const auto* obstacle = optional_pointer<KN<double>>(nargs[11], stack)) {
-        if (obstacle->N() != 4)
-          throw InputError("obstacle: needs [point x, point y, normal x, normal y], got " +
-                           std::to_string(obstacle->N()) + " entries");
-        contact.obstacle = true;
-        contact.obstacle_point = {(*obstacle)[0], (*obstacle)[1]};
-        contact.obstacle_normal = {(*obstacle)[2], (*obstacle)[3]};
-      }
-      contact.search_distance = optional_real(nargs[12], stack, contact.search_distance);
-
-      // Default: FETI-1 for scalar fields (the seed's), Total FETI for vector fields, whose
-      // partially constrained subdomains it avoids.
-      const bool vector_field = nargs[5] != nullptr;
-      const std::string variant = optional_string(nargs[6], stack, vector_field ? "tfeti" : "feti1");
-      if (variant == "feti1") settings.variant = FetiVariant::feti1;
-      else if (variant == "tfeti") settings.variant = FetiVariant::tfeti;
-      else throw InputError("variant: \"" + variant + "\" is not one of \"feti1\", \"tfeti\"");
-      const std::string factor = optional_string(nargs[7], stack, "simplicial");
-      if (factor == "simplicial") settings.factor = FactorKind::simplicial;
-      else if (factor == "supernodal") settings.factor = FactorKind::supernodal;
-      else throw InputError("factor: \"" + factor + "\" is not one of \"simplicial\", \"supernodal\"");
-      settings.threads = static_cast<int>(optional_int(nargs[8], stack, 0));
-      if (settings.threads < 0) throw InputError("threads: must be >= 0 (0: the default)");
+      for (const SubdomainInput& sub : subdomains) dofs.push_back(sub.K.rows());
+      add_dirichlet_and_components(stack, count, ids, dofs, subdomains);
+      contact = contact_input(stack, count, ids, dofs);
+      settings = setup_settings(stack);
     });
-
     if (settings.threads == 0) settings.threads = default_threads(*comm);
     const long id = handles().empty() ? 1 : handles().rbegin()->first + 1;
     auto problem = std::make_unique<FetiProblem>(std::move(subdomains), ids, static_cast<int>(count), contact,
                                                  settings, comm);
     handles()[id].problem = std::move(problem);
     return id;
+  }
+
+  /// F, X, Y and body need one entry per subdomain, as K has.
+  void check_array_sizes(Stack stack, long count) const {
+    const std::pair<const char*, long> sizes[] = {{"F", GetAny<KN<KN<double>>*>((*F)(stack))->N()},
+                                                  {"X", GetAny<KN<KN<double>>*>((*X)(stack))->N()},
+                                                  {"Y", GetAny<KN<KN<double>>*>((*Y)(stack))->N()},
+                                                  {"body", GetAny<KN<long>*>((*body)(stack))->N()}};
+    for (const auto& [name, n] : sizes)
+      if (n != count)
+        throw InputError(std::string(name) + ": has " + std::to_string(n) + " entries, K has " +
+                         std::to_string(count) + " subdomains");
+  }
+
+  /// K, F, coordinates and body of the subdomains `ids` this rank holds.
+  std::vector<SubdomainInput> subdomain_inputs(Stack stack, const std::vector<int>& ids) const {
+    auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
+    auto& Fs = *GetAny<KN<KN<double>>*>((*F)(stack));
+    auto& Xs = *GetAny<KN<KN<double>>*>((*X)(stack));
+    auto& Ys = *GetAny<KN<KN<double>>*>((*Y)(stack));
+    auto& bodies = *GetAny<KN<long>*>((*body)(stack));
+    std::vector<SubdomainInput> subdomains;
+    for (int s : ids) {
+      SubdomainInput sub;
+      sub.K = binding::to_sparse(Ks[s], "K[" + std::to_string(s) + "]");
+      sub.f = binding::to_vec(Fs[s]);
+      sub.x = binding::to_std(Xs[s]);
+      sub.y = binding::to_std(Ys[s]);
+      sub.body = static_cast<int>(bodies[s]);
+      subdomains.push_back(std::move(sub));
+    }
+    return subdomains;
+  }
+
+  /// dirichlet=, dirichletValues= and component= into the subdomains.
+  void add_dirichlet_and_components(Stack stack, long count, const std::vector<int>& ids, const std::vector<long>& dofs,
+                                    std::vector<SubdomainInput>& subdomains) const {
+    const auto dirichlet = binding::per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kDirichlet], stack), count, ids,
+                                                  dofs, "dirichlet");
+    const auto components = binding::per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kComponent], stack), count,
+                                                   ids, dofs, "component");
+    const auto* values = optional_pointer<KN<KN<double>>>(nargs[kDirichletValues], stack);
+    if (values && values->N() != count)
+      throw InputError("dirichletValues: has " + std::to_string(values->N()) + " entries for " +
+                       std::to_string(count) + " subdomains");
+    for (size_t k = 0; k < ids.size(); ++k) {
+      SubdomainInput& sub = subdomains[k];
+      if (!dirichlet.empty()) sub.dirichlet_dofs = dirichlet[k];
+      if (values) sub.dirichlet_values = binding::to_std((*values)[ids[k]]);
+      if (!components.empty()) sub.component = components[k];
+    }
+  }
+
+  /// contactSlave=, contactMaster=, gap=, contactSegments=, obstacle=, contactRadius=.
+  ContactInput contact_input(Stack stack, long count, const std::vector<int>& ids, const std::vector<long>& dofs) const {
+    ContactInput contact;
+    contact.slave_dofs = binding::per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kSlave], stack), count, ids,
+                                                dofs, "contactSlave");
+    contact.master_dofs = binding::per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kMaster], stack), count, ids,
+                                                 dofs, "contactMaster");
+    contact.gap = optional_real(nargs[kGap], stack, 0.0);
+    const auto segment_dofs = binding::per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kSegments], stack), count,
+                                                     ids, dofs, "contactSegments");
+    for (size_t k = 0; k < segment_dofs.size(); ++k) {
+      if (segment_dofs[k].size() % 4 != 0)
+        throw InputError("contactSegments[" + std::to_string(ids[k]) + "]: needs 4 dofs per segment (a_x, a_y, b_x, b_y)");
+      contact.master_segments.emplace_back();
+      for (size_t i = 0; i < segment_dofs[k].size(); i += 4)
+        contact.master_segments.back().push_back({segment_dofs[k][i], segment_dofs[k][i + 1],
+                                                  segment_dofs[k][i + 2], segment_dofs[k][i + 3]});
+    }
+    if (const auto* obstacle = optional_pointer<KN<double>>(nargs[kObstacle], stack)) {
+      if (obstacle->N() != 4)
+        throw InputError("obstacle: needs [point x, point y, normal x, normal y], got " +
+                         std::to_string(obstacle->N()) + " entries");
+      contact.obstacle = true;
+      contact.obstacle_point = {(*obstacle)[0], (*obstacle)[1]};
+      contact.obstacle_normal = {(*obstacle)[2], (*obstacle)[3]};
+    }
+    contact.search_distance = optional_real(nargs[kRadius], stack, contact.search_distance);
+    return contact;
+  }
+
+  /// variant=, factor=, threads=. Default variant: FETI-1 for scalar fields (the seed's),
+  /// Total FETI for vector fields, whose partially constrained subdomains it avoids.
+  FetiSetupSettings setup_settings(Stack stack) const {
+    FetiSetupSettings settings;
+    const bool vector_field = nargs[kComponent] != nullptr;
+    const std::string variant = optional_string(nargs[kVariant], stack, vector_field ? "tfeti" : "feti1");
+    if (variant == "feti1") settings.variant = FetiVariant::feti1;
+    else if (variant == "tfeti") settings.variant = FetiVariant::tfeti;
+    else throw InputError("variant: \"" + variant + "\" is not one of \"feti1\", \"tfeti\"");
+    const std::string factor = optional_string(nargs[kFactor], stack, "simplicial");
+    if (factor == "simplicial") settings.factor = FactorKind::simplicial;
+    else if (factor == "supernodal") settings.factor = FactorKind::supernodal;
+    else throw InputError("factor: \"" + factor + "\" is not one of \"simplicial\", \"supernodal\"");
+    settings.threads = static_cast<int>(optional_int(nargs[kThreads], stack, 0));
+    if (settings.threads < 0) throw InputError("threads: must be >= 0 (0: the default)");
+    return settings;
   }
 };
 
