@@ -5,6 +5,8 @@
 #include "feti/stopwatch.h"
 #include "qp/conjugate_gradient.h"
 
+#include <algorithm>
+
 namespace ffeti {
 namespace {
 
@@ -60,6 +62,7 @@ DualData DualSystem::data(std::vector<Vec> loads, const Vec& c) const {
   const int m = constraints_.rows();
   Vec d;
   F_->apply_B_pseudo_inverse(data.loads, d);
+  data.data_norm = d.norm();
   d -= c;  // d = B K^+ f - c
   if (coarse_) {
     data.e = coarse_->kernel_load(data.loads);              // e = R'f
@@ -108,7 +111,8 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
   result.path = path();
   const int m = rows();
   const double tolerance = settings.tolerance;
-  result.gradient_reference = data.b.norm() > 0 ? data.b.norm() : 1.0;
+  result.gradient_reference = std::max(data.b.norm(), settings.reference_includes_data ? data.data_norm : 0.0);
+  if (!(result.gradient_reference > 0)) result.gradient_reference = 1.0;
   result.equality_reference = data.e.norm() > 0 ? data.e.norm() : 0.0;
   Stopwatch solve_clock;
 

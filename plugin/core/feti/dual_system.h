@@ -30,6 +30,11 @@ struct DualSolveSettings {
   MprgpSettings mprgp{};            ///< used on the MPRGP path and inside SMALBE
   NormEstimateSettings norm_estimate{};
   Monitor monitor{};
+  /// Measure ||gP|| against max(||b||, ||B K^+ f||) instead of ||b||: for right-hand sides
+  /// whose b is small after cancellation (a sensitivity load f' - K'u in near equilibrium),
+  /// ||b|| lies below the round-off of the data it came from, and a tolerance relative to it
+  /// cannot be reached.
+  bool reference_includes_data = false;
 
   void validate() const;  ///< throws InputError naming the setting
 };
@@ -40,6 +45,7 @@ struct DualSolveSettings {
 struct DualData {
   std::vector<Vec> loads;
   Vec c, e, lambda_tilde, b;
+  double data_norm = 0;  ///< ||B K^+ f||: the size of what b was computed from
 };
 
 struct DualSolution {

@@ -167,7 +167,9 @@ SensitivityProblem::DirectionData SensitivityProblem::direction_data(const Desig
 SensitivityResult SensitivityProblem::direct(const DesignDerivative& direction, const DualSolveSettings& settings) {
   Stopwatch clock;
   const DirectionData d = direction_data(direction);
-  DualSolution s = system_->solve(system_->data(problem_.operator_loads(d.fbar, true), d.c), settings);
+  DualSolveSettings relative_to_data = settings;
+  relative_to_data.reference_includes_data = true;  // fbar = f' - K'u is nearly self-equilibrated
+  DualSolution s = system_->solve(system_->data(problem_.operator_loads(d.fbar, true), d.c), relative_to_data);
   SensitivityResult result;
   result.status = s.status;
   result.path = s.path;
