@@ -20,7 +20,7 @@ struct RowDerivative {
 /// empty: nothing moves). Each row keeps its pairing (segment and slave): the derivative
 /// of the linearized condition with the projection parameter xi unclamped. Computed by
 /// central differences of the row's closed form (node_to_segment_row, obstacle_row) with a
-/// step of 1e-6 of the segment length, exact to ~1e-10 relative: geometry only, no
+/// step of 1e-6 of the segment length (truncation ~1e-12, round-off ~1e-10 relative): no
 /// assembly. Node-to-node rows do not depend on positions. Collective: the velocities of
 /// the contact nodes are gathered, so every rank gets every row.
 std::vector<RowDerivative> contact_row_derivatives(const Constraints& constraints,
