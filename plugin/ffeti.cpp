@@ -387,30 +387,40 @@ SensitivityProblem& sensitivity_problem(Handle& h, double threshold) {
 /// times the state's tolerance, the accuracy to which its multipliers are known.
 double default_threshold(const Handle& h) { return std::min(1e-2, 10 * h.tolerance); }
 
-/// One design direction from the script: dK[s], dF[s] (empty entries: zero) and the node
-/// velocities velocityX[s], velocityY[s] (absent: the contact geometry does not move), for
-/// the subdomains of this rank.
-DesignDerivative design_derivative(const FetiProblem& problem, KN<Matrice_Creuse<double>>* dK, KN<KN<double>>* dF,
-                                   KN<KN<double>>* vx, KN<KN<double>>* vy) {
-  DesignDerivative d;
+/// Design directions from the script: for k directions, entry j * S + s of dK, dF (empty
+/// entries: zero) and of the node velocities velocityX, velocityY (absent: the contact
+/// geometry does not move) belongs to direction j and subdomain s (S subdomains). Only this
+/// rank's subdomains are read.
+std::vector<DesignDerivative> design_directions(const FetiProblem& problem, KN<Matrice_Creuse<double>>* dK,
+                                                KN<KN<double>>* dF, KN<KN<double>>* vx, KN<KN<double>>* vy) {
   const long count = problem.subdomain_count();
+  const long k = dK->N() / count;
+  std::vector<DesignDerivative> directions(static_cast<size_t>(std::max(k, 0L)));
   collectively(problem.communicator(), [&] {
+    if (k < 1 || dK->N() != k * count)
+      throw InputError("dK: has " + std::to_string(dK->N()) + " entries: needs " + std::to_string(count) +
+                       " per design direction (one per subdomain)");
     const std::pair<const char*, long> sizes[] = {
-        {"dK", dK->N()}, {"dF", dF->N()}, {"velocityX", vx ? vx->N() : count}, {"velocityY", vy ? vy->N() : count}};
+        {"dF", dF->N()}, {"velocityX", vx ? vx->N() : k * count}, {"velocityY", vy ? vy->N() : k * count}};
     for (const auto& [name, n] : sizes)
-      if (n != count)
-        throw InputError(std::string(name) + ": has " + std::to_string(n) + " entries for " + std::to_string(count) +
-                         " subdomains");
-    for (int s : problem.global_ids()) {
-      Matrice_Creuse<double>& matrix = (*dK)[s];
-      const bool empty = !matrix.pHM() || matrix.pHM()->n == 0;
-      d.dK.push_back(empty ? SparseMatrix() : binding::to_sparse(matrix, "dK[" + std::to_string(s) + "]"));
-      d.df.push_back(binding::to_vec((*dF)[s]));
-      if (vx) d.velocity_x.push_back(binding::to_std((*vx)[s]));
-      if (vy) d.velocity_y.push_back(binding::to_std((*vy)[s]));
+      if (n != k * count)
+        throw InputError(std::string(name) + ": has " + std::to_string(n) + " entries, dK has " +
+                         std::to_string(k * count) + " (" + std::to_string(k) + " directions of " +
+                         std::to_string(count) + " subdomains)");
+    for (long j = 0; j < k; ++j) {
+      DesignDerivative& d = directions[static_cast<size_t>(j)];
+      for (int s : problem.global_ids()) {
+        const long e = j * count + s;
+        Matrice_Creuse<double>& matrix = (*dK)[e];
+        const bool empty = !matrix.pHM() || matrix.pHM()->n == 0;
+        d.dK.push_back(empty ? SparseMatrix() : binding::to_sparse(matrix, "dK[" + std::to_string(e) + "]"));
+        d.df.push_back(binding::to_vec((*dF)[e]));
+        if (vx) d.velocity_x.push_back(binding::to_std((*vx)[e]));
+        if (vy) d.velocity_y.push_back(binding::to_std((*vy)[e]));
+      }
     }
   });
-  return d;
+  return directions;
 }
 
 DualSolveSettings sensitivity_settings(const Handle& h, Expression tol, Expression maxit, Expression verbosity,
@@ -448,17 +458,22 @@ class FetiSensitivity : public E_F0mps {
     return SetAny<long>(guarded("fetiSensitivity", [&] {
       Handle& h = handle(GetAny<long>((*id)(stack)));
       SensitivityProblem& sens = sensitivity_problem(h, optional_real(nargs[4], stack, default_threshold(h)));
-      const DesignDerivative d = design_derivative(*h.problem, GetAny<KN<Matrice_Creuse<double>>*>((*dK)(stack)),
-                                                   GetAny<KN<KN<double>>*>((*dF)(stack)),
-                                                   optional_pointer<KN<KN<double>>>(nargs[0], stack),
-                                                   optional_pointer<KN<KN<double>>>(nargs[1], stack));
-      const SensitivityResult r = sens.direct(d, sensitivity_settings(h, nargs[2], nargs[3], nargs[5], stack));
+      const std::vector<DesignDerivative> directions = design_directions(
+          *h.problem, GetAny<KN<Matrice_Creuse<double>>*>((*dK)(stack)), GetAny<KN<KN<double>>*>((*dF)(stack)),
+          optional_pointer<KN<KN<double>>>(nargs[0], stack), optional_pointer<KN<KN<double>>>(nargs[1], stack));
+      const std::vector<SensitivityResult> r =
+          sens.direct(directions, sensitivity_settings(h, nargs[2], nargs[3], nargs[5], stack));
       auto& z = *GetAny<KN<KN<double>>*>((*Z)(stack));
       const std::vector<int>& ids = h.problem->global_ids();
-      z.resize(h.problem->subdomain_count());
-      for (long s = 0; s < z.N(); ++s) z[s].resize(0);  // subdomains of other ranks stay empty
-      for (size_t k = 0; k < r.z.size(); ++k) binding::copy_to(r.z[k], z[ids[k]]);
-      return static_cast<long>(status_code(r.status));
+      const long count = h.problem->subdomain_count();
+      z.resize(count * static_cast<long>(r.size()));
+      for (long e = 0; e < z.N(); ++e) z[e].resize(0);  // subdomains of other ranks stay empty
+      SolveStatus worst = SolveStatus::converged;
+      for (size_t j = 0; j < r.size(); ++j) {
+        for (size_t k = 0; k < r[j].z.size(); ++k) binding::copy_to(r[j].z[k], z[static_cast<long>(j) * count + ids[k]]);
+        if (worst == SolveStatus::converged) worst = r[j].status;
+      }
+      return static_cast<long>(status_code(worst));
     }));
   }
 };
@@ -531,11 +546,13 @@ class FetiAdjointGradient : public E_F0mps {
     return SetAny<double>(guarded("fetiAdjointGradient", [&] {
       Handle& h = handle(GetAny<long>((*id)(stack)));
       if (!h.sensitivity) throw InputError("P: no adjoint solution: call fetiAdjoint first");
-      const DesignDerivative d = design_derivative(*h.problem, GetAny<KN<Matrice_Creuse<double>>*>((*dK)(stack)),
-                                                   GetAny<KN<KN<double>>*>((*dF)(stack)),
-                                                   optional_pointer<KN<KN<double>>>(nargs[0], stack),
-                                                   optional_pointer<KN<KN<double>>>(nargs[1], stack));
-      return h.sensitivity->adjoint_gradient(d);
+      const std::vector<DesignDerivative> d = design_directions(
+          *h.problem, GetAny<KN<Matrice_Creuse<double>>*>((*dK)(stack)), GetAny<KN<KN<double>>*>((*dF)(stack)),
+          optional_pointer<KN<KN<double>>>(nargs[0], stack), optional_pointer<KN<KN<double>>>(nargs[1], stack));
+      if (d.size() != 1)  // the same on every rank: the sizes were checked collectively
+        throw InputError("dK: " + std::to_string(d.size()) + " design directions: fetiAdjointGradient takes one (" +
+                         std::to_string(h.problem->subdomain_count()) + " entries)");
+      return h.sensitivity->adjoint_gradient(d.front());
     }));
   }
 };

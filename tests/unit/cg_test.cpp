@@ -59,5 +59,41 @@ TEST(ConjugateGradient, IndefiniteOperatorIsReported) {
   EXPECT_EQ(result.status, SolveStatus::not_positive_definite);
 }
 
+TEST(ConjugateGradient, BlockRunsEachSystemAsOnItsOwn) {
+  // Three systems with the same A finishing at different steps (different tolerances and
+  // one below round-off): each column repeats the single run's iterates and counts.
+  const Eigen::MatrixXd A = test::random_spd(60, 1e4, 6);
+  const std::vector<Vec> b = {A * Vec::LinSpaced(60, -1, 1), Vec::Ones(60), A * Vec::LinSpaced(60, 2, 0)};
+  const std::vector<double> tolerance = {1e-10, 1e-4, 1e-20};
+  std::vector<StopTest> stop;
+  for (size_t j = 0; j < b.size(); ++j)
+    stop.push_back([&, j](const Vec&, const Vec&, double norm) { return norm <= tolerance[j] * b[j].norm(); });
+  std::vector<Vec> x(b.size(), Vec::Zero(60)), g;
+  int applications = 0;
+  int block_columns = 0;
+  const std::vector<CgResult> block = conjugate_gradient_block(
+      [&](const Eigen::MatrixXd& X, Eigen::MatrixXd& Y) {
+        block_columns += static_cast<int>(X.cols());
+        Y = A * X;
+      },
+      b, x, g, {}, stop, applications);
+  int longest = 0, total = 0;
+  for (size_t j = 0; j < b.size(); ++j) {
+    Vec alone = Vec::Zero(60), g_alone;
+    const CgResult single = conjugate_gradient(test::dense_operator(A), b[j], alone, g_alone, {}, stop[j]);
+    EXPECT_EQ(block[j].status, single.status) << "system " << j;
+    EXPECT_EQ(block[j].counts.hessian, single.counts.hessian) << "system " << j;
+    EXPECT_EQ(block[j].counts.cg, single.counts.cg) << "system " << j;
+    EXPECT_LT((x[j] - alone).norm(), 1e-12 * alone.norm()) << "system " << j;
+    longest = std::max(longest, single.counts.hessian);
+    total += single.counts.hessian;
+  }
+  EXPECT_EQ(block[0].status, SolveStatus::converged);
+  EXPECT_EQ(block[2].status, SolveStatus::stagnated);
+  EXPECT_LT(block[1].counts.hessian, block[0].counts.hessian);  // finished early, left the block
+  EXPECT_EQ(applications, longest);  // one application per step of the longest run
+  EXPECT_EQ(block_columns, total);   // finished runs are not multiplied any more
+}
+
 }  // namespace
 }  // namespace ffeti

@@ -129,6 +129,30 @@ TEST_P(MembraneSensitivity, DirectMatchesFiniteDifferencesAndAdjointMatchesDirec
   EXPECT_EQ(CholmodFactor::factorizations_in_process(), after_finite_differences);
 }
 
+TEST_P(MembraneSensitivity, BlockOfDirectionsMatchesOneByOne) {
+  const MembraneDesign design;
+  const FetiProblem problem = membrane_problem(design.at(0.1), GetParam());
+  const FetiResult state = problem.solve(tight());
+  ASSERT_EQ(state.status, SolveStatus::converged);
+  std::vector<DesignDerivative> directions(3, design.derivative());
+  directions[1].dK.clear();                                  // load only
+  directions[2].df.clear();                                  // stiffness only
+  for (SparseMatrix& dK : directions[2].dK) dK *= -2.5;
+  SensitivityProblem one_by_one(problem, state, 1e-8), block(problem, state, 1e-8);
+  const long factorizations = CholmodFactor::factorizations_in_process();
+  const std::vector<SensitivityResult> together = block.direct(directions, tight());
+  ASSERT_EQ(together.size(), directions.size());
+  for (size_t j = 0; j < directions.size(); ++j) {
+    const SensitivityResult alone = one_by_one.direct(directions[j], tight());
+    ASSERT_EQ(together[j].status, SolveStatus::converged) << "direction " << j;
+    EXPECT_EQ(together[j].counts.hessian, alone.counts.hessian) << "direction " << j;
+    EXPECT_LT(relative_difference(together[j].z, alone.z), 1e-12) << "direction " << j;
+    EXPECT_LT(together[j].kkt.max(), 1e-8) << "direction " << j;
+  }
+  EXPECT_EQ(block.counters().directions, 3);
+  EXPECT_EQ(CholmodFactor::factorizations_in_process(), factorizations);
+}
+
 INSTANTIATE_TEST_SUITE_P(Variants, MembraneSensitivity, ::testing::Values(FetiVariant::feti1, FetiVariant::tfeti),
                          [](const auto& info) { return info.param == FetiVariant::feti1 ? "feti1" : "tfeti"; });
 

@@ -28,14 +28,15 @@ cholmod_sparse view_lower(const SparseMatrix& A) {
   return view;
 }
 
-cholmod_dense view_vector(const Eigen::VectorXd& v) {
+/// A cholmod_dense header over a column-major block of `rows` x `cols` values (no copy).
+cholmod_dense view_columns(const double* values, Eigen::Index rows, Eigen::Index cols) {
   cholmod_dense view;
   std::memset(&view, 0, sizeof view);
-  view.nrow = static_cast<size_t>(v.size());
-  view.ncol = 1;
-  view.nzmax = view.nrow;
+  view.nrow = static_cast<size_t>(rows);
+  view.ncol = static_cast<size_t>(cols);
+  view.nzmax = view.nrow * view.ncol;
   view.d = view.nrow;
-  view.x = const_cast<double*>(v.data());
+  view.x = const_cast<double*>(values);
   view.xtype = CHOLMOD_REAL;
   view.dtype = CHOLMOD_DOUBLE;
   return view;
@@ -51,9 +52,11 @@ CholmodFactor::CholmodFactor(FactorKind kind) {
 }
 
 CholmodFactor::~CholmodFactor() {
-  cholmod_free_dense(&solution_, &common_);
-  cholmod_free_dense(&workspace_y_, &common_);
-  cholmod_free_dense(&workspace_e_, &common_);
+  for (Workspace* w : {&vector_workspace_, &block_workspace_}) {
+    cholmod_free_dense(&w->solution, &common_);
+    cholmod_free_dense(&w->y, &common_);
+    cholmod_free_dense(&w->e, &common_);
+  }
   cholmod_free_factor(&factor_, &common_);
   cholmod_finish(&common_);
 }
@@ -85,12 +88,21 @@ int CholmodFactor::factorize(const SparseMatrix& A) {
 }
 
 void CholmodFactor::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
-  cholmod_dense rhs = view_vector(b);
-  if (!cholmod_solve2(CHOLMOD_A, factor_, &rhs, nullptr, &solution_, nullptr, &workspace_y_,
-                      &workspace_e_, &common_))
-    throw std::runtime_error("CHOLMOD solve failed");
   x.resize(b.size());
-  std::memcpy(x.data(), solution_->x, sizeof(double) * static_cast<size_t>(b.size()));
+  solve_columns(b.data(), b.size(), 1, x.data(), vector_workspace_);
+}
+
+void CholmodFactor::solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) const {
+  x.resize(b.rows(), b.cols());
+  solve_columns(b.data(), b.rows(), b.cols(), x.data(), block_workspace_);
+}
+
+void CholmodFactor::solve_columns(const double* b, Eigen::Index rows, Eigen::Index cols, double* x,
+                                  Workspace& w) const {
+  cholmod_dense rhs = view_columns(b, rows, cols);
+  if (!cholmod_solve2(CHOLMOD_A, factor_, &rhs, nullptr, &w.solution, nullptr, &w.y, &w.e, &common_))
+    throw std::runtime_error("CHOLMOD solve failed");
+  std::memcpy(x, w.solution->x, sizeof(double) * static_cast<size_t>(rows * cols));
 }
 
 long CholmodFactor::factorizations_in_process() { return numeric_factorizations.load(); }

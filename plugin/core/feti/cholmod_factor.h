@@ -32,6 +32,10 @@ class CholmodFactor {
 
   /// x = A^{-1} b. Precondition: the last factorize succeeded.
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+  /// X = A^{-1} B for a block of right-hand sides in one pass over the factor: the factor
+  /// is read once for all columns (1.3-1.9x cheaper per column than column after column for
+  /// 10 columns on 2D subdomains, docs/results/shape-optimization.md).
+  void solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) const;
 
   /// Numeric factorizations run by every CholmodFactor of this process so far (all
   /// threads): lets callers prove that a phase factorized nothing.
@@ -45,9 +49,14 @@ class CholmodFactor {
  private:
   mutable cholmod_common common_;
   cholmod_factor* factor_ = nullptr;
-  mutable cholmod_dense* solution_ = nullptr;  // reused by cholmod_solve2
-  mutable cholmod_dense* workspace_y_ = nullptr;
-  mutable cholmod_dense* workspace_e_ = nullptr;
+  struct Workspace {  // reused by cholmod_solve2 while the block width stays the same
+    cholmod_dense* solution = nullptr;
+    cholmod_dense* y = nullptr;
+    cholmod_dense* e = nullptr;
+  };
+  void solve_columns(const double* b, Eigen::Index rows, Eigen::Index cols, double* x, Workspace& w) const;
+
+  mutable Workspace vector_workspace_, block_workspace_;
   Eigen::Index size_ = 0;
 };
 

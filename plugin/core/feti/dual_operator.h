@@ -24,6 +24,11 @@ class DualOperator {
   /// added in global subdomain order (the same sum for any thread or rank count).
   void apply(const Vec& x, Vec& y) const;
 
+  /// Y = F X for a block of dual vectors (columns): one pass over each subdomain's factor
+  /// for all columns, then per column the same ordered sum as apply(). A column agrees with
+  /// apply() to round-off (CHOLMOD's block solve may order its operations differently).
+  void apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const;
+
   /// y = B K^+ v for per-subdomain vectors v_s (d = B K^+ f - c uses it).
   void apply_B_pseudo_inverse(const std::vector<Vec>& v, Vec& y) const;
 
@@ -43,6 +48,7 @@ class DualOperator {
   int rows_;
   int threads_;
   mutable std::vector<Vec> gathered_, local_rhs_, local_solution_, local_result_;
+  mutable std::vector<Eigen::MatrixXd> block_rhs_, block_solution_, block_result_;
   mutable std::vector<double> flat_;
 };
 

@@ -105,15 +105,79 @@ void DualSystem::apply_PFP(const Vec& x, Vec& y) const {
   coarse_->project(applied_, y);  // y = P F P x
 }
 
-DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& settings) const {
-  settings.validate();
+void DualSystem::apply_PFP(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
+  Eigen::MatrixXd projected(x.rows(), x.cols()), applied;
+  Vec column;
+  for (Eigen::Index j = 0; j < x.cols(); ++j) {
+    coarse_->project(x.col(j), column);
+    projected.col(j) = column;
+  }
+  F_->apply(projected, applied);
+  y.resize(x.rows(), x.cols());
+  for (Eigen::Index j = 0; j < x.cols(); ++j) {
+    coarse_->project(applied.col(j), column);
+    y.col(j) = column;
+  }
+}
+
+DualSolution DualSystem::prepared(const DualData& data, const DualSolveSettings& settings) const {
   DualSolution result;
   result.path = path();
-  const int m = rows();
-  const double tolerance = settings.tolerance;
   result.gradient_reference = std::max(data.b.norm(), settings.reference_includes_data ? data.data_norm : 0.0);
   if (!(result.gradient_reference > 0)) result.gradient_reference = 1.0;
   result.equality_reference = data.e.norm() > 0 ? data.e.norm() : 0.0;
+  return result;
+}
+
+void DualSystem::recover(const DualData& data, Vec lambda, DualSolution& result) const {
+  Stopwatch recovery_clock;
+  result.u = recover_primal(*F_, coarse_.get(), constraints_, data.loads, data.c, lambda);
+  result.lambda = std::move(lambda);
+  result.recovery_seconds = recovery_clock.seconds();
+}
+
+std::vector<DualSolution> DualSystem::solve(const std::vector<DualData>& data,
+                                            const DualSolveSettings& settings) const {
+  std::vector<DualSolution> results;
+  if (data.size() < 2 || (path() != "cg" && path() != "projected_cg")) {
+    for (const DualData& d : data) results.push_back(solve(d, settings));
+    return results;
+  }
+  settings.validate();
+  std::vector<Vec> b, mu(data.size(), Vec::Zero(rows())), g;
+  std::vector<StopTest> stop;
+  for (const DualData& d : data) {
+    results.push_back(prepared(d, settings));
+    b.push_back(d.b);
+    const double b_tol = settings.tolerance * results.back().gradient_reference;
+    stop.push_back([b_tol](const Vec&, const Vec&, double norm) { return norm <= b_tol; });
+  }
+  CgSettings cg;
+  cg.max_hessian = settings.max_hessian;
+  int applications = 0;
+  Stopwatch solve_clock;
+  const std::vector<CgResult> cg_results = conjugate_gradient_block(
+      [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) {
+        if (coarse_) apply_PFP(x, y);
+        else F_->apply(x, y);
+      },
+      b, mu, g, cg, stop, applications);
+  const double seconds = solve_clock.seconds() / static_cast<double>(data.size());
+  for (size_t j = 0; j < data.size(); ++j) {
+    results[j].status = cg_results[j].status;
+    results[j].counts = cg_results[j].counts;
+    results[j].gradient_norm = cg_results[j].gradient_norm;
+    results[j].solve_seconds = seconds;
+    recover(data[j], mu[j] + data[j].lambda_tilde, results[j]);
+  }
+  return results;
+}
+
+DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& settings) const {
+  settings.validate();
+  DualSolution result = prepared(data, settings);
+  const int m = rows();
+  const double tolerance = settings.tolerance;
   Stopwatch solve_clock;
 
   if (result.path == "cholesky") {
@@ -192,11 +256,7 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     lambda = lambda_from_shifted(mu, lower_bounds, data.lambda_tilde);
   }
   result.solve_seconds = solve_clock.seconds() - result.norm_estimate_seconds;
-
-  Stopwatch recovery_clock;
-  result.lambda = lambda;
-  result.u = recover_primal(*F_, coarse_.get(), constraints_, data.loads, data.c, lambda);
-  result.recovery_seconds = recovery_clock.seconds();
+  recover(data, std::move(lambda), result);
   return result;
 }
 

@@ -87,10 +87,19 @@ class DualSystem {
   /// Collective.
   DualSolution solve(const DualData& data, const DualSolveSettings& settings) const;
 
+  /// Solves the dual problems of several right-hand sides. On the CG paths their CG runs go
+  /// in lockstep and share each application of F (a block of vectors, one pass over each
+  /// factor); each one's iterations and counts are those of solve() alone, its solve_seconds
+  /// the block's time divided by the count. Other paths solve one after the other. Collective.
+  std::vector<DualSolution> solve(const std::vector<DualData>& data, const DualSolveSettings& settings) const;
+
  private:
   double operator_norm(bool projected, const NormEstimateSettings& settings, IterationCounts& counts,
                        double& seconds) const;
   void apply_PFP(const Vec& x, Vec& y) const;  // the projected dual operator, on reused buffers
+  void apply_PFP(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const;
+  DualSolution prepared(const DualData& data, const DualSolveSettings& settings) const;  // path, references
+  void recover(const DualData& data, Vec lambda, DualSolution& result) const;
 
   const SubdomainList& subdomains_;
   Constraints constraints_;

@@ -84,6 +84,15 @@ void Subdomain::apply_pseudo_inverse(const Vec& b, Vec& x) const {
     x[reduced_to_full_[k]] = reduced_solution_[static_cast<Eigen::Index>(k)];
 }
 
+void Subdomain::apply_pseudo_inverse(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) const {
+  const auto kept = static_cast<Eigen::Index>(reduced_to_full_.size());
+  reduced_block_rhs_.resize(kept, b.cols());
+  for (Eigen::Index k = 0; k < kept; ++k) reduced_block_rhs_.row(k) = b.row(reduced_to_full_[static_cast<size_t>(k)]);
+  factor_.solve(reduced_block_rhs_, reduced_block_solution_);
+  x.setZero(size_, b.cols());
+  for (Eigen::Index k = 0; k < kept; ++k) x.row(reduced_to_full_[static_cast<size_t>(k)]) = reduced_block_solution_.row(k);
+}
+
 double Subdomain::pseudo_inverse_residual(const SparseMatrix& K) const {
   std::mt19937 generator(7u + static_cast<unsigned>(index_));
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);

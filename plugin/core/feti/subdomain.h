@@ -29,6 +29,8 @@ class Subdomain {
   /// x = K_s^+ b: zeros at the fixing dofs, the regular block's solution elsewhere.
   /// Thread-safe across distinct subdomains, not on the same one.
   void apply_pseudo_inverse(const Vec& b, Vec& x) const;
+  /// The same for every column of b, in one pass over the factor.
+  void apply_pseudo_inverse(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) const;
 
   /// ||K K^+ K v - K v|| / ||K v|| for a fixed pseudo-random v, K the matrix this
   /// subdomain was built from (the check run at set-up).
@@ -43,6 +45,7 @@ class Subdomain {
   std::vector<int> reduced_to_full_;  // dofs kept in the regular block
   CholmodFactor factor_;
   mutable Vec reduced_rhs_, reduced_solution_;
+  mutable Eigen::MatrixXd reduced_block_rhs_, reduced_block_solution_;
 };
 
 /// Subdomains are built in parallel and hold non-movable factors: owned through pointers.

@@ -6,6 +6,85 @@
 namespace ffeti {
 namespace {
 constexpr int kMaxResidualReplacements = 2;
+
+/// One CG run advanced one multiplication at a time: next() is the vector A must multiply,
+/// take() receives the product. Lets several runs share each application of A.
+class CgRun {
+ public:
+  CgRun(const Vec& b, Vec& x, Vec& g, const CgSettings& settings, const StopTest& stop, const Monitor& monitor)
+      : b_(b), x_(x), g_(g), settings_(settings), stop_(stop), monitor_(monitor) {
+    if (x.size() != b.size()) throw std::invalid_argument("CG: x and b differ in size");
+    state_ = State::initial;  // next: A x, for g = A x - b
+  }
+
+  bool finished() const { return state_ == State::finished; }
+  const Vec& next() const { return state_ == State::step ? p_ : x_; }
+  const CgResult& result() const { return result_; }
+
+  void take(const Vec& product) {
+    ++result_.counts.hessian;
+    if (state_ == State::step) {
+      const double pAp = p_.dot(product);
+      if (!(pAp > 0)) return finish(SolveStatus::not_positive_definite);
+      const double a = g_sq_ / pAp;
+      x_ -= a * p_;        // x_{k+1} = x_k - a p
+      g_ -= a * product;   // g = A x - b
+      const double g_sq_next = g_.squaredNorm();
+      p_ = g_ + (g_sq_next / g_sq_) * p_;  // next A-conjugate direction
+      g_sq_ = g_sq_next;
+      ++result_.counts.cg;
+      ++iteration_;
+      return advance();
+    }
+    g_ = product - b_;  // the true gradient A x - b
+    g_sq_ = g_.squaredNorm();
+    if (state_ == State::verify) {
+      result_.gradient_norm = std::sqrt(g_sq_);
+      if (stop_(x_, g_, result_.gradient_norm)) return finish(SolveStatus::converged);
+      if (++replacements_ > kMaxResidualReplacements) return finish(SolveStatus::stagnated);
+      ++iteration_;
+    }
+    p_ = g_;
+    advance();
+  }
+
+ private:
+  enum class State { initial, step, verify, finished };
+
+  void finish(SolveStatus status) {
+    result_.status = status;
+    state_ = State::finished;
+  }
+
+  // From a gradient g: stop, check the true gradient, or ask for the next A p.
+  void advance() {
+    result_.gradient_norm = std::sqrt(g_sq_);
+    if (monitor_) monitor_({"cg", iteration_, result_.gradient_norm, 0.0});
+    if (stop_(x_, g_, result_.gradient_norm)) {
+      // Before any step g is the true gradient. After, the updated g drifts from A x - b by
+      // round-off; asked for more than the data's accuracy allows, it keeps falling while
+      // x does not improve: check the true one, and restart from it (residual replacement).
+      if (result_.counts.cg == 0) return finish(SolveStatus::converged);
+      state_ = State::verify;
+      return;
+    }
+    if (result_.counts.hessian >= settings_.max_hessian) return finish(SolveStatus::max_iterations);
+    state_ = State::step;
+  }
+
+  const Vec& b_;
+  Vec& x_;
+  Vec& g_;
+  const CgSettings& settings_;
+  const StopTest& stop_;
+  const Monitor& monitor_;
+  State state_;
+  Vec p_;
+  double g_sq_ = 0;
+  int iteration_ = 0, replacements_ = 0;
+  CgResult result_;
+};
+
 }  // namespace
 
 void CgSettings::validate() const {
@@ -16,59 +95,43 @@ CgResult conjugate_gradient(const LinearOperator& A, const Vec& b, Vec& x, Vec& 
                             const CgSettings& settings, const StopTest& stop,
                             const Monitor& monitor) {
   settings.validate();
-  CgResult result;
-  if (x.size() != b.size()) throw std::invalid_argument("CG: x and b differ in size");
-  IterationCounts& counts = result.counts;
-  Vec Ap(b.size());
-  A(x, Ap);
-  ++counts.hessian;
-  g = Ap - b;  // g = A x - b
-  Vec p = g;
-  double g_sq = g.squaredNorm();
-  int replacements = 0;
-  for (int iteration = 0;; ++iteration) {
-    result.gradient_norm = std::sqrt(g_sq);
-    if (monitor) monitor({"cg", iteration, result.gradient_norm, 0.0});
-    if (stop(x, g, result.gradient_norm)) {
-      if (counts.cg == 0) {  // g is the true gradient
-        result.status = SolveStatus::converged;
-        return result;
-      }
-      // The updated g drifts from A x - b by round-off; asked for more than the data's
-      // accuracy allows, it keeps falling while x does not improve. Check the true one,
-      // and restart from it (residual replacement) at most twice.
-      A(x, Ap);
-      ++counts.hessian;
-      g = Ap - b;
-      g_sq = g.squaredNorm();
-      result.gradient_norm = std::sqrt(g_sq);
-      if (stop(x, g, result.gradient_norm)) {
-        result.status = SolveStatus::converged;
-        return result;
-      }
-      if (++replacements > kMaxResidualReplacements) {
-        result.status = SolveStatus::stagnated;
-        return result;
-      }
-      p = g;
-      continue;
-    }
-    if (counts.hessian >= settings.max_hessian) return result;
-    A(p, Ap);
-    ++counts.hessian;
-    const double pAp = p.dot(Ap);
-    if (!(pAp > 0)) {
-      result.status = SolveStatus::not_positive_definite;
-      return result;
-    }
-    const double a = g_sq / pAp;
-    x -= a * p;   // x_{k+1} = x_k - a p
-    g -= a * Ap;  // g = A x - b
-    const double g_sq_next = g.squaredNorm();
-    p = g + (g_sq_next / g_sq) * p;  // next A-conjugate direction
-    g_sq = g_sq_next;
-    ++counts.cg;
+  CgRun run(b, x, g, settings, stop, monitor);
+  Vec product(b.size());
+  while (!run.finished()) {
+    A(run.next(), product);
+    run.take(product);
   }
+  return run.result();
+}
+
+std::vector<CgResult> conjugate_gradient_block(const BlockOperator& A, const std::vector<Vec>& b,
+                                               std::vector<Vec>& x, std::vector<Vec>& g,
+                                               const CgSettings& settings, const std::vector<StopTest>& stop,
+                                               int& block_applications) {
+  settings.validate();
+  if (x.size() != b.size() || stop.size() != b.size())
+    throw std::invalid_argument("CG block: b, x and stop differ in count");
+  g.resize(b.size());
+  const Monitor no_monitor;
+  std::vector<CgRun> runs;
+  runs.reserve(b.size());
+  for (size_t j = 0; j < b.size(); ++j) runs.emplace_back(b[j], x[j], g[j], settings, stop[j], no_monitor);
+  block_applications = 0;
+  Eigen::MatrixXd block, products;
+  for (;;) {
+    std::vector<size_t> open;
+    for (size_t j = 0; j < runs.size(); ++j)
+      if (!runs[j].finished()) open.push_back(j);
+    if (open.empty()) break;
+    block.resize(b[open.front()].size(), static_cast<Eigen::Index>(open.size()));
+    for (size_t c = 0; c < open.size(); ++c) block.col(static_cast<Eigen::Index>(c)) = runs[open[c]].next();
+    A(block, products);
+    ++block_applications;
+    for (size_t c = 0; c < open.size(); ++c) runs[open[c]].take(products.col(static_cast<Eigen::Index>(c)));
+  }
+  std::vector<CgResult> results;
+  for (const CgRun& run : runs) results.push_back(run.result());
+  return results;
 }
 
 }  // namespace ffeti

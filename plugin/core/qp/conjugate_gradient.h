@@ -1,13 +1,19 @@
 // Conjugate gradients for A x = b with A symmetric positive definite on the iteration's
 // subspace. With A = P F P and b in Ker G this is the projected CG of FETI-1 (Farhat-Roux).
+// Several independent systems with the same A may run in lockstep and share each
+// application of A to a block of vectors (conjugate_gradient_block): the sensitivity
+// directions of one design step do, since a subdomain factor solves a block of
+// right-hand sides in one pass.
 #pragma once
 
 #include "qp/qp_types.h"
 
+#include <vector>
+
 namespace ffeti {
 
 struct CgSettings {
-  int max_hessian = 20000;  ///< limit on Hessian multiplications
+  int max_hessian = 20000;  ///< limit on Hessian multiplications (per system)
   void validate() const;
 };
 
@@ -25,5 +31,17 @@ struct CgResult {
 CgResult conjugate_gradient(const LinearOperator& A, const Vec& b, Vec& x, Vec& g,
                             const CgSettings& settings, const StopTest& stop,
                             const Monitor& monitor = {});
+
+/// Y = A X, column by column the same operator as a LinearOperator.
+using BlockOperator = std::function<void(const Eigen::MatrixXd& x, Eigen::MatrixXd& y)>;
+
+/// conjugate_gradient for the systems A x_j = b_j, j = 0..k-1, with stop test stop[j]:
+/// every step multiplies the vectors of the unfinished systems as one block. Each system
+/// runs the same iteration, with the same counts, as on its own. `block_applications`
+/// receives the number of calls of A.
+std::vector<CgResult> conjugate_gradient_block(const BlockOperator& A, const std::vector<Vec>& b,
+                                               std::vector<Vec>& x, std::vector<Vec>& g,
+                                               const CgSettings& settings, const std::vector<StopTest>& stop,
+                                               int& block_applications);
 
 }  // namespace ffeti

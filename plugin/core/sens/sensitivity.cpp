@@ -165,26 +165,45 @@ SensitivityProblem::DirectionData SensitivityProblem::direction_data(const Desig
 }
 
 SensitivityResult SensitivityProblem::direct(const DesignDerivative& direction, const DualSolveSettings& settings) {
+  return std::move(direct(std::vector<DesignDerivative>{direction}, settings).front());
+}
+
+std::vector<SensitivityResult> SensitivityProblem::direct(const std::vector<DesignDerivative>& directions,
+                                                          const DualSolveSettings& settings) {
   Stopwatch clock;
-  const DirectionData d = direction_data(direction);
+  std::vector<DirectionData> d;
+  std::vector<DualData> dual;
+  for (const DesignDerivative& direction : directions) {
+    d.push_back(direction_data(direction));
+    dual.push_back(system_->data(problem_.operator_loads(d.back().fbar, true), d.back().c));
+  }
   DualSolveSettings relative_to_data = settings;
   relative_to_data.reference_includes_data = true;  // fbar = f' - K'u is nearly self-equilibrated
-  DualSolution s = system_->solve(system_->data(problem_.operator_loads(d.fbar, true), d.c), relative_to_data);
-  SensitivityResult result;
-  result.status = s.status;
-  result.path = s.path;
-  result.counts = s.counts;
-  result.kkt = kkt_residuals(problem_.inputs(), d.fbar, d.c, true, system_->local(), system_->F(),
-                             system_->constraints(), problem_.variant() == FetiVariant::feti1, s.u, s.lambda,
-                             problem_.communicator());
-  result.seconds = problem_.communicator().max(clock.seconds());
-  counters_.directions += 1;
-  counters_.hessian += result.counts.hessian + result.counts.hessian_norm_estimate;
-  counters_.seconds += result.seconds;
-  counters_.last = result;
-  result.z = std::move(s.u);
-  result.multipliers = std::move(s.lambda);
-  return result;
+  std::vector<DualSolution> solutions = system_->solve(dual, relative_to_data);
+  std::vector<SensitivityResult> results(directions.size());
+  for (size_t j = 0; j < directions.size(); ++j) {
+    SensitivityResult& result = results[j];
+    DualSolution& s = solutions[j];
+    result.status = s.status;
+    result.path = s.path;
+    result.counts = s.counts;
+    result.kkt = kkt_residuals(problem_.inputs(), d[j].fbar, d[j].c, true, system_->local(), system_->F(),
+                               system_->constraints(), problem_.variant() == FetiVariant::feti1, s.u, s.lambda,
+                               problem_.communicator());
+    counters_.hessian += result.counts.hessian + result.counts.hessian_norm_estimate;
+    result.z = std::move(s.u);
+    result.multipliers = std::move(s.lambda);
+  }
+  const double seconds = problem_.communicator().max(clock.seconds());
+  for (SensitivityResult& result : results) result.seconds = seconds / static_cast<double>(directions.size());
+  counters_.directions += static_cast<int>(directions.size());
+  counters_.seconds += seconds;
+  if (!results.empty()) {
+    counters_.last = results.back();
+    counters_.last.z.clear();
+    counters_.last.multipliers.resize(0);
+  }
+  return results;
 }
 
 AdjointResult SensitivityProblem::adjoint(const std::vector<Vec>& dJdu, const DualSolveSettings& settings) {

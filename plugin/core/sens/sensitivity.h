@@ -84,6 +84,12 @@ class SensitivityProblem {
   /// z = u'(alpha; beta) for one direction. Never throws for non-convergence. Collective.
   SensitivityResult direct(const DesignDerivative& direction, const DualSolveSettings& settings);
 
+  /// The same for several directions at once: on the equality-constrained paths (no weakly
+  /// active row) their dual CG runs share each application of F (DualSystem::solve of a
+  /// block); each result's seconds is its share of the whole. Collective.
+  std::vector<SensitivityResult> direct(const std::vector<DesignDerivative>& directions,
+                                        const DualSolveSettings& settings);
+
   /// Solves the adjoint problem for the cost gradient dJ/du (this rank's subdomains) and
   /// keeps (w, mu). Status weakly_active, and nothing solved, when some row is weakly
   /// active: then beta -> z is not linear and only direct() is right. Collective.
