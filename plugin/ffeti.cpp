@@ -482,12 +482,13 @@ basicAC_F0::name_and_type FetiSensitivity::name_param[] = {
     {"velocityX", &typeid(KN<KN<double>>*)}, {"velocityY", &typeid(KN<KN<double>>*)}, {"tol", &typeid(double)},
     {"maxit", &typeid(long)}, {"activeTol", &typeid(double)}, {"verbosity", &typeid(long)}};
 
-// int status = fetiAdjoint(P, dJdu, tol=, maxit=, activeTol=, verbosity=): 6 (weakly_active)
-// when some contact row is weakly active: use fetiSensitivity then.
+// int status = fetiAdjoint(P, dJdu, tol=, maxit=, activeTol=, verbosity=, w=): 6 (weakly_active)
+// when some contact row is weakly active: use fetiSensitivity then. w= receives the adjoint
+// displacement per subdomain (this rank's; the others empty), as fetiSolve's U.
 class FetiAdjoint : public E_F0mps {
  public:
   typedef long Result;
-  static const int n_name_param = 4;
+  static const int n_name_param = 5;
   static basicAC_F0::name_and_type name_param[];
   Expression nargs[n_name_param];
   Expression id, dJdu;
@@ -513,13 +514,21 @@ class FetiAdjoint : public E_F0mps {
         for (int s : h.problem->global_ids()) gradient.push_back(binding::to_vec(g[s]));
       });
       const AdjointResult r = sens.adjoint(gradient, sensitivity_settings(h, nargs[0], nargs[1], nargs[3], stack));
+      if (auto* w = optional_pointer<KN<KN<double>>>(nargs[4], stack)) {
+        const std::vector<int>& ids = h.problem->global_ids();
+        w->resize(h.problem->subdomain_count());
+        for (long s = 0; s < w->N(); ++s) (*w)[s].resize(0);
+        if (const std::vector<Vec>* solution = sens.adjoint_displacement())
+          for (size_t k = 0; k < solution->size(); ++k) binding::copy_to((*solution)[k], (*w)[ids[k]]);
+      }
       return static_cast<long>(status_code(r.status));
     }));
   }
 };
 
 basicAC_F0::name_and_type FetiAdjoint::name_param[] = {
-    {"tol", &typeid(double)}, {"maxit", &typeid(long)}, {"activeTol", &typeid(double)}, {"verbosity", &typeid(long)}};
+    {"tol", &typeid(double)}, {"maxit", &typeid(long)}, {"activeTol", &typeid(double)}, {"verbosity", &typeid(long)},
+    {"w", &typeid(KN<KN<double>>*)}};
 
 // real dJ = fetiAdjointGradient(P, dK, dF, velocityX=, velocityY=): w'fbar + mu'c~ for one
 // direction, after fetiAdjoint; no dual solve.

@@ -33,8 +33,7 @@ class CholmodFactor {
   /// x = A^{-1} b. Precondition: the last factorize succeeded.
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   /// X = A^{-1} B for a block of right-hand sides in one pass over the factor: the factor
-  /// is read once for all columns (1.3-1.9x cheaper per column than column after column for
-  /// 10 columns on 2D subdomains, docs/results/shape-optimization.md).
+  /// is read once for all columns, cheaper per column than column after column.
   void solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) const;
 
   /// Numeric factorizations run by every CholmodFactor of this process so far (all

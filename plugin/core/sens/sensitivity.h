@@ -95,6 +95,10 @@ class SensitivityProblem {
   /// active: then beta -> z is not linear and only direct() is right. Collective.
   AdjointResult adjoint(const std::vector<Vec>& dJdu, const DualSolveSettings& settings);
 
+  /// w per subdomain of this rank from the last converged adjoint(), or null: for scripts
+  /// that form w'K'u themselves from the shape derivative of their bilinear form.
+  const std::vector<Vec>* adjoint_displacement() const { return adjoint_ ? &adjoint_->u : nullptr; }
+
   /// w'fbar + mu'c~ for one direction: the part of dJ/dalpha(beta) that goes through u.
   /// Needs a converged adjoint(). No dual solve. Collective.
   double adjoint_gradient(const DesignDerivative& direction);
