@@ -14,12 +14,14 @@
 namespace ffeti {
 namespace {
 
-FetiProblem membrane_problem(const test::MembraneOptions& o, FetiVariant variant, int threads = 0) {
+FetiProblem membrane_problem(const test::MembraneOptions& o, FetiVariant variant, int threads = 0,
+                             bool dirichlet_preconditioner = false) {
   auto subs = test::membrane_subdomains(o);
   ContactInput contact = o.with_contact ? test::membrane_contact(subs) : ContactInput{};
   FetiSetupSettings setup;
   setup.variant = variant;
   setup.threads = threads;
+  setup.dirichlet_preconditioner = dirichlet_preconditioner;
   return FetiProblem(std::move(subs), contact, setup);
 }
 
@@ -170,6 +172,33 @@ TEST(FetiProblem, MembraneMatchesMonolithicActiveSetReference) {
     EXPECT_EQ(active_contact_y(problem, result, subs), reference.active_y);
     EXPECT_LT(result.kkt.max(), 1e-7) << result.kkt.equilibrium << " " << result.kkt.equality << " "
                                       << result.kkt.inequality << " " << result.kkt.complementarity;
+  }
+}
+
+TEST(FetiProblem, DirichletPreconditionerGivesTheSameSolutionInFewerSteps) {
+  // Both membranes fixed, no contact: glued subdomains, projected CG (FETI-1) and CG on the
+  // Dirichlet rows too (Total FETI), 4 x 4 subdomains per body with cross points.
+  test::MembraneOptions glued = test::membrane_options(64, 4);
+  glued.with_contact = false;
+  glued.fix_right_body = true;
+  for (FetiVariant variant : {FetiVariant::feti1, FetiVariant::tfeti}) {
+    DualSolveSettings settings;
+    settings.tolerance = 1e-10;
+    const FetiProblem plain = membrane_problem(glued, variant);
+    const FetiProblem preconditioned = membrane_problem(glued, variant, 0, true);
+    const FetiResult a = plain.solve(settings), b = preconditioned.solve(settings);
+    ASSERT_EQ(a.status, SolveStatus::converged);
+    ASSERT_EQ(b.status, SolveStatus::converged);
+    EXPECT_EQ(b.path, "projected_cg");
+    EXPECT_NEAR(b.energy, a.energy, 1e-10 * std::abs(a.energy));
+    double difference = 0, size = 0;
+    for (size_t s = 0; s < a.u.size(); ++s) {
+      difference = std::max(difference, (a.u[s] - b.u[s]).cwiseAbs().maxCoeff());
+      size = std::max(size, a.u[s].cwiseAbs().maxCoeff());
+    }
+    EXPECT_LT(difference, 1e-8 * size);
+    EXPECT_LT(b.kkt.max(), 1e-8);
+    EXPECT_LT(2 * b.counts.cg, a.counts.cg) << "plain " << a.counts.cg << ", preconditioned " << b.counts.cg;
   }
 }
 

@@ -47,6 +47,10 @@ DualSystem::DualSystem(const SubdomainList& subdomains, const std::vector<int>& 
     coarse_ = std::make_unique<CoarseSpace>(subdomains_, local_, global_ids, constraints_.rows(), bodies, comm);
 }
 
+void DualSystem::use_dirichlet_preconditioner(const std::vector<SparseMatrix>& operator_matrices, int threads) {
+  preconditioner_ = std::make_unique<DirichletPreconditioner>(operator_matrices, local_, constraints_, *sum_, threads);
+}
+
 std::string DualSystem::path() const {
   const bool inequalities = constraints_.inequality_rows() > 0;
   const bool floating = coarse_ != nullptr;
@@ -202,12 +206,20 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
       if (coarse_) apply_PFP(x, y);
       else F_->apply(x, y);
     };
+    LinearOperator M;  // P M^{-1} P: the preconditioner on Ker G
+    if (preconditioner_)
+      M = [&](const Vec& x, Vec& y) {
+        if (!coarse_) return preconditioner_->apply(x, y);
+        coarse_->project(x, projected_);
+        preconditioner_->apply(projected_, applied_);
+        coarse_->project(applied_, y);
+      };
     CgSettings cg;
     cg.max_hessian = settings.max_hessian;
     Vec mu = Vec::Zero(m), g;
     const CgResult cg_result = conjugate_gradient(
         A, data.b, mu, g, cg, [&](const Vec&, const Vec&, double norm) { return norm <= b_tol; },
-        settings.monitor);
+        settings.monitor, M);
     result.status = cg_result.status;
     result.counts = cg_result.counts;
     result.gradient_norm = cg_result.gradient_norm;

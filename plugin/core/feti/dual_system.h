@@ -7,6 +7,7 @@
 
 #include "feti/coarse_space.h"
 #include "feti/constraints.h"
+#include "feti/dirichlet_preconditioner.h"
 #include "feti/dual_operator.h"
 #include "parallel/subdomain_sum.h"
 #include "qp/norm_estimate.h"
@@ -79,6 +80,13 @@ class DualSystem {
   /// The solver path the constraints call for (ALGORITHMS.md section 6).
   std::string path() const;
 
+  /// Preconditions the CG paths with the Dirichlet preconditioner built from
+  /// `operator_matrices` (this rank's K as the dual operator sees them): one more
+  /// factorization per subdomain. The MPRGP and SMALBE paths stay unpreconditioned (their
+  /// bound constraints need a preconditioner that acts on the free set alone). Collective.
+  void use_dirichlet_preconditioner(const std::vector<SparseMatrix>& operator_matrices, int threads);
+  bool preconditioned() const { return preconditioner_ != nullptr; }
+
   /// The dual right-hand side for loads `loads` (this rank's) and constraint right-hand
   /// side `c` (all rows). Collective: two dual operator applications.
   DualData data(std::vector<Vec> loads, const Vec& c) const;
@@ -107,7 +115,8 @@ class DualSystem {
   std::unique_ptr<SubdomainSum> sum_;
   std::unique_ptr<DualOperator> F_;
   std::unique_ptr<CoarseSpace> coarse_;
-  mutable Vec projected_, applied_;                   // buffers of apply_PFP
+  std::unique_ptr<DirichletPreconditioner> preconditioner_;
+  mutable Vec projected_, applied_;                   // buffers of apply_PFP and the preconditioner
   mutable std::optional<double> norm_F_, norm_PFP_;  // cached: the same F for every load case
   mutable int norm_F_cost_ = 0, norm_PFP_cost_ = 0;
 };

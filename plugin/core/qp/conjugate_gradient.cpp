@@ -11,8 +11,9 @@ constexpr int kMaxResidualReplacements = 2;
 /// take() receives the product. Lets several runs share each application of A.
 class CgRun {
  public:
-  CgRun(const Vec& b, Vec& x, Vec& g, const CgSettings& settings, const StopTest& stop, const Monitor& monitor)
-      : b_(b), x_(x), g_(g), settings_(settings), stop_(stop), monitor_(monitor) {
+  CgRun(const Vec& b, Vec& x, Vec& g, const CgSettings& settings, const StopTest& stop, const Monitor& monitor,
+        const LinearOperator& preconditioner)
+      : b_(b), x_(x), g_(g), settings_(settings), stop_(stop), monitor_(monitor), preconditioner_(preconditioner) {
     if (x.size() != b.size()) throw std::invalid_argument("CG: x and b differ in size");
     state_ = State::initial;  // next: A x, for g = A x - b
   }
@@ -26,12 +27,13 @@ class CgRun {
     if (state_ == State::step) {
       const double pAp = p_.dot(product);
       if (!(pAp > 0)) return finish(SolveStatus::not_positive_definite);
-      const double a = g_sq_ / pAp;
+      const double a = gz_ / pAp;
       x_ -= a * p_;        // x_{k+1} = x_k - a p
       g_ -= a * product;   // g = A x - b
-      const double g_sq_next = g_.squaredNorm();
-      p_ = g_ + (g_sq_next / g_sq_) * p_;  // next A-conjugate direction
-      g_sq_ = g_sq_next;
+      g_sq_ = g_.squaredNorm();
+      const double gz_next = precondition();
+      p_ = z_ + (gz_next / gz_) * p_;  // next A-conjugate direction
+      gz_ = gz_next;
       ++result_.counts.cg;
       ++iteration_;
       return advance();
@@ -44,7 +46,8 @@ class CgRun {
       if (++replacements_ > kMaxResidualReplacements) return finish(SolveStatus::stagnated);
       ++iteration_;
     }
-    p_ = g_;
+    gz_ = precondition();
+    p_ = z_;
     advance();
   }
 
@@ -54,6 +57,16 @@ class CgRun {
   void finish(SolveStatus status) {
     result_.status = status;
     state_ = State::finished;
+  }
+
+  // z = M g (z = g without a preconditioner); returns g'z.
+  double precondition() {
+    if (preconditioner_) {
+      preconditioner_(g_, z_);
+      return g_.dot(z_);
+    }
+    z_ = g_;
+    return g_sq_;
   }
 
   // From a gradient g: stop, check the true gradient, or ask for the next A p.
@@ -78,9 +91,10 @@ class CgRun {
   const CgSettings& settings_;
   const StopTest& stop_;
   const Monitor& monitor_;
+  const LinearOperator& preconditioner_;
   State state_;
-  Vec p_;
-  double g_sq_ = 0;
+  Vec p_, z_;
+  double g_sq_ = 0, gz_ = 0;
   int iteration_ = 0, replacements_ = 0;
   CgResult result_;
 };
@@ -93,9 +107,9 @@ void CgSettings::validate() const {
 
 CgResult conjugate_gradient(const LinearOperator& A, const Vec& b, Vec& x, Vec& g,
                             const CgSettings& settings, const StopTest& stop,
-                            const Monitor& monitor) {
+                            const Monitor& monitor, const LinearOperator& preconditioner) {
   settings.validate();
-  CgRun run(b, x, g, settings, stop, monitor);
+  CgRun run(b, x, g, settings, stop, monitor, preconditioner);
   Vec product(b.size());
   while (!run.finished()) {
     A(run.next(), product);
@@ -113,9 +127,11 @@ std::vector<CgResult> conjugate_gradient_block(const BlockOperator& A, const std
     throw std::invalid_argument("CG block: b, x and stop differ in count");
   g.resize(b.size());
   const Monitor no_monitor;
+  const LinearOperator no_preconditioner;
   std::vector<CgRun> runs;
   runs.reserve(b.size());
-  for (size_t j = 0; j < b.size(); ++j) runs.emplace_back(b[j], x[j], g[j], settings, stop[j], no_monitor);
+  for (size_t j = 0; j < b.size(); ++j)
+    runs.emplace_back(b[j], x[j], g[j], settings, stop[j], no_monitor, no_preconditioner);
   block_applications = 0;
   Eigen::MatrixXd block, products;
   for (;;) {

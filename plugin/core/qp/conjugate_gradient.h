@@ -28,9 +28,12 @@ struct CgResult {
 /// (recomputed once the updated one passes the test: one more multiplication); if it fails
 /// the test, CG restarts from it, and after two such restarts returns `stagnated`: the
 /// tolerance asked for lies below what round-off lets the data reach.
+/// With a `preconditioner` M (symmetric positive definite on the iteration's subspace)
+/// this is preconditioned CG: directions from M g instead of g; the stop test still
+/// receives ||g||_2.
 CgResult conjugate_gradient(const LinearOperator& A, const Vec& b, Vec& x, Vec& g,
                             const CgSettings& settings, const StopTest& stop,
-                            const Monitor& monitor = {});
+                            const Monitor& monitor = {}, const LinearOperator& preconditioner = {});
 
 /// Y = A X, column by column the same operator as a LinearOperator.
 using BlockOperator = std::function<void(const Eigen::MatrixXd& x, Eigen::MatrixXd& y)>;

@@ -1,0 +1,122 @@
+#include "feti/dirichlet_preconditioner.h"
+
+#include "feti/dual_operator.h"
+#include "feti/errors.h"
+
+#include <map>
+#include <string>
+
+namespace ffeti {
+namespace {
+
+/// The rows and columns `rows` x `cols` of K.
+SparseMatrix submatrix(const SparseMatrix& K, const std::vector<int>& rows, const std::vector<int>& cols) {
+  std::vector<int> row_position(static_cast<size_t>(K.rows()), -1), column_position(static_cast<size_t>(K.cols()), -1);
+  for (size_t k = 0; k < rows.size(); ++k) row_position[static_cast<size_t>(rows[k])] = static_cast<int>(k);
+  for (size_t k = 0; k < cols.size(); ++k) column_position[static_cast<size_t>(cols[k])] = static_cast<int>(k);
+  std::vector<Eigen::Triplet<double, int>> entries;
+  for (int j = 0; j < K.outerSize(); ++j) {
+    if (column_position[static_cast<size_t>(j)] < 0) continue;
+    for (SparseMatrix::InnerIterator it(K, j); it; ++it)
+      if (row_position[static_cast<size_t>(it.row())] >= 0)
+        entries.emplace_back(row_position[static_cast<size_t>(it.row())], column_position[static_cast<size_t>(j)],
+                             it.value());
+  }
+  SparseMatrix block(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(cols.size()));
+  block.setFromTriplets(entries.begin(), entries.end());
+  block.makeCompressed();
+  return block;
+}
+
+/// B B' over all rows (entries of the same (subdomain, dof) are the same column of B).
+SparseMatrix row_gram(const Constraints& c) {
+  std::map<std::pair<int, int>, int> column;
+  std::vector<Eigen::Triplet<double, int>> entries;
+  for (int r = 0; r < c.rows(); ++r)
+    for (int e = c.row_start[static_cast<size_t>(r)]; e < c.row_start[static_cast<size_t>(r) + 1]; ++e) {
+      const ConstraintEntry& entry = c.entries[static_cast<size_t>(e)];
+      const auto [it, added] = column.try_emplace({entry.subdomain, entry.dof}, static_cast<int>(column.size()));
+      entries.emplace_back(r, it->second, entry.coefficient);
+    }
+  SparseMatrix B(c.rows(), static_cast<Eigen::Index>(column.size()));
+  B.setFromTriplets(entries.begin(), entries.end());
+  SparseMatrix gram = B * SparseMatrix(B.transpose());
+  gram.makeCompressed();
+  return gram;
+}
+
+}  // namespace
+
+/// S_s of one subdomain on its constrained dofs.
+struct DirichletPreconditioner::Block {
+  std::vector<int> boundary, interior;
+  SparseMatrix Kbb, Kib;
+  CholmodFactor Kii;
+  mutable Vec xb, t, ti, yb, full;
+};
+
+DirichletPreconditioner::DirichletPreconditioner(const std::vector<SparseMatrix>& operator_matrices,
+                                                 const std::vector<LocalConstraints>& local,
+                                                 const Constraints& constraints, const SubdomainSum& sum,
+                                                 int threads)
+    : local_(local), sum_(sum), threads_(resolve_thread_count(threads)) {
+  // B has full row rank, so B B' is positive definite (block diagonal: rows meet only at
+  // the nodes they share).
+  if (constraints.rows() > 0 && row_gram_.factorize(row_gram(constraints)) >= 0)
+    throw InputError("constraints: B B' is not positive definite (Dirichlet preconditioner)");
+  blocks_.resize(local.size());
+  results_.resize(local.size());
+  const int count = static_cast<int>(local.size());
+#pragma omp parallel for schedule(dynamic) num_threads(threads_)
+  for (int s = 0; s < count; ++s) {
+    const auto k = static_cast<size_t>(s);
+    auto block = std::make_unique<Block>();
+    const SparseMatrix& K = operator_matrices[k];
+    std::vector<char> constrained(static_cast<size_t>(K.rows()), 0);
+    for (int j = 0; j < local[k].B.outerSize(); ++j)
+      if (SparseMatrix::InnerIterator(local[k].B, j)) constrained[static_cast<size_t>(j)] = 1;
+    for (int i = 0; i < K.rows(); ++i) (constrained[static_cast<size_t>(i)] ? block->boundary : block->interior).push_back(i);
+    block->Kbb = submatrix(K, block->boundary, block->boundary);
+    block->Kib = submatrix(K, block->interior, block->boundary);
+    // K_ii is K with every constrained dof fixed: regular whenever some dof is constrained.
+    if (!block->interior.empty() && block->Kii.factorize(submatrix(K, block->interior, block->interior)) >= 0)
+      throw InputError("K[" + std::to_string(s) + "]: its interior block is not positive definite "
+                       "(Dirichlet preconditioner)");
+    blocks_[k] = std::move(block);
+  }
+}
+
+DirichletPreconditioner::~DirichletPreconditioner() = default;
+
+void DirichletPreconditioner::apply(const Vec& x, Vec& y) const {
+  row_gram_.solve(x, scaled_);  // (B B')^{-1} x
+  const int count = static_cast<int>(local_.size());
+#pragma omp parallel for schedule(dynamic) num_threads(threads_)
+  for (int s = 0; s < count; ++s) {
+    const auto k = static_cast<size_t>(s);
+    const LocalConstraints& L = local_[k];
+    if (L.rows.empty()) continue;
+    Block& b = *blocks_[k];
+    Vec gathered(static_cast<Eigen::Index>(L.rows.size()));
+    for (size_t r = 0; r < L.rows.size(); ++r) gathered[static_cast<Eigen::Index>(r)] = scaled_[L.rows[r]];
+    b.full.noalias() = L.B.transpose() * gathered;
+    b.xb.resize(static_cast<Eigen::Index>(b.boundary.size()));
+    for (size_t i = 0; i < b.boundary.size(); ++i) b.xb[static_cast<Eigen::Index>(i)] = b.full[b.boundary[i]];
+    b.yb.noalias() = b.Kbb * b.xb;  // S x_b = K_bb x_b - K_bi K_ii^{-1} K_ib x_b
+    if (!b.interior.empty()) {
+      b.t.noalias() = b.Kib * b.xb;
+      b.Kii.solve(b.t, b.ti);
+      b.yb.noalias() -= b.Kib.transpose() * b.ti;
+    }
+    b.full.setZero();
+    for (size_t i = 0; i < b.boundary.size(); ++i) b.full[b.boundary[i]] = b.yb[static_cast<Eigen::Index>(i)];
+    results_[k].noalias() = L.B * b.full;
+  }
+  flat_.clear();
+  for (size_t k = 0; k < local_.size(); ++k)
+    flat_.insert(flat_.end(), results_[k].data(), results_[k].data() + results_[k].size());
+  sum_.sum(flat_, summed_);
+  row_gram_.solve(summed_, y);
+}
+
+}  // namespace ffeti

@@ -1,0 +1,47 @@
+// The Dirichlet preconditioner of the FETI dual problem (Farhat, Mandel, Roux), scaled for
+// non-redundant gluing rows (Rixen, Farhat):
+//   M^{-1} = A (sum_s B_s S_s B_s') A,  A = (B B')^{-1},  S_s = K_bb - K_bi K_ii^{-1} K_ib,
+// b the dofs of subdomain s that its constraint rows touch, i the others. B B' is block
+// diagonal (rows meet only where they share a node): at a node shared by m subdomains its
+// m - 1 gluing rows make one block, and A reduces to the multiplicity scaling 1/m where the
+// node has one row. It bounds the condition number of the projected operator by C (1 + log H/h)^2, so that
+// projected CG takes a number of iterations bounded in h and in the number of subdomains
+// (docs/results/scalability.md). Costs one more factorization per subdomain (K_ii) and per
+// application one K_ii solve per subdomain, as much as an application of F.
+#pragma once
+
+#include "feti/cholmod_factor.h"
+#include "feti/constraints.h"
+#include "parallel/subdomain_sum.h"
+
+#include <memory>
+#include <vector>
+
+namespace ffeti {
+
+class DirichletPreconditioner {
+ public:
+  /// `operator_matrices[k]`: the K of local subdomain k as the dual operator sees it;
+  /// `local[k]` its constraint block; `constraints` all rows (every rank's copy); `sum` the
+  /// ordered sum over subdomains of F. Keeps references to `local` and `sum`.
+  DirichletPreconditioner(const std::vector<SparseMatrix>& operator_matrices,
+                          const std::vector<LocalConstraints>& local, const Constraints& constraints,
+                          const SubdomainSum& sum, int threads);
+  ~DirichletPreconditioner();
+
+  /// y = M^{-1} x. Collective.
+  void apply(const Vec& x, Vec& y) const;
+
+ private:
+  struct Block;
+  const std::vector<LocalConstraints>& local_;
+  const SubdomainSum& sum_;
+  int threads_;
+  CholmodFactor row_gram_;  // of B B'
+  std::vector<std::unique_ptr<Block>> blocks_;
+  mutable Vec scaled_, summed_;
+  mutable std::vector<Vec> results_;
+  mutable std::vector<double> flat_;
+};
+
+}  // namespace ffeti
