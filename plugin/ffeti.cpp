@@ -141,7 +141,7 @@ std::string optional_string(Expression e, Stack stack, const std::string& fallba
 class FetiSetup : public E_F0mps {
  public:
   typedef long Result;
-  static const int n_name_param = 13;
+  static const int n_name_param = 14;
   static basicAC_F0::name_and_type name_param[];
   Expression nargs[n_name_param];
   Expression K, F, X, Y, body;
@@ -167,7 +167,7 @@ class FetiSetup : public E_F0mps {
  private:
   // Named parameters by position in name_param.
   enum Named { kDirichlet, kDirichletValues, kSlave, kMaster, kGap, kComponent, kVariant, kFactor, kThreads,
-               kComm, kSegments, kObstacle, kRadius };
+               kComm, kSegments, kObstacle, kRadius, kPreconditioner };
 
   long setup(Stack stack) const {
     auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
@@ -282,7 +282,7 @@ class FetiSetup : public E_F0mps {
     return contact;
   }
 
-  /// variant=, factor=, threads=. Default variant: FETI-1 for scalar fields (the seed's),
+  /// variant=, factor=, threads=, preconditioner=. Default variant: FETI-1 for scalar fields (the seed's),
   /// Total FETI for vector fields, whose partially constrained subdomains it avoids.
   FetiSetupSettings setup_settings(Stack stack) const {
     FetiSetupSettings settings;
@@ -297,6 +297,10 @@ class FetiSetup : public E_F0mps {
     else throw InputError("factor: \"" + factor + "\" is not one of \"simplicial\", \"supernodal\"");
     settings.threads = static_cast<int>(optional_int(nargs[kThreads], stack, 0));
     if (settings.threads < 0) throw InputError("threads: must be >= 0 (0: the default)");
+    const std::string preconditioner = optional_string(nargs[kPreconditioner], stack, "none");
+    if (preconditioner == "dirichlet") settings.dirichlet_preconditioner = true;
+    else if (preconditioner != "none")
+      throw InputError("preconditioner: \"" + preconditioner + "\" is not one of \"none\", \"dirichlet\"");
     return settings;
   }
 };
@@ -308,7 +312,7 @@ basicAC_F0::name_and_type FetiSetup::name_param[] = {
     {"variant", &typeid(std::string*)},          {"factor", &typeid(std::string*)},
     {"threads", &typeid(long)},                  {"comm", &typeid(pcommworld)},
     {"contactSegments", &typeid(KN<KN<long>>*)}, {"obstacle", &typeid(KN<double>*)},
-    {"contactRadius", &typeid(double)}};
+    {"contactRadius", &typeid(double)},          {"preconditioner", &typeid(std::string*)}};
 
 // ---- int status = fetiSolve(P, U, lambda=..., tol=..., maxit=..., algorithm=..., verbosity=...)
 class FetiSolve : public E_F0mps {

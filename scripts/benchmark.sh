@@ -6,7 +6,8 @@
 #   ./scripts/benchmark.sh parallel        MPI ranks and OpenMP threads, h = 1/1024 (~3 min)
 #   ./scripts/benchmark.sh hertz           cylinder on a block against Hertz, mesh refinement
 #   ./scripts/benchmark.sh multibody       three stacked bodies: figures and a von Mises picture
-#   ./scripts/benchmark.sh shape-optimization  design loops, gradient costs and checks (~10 min)
+#   ./scripts/benchmark.sh shape-optimization  design loops, gradient costs and checks (~6 min)
+#   ./scripts/benchmark.sh scalability     Hessian multiplications over h, with and without contact (~2 min)
 #   ./scripts/benchmark.sh                 all
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -21,10 +22,12 @@ case "${1:-all}" in
   hertz) /usr/bin/python3 "$root/scripts/hertz_benchmark.py" ;;
   multibody) /usr/bin/python3 "$root/scripts/multibody_picture.py" ;;
   shape-optimization) /usr/bin/python3 "$root/scripts/shape_optimization_benchmark.py" ;;
+  scalability) /usr/bin/python3 "$root/scripts/scalability_benchmark.py" ;;
   all) /usr/bin/python3 "$root/scripts/model_problem_benchmark.py"
        /usr/bin/python3 "$root/scripts/parallel_benchmark.py"
        /usr/bin/python3 "$root/scripts/hertz_benchmark.py"
        /usr/bin/python3 "$root/scripts/multibody_picture.py"
-       /usr/bin/python3 "$root/scripts/shape_optimization_benchmark.py" ;;
-  *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization]" >&2; exit 2 ;;
+       /usr/bin/python3 "$root/scripts/shape_optimization_benchmark.py"
+       /usr/bin/python3 "$root/scripts/scalability_benchmark.py" ;;
+  *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization|scalability]" >&2; exit 2 ;;
 esac
