@@ -202,6 +202,29 @@ TEST(FetiProblem, DirichletPreconditionerGivesTheSameSolutionInFewerSteps) {
   }
 }
 
+TEST(FetiProblem, DirichletPreconditionerInFaceKeepsTheContactSolution) {
+  // The membranes with contact: SMALBE-M (FETI-1, 4 x 4 subdomains per body, a floating
+  // membrane) and MPRGP (one subdomain per body, both fixed: nothing floats),
+  // preconditioned in face against unpreconditioned.
+  for (bool fix_right : {false, true}) {
+    test::MembraneOptions o = test::membrane_options(64, fix_right ? 1 : 4);
+    o.fix_right_body = fix_right;
+    DualSolveSettings settings;
+    settings.tolerance = 1e-10;
+    const FetiResult a = membrane_problem(o, FetiVariant::feti1).solve(settings);
+    const FetiResult b = membrane_problem(o, FetiVariant::feti1, 0, true).solve(settings);
+    ASSERT_EQ(a.status, SolveStatus::converged);
+    ASSERT_EQ(b.status, SolveStatus::converged);
+    EXPECT_EQ(b.path, fix_right ? "mprgp" : "smalbe");
+    EXPECT_NEAR(b.energy, a.energy, 1e-10 * std::abs(a.energy));
+    EXPECT_EQ(b.active_contact, a.active_contact);
+    EXPECT_LT(b.kkt.max(), 1e-7);
+    if (fix_right) continue;  // the fixed membranes part at once: nothing to iterate
+    EXPECT_GT(b.counts.preconditioner, 0);
+    EXPECT_LT(b.counts.hessian, a.counts.hessian) << "plain " << a.counts.hessian << ", in face " << b.counts.hessian;
+  }
+}
+
 TEST(FetiProblem, SeedToleranceGivesSmallKktResidualsAndBoundedIterations) {
   const FetiProblem problem = membrane_problem(test::membrane_options(32, 2), FetiVariant::feti1);
   const FetiResult result = problem.solve();

@@ -229,9 +229,11 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     MprgpSettings mprgp_settings = settings.mprgp;
     mprgp_settings.max_hessian = settings.max_hessian;
     Vec x = Vec::Zero(m), g;
+    LinearOperator M;
+    if (preconditioner_) M = [&](const Vec& v, Vec& y) { preconditioner_->apply(v, y); };
     const MprgpResult r = mprgp(
         [&](const Vec& v, Vec& y) { F_->apply(v, y); }, data.b, lower_bounds, norm, x, g, false, mprgp_settings,
-        [&](const Vec&, const Vec&, double norm_gp) { return norm_gp <= b_tol; }, settings.monitor);
+        [&](const Vec&, const Vec&, double norm_gp) { return norm_gp <= b_tol; }, settings.monitor, M);
     const int estimate = result.counts.hessian_norm_estimate;
     result.counts = r.counts;
     result.counts.hessian_norm_estimate = estimate;
@@ -249,6 +251,7 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     problem.b = &data.b;
     problem.lower = &lower_bounds;
     problem.hessian_norm = norm;
+    if (preconditioner_) problem.preconditioner = [&](const Vec& v, Vec& y) { preconditioner_->apply(v, y); };
     SmalbeSettings smalbe_settings = settings.smalbe;
     smalbe_settings.max_hessian = settings.max_hessian;
     smalbe_settings.inner = settings.mprgp;

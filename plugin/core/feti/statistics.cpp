@@ -39,6 +39,7 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
       {"expansion", result->counts.expansion},
       {"proportioning", result->counts.proportioning},
       {"penalty_increases", result->counts.penalty_increases},
+      {"preconditioner_applications", result->counts.preconditioner},
       {"energy", result->energy},
       {"gradient_norm", result->gradient_norm},
       {"gradient_reference", result->gradient_reference},

@@ -63,6 +63,7 @@ class CgRun {
   double precondition() {
     if (preconditioner_) {
       preconditioner_(g_, z_);
+      ++result_.counts.preconditioner;
       return g_.dot(z_);
     }
     z_ = g_;

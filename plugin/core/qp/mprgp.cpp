@@ -44,7 +44,7 @@ Vec projected_gradient(const Vec& x, const Vec& g, const Vec& lower) {
 
 MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, double a_norm,
                   Vec& x, Vec& g, bool gradient_is_current, const MprgpSettings& settings,
-                  const StopTest& stop, const Monitor& monitor) {
+                  const StopTest& stop, const Monitor& monitor, const LinearOperator& preconditioner) {
   settings.validate();
   MprgpResult result;
   const Eigen::Index n = b.size();
@@ -55,7 +55,16 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
   IterationCounts& counts = result.counts;
 
   auto multiply = [&](const Vec& v, Vec& Av) { A(v, Av); ++counts.hessian; };
-  Vec phi(n), beta(n), p(n), Ap(n);
+  Vec phi(n), beta(n), p(n), Ap(n), z(n);
+  // z = M phi on the free set, 0 on the active set (z = phi without a preconditioner).
+  const auto precondition_in_face = [&]() -> const Vec& {
+    if (!preconditioner) return phi;
+    preconditioner(phi, z);
+    ++counts.preconditioner;
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (!is_free(x[i], lower[i])) z[i] = 0.0;
+    return z;
+  };
 
   if (!gradient_is_current) {
     project(x, lower);
@@ -64,7 +73,7 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
     g = Ap - b;  // g = A x - b
   }
   free_gradient(x, g, lower, phi);
-  p = phi;
+  p = precondition_in_face();
 
   for (int iteration = 0;; ++iteration) {
     // Split the gradient; chopped gradient beta and reduced free gradient phit.
@@ -103,7 +112,8 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
         x -= a_cg * p;   // x_{k+1} = x_k - a_cg p
         g -= a_cg * Ap;  // g = A x - b
         free_gradient(x, g, lower, phi);
-        p = phi - (phi.dot(Ap) / pAp) * p;  // A-conjugate to the previous direction
+        const Vec& direction = precondition_in_face();
+        p = direction - (direction.dot(Ap) / pAp) * p;  // A-conjugate to the previous direction
         ++counts.cg;
       } else {
         x -= a_f * p;
@@ -114,7 +124,7 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
         multiply(x, Ap);
         g = Ap - b;
         free_gradient(x, g, lower, phi);
-        p = phi;
+        p = precondition_in_face();
         ++counts.expansion;
       }
     } else {
@@ -129,7 +139,7 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
       x -= a * beta;
       g -= a * Ap;
       free_gradient(x, g, lower, phi);
-      p = phi;
+      p = precondition_in_face();
       ++counts.proportioning;
     }
   }

@@ -29,8 +29,12 @@ Vec projected_gradient(const Vec& x, const Vec& g, const Vec& lower);
 /// last iterate and g = Ax - b at it. If `gradient_is_current` is true, g on entry must
 /// already equal Ax - b at the (feasible) x, saving one multiplication (warm restarts).
 /// `a_norm` is an upper estimate of ||A||_2. `stop` receives ||gP(x)||_2.
+/// With a `preconditioner` M (symmetric positive definite), the conjugate gradient steps
+/// are preconditioned in face: their directions come from M applied to the free gradient,
+/// restricted to the free set (an SPD preconditioner of the face's reduced problem); the
+/// expansion and proportioning steps, and so the convergence guarantees, are unchanged.
 MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, double a_norm,
                   Vec& x, Vec& g, bool gradient_is_current, const MprgpSettings& settings,
-                  const StopTest& stop, const Monitor& monitor = {});
+                  const StopTest& stop, const Monitor& monitor = {}, const LinearOperator& preconditioner = {});
 
 }  // namespace ffeti

@@ -23,6 +23,7 @@ IterationCounts& IterationCounts::operator+=(const IterationCounts& other) {
   expansion += other.expansion;
   proportioning += other.proportioning;
   penalty_increases += other.penalty_increases;
+  preconditioner += other.preconditioner;
   return *this;
 }
 

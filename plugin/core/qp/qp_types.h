@@ -40,6 +40,7 @@ struct IterationCounts {
   int expansion = 0;    ///< MPRGP expansion steps
   int proportioning = 0;///< MPRGP proportioning steps
   int penalty_increases = 0;  ///< SMALBE: times the penalty rho grew
+  int preconditioner = 0;     ///< applications of a preconditioner (about the cost of one of F)
 
   IterationCounts& operator+=(const IterationCounts& other);
 };

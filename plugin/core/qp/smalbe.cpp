@@ -52,6 +52,17 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
     Av += rho * Qv;
   };
 
+  LinearOperator inner_preconditioner;
+  Vec Pv(n), Mv(n), QMv(n), Qp(n);  // the preconditioner's buffers
+  if (problem.preconditioner)
+    inner_preconditioner = [&](const Vec& v, Vec& y) {
+      problem.range_projector(v, Qp);
+      Pv = v - Qp;
+      problem.preconditioner(Pv, Mv);
+      problem.range_projector(Mv, QMv);
+      y = Mv - QMv + Qp / rho;  // P M P v + Q v / rho
+    };
+
   for (int outer = 0;; ++outer) {
     bool globally_done = false;
     bool first_call = true;
@@ -79,7 +90,7 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
     inner.max_hessian = settings.max_hessian - result.counts.hessian;
     const MprgpResult inner_result =
         mprgp(A, shifted_b, lower, std::max(problem.hessian_norm, rho), x, g,
-              gradient_is_current, inner, inner_stop);
+              gradient_is_current, inner, inner_stop, {}, inner_preconditioner);
     result.counts += inner_result.counts;
     result.rho = rho;
     if (globally_done) {

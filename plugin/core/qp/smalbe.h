@@ -44,6 +44,10 @@ struct SmalbeProblem {
   const Vec* b = nullptr;
   const Vec* lower = nullptr;              ///< kUnbounded where a component is free
   double hessian_norm = 0;                 ///< upper estimate of ||H||_2
+  /// Optional: an SPD approximation of H^{-1} on Ker C. The inner MPRGP then
+  /// preconditions in face with P M P + Q / rho (P = I - Q), the inverse's approximation
+  /// of H + rho Q.
+  LinearOperator preconditioner;
 };
 
 /// Global stopping test: x, ||gP(x, nu, 0)||_2 (projected gradient of the Lagrangian
