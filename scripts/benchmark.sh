@@ -7,7 +7,8 @@
 #   ./scripts/benchmark.sh hertz           cylinder on a block against Hertz, mesh refinement
 #   ./scripts/benchmark.sh multibody       three stacked bodies: figures and a von Mises picture
 #   ./scripts/benchmark.sh shape-optimization  design loops, gradient costs and checks (~6 min)
-#   ./scripts/benchmark.sh scalability     Hessian multiplications over h, with and without contact (~2 min)
+#   ./scripts/benchmark.sh scalability     Hessian multiplications over h up to n = 2048, with and
+#                                          without contact, with and without preconditioner (~10 min)
 #   ./scripts/benchmark.sh                 all
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
