@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# Memory errors and undefined behaviour, in two independent ways:
+# 1. AddressSanitizer + UndefinedBehaviorSanitizer: the core and the plugin built with both
+#    (build-asan/), the unit tests run, then .edp scenes through FreeFEM with the sanitized
+#    plugin. FreeFEM is not instrumented, so the ASan runtime is preloaded; for the FreeFEM
+#    processes leak detection is off and alloc_dealloc_mismatch is off, both reporting
+#    FreeFEM's own code (its environment parsing frees with delete what libstdc++ allocated
+#    with malloc), not the plugin's.
+# 2. valgrind memcheck: the released plugin (build/) on .edp scenes, every memory error and
+#    every definite leak an error, FreeFEM's own leaks suppressed (tests/valgrind-freefem.supp
+#    says which and why).
+# Installs valgrind if missing. About 10 minutes on 2 cores (most of it the sanitized build).
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+"$root/scripts/setup.sh"
+if ! command -v valgrind >/dev/null; then
+  as_root=(); [ "$(id -u)" -eq 0 ] || as_root=(sudo)
+  "${as_root[@]}" apt-get install -y -qq valgrind >/dev/null
+fi
+# Scenes: contact through FETI-1 and Total FETI, node-to-segment contact, obstacles,
+# sensitivities and adjoints, bad input caught by try.
+scenes=("$root/edp/example.edp"
+        "$root/tests/edp/elastic-contact.edp"
+        "$root/tests/edp/bad-input.edp"
+        "$root/tests/edp/sensitivity-membrane.edp"
+        "$root/tests/edp/sensitivity-elastic.edp -scene 0"
+        "$root/tests/edp/sensitivity-elastic.edp -scene 1")
+label() { local script=${1%% *}; echo "$(basename "$script")${1#"$script"}"; }
+failures=0
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
+
+echo "== AddressSanitizer + UndefinedBehaviorSanitizer"
+asan="$root/build-asan"
+cmake -S "$root" -B "$asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" >/dev/null
+cmake --build "$asan" -j "$(nproc)" >/dev/null
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+if ASAN_OPTIONS=detect_leaks=1 "$asan/tests/ffeti_unit_tests" >"$log" 2>&1; then
+  echo "ok: unit tests ($(grep -o '[0-9]* tests from [0-9]* test suites ran' "$log"))"
+else
+  echo "FAILED: unit tests"; grep -E "ERROR|runtime error|FAILED" -A8 "$log" | head -40; failures=$((failures + 1))
+fi
+for scene in "${scenes[@]}"; do
+  # shellcheck disable=SC2086  # a scene is a script and its arguments
+  if (cd "$asan/edp-tests" && LD_PRELOAD=$(gcc -print-file-name=libasan.so) \
+        ASAN_OPTIONS=detect_leaks=0:alloc_dealloc_mismatch=0 FreeFem++-nw -v 0 $scene >"$log" 2>&1) &&
+     ! grep -qE "AddressSanitizer|runtime error" "$log"; then
+    echo "ok: sanitized $(label "$scene")"
+  else
+    echo "FAILED: sanitized $scene"; grep -E "ERROR|runtime error" -A12 "$log" | head -40; failures=$((failures + 1))
+  fi
+done
+
+echo "== valgrind memcheck"
+for scene in "${scenes[@]}"; do
+  # shellcheck disable=SC2086
+  if (cd "$root/build/edp-tests" && valgrind --error-exitcode=3 --leak-check=full --show-leak-kinds=definite \
+        --errors-for-leak-kinds=definite --num-callers=30 --suppressions="$root/tests/valgrind-freefem.supp" \
+        FreeFem++-nw -v 0 $scene >"$log" 2>&1); then
+    echo "ok: memcheck $(label "$scene"): $(grep -o 'ERROR SUMMARY: .*' "$log")"
+  else
+    echo "FAILED: memcheck $scene"; grep -E "Invalid|uninitialised|definitely lost|ERROR SUMMARY" -A10 "$log" | head -40
+    failures=$((failures + 1))
+  fi
+done
+[ "$failures" -eq 0 ] && echo "memory check: clean" || { echo "memory check: $failures failure(s)"; exit 1; }
