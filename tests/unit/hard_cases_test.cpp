@@ -1,6 +1,6 @@
 // Numerically hard scenes stay stable under default options: extreme scaling of K and f,
 // large stiffness contrast between bodies, many small subdomains (small H/h, many cross
-// points), and Total FETI on all of them. Each is checked against an independent answer
+// points), an infeasible scene, and Total FETI on all of them. Each is checked against an independent answer
 // (a scaled solution, the other FETI variant, or the monolithic active-set reference).
 #include "feti/feti_problem.h"
 #include "membrane_model.h"
@@ -89,6 +89,26 @@ TEST(HardCases, ManySmallSubdomainsMatchTheMonolithicReference) {
     EXPECT_NEAR(result.energy, reference.energy, 1e-8 * std::abs(reference.energy));
     EXPECT_EQ(result.active_contact, static_cast<int>(reference.active_y.size()));
   }
+}
+
+TEST(HardCases, InfeasibleSceneIsReportedNotIterated) {
+  // The floating membrane's load reversed (pulling it off the contact line, the only thing
+  // that could hold it): no equilibrium. Detected before any dual iteration, for a strong
+  // pull and one of 1e-3, with both variants; the original load converges.
+  for (FetiVariant variant : {FetiVariant::feti1, FetiVariant::tfeti})
+    for (double factor : {-1.0, -1e-3, 1.0}) {
+      auto subs = test::membrane_subdomains(test::membrane_options(32, 2));
+      for (auto& s : subs)
+        if (s.body == 1) s.f *= factor;
+      const FetiResult r = solve_membranes(std::move(subs), variant, 1e-6);
+      if (factor > 0) {
+        EXPECT_EQ(r.status, SolveStatus::converged);
+        continue;
+      }
+      EXPECT_EQ(r.status, SolveStatus::infeasible) << "factor " << factor << ": " << to_string(r.status);
+      EXPECT_EQ(r.counts.hessian, 0);
+      EXPECT_GT(r.equality_norm, 1e-6 * r.equality_reference);  // the distance that cannot be closed
+    }
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #include "feti/coarse_space.h"
 
 #include "feti/errors.h"
+#include "qp/mprgp.h"
+#include "qp/norm_estimate.h"
 
 #include <map>
 #include <set>
@@ -112,6 +114,31 @@ void CoarseSpace::project(const Vec& x, Vec& y) const {
 Vec CoarseSpace::least_norm_solution(const Vec& e) const {
   if (empty()) return Vec::Zero(G_.cols());
   return G_.transpose() * GGt_.solve(e);
+}
+
+double CoarseSpace::feasibility_residual(const Vec& e, int first_bounded) const {
+  const double e_norm = e.norm();
+  if (empty() || !(e_norm > 0)) return 0.0;
+  const Eigen::Index m = G_.cols();
+  Vec lower = Vec::Constant(m, kUnbounded);
+  lower.tail(m - first_bounded).setZero();
+  Vec lambda = least_norm_solution(e);
+  if (lambda.tail(m - first_bounded).minCoeff() >= 0) return 0.0;  // G lambda = e already
+  // min 1/2 ||G lambda - e||^2 = 1/2 lambda'G'G lambda - (G'e)'lambda + const, lambda_I >= 0.
+  Vec Gv;
+  const LinearOperator GtG = [&](const Vec& v, Vec& y) {
+    Gv = G_ * v;
+    y = G_.transpose() * Gv;
+  };
+  const Vec b = G_.transpose() * e;
+  const double norm = estimate_norm(GtG, m).norm;
+  MprgpSettings settings;
+  settings.max_hessian = 20000;
+  Vec g;
+  const MprgpResult r = mprgp(GtG, b, lower, norm, lambda, g, false, settings,
+                              [&](const Vec&, const Vec&, double gp) { return gp <= 1e-12 * b.norm(); });
+  if (r.status != SolveStatus::converged) return -1.0;
+  return (G_ * lambda - e).norm() / e_norm;
 }
 
 }  // namespace ffeti

@@ -42,6 +42,14 @@ class CoarseSpace {
   /// The least-norm solution of G lambda = e: G'(GG')^{-1} e.
   Vec least_norm_solution(const Vec& e) const;
 
+  /// min ||G lambda - e|| over lambda with lambda_i >= 0 for i >= first_bounded, relative to
+  /// ||e||; 0 when no bound is active at the minimum or e = 0. Positive: no multipliers of the
+  /// right signs balance the loads on the floating bodies (a body pulled off the contacts
+  /// that could hold it), so the problem has no solution. Found by MPRGP on G'G (cheap: G
+  /// has one row per rigid mode); -1 if MPRGP did not converge (undecided). Same on every
+  /// rank.
+  double feasibility_residual(const Vec& e, int first_bounded) const;
+
  private:
   Eigen::SparseMatrix<double, Eigen::RowMajor, int> G_;
   std::vector<std::pair<int, int>> owner_;

@@ -240,6 +240,14 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     result.status = r.status;
     result.gradient_norm = r.projected_gradient_norm;
     lambda = lambda_from_shifted(x, lower_bounds, data.lambda_tilde);
+  } else if (const double distance = coarse_->feasibility_residual(data.e, constraints_.equality_rows);
+             distance > tolerance) {
+    // No multipliers of the right signs balance the loads on the floating bodies (Farkas):
+    // no equilibrium, and SMALBE could only iterate until maxit. The least-norm lambda~
+    // (G lambda~ = e, some contact multipliers negative) gives the field the recovery shows.
+    result.status = SolveStatus::infeasible;
+    result.equality_norm = distance * result.equality_reference;
+    lambda = data.lambda_tilde;
   } else {  // smalbe
     const double norm = operator_norm(true, settings.norm_estimate, result.counts, result.norm_estimate_seconds);
     const double eq_reference =
