@@ -8,6 +8,7 @@
 #include "feti/feti_problem.h"
 #include "feti/statistics.h"
 #include "parallel/mpi_communicator.h"
+#include "feti/convergence_history.h"
 #include "sens/sensitivity_statistics.h"
 
 #include <mpi.h>
@@ -31,6 +32,7 @@ struct Handle {
   std::optional<FetiResult> result;
   double tolerance = DualSolveSettings{}.tolerance;  // of the last solve: the sensitivity's default
   std::unique_ptr<SensitivityProblem> sensitivity;
+  ConvergenceHistory history;  // of the last fetiSolve
 };
 
 std::map<long, Handle>& handles() {
@@ -118,8 +120,8 @@ Monitor progress_monitor(long verbosity, const Communicator& comm) {
     const bool outer_solver = std::string(line.solver) == "smalbe";
     if (outer_solver && verbosity < 2 && line.iteration == *last_outer) return;
     *last_outer = line.iteration;
-    std::printf("  ffeti %-6s %4d  ||gP|| %.3e  ||Q mu|| %.3e\n", line.solver, line.iteration, line.gradient_norm,
-                line.equality_norm);
+    std::printf("  ffeti %-6s %4d  hessian %5d  ||gP|| %.3e  ||Q mu|| %.3e  contact %d\n", line.solver, line.iteration,
+                line.hessian, line.gradient_norm, line.equality_norm, line.active);
   };
 }
 
@@ -318,7 +320,7 @@ basicAC_F0::name_and_type FetiSetup::name_param[] = {
 class FetiSolve : public E_F0mps {
  public:
   typedef long Result;
-  static const int n_name_param = 9;
+  static const int n_name_param = 10;
   static basicAC_F0::name_and_type name_param[];
   Expression nargs[n_name_param];
   Expression id, U;
@@ -350,12 +352,16 @@ class FetiSolve : public E_F0mps {
     settings.smalbe.M_factor = optional_real(nargs[6], stack, settings.smalbe.M_factor);
     settings.smalbe.eta_factor = optional_real(nargs[7], stack, settings.smalbe.eta_factor);
     settings.mprgp.gamma = optional_real(nargs[8], stack, settings.mprgp.gamma);
-    settings.monitor = progress_monitor(verbosity, h.problem->communicator());
+    settings.monitor = h.history.start(progress_monitor(verbosity, h.problem->communicator()));
     h.sensitivity.reset();
     h.result.reset();
     h.tolerance = settings.tolerance;
     h.result = h.problem->solve(settings);
     const FetiResult& r = *h.result;
+    if (nargs[9])  // written by rank 0; a failure raised on every rank alike
+      collectively(h.problem->communicator(), [&] {
+        if (h.problem->communicator().rank() == 0) h.history.write_csv(optional_string(nargs[9], stack, ""));
+      });
     auto& u = *GetAny<KN<KN<double>>*>((*U)(stack));
     const std::vector<int>& ids = h.problem->global_ids();
     u.resize(h.problem->subdomain_count());
@@ -374,7 +380,8 @@ class FetiSolve : public E_F0mps {
 basicAC_F0::name_and_type FetiSolve::name_param[] = {
     {"lambda", &typeid(KN<double>*)}, {"tol", &typeid(double)},       {"maxit", &typeid(long)},
     {"algorithm", &typeid(std::string*)}, {"verbosity", &typeid(long)}, {"rho", &typeid(double)},
-    {"M", &typeid(double)},           {"eta", &typeid(double)},       {"gamma", &typeid(double)}};
+    {"M", &typeid(double)},           {"eta", &typeid(double)},       {"gamma", &typeid(double)},
+    {"history", &typeid(std::string*)}};
 
 // ---- sensitivities (seed eq. 12) -------------------------------------------------------
 
@@ -574,6 +581,19 @@ basicAC_F0::name_and_type FetiAdjointGradient::name_param[] = {
     {"velocityX", &typeid(KN<KN<double>>*)}, {"velocityY", &typeid(KN<KN<double>>*)}};
 
 // ---- small functions -------------------------------------------------------------------
+// int rows = fetiHistory(P, key, values): one column of the last fetiSolve's convergence
+// history (time, hessian, gradient, equality, active, iteration) into values.
+long feti_history(const long& id, std::string* const& key, KN<double>* const& values) {
+  return guarded("fetiHistory", [&] {
+    const Handle& h = handle(id);
+    if (!h.result) throw InputError("P: no solve yet: call fetiSolve first");
+    const std::vector<double> column = h.history.column(*key);
+    values->resize(static_cast<long>(column.size()));
+    for (size_t i = 0; i < column.size(); ++i) (*values)[static_cast<long>(i)] = column[i];
+    return static_cast<long>(column.size());
+  });
+}
+
 double feti_info(const long& id, std::string* const& key) {
   return guarded("fetiInfo", [&] {
     const Handle& h = handle(id);
@@ -782,6 +802,7 @@ static void Load_Init() {
   Global.Add("fetiSetup", "(", new OneOperatorCode<FetiSetup>());
   Global.Add("fetiSolve", "(", new OneOperatorCode<FetiSolve>());
   Global.Add("fetiInfo", "(", new OneOperator2_<double, long, std::string*>(feti_info));
+  Global.Add("fetiHistory", "(", new OneOperator3_<long, long, std::string*, KN<double>*>(feti_history));
   Global.Add("fetiReport", "(", new OneOperator1s_<std::string*, long>(feti_report));
   Global.Add("fetiSetLoads", "(", new OneOperator2_<long, long, KN<KN<double>>*>(feti_set_loads));
   Global.Add("fetiFree", "(", new OneOperator1_<long, long>(feti_free));

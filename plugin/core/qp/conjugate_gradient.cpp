@@ -42,6 +42,7 @@ class CgRun {
     g_sq_ = g_.squaredNorm();
     if (state_ == State::verify) {
       result_.gradient_norm = std::sqrt(g_sq_);
+      if (monitor_) monitor_({"cg", iteration_, result_.gradient_norm, 0.0, result_.counts.hessian, 0});
       if (stop_(x_, g_, result_.gradient_norm)) return finish(SolveStatus::converged);
       if (++replacements_ > kMaxResidualReplacements) return finish(SolveStatus::stagnated);
       ++iteration_;
@@ -73,7 +74,7 @@ class CgRun {
   // From a gradient g: stop, check the true gradient, or ask for the next A p.
   void advance() {
     result_.gradient_norm = std::sqrt(g_sq_);
-    if (monitor_) monitor_({"cg", iteration_, result_.gradient_norm, 0.0});
+    if (monitor_) monitor_({"cg", iteration_, result_.gradient_norm, 0.0, result_.counts.hessian, 0});
     if (stop_(x_, g_, result_.gradient_norm)) {
       // Before any step g is the true gradient. After, the updated g drifts from A x - b by
       // round-off; asked for more than the data's accuracy allows, it keeps falling while

@@ -21,6 +21,16 @@ double feasible_step(const Vec& x, const Vec& p, const Vec& lower) {
   return step;
 }
 
+}  // namespace
+
+int off_bound_count(const Vec& x, const Vec& lower) {
+  int count = 0;
+  for (Eigen::Index i = 0; i < x.size(); ++i) count += lower[i] != kUnbounded && x[i] > lower[i] ? 1 : 0;
+  return count;
+}
+
+namespace {
+
 void project(Vec& x, const Vec& lower) {
   for (Eigen::Index i = 0; i < x.size(); ++i)
     if (lower[i] != kUnbounded && x[i] < lower[i]) x[i] = lower[i];
@@ -88,7 +98,7 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
       gp_sq += phi[i] * phi[i] + beta[i] * beta[i];
     }
     result.projected_gradient_norm = std::sqrt(gp_sq);
-    if (monitor) monitor({"mprgp", iteration, result.projected_gradient_norm, 0.0});
+    if (monitor) monitor({"mprgp", iteration, result.projected_gradient_norm, 0.0, counts.hessian, off_bound_count(x, lower)});
     if (stop(x, g, result.projected_gradient_norm)) {
       result.status = SolveStatus::converged;
       return result;

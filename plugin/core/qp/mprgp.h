@@ -25,6 +25,10 @@ struct MprgpResult {
 /// gP_i = g_i where x_i is free (unbounded or x_i > l_i), min(g_i, 0) where x_i = l_i.
 Vec projected_gradient(const Vec& x, const Vec& g, const Vec& lower);
 
+/// Bounded components of x above their bound: for the FETI dual, the contact rows with a
+/// positive multiplier (the contact set).
+int off_bound_count(const Vec& x, const Vec& lower);
+
 /// Minimizes the QP from the start x (projected onto the bounds first). On return x is the
 /// last iterate and g = Ax - b at it. If `gradient_is_current` is true, g on entry must
 /// already equal Ax - b at the (feasible) x, saving one multiplication (warm restarts).

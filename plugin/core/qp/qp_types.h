@@ -45,13 +45,18 @@ struct IterationCounts {
   IterationCounts& operator+=(const IterationCounts& other);
 };
 
-/// One progress line: iteration number, projected gradient norm, equality residual norm
-/// (0 where there is none). A monitor receives it; the solvers never print.
+/// One progress line: iteration number (SMALBE: the outer one), projected gradient norm,
+/// equality residual norm (0 where there is none), Hessian multiplications of the solve so
+/// far, and the number of bounded components above their bound (for the FETI dual: contact
+/// rows with a positive multiplier, the contact set; 0 for CG). A monitor receives it; the
+/// solvers never print.
 struct ProgressLine {
   const char* solver;
   int iteration;
   double gradient_norm;
   double equality_norm;
+  int hessian;
+  int active;
 };
 using Monitor = std::function<void(const ProgressLine&)>;
 

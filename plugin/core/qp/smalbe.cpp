@@ -46,7 +46,9 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
   int stalled_rounds = 0;
 
   // A = H + rho Q: on Ker C it acts as H, on Im C' as rho, so ||A|| <= max(||H||, rho).
+  int applications = 0;  // of A, for the progress lines
   const LinearOperator A = [&](const Vec& v, Vec& Av) {
+    ++applications;
     problem.hessian(v, Av);
     problem.range_projector(v, Qv);
     Av += rho * Qv;
@@ -73,7 +75,8 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
       const Vec gp0 = projected_gradient(xi, gi - rho * Qx, lower);
       result.projected_gradient_norm = gp0.norm();
       result.equality_norm = q_norm;
-      if (monitor) monitor({"smalbe", outer, result.projected_gradient_norm, q_norm});
+      if (monitor)
+        monitor({"smalbe", outer, result.projected_gradient_norm, q_norm, applications, off_bound_count(xi, lower)});
       if (stop(xi, result.projected_gradient_norm, Qx)) return globally_done = true;
       // At least one inner step per outer iteration: a multiplier update that the inner
       // solver does not answer only grows nu, and can stall the outer loop for many rounds.
