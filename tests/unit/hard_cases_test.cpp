@@ -1,6 +1,6 @@
 // Numerically hard scenes stay stable under default options: extreme scaling of K and f,
 // large stiffness contrast between bodies, many small subdomains (small H/h, many cross
-// points), an infeasible scene, and Total FETI on all of them. Each is checked against an independent answer
+// points), an infeasible scene, a gap sweep and zero load, and Total FETI on all of them. Each is checked against an independent answer
 // (a scaled solution, the other FETI variant, or the monolithic active-set reference).
 #include "feti/feti_problem.h"
 #include "membrane_model.h"
@@ -109,6 +109,43 @@ TEST(HardCases, InfeasibleSceneIsReportedNotIterated) {
       EXPECT_EQ(r.counts.hessian, 0);
       EXPECT_GT(r.equality_norm, 1e-6 * r.equality_reference);  // the distance that cannot be closed
     }
+}
+
+TEST(HardCases, GapSweepShiftsTheFloatingMembraneExactly) {
+  // The floating membrane rests on the contact line only, so a gap g (from penetrating to
+  // separated) shifts it rigidly by -g: u_2 -> u_2 - g, the energy by g times its total
+  // load, the contact set unchanged. Zero load: u = 0 at once.
+  const auto solve_with_gap = [](double gap, double load_factor) {
+    auto subs = test::membrane_subdomains(test::membrane_options(32, 2));
+    for (auto& s : subs) s.f *= load_factor;
+    ContactInput contact = test::membrane_contact(subs);
+    contact.gap = gap;
+    const FetiProblem problem(subs, contact, FetiSetupSettings{});
+    DualSolveSettings settings;
+    settings.tolerance = 1e-10;
+    return std::make_pair(problem.solve(settings), subs);
+  };
+  const auto [reference, subs] = solve_with_gap(0.0, 1.0);
+  ASSERT_EQ(reference.status, SolveStatus::converged);
+  double load_on_floating = 0;
+  for (const auto& s : subs)
+    if (s.body == 1) load_on_floating += s.f.sum();
+  for (double gap : {-0.01, 0.01, 0.1, 1.0}) {
+    const FetiResult r = solve_with_gap(gap, 1.0).first;
+    ASSERT_EQ(r.status, SolveStatus::converged) << "gap " << gap;
+    EXPECT_NEAR(r.energy, reference.energy + gap * load_on_floating, 1e-9) << "gap " << gap;
+    EXPECT_EQ(r.active_contact, reference.active_contact) << "gap " << gap;
+    double shift_error = 0;
+    for (size_t s = 0; s < subs.size(); ++s) {
+      const Vec expected = subs[s].body == 1 ? Vec(reference.u[s].array() - gap) : reference.u[s];
+      shift_error = std::max(shift_error, (r.u[s] - expected).cwiseAbs().maxCoeff());
+    }
+    EXPECT_LT(shift_error, 1e-7 * (1 + std::abs(gap))) << "gap " << gap;
+  }
+  const FetiResult unloaded = solve_with_gap(0.0, 0.0).first;
+  EXPECT_EQ(unloaded.status, SolveStatus::converged);
+  EXPECT_LE(unloaded.counts.hessian, 1);
+  for (const Vec& u : unloaded.u) EXPECT_EQ(u.cwiseAbs().maxCoeff(), 0.0);
 }
 
 }  // namespace
