@@ -69,14 +69,14 @@ TEST(ConjugateGradient, BlockRunsEachSystemAsOnItsOwn) {
   for (size_t j = 0; j < b.size(); ++j)
     stop.push_back([&, j](const Vec&, const Vec&, double norm) { return norm <= tolerance[j] * b[j].norm(); });
   std::vector<Vec> x(b.size(), Vec::Zero(60)), g;
-  int applications = 0;
-  int block_columns = 0;
+  int applications = 0, block_columns = 0;
   const std::vector<CgResult> block = conjugate_gradient_block(
       [&](const Eigen::MatrixXd& X, Eigen::MatrixXd& Y) {
+        ++applications;
         block_columns += static_cast<int>(X.cols());
         Y = A * X;
       },
-      b, x, g, {}, stop, applications);
+      b, x, g, {}, stop);
   int longest = 0, total = 0;
   for (size_t j = 0; j < b.size(); ++j) {
     Vec alone = Vec::Zero(60), g_alone;

@@ -52,7 +52,7 @@ struct DirichletPreconditioner::Block {
   std::vector<int> boundary, interior;
   SparseMatrix Kbb, Kib;
   CholmodFactor Kii;
-  mutable Vec xb, t, ti, yb, full;
+  mutable Vec gathered, xb, t, ti, yb, full;  // buffers of apply()
 };
 
 DirichletPreconditioner::DirichletPreconditioner(const std::vector<SparseMatrix>& operator_matrices,
@@ -97,9 +97,9 @@ void DirichletPreconditioner::apply(const Vec& x, Vec& y) const {
     const LocalConstraints& L = local_[k];
     if (L.rows.empty()) continue;
     Block& b = *blocks_[k];
-    Vec gathered(static_cast<Eigen::Index>(L.rows.size()));
-    for (size_t r = 0; r < L.rows.size(); ++r) gathered[static_cast<Eigen::Index>(r)] = scaled_[L.rows[r]];
-    b.full.noalias() = L.B.transpose() * gathered;
+    b.gathered.resize(static_cast<Eigen::Index>(L.rows.size()));
+    for (size_t r = 0; r < L.rows.size(); ++r) b.gathered[static_cast<Eigen::Index>(r)] = scaled_[L.rows[r]];
+    b.full.noalias() = L.B.transpose() * b.gathered;
     b.xb.resize(static_cast<Eigen::Index>(b.boundary.size()));
     for (size_t i = 0; i < b.boundary.size(); ++i) b.xb[static_cast<Eigen::Index>(i)] = b.full[b.boundary[i]];
     b.yb.noalias() = b.Kbb * b.xb;  // S x_b = K_bb x_b - K_bi K_ii^{-1} K_ib x_b

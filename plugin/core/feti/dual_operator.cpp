@@ -46,13 +46,14 @@ void DualOperator::apply(const Vec& x, Vec& y) const {
 
 void DualOperator::apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
   const int count = static_cast<int>(subdomains_.size());
-  block_rhs_.resize(subdomains_.size()), block_solution_.resize(subdomains_.size());
-  block_result_.resize(subdomains_.size());
+  block_gathered_.resize(subdomains_.size()), block_rhs_.resize(subdomains_.size());
+  block_solution_.resize(subdomains_.size()), block_result_.resize(subdomains_.size());
 #pragma omp parallel for schedule(dynamic) num_threads(threads_)
   for (int s = 0; s < count; ++s) {
     const auto i = static_cast<size_t>(s);
     if (local_[i].rows.empty()) continue;
-    Eigen::MatrixXd gathered(static_cast<Eigen::Index>(local_[i].rows.size()), x.cols());
+    Eigen::MatrixXd& gathered = block_gathered_[i];
+    gathered.resize(static_cast<Eigen::Index>(local_[i].rows.size()), x.cols());
     for (size_t k = 0; k < local_[i].rows.size(); ++k)
       gathered.row(static_cast<Eigen::Index>(k)) = x.row(local_[i].rows[k]);
     block_rhs_[i].noalias() = local_[i].B.transpose() * gathered;
@@ -60,7 +61,7 @@ void DualOperator::apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
     block_result_[i].noalias() = local_[i].B * block_solution_[i];
   }
   y.resize(rows_, x.cols());
-  Vec column;
+  Vec& column = column_;
   for (Eigen::Index j = 0; j < x.cols(); ++j) {
     flat_.clear();
     for (size_t s = 0; s < subdomains_.size(); ++s)

@@ -48,7 +48,8 @@ class DualOperator {
   int rows_;
   int threads_;
   mutable std::vector<Vec> gathered_, local_rhs_, local_solution_, local_result_;
-  mutable std::vector<Eigen::MatrixXd> block_rhs_, block_solution_, block_result_;
+  mutable std::vector<Eigen::MatrixXd> block_gathered_, block_rhs_, block_solution_, block_result_;
+  mutable Vec column_;
   mutable std::vector<double> flat_;
 };
 

@@ -110,17 +110,16 @@ void DualSystem::apply_PFP(const Vec& x, Vec& y) const {
 }
 
 void DualSystem::apply_PFP(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
-  Eigen::MatrixXd projected(x.rows(), x.cols()), applied;
-  Vec column;
+  block_projected_.resize(x.rows(), x.cols());
   for (Eigen::Index j = 0; j < x.cols(); ++j) {
-    coarse_->project(x.col(j), column);
-    projected.col(j) = column;
+    coarse_->project(x.col(j), projected_);
+    block_projected_.col(j) = projected_;
   }
-  F_->apply(projected, applied);
+  F_->apply(block_projected_, block_applied_);
   y.resize(x.rows(), x.cols());
   for (Eigen::Index j = 0; j < x.cols(); ++j) {
-    coarse_->project(applied.col(j), column);
-    y.col(j) = column;
+    coarse_->project(block_applied_.col(j), projected_);
+    y.col(j) = projected_;
   }
 }
 
@@ -158,14 +157,13 @@ std::vector<DualSolution> DualSystem::solve(const std::vector<DualData>& data,
   }
   CgSettings cg;
   cg.max_hessian = settings.max_hessian;
-  int applications = 0;
   Stopwatch solve_clock;
   const std::vector<CgResult> cg_results = conjugate_gradient_block(
       [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) {
         if (coarse_) apply_PFP(x, y);
         else F_->apply(x, y);
       },
-      b, mu, g, cg, stop, applications);
+      b, mu, g, cg, stop);
   const double seconds = solve_clock.seconds() / static_cast<double>(data.size());
   for (size_t j = 0; j < data.size(); ++j) {
     results[j].status = cg_results[j].status;

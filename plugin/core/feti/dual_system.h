@@ -117,6 +117,7 @@ class DualSystem {
   std::unique_ptr<CoarseSpace> coarse_;
   std::unique_ptr<DirichletPreconditioner> preconditioner_;
   mutable Vec projected_, applied_;                   // buffers of apply_PFP and the preconditioner
+  mutable Eigen::MatrixXd block_projected_, block_applied_;  // of the block apply_PFP
   mutable std::optional<double> norm_F_, norm_PFP_;  // cached: the same F for every load case
   mutable int norm_F_cost_ = 0, norm_PFP_cost_ = 0;
 };

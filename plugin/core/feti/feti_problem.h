@@ -21,9 +21,9 @@ struct FetiSetupSettings {
   /// OpenMP threads over subdomains; 0: the runtime default. Supernodal factors run on one
   /// thread: they call BLAS, and Debian's serial OpenBLAS is not safe to call concurrently.
   int threads = 0;
-  /// Dirichlet preconditioner on the CG paths (equality constraints only): iterations
-  /// bounded in h and in the number of subdomains, for one more factorization per subdomain
-  /// (docs/results/scalability.md). Off by default: on the scenes measured it saves
+  /// Dirichlet preconditioner: projected CG (iterations bounded in h and in the number of
+  /// subdomains) and MPRGP preconditioned in face, for one more factorization per subdomain
+  /// (docs/results/scalability.md). Off by default: on the contact scenes measured it saves
   /// iterations, not time.
   bool dirichlet_preconditioner = false;
 };

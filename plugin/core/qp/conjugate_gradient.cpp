@@ -122,8 +122,7 @@ CgResult conjugate_gradient(const LinearOperator& A, const Vec& b, Vec& x, Vec& 
 
 std::vector<CgResult> conjugate_gradient_block(const BlockOperator& A, const std::vector<Vec>& b,
                                                std::vector<Vec>& x, std::vector<Vec>& g,
-                                               const CgSettings& settings, const std::vector<StopTest>& stop,
-                                               int& block_applications) {
+                                               const CgSettings& settings, const std::vector<StopTest>& stop) {
   settings.validate();
   if (x.size() != b.size() || stop.size() != b.size())
     throw std::invalid_argument("CG block: b, x and stop differ in count");
@@ -134,7 +133,6 @@ std::vector<CgResult> conjugate_gradient_block(const BlockOperator& A, const std
   runs.reserve(b.size());
   for (size_t j = 0; j < b.size(); ++j)
     runs.emplace_back(b[j], x[j], g[j], settings, stop[j], no_monitor, no_preconditioner);
-  block_applications = 0;
   Eigen::MatrixXd block, products;
   for (;;) {
     std::vector<size_t> open;
@@ -144,7 +142,6 @@ std::vector<CgResult> conjugate_gradient_block(const BlockOperator& A, const std
     block.resize(b[open.front()].size(), static_cast<Eigen::Index>(open.size()));
     for (size_t c = 0; c < open.size(); ++c) block.col(static_cast<Eigen::Index>(c)) = runs[open[c]].next();
     A(block, products);
-    ++block_applications;
     for (size_t c = 0; c < open.size(); ++c) runs[open[c]].take(products.col(static_cast<Eigen::Index>(c)));
   }
   std::vector<CgResult> results;

@@ -39,12 +39,11 @@ CgResult conjugate_gradient(const LinearOperator& A, const Vec& b, Vec& x, Vec& 
 using BlockOperator = std::function<void(const Eigen::MatrixXd& x, Eigen::MatrixXd& y)>;
 
 /// conjugate_gradient for the systems A x_j = b_j, j = 0..k-1, with stop test stop[j]:
-/// every step multiplies the vectors of the unfinished systems as one block. Each system
-/// runs the same iteration, with the same counts, as on its own. `block_applications`
-/// receives the number of calls of A.
+/// every step multiplies the vectors of the unfinished systems as one block (A is called as
+/// often as the longest run needs). Each system runs the same iteration, with the same
+/// counts, as on its own.
 std::vector<CgResult> conjugate_gradient_block(const BlockOperator& A, const std::vector<Vec>& b,
                                                std::vector<Vec>& x, std::vector<Vec>& g,
-                                               const CgSettings& settings, const std::vector<StopTest>& stop,
-                                               int& block_applications);
+                                               const CgSettings& settings, const std::vector<StopTest>& stop);
 
 }  // namespace ffeti
