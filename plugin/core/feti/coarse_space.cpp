@@ -131,12 +131,12 @@ double CoarseSpace::feasibility_residual(const Vec& e, int first_bounded) const 
     y = G_.transpose() * Gv;
   };
   const Vec b = G_.transpose() * e;
-  const double norm = estimate_norm(GtG, m).norm;
+  const double norm = estimate_norm(GtG, m).norm, stop_at = 1e-12 * b.norm();
   MprgpSettings settings;
   settings.max_hessian = 20000;
   Vec g;
   const MprgpResult r = mprgp(GtG, b, lower, norm, lambda, g, false, settings,
-                              [&](const Vec&, const Vec&, double gp) { return gp <= 1e-12 * b.norm(); });
+                              [&](const Vec&, const Vec&, double gp) { return gp <= stop_at; });
   if (r.status != SolveStatus::converged) return -1.0;
   return (G_ * lambda - e).norm() / e_norm;
 }

@@ -51,6 +51,11 @@ void DualSystem::use_dirichlet_preconditioner(const std::vector<SparseMatrix>& o
   preconditioner_ = std::make_unique<DirichletPreconditioner>(operator_matrices, local_, constraints_, *sum_, threads);
 }
 
+LinearOperator DualSystem::preconditioner_operator() const {
+  if (!preconditioner_) return {};
+  return [this](const Vec& x, Vec& y) { preconditioner_->apply(x, y); };
+}
+
 std::string DualSystem::path() const {
   const bool inequalities = constraints_.inequality_rows() > 0;
   const bool floating = coarse_ != nullptr;
@@ -204,10 +209,9 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
       if (coarse_) apply_PFP(x, y);
       else F_->apply(x, y);
     };
-    LinearOperator M;  // P M^{-1} P: the preconditioner on Ker G
-    if (preconditioner_)
+    LinearOperator M = preconditioner_operator();  // with a coarse space: P M^{-1} P on Ker G
+    if (M && coarse_)
       M = [&](const Vec& x, Vec& y) {
-        if (!coarse_) return preconditioner_->apply(x, y);
         coarse_->project(x, projected_);
         preconditioner_->apply(projected_, applied_);
         coarse_->project(applied_, y);
@@ -227,8 +231,7 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     MprgpSettings mprgp_settings = settings.mprgp;
     mprgp_settings.max_hessian = settings.max_hessian;
     Vec x = Vec::Zero(m), g;
-    LinearOperator M;
-    if (preconditioner_) M = [&](const Vec& v, Vec& y) { preconditioner_->apply(v, y); };
+    const LinearOperator M = preconditioner_operator();
     const MprgpResult r = mprgp(
         [&](const Vec& v, Vec& y) { F_->apply(v, y); }, data.b, lower_bounds, norm, x, g, false, mprgp_settings,
         [&](const Vec&, const Vec&, double norm_gp) { return norm_gp <= b_tol; }, settings.monitor, M);
@@ -257,7 +260,7 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     problem.b = &data.b;
     problem.lower = &lower_bounds;
     problem.hessian_norm = norm;
-    if (preconditioner_) problem.preconditioner = [&](const Vec& v, Vec& y) { preconditioner_->apply(v, y); };
+    problem.preconditioner = preconditioner_operator();
     SmalbeSettings smalbe_settings = settings.smalbe;
     smalbe_settings.max_hessian = settings.max_hessian;
     smalbe_settings.inner = settings.mprgp;

@@ -107,6 +107,7 @@ class DualSystem {
   void apply_PFP(const Vec& x, Vec& y) const;  // the projected dual operator, on reused buffers
   void apply_PFP(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const;
   DualSolution prepared(const DualData& data, const DualSolveSettings& settings) const;  // path, references
+  LinearOperator preconditioner_operator() const;  // M^{-1}, or empty without a preconditioner
   void recover(const DualData& data, Vec lambda, DualSolution& result) const;
 
   const SubdomainList& subdomains_;
