@@ -320,7 +320,7 @@ basicAC_F0::name_and_type FetiSetup::name_param[] = {
 class FetiSolve : public E_F0mps {
  public:
   typedef long Result;
-  static const int n_name_param = 10;
+  static const int n_name_param = 12;
   static basicAC_F0::name_and_type name_param[];
   Expression nargs[n_name_param];
   Expression id, U;
@@ -352,6 +352,14 @@ class FetiSolve : public E_F0mps {
     settings.smalbe.M_factor = optional_real(nargs[6], stack, settings.smalbe.M_factor);
     settings.smalbe.eta_factor = optional_real(nargs[7], stack, settings.smalbe.eta_factor);
     settings.mprgp.gamma = optional_real(nargs[8], stack, settings.mprgp.gamma);
+    const std::string expansion = optional_string(nargs[10], stack, "projected-cg");
+    if (expansion == "projected-cg") settings.mprgp.expansion = MprgpExpansion::projected_cg;
+    else if (expansion == "fixed") settings.mprgp.expansion = MprgpExpansion::fixed_step;
+    else throw InputError("expansion: \"" + expansion + "\" is not one of \"projected-cg\", \"fixed\"");
+    const std::string stop = optional_string(nargs[11], stack, "kkt");
+    if (stop == "kkt") settings.stopping = StoppingTest::relative_kkt;
+    else if (stop == "seed") settings.stopping = StoppingTest::seed;
+    else throw InputError("stop: \"" + stop + "\" is not one of \"kkt\", \"seed\"");
     settings.monitor = h.history.start(progress_monitor(verbosity, h.problem->communicator()));
     h.sensitivity.reset();
     h.result.reset();
@@ -369,9 +377,10 @@ class FetiSolve : public E_F0mps {
     for (size_t k = 0; k < r.u.size(); ++k) binding::copy_to(r.u[k], u[ids[k]]);
     if (auto* lambda = optional_pointer<KN<double>>(nargs[0], stack)) binding::copy_to(r.lambda, *lambda);
     if (verbosity >= 1 && h.problem->communicator().rank() == 0)
-      std::printf("ffeti: %s after %d Hessian multiplications (%d outer), path %s, ||gP||/||b|| %.2e\n",
+      std::printf("ffeti: %s after %d Hessian multiplications (%d outer), path %s, ||gP||/||b|| %.2e, "
+                  "max violation/||u||_inf %.2e\n",
                   to_string(r.status).c_str(), r.counts.hessian, r.counts.outer, r.path.c_str(),
-                  r.gradient_norm / r.gradient_reference);
+                  r.gradient_norm / r.gradient_reference, r.violation);
     std::fflush(stdout);
     return status_code(r.status);
   }
@@ -381,7 +390,8 @@ basicAC_F0::name_and_type FetiSolve::name_param[] = {
     {"lambda", &typeid(KN<double>*)}, {"tol", &typeid(double)},       {"maxit", &typeid(long)},
     {"algorithm", &typeid(std::string*)}, {"verbosity", &typeid(long)}, {"rho", &typeid(double)},
     {"M", &typeid(double)},           {"eta", &typeid(double)},       {"gamma", &typeid(double)},
-    {"history", &typeid(std::string*)}};
+    {"history", &typeid(std::string*)}, {"expansion", &typeid(std::string*)},
+    {"stop", &typeid(std::string*)}};
 
 // ---- sensitivities (seed eq. 12) -------------------------------------------------------
 

@@ -225,9 +225,32 @@ TEST(FetiProblem, DirichletPreconditionerInFaceKeepsTheContactSolution) {
   }
 }
 
+TEST(FetiProblem, DefaultStopBoundsTheRelativeKktResidualsByTol) {
+  // The stopping test in primal terms: tol bounds the relative KKT residuals, recomputed in
+  // primal form after the solve, on the SMALBE path (a floating membrane) and the MPRGP one.
+  for (bool fix_right : {false, true}) {
+    test::MembraneOptions o = test::membrane_options(64, fix_right ? 1 : 4);
+    o.fix_right_body = fix_right;
+    const FetiProblem problem = membrane_problem(o, FetiVariant::feti1);
+    for (double tol : {1e-3, 1e-5, 1e-7}) {
+      DualSolveSettings settings;
+      settings.tolerance = tol;
+      const FetiResult r = problem.solve(settings);
+      ASSERT_EQ(r.status, SolveStatus::converged) << "tol " << tol;
+      EXPECT_EQ(r.path, fix_right ? "mprgp" : "smalbe");
+      EXPECT_LE(r.violation, tol);
+      EXPECT_GE(r.scale_evaluations, 1);
+      EXPECT_LE(r.scale_evaluations, 6);
+      EXPECT_LT(r.kkt.max(), 3 * tol) << "tol " << tol;
+    }
+  }
+}
+
 TEST(FetiProblem, SeedToleranceGivesSmallKktResidualsAndBoundedIterations) {
   const FetiProblem problem = membrane_problem(test::membrane_options(32, 2), FetiVariant::feti1);
-  const FetiResult result = problem.solve();
+  DualSolveSettings seed;
+  seed.stopping = StoppingTest::seed;
+  const FetiResult result = problem.solve(seed);
   ASSERT_EQ(result.status, SolveStatus::converged);
   EXPECT_LE(result.gradient_norm, 1e-4 * result.gradient_reference);
   EXPECT_LE(result.equality_norm, 1e-4 * result.equality_reference);

@@ -33,23 +33,30 @@ TEST_P(MprgpManufactured, FindsTheKnownSolution) {
   // The estimate is within a few percent above ||A||_2 = condition.
   EXPECT_GT(norm.norm, 0.9 * c.condition);
   EXPECT_LT(norm.norm, 1.06 * c.condition);
-  Vec x = Vec::Zero(c.n), g;
-  const double tol = 1e-10 * qp.b.norm();
-  const MprgpResult result = mprgp(A, qp.b, qp.lower, norm.norm, x, g, false, {},
-                                   [&](const Vec&, const Vec&, double gp) { return gp <= tol; });
-  ASSERT_EQ(result.status, SolveStatus::converged);
-  EXPECT_LT((x - qp.x_star).norm(), 1e-7 * qp.x_star.norm());
-  // Independent KKT check: feasibility, sign of the gradient on the active set.
-  const Vec gradient = qp.A * x - qp.b;
-  EXPECT_LT((gradient - g).norm(), 1e-9 * qp.b.norm());
-  for (int i = 0; i < c.n; ++i) {
-    if (qp.lower[i] == kUnbounded) continue;
-    EXPECT_GE(x[i], qp.lower[i]);
-    EXPECT_GE(gradient[i], -1e-8 * qp.b.norm());
+  for (MprgpExpansion expansion : {MprgpExpansion::fixed_step, MprgpExpansion::projected_cg}) {
+    Vec x = Vec::Zero(c.n), g;
+    const double tol = 1e-10 * qp.b.norm();
+    MprgpSettings settings;
+    settings.expansion = expansion;
+    const MprgpResult result = mprgp(A, qp.b, qp.lower, norm.norm, x, g, false, settings,
+                                     [&](const Vec&, const Vec&, double gp) { return gp <= tol; });
+    ASSERT_EQ(result.status, SolveStatus::converged);
+    EXPECT_LT((x - qp.x_star).norm(), 1e-7 * qp.x_star.norm());
+    // Independent KKT check: feasibility, sign of the gradient on the active set.
+    const Vec gradient = qp.A * x - qp.b;
+    EXPECT_LT((gradient - g).norm(), 1e-9 * qp.b.norm());
+    for (int i = 0; i < c.n; ++i) {
+      if (qp.lower[i] == kUnbounded) continue;
+      EXPECT_GE(x[i], qp.lower[i]);
+      EXPECT_GE(gradient[i], -1e-8 * qp.b.norm());
+    }
+    EXPECT_GT(result.counts.hessian, 0);
+    // An expansion costs the CG trial step's multiplication and its own; a projected CG
+    // expansion that falls back to the fixed step one more.
+    EXPECT_EQ(result.counts.hessian, 1 + result.counts.cg + 2 * result.counts.expansion +
+                                         result.counts.proportioning + result.counts.expansion_fallback);
+    if (expansion == MprgpExpansion::fixed_step) EXPECT_EQ(result.counts.expansion_fallback, 0);
   }
-  EXPECT_GT(result.counts.hessian, 0);
-  EXPECT_EQ(result.counts.hessian, 1 + result.counts.cg + 2 * result.counts.expansion +
-                                       result.counts.proportioning);
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, MprgpManufactured,

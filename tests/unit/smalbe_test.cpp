@@ -39,7 +39,7 @@ TEST_P(SmalbeManufactured, FindsTheKnownSolution) {
   Vec x = Vec::Zero(c.n);
   const double tol = 1e-10 * qp.b.norm();
   const SmalbeResult result = smalbe(problem, x, settings,
-      [&](const Vec&, double gp, const Vec& Qx) { return gp <= tol && Qx.norm() <= 1e-10; });
+      [&](const Vec&, const Vec& gp, const Vec& Qx) { return gp.norm() <= tol && Qx.norm() <= 1e-10; });
   ASSERT_EQ(result.status, SolveStatus::converged) << to_string(result.status);
   EXPECT_LT((x - qp.x_star).norm(), 1e-6 * qp.x_star.norm());
   EXPECT_LT((qp.C * x).norm(), 1e-8 * qp.C.norm() * qp.x_star.norm());
@@ -66,7 +66,7 @@ TEST(Smalbe, IterationLimitIsAStatus) {
   settings.max_hessian = 10;
   Vec x = Vec::Zero(60);
   const SmalbeResult result =
-      smalbe(problem, x, settings, [](const Vec&, double gp, const Vec&) { return gp <= 0; });
+      smalbe(problem, x, settings, [](const Vec&, const Vec& gp, const Vec&) { return gp.norm() <= 0; });
   EXPECT_EQ(result.status, SolveStatus::max_iterations);
   EXPECT_LE(result.counts.hessian, 10 + 2);  // a step in progress may finish (<= 2 products)
 }

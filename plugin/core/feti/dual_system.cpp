@@ -34,7 +34,7 @@ void DualSolveSettings::validate() const {
 DualSystem::DualSystem(const SubdomainList& subdomains, const std::vector<int>& global_ids,
                        const std::vector<int>& owner, const std::vector<int>& bodies, Constraints constraints,
                        int threads, const Communicator& comm)
-    : subdomains_(subdomains), constraints_(std::move(constraints)) {
+    : subdomains_(subdomains), comm_(comm), constraints_(std::move(constraints)) {
   std::vector<Eigen::Index> sizes;
   for (const auto& s : subdomains) sizes.push_back(s->size());
   local_ = split_by_subdomain(constraints_, sizes, global_ids);
@@ -137,6 +137,13 @@ DualSolution DualSystem::prepared(const DualData& data, const DualSolveSettings&
   return result;
 }
 
+double DualSystem::displacement_scale(const DualData& data, const Vec& lambda) const {
+  double local = 0;
+  for (const Vec& us : recover_primal(*F_, coarse_.get(), constraints_, data.loads, data.c, lambda))
+    if (us.size()) local = std::max(local, us.lpNorm<Eigen::Infinity>());
+  return comm_.max(local);
+}
+
 void DualSystem::recover(const DualData& data, Vec lambda, DualSolution& result) const {
   Stopwatch recovery_clock;
   result.u = recover_primal(*F_, coarse_.get(), constraints_, data.loads, data.c, lambda);
@@ -147,7 +154,9 @@ void DualSystem::recover(const DualData& data, Vec lambda, DualSolution& result)
 std::vector<DualSolution> DualSystem::solve(const std::vector<DualData>& data,
                                             const DualSolveSettings& settings) const {
   std::vector<DualSolution> results;
-  if (data.size() < 2 || (path() != "cg" && path() != "projected_cg")) {
+  // Lockstep runs share the seed's test (a reference per run known in advance); the
+  // relative_kkt test needs u of each run, so those solve one after the other.
+  if (data.size() < 2 || settings.stopping != StoppingTest::seed || (path() != "cg" && path() != "projected_cg")) {
     for (const DualData& d : data) results.push_back(solve(d, settings));
     return results;
   }
@@ -203,6 +212,14 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     return lower;
   }();
   const double b_tol = tolerance * result.gradient_reference;
+  // The gradient part of the stopping test at the solver's iterate x (lambda = x + lambda~,
+  // multipliers at their bound exactly 0) with projected gradient gP of 2-norm gp_norm.
+  RelativeKktStop kkt_stop(tolerance, [&](const Vec& x) {
+    return displacement_scale(data, lambda_from_shifted(x, lower_bounds, data.lambda_tilde));
+  });
+  const auto gradient_converged = [&](const Vec& x, const Vec& gP, double gp_norm) {
+    return settings.stopping == StoppingTest::seed ? gp_norm <= b_tol : kkt_stop(x, gP);
+  };
 
   if (result.path == "cg" || result.path == "projected_cg") {
     const LinearOperator A = [&](const Vec& x, Vec& y) {
@@ -220,7 +237,7 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     cg.max_hessian = settings.max_hessian;
     Vec mu = Vec::Zero(m), g;
     const CgResult cg_result = conjugate_gradient(
-        A, data.b, mu, g, cg, [&](const Vec&, const Vec&, double norm) { return norm <= b_tol; },
+        A, data.b, mu, g, cg, [&](const Vec& x, const Vec& gx, double norm) { return gradient_converged(x, gx, norm); },
         settings.monitor, M);
     result.status = cg_result.status;
     result.counts = cg_result.counts;
@@ -234,7 +251,10 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     const LinearOperator M = preconditioner_operator();
     const MprgpResult r = mprgp(
         [&](const Vec& v, Vec& y) { F_->apply(v, y); }, data.b, lower_bounds, norm, x, g, false, mprgp_settings,
-        [&](const Vec&, const Vec&, double norm_gp) { return norm_gp <= b_tol; }, settings.monitor, M);
+        [&](const Vec& xi, const Vec& gi, double norm_gp) {
+          return gradient_converged(xi, projected_gradient(xi, gi, lower_bounds), norm_gp);
+        },
+        settings.monitor, M);
     const int estimate = result.counts.hessian_norm_estimate;
     result.counts = r.counts;
     result.counts.hessian_norm_estimate = estimate;
@@ -266,9 +286,9 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     smalbe_settings.inner = settings.mprgp;
     Vec mu = Vec::Zero(m);
     const SmalbeResult r = smalbe(problem, mu, smalbe_settings,
-        [&](const Vec& x, double gp_norm, const Vec&) {
+        [&](const Vec& x, const Vec& gP, const Vec&) {
           result.equality_norm = (coarse_->G() * x).norm();  // G lambda - e = G mu
-          return gp_norm <= b_tol && result.equality_norm <= tolerance * eq_reference;
+          return result.equality_norm <= tolerance * eq_reference && gradient_converged(x, gP, gP.norm());
         },
         settings.monitor);
     const int estimate = result.counts.hessian_norm_estimate;
@@ -279,6 +299,8 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     result.equality_norm = (coarse_->G() * mu).norm();
     lambda = lambda_from_shifted(mu, lower_bounds, data.lambda_tilde);
   }
+  result.violation = kkt_stop.measure();
+  result.scale_evaluations = kkt_stop.evaluations();
   result.solve_seconds = solve_clock.seconds() - result.norm_estimate_seconds;
   recover(data, std::move(lambda), result);
   return result;

@@ -9,6 +9,7 @@
 #include "feti/constraints.h"
 #include "feti/dirichlet_preconditioner.h"
 #include "feti/dual_operator.h"
+#include "feti/stopping_test.h"
 #include "parallel/subdomain_sum.h"
 #include "qp/norm_estimate.h"
 #include "qp/smalbe.h"
@@ -20,18 +21,19 @@
 
 namespace ffeti {
 
-/// Relative stopping test of every path (the seed's, with its "N f" read as the dual
-/// right-hand side, see docs/algorithms.md):
-///   ||gP(lambda, mu, 0)||_2 <= tolerance ||b||_2,  b = P(d - F lambda~)
-///   ||G lambda - e||_2      <= tolerance ||e||_2   (where there is a coarse space)
+/// Stopping test of every path (docs/algorithms.md): by default (relative_kkt)
+///   ||gP(lambda, mu, 0)||_inf <= tolerance ||u(lambda)||_inf,
+/// or the seed's  ||gP||_2 <= tolerance ||b||_2,  b = P(d - F lambda~);  and on both, where
+/// there is a coarse space,  ||G lambda - e||_2 <= tolerance ||e||_2.
 struct DualSolveSettings {
   double tolerance = 1e-4;
+  StoppingTest stopping = StoppingTest::relative_kkt;
   int max_hessian = 10000;          ///< over the whole solve
   SmalbeSettings smalbe{};          ///< used on the SMALBE path (its max_hessian is overridden)
   MprgpSettings mprgp{};            ///< used on the MPRGP path and inside SMALBE
   NormEstimateSettings norm_estimate{};
   Monitor monitor{};
-  /// Measure ||gP|| against max(||b||, ||B K^+ f||) instead of ||b||: for right-hand sides
+  /// Seed test: measure ||gP|| against max(||b||, ||B K^+ f||) instead of ||b||: for right-hand sides
   /// whose b is small after cancellation (a sensitivity load f' - K'u in near equilibrium),
   /// ||b|| lies below the round-off of the data it came from, and a tolerance relative to it
   /// cannot be reached.
@@ -57,6 +59,8 @@ struct DualSolution {
   double gradient_reference = 0;
   double equality_norm = 0;      ///< final ||G lambda - e|| and its reference ||e||
   double equality_reference = 0;
+  double violation = 0;          ///< relative_kkt: final ||gP||_inf / ||u||_inf
+  int scale_evaluations = 0;     ///< relative_kkt: ||u(lambda)||_inf computed (a K^+ application each)
   Vec lambda;                    ///< multipliers, rows ordered as constraints()
   std::vector<Vec> u;            ///< primal solution per subdomain of this rank
   double norm_estimate_seconds = 0, solve_seconds = 0, recovery_seconds = 0;  ///< this rank's
@@ -109,8 +113,10 @@ class DualSystem {
   DualSolution prepared(const DualData& data, const DualSolveSettings& settings) const;  // path, references
   LinearOperator preconditioner_operator() const;  // M^{-1}, or empty without a preconditioner
   void recover(const DualData& data, Vec lambda, DualSolution& result) const;
+  double displacement_scale(const DualData& data, const Vec& lambda) const;  // ||u(lambda)||_inf
 
   const SubdomainList& subdomains_;
+  const Communicator& comm_;
   Constraints constraints_;
   std::vector<LocalConstraints> local_;
   std::unique_ptr<SubdomainSum> sum_;

@@ -197,6 +197,8 @@ FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
   result.gradient_reference = dual.gradient_reference;
   result.equality_norm = dual.equality_norm;
   result.equality_reference = dual.equality_reference;
+  result.violation = dual.violation;
+  result.scale_evaluations = dual.scale_evaluations;
   result.u = std::move(dual.u);
   result.lambda = std::move(dual.lambda);
   result.times.norm_estimate = dual.norm_estimate_seconds;

@@ -65,7 +65,7 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
   IterationCounts& counts = result.counts;
 
   auto multiply = [&](const Vec& v, Vec& Av) { A(v, Av); ++counts.hessian; };
-  Vec phi(n), beta(n), p(n), Ap(n), z(n);
+  Vec phi(n), beta(n), p(n), Ap(n), z(n), trial, trial_gradient;
   // z = M phi on the free set, 0 on the active set (z = phi without a preconditioner).
   const auto precondition_in_face = [&]() -> const Vec& {
     if (!preconditioner) return phi;
@@ -126,16 +126,48 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
         p = direction - (direction.dot(Ap) / pAp) * p;  // A-conjugate to the previous direction
         ++counts.cg;
       } else {
-        x -= a_f * p;
-        g -= a_f * Ap;
-        free_gradient(x, g, lower, phi);
-        x -= abar * phi;  // expansion: fixed-step projected gradient step
-        project(x, lower);
-        multiply(x, Ap);
-        g = Ap - b;
+        ++counts.expansion;
+        bool expanded = false;
+        if (settings.expansion == MprgpExpansion::projected_cg) {
+          // The CG step taken in full and projected: it can add many bounds at once, where
+          // the fixed step moves at most abar |phi| per step. Kept only if it decreases f at
+          // least as much as the fixed-step expansion is guaranteed to (the bound below).
+          const double f_x = 0.5 * x.dot(g - b);
+          const double f_half = f_x - a_f * g.dot(p) + 0.5 * a_f * a_f * pAp;
+          trial = x - a_cg * p;
+          project(trial, lower);
+          x -= a_f * p;
+          g -= a_f * Ap;
+          free_gradient(x, g, lower, phi);
+          double phi_reduced = 0, reduced_sq = 0;  // phi'phit and ||phit||^2 at x - a_f p
+          for (Eigen::Index i = 0; i < n; ++i) {
+            const double phit = lower[i] == kUnbounded ? phi[i] : std::min((x[i] - lower[i]) / abar, phi[i]);
+            phi_reduced += phi[i] * phit;
+            reduced_sq += phit * phit;
+          }
+          const double guaranteed = f_half - abar * phi_reduced + 0.5 * a_norm * abar * abar * reduced_sq;
+          multiply(trial, Ap);
+          trial_gradient = Ap - b;
+          if (0.5 * trial.dot(trial_gradient - b) <= guaranteed) {
+            x.swap(trial);
+            g.swap(trial_gradient);
+            expanded = true;
+          } else {
+            ++counts.expansion_fallback;
+          }
+        } else {
+          x -= a_f * p;
+          g -= a_f * Ap;
+          free_gradient(x, g, lower, phi);
+        }
+        if (!expanded) {
+          x -= abar * phi;  // expansion: fixed-step projected gradient step
+          project(x, lower);
+          multiply(x, Ap);
+          g = Ap - b;
+        }
         free_gradient(x, g, lower, phi);
         p = precondition_in_face();
-        ++counts.expansion;
       }
     } else {
       // Proportioning: release components of the active set along the chopped gradient.

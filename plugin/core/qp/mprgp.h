@@ -6,10 +6,18 @@
 
 namespace ffeti {
 
+/// How MPRGP expands the active set when a CG step would leave the feasible set.
+enum class MprgpExpansion {
+  fixed_step,    ///< the feasible part of the CG step, then a projected free-gradient step abar
+  projected_cg,  ///< the whole CG step projected, kept if it decreases f at least as much as
+                 ///< the fixed step is guaranteed to; otherwise the fixed step (Kruzik et al. 2020)
+};
+
 struct MprgpSettings {
   double gamma = 1.0;         ///< proportioning threshold Gamma > 0
   double step_factor = 1.9;   ///< fixed step abar = step_factor / ||A||, in (0, 2]
   int max_hessian = 20000;    ///< limit on Hessian multiplications in this call
+  MprgpExpansion expansion = MprgpExpansion::projected_cg;
 
   /// Throws std::invalid_argument naming the offending member.
   void validate() const;

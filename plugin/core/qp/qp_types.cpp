@@ -22,6 +22,7 @@ IterationCounts& IterationCounts::operator+=(const IterationCounts& other) {
   cg += other.cg;
   expansion += other.expansion;
   proportioning += other.proportioning;
+  expansion_fallback += other.expansion_fallback;
   penalty_increases += other.penalty_increases;
   preconditioner += other.preconditioner;
   return *this;

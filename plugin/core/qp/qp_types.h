@@ -39,6 +39,7 @@ struct IterationCounts {
   int cg = 0;           ///< conjugate gradient steps (MPRGP CG steps or plain CG)
   int expansion = 0;    ///< MPRGP expansion steps
   int proportioning = 0;///< MPRGP proportioning steps
+  int expansion_fallback = 0;  ///< MPRGP projected-CG expansions rejected for the fixed step
   int penalty_increases = 0;  ///< SMALBE: times the penalty rho grew
   int preconditioner = 0;     ///< applications of a preconditioner (about the cost of one of F)
 

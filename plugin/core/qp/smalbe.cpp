@@ -77,7 +77,7 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
       result.equality_norm = q_norm;
       if (monitor)
         monitor({"smalbe", outer, result.projected_gradient_norm, q_norm, applications, off_bound_count(xi, lower)});
-      if (stop(xi, result.projected_gradient_norm, Qx)) return globally_done = true;
+      if (stop(xi, gp0, Qx)) return globally_done = true;
       // At least one inner step per outer iteration: a multiplier update that the inner
       // solver does not answer only grows nu, and can stall the outer loop for many rounds.
       if (first_call) return first_call = false;

@@ -50,10 +50,9 @@ struct SmalbeProblem {
   LinearOperator preconditioner;
 };
 
-/// Global stopping test: x, ||gP(x, nu, 0)||_2 (projected gradient of the Lagrangian
-/// without penalty) and Q x. Returning true ends the solve with `converged`.
-using SmalbeStopTest =
-    std::function<bool(const Vec& x, double projected_gradient_norm, const Vec& Qx)>;
+/// Global stopping test: x, gP(x, nu, 0) (projected gradient of the Lagrangian without
+/// penalty) and Q x. Returning true ends the solve with `converged`.
+using SmalbeStopTest = std::function<bool(const Vec& x, const Vec& projected_gradient, const Vec& Qx)>;
 
 /// Runs SMALBE from the start x (projected onto the bounds; updated in place).
 SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& settings,

@@ -179,6 +179,7 @@ std::vector<SensitivityResult> SensitivityProblem::direct(const std::vector<Desi
   }
   DualSolveSettings relative_to_data = settings;
   relative_to_data.reference_includes_data = true;  // fbar = f' - K'u is nearly self-equilibrated
+  relative_to_data.stopping = StoppingTest::seed;
   std::vector<DualSolution> solutions = system_->solve(dual, relative_to_data);
   std::vector<SensitivityResult> results(directions.size());
   for (size_t j = 0; j < directions.size(); ++j) {
@@ -224,7 +225,9 @@ AdjointResult SensitivityProblem::adjoint(const std::vector<Vec>& dJdu, const Du
     return result;
   }
   const Vec zero = Vec::Zero(system_->rows());
-  DualSolution s = system_->solve(system_->data(problem_.operator_loads(dJdu, true), zero), settings);
+  DualSolveSettings relative_to_data = settings;
+  relative_to_data.stopping = StoppingTest::seed;
+  DualSolution s = system_->solve(system_->data(problem_.operator_loads(dJdu, true), zero), relative_to_data);
   result.status = s.status;
   result.path = s.path;
   result.counts = s.counts;
