@@ -9,6 +9,9 @@
 #   ./scripts/benchmark.sh shape-optimization  design loops, gradient costs and checks (~6 min)
 #   ./scripts/benchmark.sh scalability     Hessian multiplications over h up to n = 2048, with and
 #                                          without contact, with and without preconditioner (~10 min)
+#   ./scripts/benchmark.sh large-contact   a large contact zone: expansion steps, stopping tests,
+#                                          against an active set reference (~4 min)
+#   ./scripts/benchmark.sh hard-cases      the hard-case suite as a table (~1 min)
 #   ./scripts/benchmark.sh                 all
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -24,11 +27,15 @@ case "${1:-all}" in
   multibody) /usr/bin/python3 "$root/scripts/multibody_picture.py" ;;
   shape-optimization) /usr/bin/python3 "$root/scripts/shape_optimization_benchmark.py" ;;
   scalability) /usr/bin/python3 "$root/scripts/scalability_benchmark.py" ;;
+  large-contact) /usr/bin/python3 "$root/scripts/large_contact_benchmark.py" ;;
+  hard-cases) /usr/bin/python3 "$root/scripts/hard_cases_table.py" ;;
   all) /usr/bin/python3 "$root/scripts/model_problem_benchmark.py"
        /usr/bin/python3 "$root/scripts/parallel_benchmark.py"
        /usr/bin/python3 "$root/scripts/hertz_benchmark.py"
        /usr/bin/python3 "$root/scripts/multibody_picture.py"
        /usr/bin/python3 "$root/scripts/shape_optimization_benchmark.py"
-       /usr/bin/python3 "$root/scripts/scalability_benchmark.py" ;;
-  *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization|scalability]" >&2; exit 2 ;;
+       /usr/bin/python3 "$root/scripts/scalability_benchmark.py"
+       /usr/bin/python3 "$root/scripts/large_contact_benchmark.py"
+       /usr/bin/python3 "$root/scripts/hard_cases_table.py" ;;
+  *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization|scalability|large-contact|hard-cases]" >&2; exit 2 ;;
 esac

@@ -1,16 +1,40 @@
 // Numerically hard scenes stay stable under default options: extreme scaling of K and f,
-// large stiffness contrast between bodies, many small subdomains (small H/h, many cross
-// points), an infeasible scene, a gap sweep and zero load, and Total FETI on all of them. Each is checked against an independent answer
-// (a scaled solution, the other FETI variant, or the monolithic active-set reference).
+// large stiffness contrast between bodies, H/h from 4 to 256, subdomains one element thick,
+// cells of aspect ratio 100, a chain of floating bodies held only by contact, every couple
+// active and none, an infeasible scene, a gap sweep and zero load, and Total FETI on them.
+// Each is checked against an independent answer (a scaled solution, the other FETI
+// variant, the bodies' equilibrium, or the monolithic active-set reference). Each case
+// records a row of docs/results/hard-cases.md (scripts/hard_cases_table.py reads the rows
+// from the XML output of `ffeti_unit_tests --gtest_filter=HardCases*:Extreme*`).
 #include "feti/feti_problem.h"
 #include "membrane_model.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
+#include <sstream>
 
 namespace ffeti {
 namespace {
+
+/// A number as a person writes it in a case name: 1e-12, 0.01, 1.
+std::string number(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+/// One row of the hard-case table: what was solved, how it went and how far it is from the
+/// independent answer (`error`, described by `check`).
+void record(const std::string& scene, const FetiResult& r, double error, const std::string& check) {
+  std::ostringstream row;
+  row.precision(3);
+  row << "status=" << to_string(r.status) << ";path=" << r.path << ";outer=" << r.counts.outer
+      << ";hessian=" << r.counts.hessian << ";kkt=" << r.kkt.max() << ";error=" << error << ";check=" << check
+      << ";active=" << r.active_contact << ";seconds=" << r.times.solve + r.times.norm_estimate;
+  ::testing::Test::RecordProperty("row " + scene, row.str());
+}
 
 FetiResult solve_membranes(std::vector<SubdomainInput> subs, FetiVariant variant, double tolerance) {
   const ContactInput contact = test::membrane_contact(subs);
@@ -44,6 +68,8 @@ TEST_P(ExtremeScaling, StiffnessAndLoadScaledTogetherLeaveUUnchanged) {
   const FetiResult reference = solve_membranes(reference_subs, FetiVariant::feti1, 1e-10);
   const FetiResult scaled = solve_membranes(scaled_subs, FetiVariant::feti1, 1e-10);
   ASSERT_EQ(scaled.status, SolveStatus::converged);
+  record("K and f scaled by " + number(factor), scaled, relative_difference(scaled.u, reference.u, 1.0),
+         "u against the unscaled solution");
   EXPECT_LT(relative_difference(scaled.u, reference.u, 1.0), 1e-7);
   EXPECT_LT((scaled.lambda - factor * reference.lambda).norm(), 1e-7 * factor * reference.lambda.norm());
   EXPECT_EQ(scaled.active_contact, reference.active_contact);
@@ -57,6 +83,8 @@ TEST_P(ExtremeScaling, LoadScaledAloneScalesU) {
   const FetiResult reference = solve_membranes(reference_subs, FetiVariant::feti1, 1e-10);
   const FetiResult scaled = solve_membranes(scaled_subs, FetiVariant::feti1, 1e-10);
   ASSERT_EQ(scaled.status, SolveStatus::converged);
+  record("f scaled by " + number(factor), scaled, relative_difference(scaled.u, reference.u, factor),
+         "u against factor x the unscaled solution");
   EXPECT_LT(relative_difference(scaled.u, reference.u, factor), 1e-7);  // contact with zero gap is homogeneous
 }
 
@@ -74,6 +102,8 @@ TEST(HardCases, StiffnessContrastOfSixOrdersOfMagnitude) {
   const FetiResult total = solve_membranes(subs, FetiVariant::tfeti, 1e-10);
   ASSERT_EQ(feti1.status, SolveStatus::converged);
   ASSERT_EQ(total.status, SolveStatus::converged);
+  record("stiffness contrast 1e6 between bodies", feti1, std::abs(feti1.energy - total.energy) / std::abs(feti1.energy),
+         "energy against Total FETI");
   EXPECT_LT(feti1.kkt.max(), 1e-6) << feti1.kkt.equilibrium << " " << feti1.kkt.equality;
   EXPECT_NEAR(feti1.energy, total.energy, 1e-8 * std::abs(feti1.energy));
   EXPECT_EQ(feti1.active_contact, total.active_contact);
@@ -86,6 +116,8 @@ TEST(HardCases, ManySmallSubdomainsMatchTheMonolithicReference) {
   for (FetiVariant variant : {FetiVariant::feti1, FetiVariant::tfeti}) {
     const FetiResult result = solve_membranes(test::membrane_subdomains(test::membrane_options(n, 8)), variant, 1e-10);
     ASSERT_EQ(result.status, SolveStatus::converged);
+    record(std::string("H/h = 4, 128 subdomains, ") + (variant == FetiVariant::feti1 ? "FETI-1" : "Total FETI"), result,
+           std::abs(result.energy - reference.energy) / std::abs(reference.energy), "energy against the active set reference");
     EXPECT_NEAR(result.energy, reference.energy, 1e-8 * std::abs(reference.energy));
     EXPECT_EQ(result.active_contact, static_cast<int>(reference.active_y.size()));
   }
@@ -105,6 +137,8 @@ TEST(HardCases, InfeasibleSceneIsReportedNotIterated) {
         EXPECT_EQ(r.status, SolveStatus::converged);
         continue;
       }
+      record(std::string("infeasible: floating load reversed x ") + number(-factor) +
+             (variant == FetiVariant::feti1 ? ", FETI-1" : ", Total FETI"), r, 0.0, "status infeasible, no iteration");
       EXPECT_EQ(r.status, SolveStatus::infeasible) << "factor " << factor << ": " << to_string(r.status);
       EXPECT_EQ(r.counts.hessian, 0);
       EXPECT_GT(r.equality_norm, 1e-6 * r.equality_reference);  // the distance that cannot be closed
@@ -133,6 +167,8 @@ TEST(HardCases, GapSweepShiftsTheFloatingMembraneExactly) {
   for (double gap : {-0.01, 0.01, 0.1, 1.0}) {
     const FetiResult r = solve_with_gap(gap, 1.0).first;
     ASSERT_EQ(r.status, SolveStatus::converged) << "gap " << gap;
+    record("gap " + number(gap), r, std::abs(r.energy - reference.energy - gap * load_on_floating),
+           "energy against the rigid shift");
     EXPECT_NEAR(r.energy, reference.energy + gap * load_on_floating, 1e-9) << "gap " << gap;
     EXPECT_EQ(r.active_contact, reference.active_contact) << "gap " << gap;
     double shift_error = 0;
@@ -143,9 +179,171 @@ TEST(HardCases, GapSweepShiftsTheFloatingMembraneExactly) {
     EXPECT_LT(shift_error, 1e-7 * (1 + std::abs(gap))) << "gap " << gap;
   }
   const FetiResult unloaded = solve_with_gap(0.0, 0.0).first;
+  double largest = 0;
+  for (const Vec& u : unloaded.u) largest = std::max(largest, u.cwiseAbs().maxCoeff());
+  record("zero load", unloaded, largest, "u = 0");
   EXPECT_EQ(unloaded.status, SolveStatus::converged);
   EXPECT_LE(unloaded.counts.hessian, 1);
-  for (const Vec& u : unloaded.u) EXPECT_EQ(u.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(largest, 0.0);
+}
+
+TEST(HardCases, SubdomainSizeFromFourToTwoHundredFiftySixCells) {
+  // The same discretization split ever finer: H/h = 256, 64, 16, 4 (2 to 2048 subdomains
+  // at h = 1/128, h = 1/256 for H/h = 256), against the monolithic reference.
+  for (const auto& [n, splits] : std::vector<std::pair<int, std::vector<int>>>{{256, {1}}, {128, {2, 8, 32}}}) {
+    const test::ReferenceSolution reference = test::membrane_reference(n);
+    for (int N : splits) {
+      const FetiResult r =
+          solve_membranes(test::membrane_subdomains(test::membrane_options(n, N)), FetiVariant::feti1, 1e-8);
+      ASSERT_EQ(r.status, SolveStatus::converged) << "H/h " << n / N;
+      const double error = std::abs(r.energy - reference.energy) / std::abs(reference.energy);
+      record("H/h = " + std::to_string(n / N) + ", " + std::to_string(2 * N * N) + " subdomains", r, error,
+             "energy against the active set reference");
+      EXPECT_LT(error, 1e-7) << "H/h " << n / N;
+      EXPECT_EQ(r.active_contact, static_cast<int>(reference.active_y.size())) << "H/h " << n / N;
+    }
+  }
+}
+
+/// The membranes on a grid of n cells across and ny cells up each body (cells of aspect
+/// ratio n / ny), body 0 cut into horizontal strips `strip_cells` high, body 1 into 2 x 2
+/// blocks.
+std::vector<SubdomainInput> membranes_in_strips(int n, int strip_cells, int ny) {
+  const auto load = [](double x, double y) {
+    if (x < 1) return y > 0.75 ? -3.0 : 0.0;
+    return y < 0.25 ? -1.0 : 0.0;
+  };
+  std::vector<SubdomainInput> subs;
+  for (int j = 0; j < ny; j += strip_cells) {
+    SubdomainInput s = test::p1_rectangle(0, double(j) / ny, 1, double(strip_cells) / ny, n, strip_cells, 2.0, load, 0);
+    for (int k = 0; k < static_cast<int>(s.x.size()); ++k)
+      if (s.x[k] == 0.0) s.dirichlet_dofs.push_back(k);
+    subs.push_back(std::move(s));
+  }
+  for (int J = 0; J < 2; ++J)
+    for (int I = 0; I < 2; ++I) subs.push_back(test::p1_rectangle(1 + 0.5 * I, 0.5 * J, 0.5, 0.5, n / 2, ny / 2, 2.0, load, 1));
+  return subs;
+}
+
+TEST(HardCases, SubdomainsOneElementThick) {
+  // Body 0 as 32 strips one cell high: every node of a strip lies on its boundary.
+  const int n = 32;
+  const test::ReferenceSolution reference = test::membrane_reference(n);
+  for (FetiVariant variant : {FetiVariant::feti1, FetiVariant::tfeti}) {
+    const FetiResult r = solve_membranes(membranes_in_strips(n, 1, n), variant, 1e-8);
+    ASSERT_EQ(r.status, SolveStatus::converged);
+    const double error = std::abs(r.energy - reference.energy) / std::abs(reference.energy);
+    record(std::string("32 strips one element thick, ") + (variant == FetiVariant::feti1 ? "FETI-1" : "Total FETI"), r,
+           error, "energy against the active set reference");
+    EXPECT_LT(error, 1e-7);
+    EXPECT_EQ(r.active_contact, static_cast<int>(reference.active_y.size()));
+  }
+}
+
+TEST(HardCases, CellsOfAspectRatioOneHundred) {
+  // 200 x 2 cells per body: cells 1/200 wide and 1/2 high, split in strips of one cell
+  // (left body) and 2 x 2 blocks (right body). Two variants must agree.
+  const std::vector<SubdomainInput> subs = membranes_in_strips(200, 1, 2);
+  const FetiResult feti1 = solve_membranes(subs, FetiVariant::feti1, 1e-8);
+  const FetiResult total = solve_membranes(subs, FetiVariant::tfeti, 1e-8);
+  ASSERT_EQ(feti1.status, SolveStatus::converged);
+  ASSERT_EQ(total.status, SolveStatus::converged);
+  const double error = std::abs(feti1.energy - total.energy) / std::abs(total.energy);
+  record("cells of aspect ratio 100", feti1, error, "energy against Total FETI");
+  EXPECT_LT(error, 1e-7);
+  EXPECT_EQ(feti1.active_contact, total.active_contact);
+  EXPECT_LT(feti1.kkt.max(), 1e-7);
+}
+
+TEST(HardCases, ChainOfThreeFloatingBodiesHeldOnlyByContact) {
+  // Bodies (b, b+1) x (0,1), b = 0..3, each in 2 x 2 subdomains; body 0 fixed at x = 0, the
+  // others held only by the contact lines x = 1, 2, 3 (u_left <= u_right), all loaded by
+  // -1. Equilibrium: the multipliers on line x = b carry the load of bodies b .. 3.
+  const int n = 16, bodies = 4;
+  const auto load = [](double, double) { return -1.0; };
+  std::vector<SubdomainInput> subs;
+  ContactInput contact;
+  for (int b = 0; b < bodies; ++b)
+    for (int J = 0; J < 2; ++J)
+      for (int I = 0; I < 2; ++I) {
+        SubdomainInput s = test::p1_rectangle(b + 0.5 * I, 0.5 * J, 0.5, 0.5, n / 2, n / 2, 1.0, load, b);
+        std::vector<int> slave, master;
+        for (int k = 0; k < static_cast<int>(s.x.size()); ++k) {
+          if (b == 0 && s.x[k] == 0.0) s.dirichlet_dofs.push_back(k);
+          if (b + 1 < bodies && std::abs(s.x[k] - (b + 1)) < 1e-12) slave.push_back(k);
+          if (b > 0 && std::abs(s.x[k] - b) < 1e-12) master.push_back(k);
+        }
+        contact.slave_dofs.push_back(slave);
+        contact.master_dofs.push_back(master);
+        subs.push_back(std::move(s));
+      }
+  std::vector<double> load_of_body(bodies, 0.0);
+  for (const auto& s : subs) load_of_body[static_cast<size_t>(s.body)] += s.f.sum();
+  double energies[2];
+  for (FetiVariant variant : {FetiVariant::feti1, FetiVariant::tfeti}) {
+    FetiSetupSettings setup;
+    setup.variant = variant;
+    const FetiProblem problem(subs, contact, setup);
+    DualSolveSettings settings;
+    settings.tolerance = 1e-8;
+    const FetiResult r = problem.solve(settings);
+    ASSERT_EQ(r.status, SolveStatus::converged);
+    energies[variant == FetiVariant::feti1 ? 0 : 1] = r.energy;
+    std::map<int, double> carried;  // contact line -> sum of its multipliers
+    const Constraints& c = problem.constraints();
+    for (int i = c.equality_rows; i < c.rows(); ++i)
+      carried[static_cast<int>(std::lround(problem.contact_positions()[static_cast<size_t>(i - c.equality_rows)][0]))] +=
+          r.lambda[i];
+    double worst = 0;
+    for (int line = 1; line < bodies; ++line) {
+      double load_beyond = 0;
+      for (int b = line; b < bodies; ++b) load_beyond += load_of_body[static_cast<size_t>(b)];
+      worst = std::max(worst, std::abs(carried[line] + load_beyond) / std::abs(load_beyond));
+    }
+    record(std::string("chain of 3 floating bodies, ") + (variant == FetiVariant::feti1 ? "FETI-1" : "Total FETI"), r,
+           worst, "contact force per line against the load it carries");
+    EXPECT_LT(worst, 1e-6);
+    EXPECT_LT(r.kkt.max(), 1e-6);
+  }
+  EXPECT_NEAR(energies[0], energies[1], 1e-8 * std::abs(energies[1]));
+}
+
+TEST(HardCases, EveryCoupleActiveOrNone) {
+  // Both membranes fixed (x = 0 and x = 2): with a wide gap no couple touches and the
+  // bodies deform alone (against the scene without contact rows); with interference and
+  // no load every couple is active and u is linear in the gap (gap -1 against gap -2).
+  // (This scene starts from u = 0: it caught a stopping test that never re-measured ‖u‖.)
+  const auto solve = [](double gap, double load_factor, bool with_contact) {
+    test::MembraneOptions o = test::membrane_options(32, 2);
+    o.fix_right_body = true;
+    o.with_contact = with_contact;
+    auto subs = test::membrane_subdomains(o);
+    for (auto& s : subs) s.f *= load_factor;
+    ContactInput contact = with_contact ? test::membrane_contact(subs) : ContactInput{};
+    contact.gap = gap;
+    const FetiProblem problem(subs, contact, FetiSetupSettings{});
+    DualSolveSettings settings;
+    settings.tolerance = 1e-8;
+    return std::make_pair(problem.solve(settings), problem.constraints().count(RowKind::contact));
+  };
+  const auto [apart, couples_apart] = solve(1.0, 1.0, true);
+  const FetiResult alone = solve(0.0, 1.0, false).first;
+  ASSERT_EQ(apart.status, SolveStatus::converged);
+  ASSERT_EQ(alone.status, SolveStatus::converged);
+  EXPECT_GT(couples_apart, 0);
+  EXPECT_EQ(apart.active_contact, 0);
+  const double apart_error = relative_difference(apart.u, alone.u, 1.0);
+  record("no couple active (gap 1)", apart, apart_error, "u against the bodies without contact");
+  EXPECT_LT(apart_error, 1e-7);
+
+  const auto [pressed, couples] = solve(-1.0, 0.0, true);
+  const FetiResult pressed_twice = solve(-2.0, 0.0, true).first;
+  ASSERT_EQ(pressed.status, SolveStatus::converged);
+  ASSERT_EQ(pressed_twice.status, SolveStatus::converged);
+  EXPECT_EQ(pressed.active_contact, couples);
+  const double linearity = relative_difference(pressed_twice.u, pressed.u, 2.0);
+  record("every couple active (gap -1, no load)", pressed, linearity, "u against half the solution at gap -2");
+  EXPECT_LT(linearity, 1e-7);
 }
 
 }  // namespace

@@ -138,8 +138,18 @@ DualSolution DualSystem::prepared(const DualData& data, const DualSolveSettings&
 }
 
 double DualSystem::displacement_scale(const DualData& data, const Vec& lambda) const {
+  // u = K^+(f - B'lambda) + R alpha with alpha fitting all rows in least squares: the
+  // factorized GG' serves (recover_primal fits the rows that hold with equality, a new
+  // dense factorization each time, for the final u).
+  std::vector<Vec> u;
+  F_->pseudo_inverse_of_residual(data.loads, lambda, u);
+  if (coarse_ && !coarse_->empty()) {
+    Vec Bu;
+    F_->apply_B(u, Bu);
+    coarse_->add_kernel_component(coarse_->kernel_coefficients(data.c - Bu), u);
+  }
   double local = 0;
-  for (const Vec& us : recover_primal(*F_, coarse_.get(), constraints_, data.loads, data.c, lambda))
+  for (const Vec& us : u)
     if (us.size()) local = std::max(local, us.lpNorm<Eigen::Infinity>());
   return comm_.max(local);
 }

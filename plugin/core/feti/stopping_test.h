@@ -21,8 +21,9 @@ enum class StoppingTest {
 };
 
 /// The relative_kkt test for one solve. ||u(lambda)||_inf costs a K^+ application, so it is
-/// recomputed only when the test holds with the last value known (and at the first call):
-/// a solve pays two or three of them.
+/// recomputed only at the first call, when the test holds with the last value known, and
+/// when the violation has fallen a hundredfold since the last evaluation: a solve pays two
+/// to five of them.
 class RelativeKktStop {
  public:
   /// `displacement_scale(x)`: ||u||_inf of the primal field of the dual iterate x
@@ -40,6 +41,7 @@ class RelativeKktStop {
   double tolerance_;
   std::function<double(const Vec&)> displacement_scale_;
   double scale_;
+  double evaluated_violation_;  // the violation when scale_ was computed
   int evaluations_ = 0;
   double measure_ = 0;
 };
