@@ -39,8 +39,6 @@ class CoarseSpace {
   void project(const Vec& x, Vec& y) const;
   /// y = Q x = G'(GG')^{-1} G x = x - P x.
   void project_range(const Vec& x, Vec& y) const;
-  /// (GG')^{-1} G x: the kernel coefficients alpha whose B R alpha = G'alpha fits x best.
-  Vec kernel_coefficients(const Vec& x) const { return GGt_.solve(G_ * x); }
   /// The least-norm solution of G lambda = e: G'(GG')^{-1} e.
   Vec least_norm_solution(const Vec& e) const;
 

@@ -137,21 +137,22 @@ DualSolution DualSystem::prepared(const DualData& data, const DualSolveSettings&
   return result;
 }
 
-double DualSystem::displacement_scale(const DualData& data, const Vec& lambda) const {
-  // u = K^+(f - B'lambda) + R alpha with alpha fitting all rows in least squares: the
-  // factorized GG' serves (recover_primal fits the rows that hold with equality, a new
-  // dense factorization each time, for the final u).
-  std::vector<Vec> u;
-  F_->pseudo_inverse_of_residual(data.loads, lambda, u);
-  if (coarse_ && !coarse_->empty()) {
-    Vec Bu;
-    F_->apply_B(u, Bu);
-    coarse_->add_kernel_component(coarse_->kernel_coefficients(data.c - Bu), u);
-  }
-  double local = 0;
+PrimalCheck DualSystem::primal_check(const DualData& data, const Vec& lambda) const {
+  const std::vector<Vec> u = recover_primal(*F_, coarse_.get(), constraints_, data.loads, data.c, lambda);
+  PrimalCheck check;
   for (const Vec& us : u)
-    if (us.size()) local = std::max(local, us.lpNorm<Eigen::Infinity>());
-  return comm_.max(local);
+    if (us.size()) check.displacement = std::max(check.displacement, us.lpNorm<Eigen::Infinity>());
+  check.displacement = comm_.max(check.displacement);
+  Vec Bu;
+  F_->apply_B(u, Bu);
+  double violation = 0;
+  for (int i = 0; i < rows(); ++i) {
+    const double r = Bu[i] - data.c[i];
+    violation = std::max(violation, i < constraints_.equality_rows ? std::abs(r) : r);
+  }
+  check.violation = check.displacement > 0 ? violation / check.displacement
+                                           : (violation > 0 ? std::numeric_limits<double>::infinity() : 0.0);
+  return check;
 }
 
 void DualSystem::recover(const DualData& data, Vec lambda, DualSolution& result) const {
@@ -225,7 +226,7 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
   // The gradient part of the stopping test at the solver's iterate x (lambda = x + lambda~,
   // multipliers at their bound exactly 0) with projected gradient gP of 2-norm gp_norm.
   RelativeKktStop kkt_stop(tolerance, [&](const Vec& x) {
-    return displacement_scale(data, lambda_from_shifted(x, lower_bounds, data.lambda_tilde));
+    return primal_check(data, lambda_from_shifted(x, lower_bounds, data.lambda_tilde));
   });
   const auto gradient_converged = [&](const Vec& x, const Vec& gP, double gp_norm) {
     return settings.stopping == StoppingTest::seed ? gp_norm <= b_tol : kkt_stop(x, gP);

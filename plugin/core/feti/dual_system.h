@@ -21,8 +21,8 @@
 
 namespace ffeti {
 
-/// Stopping test of every path (docs/algorithms.md): by default (relative_kkt)
-///   ||gP(lambda, mu, 0)||_inf <= tolerance ||u(lambda)||_inf,
+/// Stopping test of every path (docs/algorithms.md): by default (relative_kkt) the recovered
+/// u(lambda) violates no constraint by more than tolerance ||u||_inf,
 /// or the seed's  ||gP||_2 <= tolerance ||b||_2,  b = P(d - F lambda~);  and on both, where
 /// there is a coarse space,  ||G lambda - e||_2 <= tolerance ||e||_2.
 struct DualSolveSettings {
@@ -59,8 +59,8 @@ struct DualSolution {
   double gradient_reference = 0;
   double equality_norm = 0;      ///< final ||G lambda - e|| and its reference ||e||
   double equality_reference = 0;
-  double violation = 0;          ///< relative_kkt: final ||gP||_inf / ||u||_inf
-  int scale_evaluations = 0;     ///< relative_kkt: ||u(lambda)||_inf computed (a K^+ application each)
+  double violation = 0;          ///< relative_kkt: the last check's violation / ||u||_inf
+  int scale_evaluations = 0;     ///< relative_kkt: primal checks (a K^+ application each)
   Vec lambda;                    ///< multipliers, rows ordered as constraints()
   std::vector<Vec> u;            ///< primal solution per subdomain of this rank
   double norm_estimate_seconds = 0, solve_seconds = 0, recovery_seconds = 0;  ///< this rank's
@@ -113,7 +113,7 @@ class DualSystem {
   DualSolution prepared(const DualData& data, const DualSolveSettings& settings) const;  // path, references
   LinearOperator preconditioner_operator() const;  // M^{-1}, or empty without a preconditioner
   void recover(const DualData& data, Vec lambda, DualSolution& result) const;
-  double displacement_scale(const DualData& data, const Vec& lambda) const;  // ||u(lambda)||_inf
+  PrimalCheck primal_check(const DualData& data, const Vec& lambda) const;  // of the recovered u(lambda)
 
   const SubdomainList& subdomains_;
   const Communicator& comm_;

@@ -1,29 +1,30 @@
 #include "feti/stopping_test.h"
 
+#include <algorithm>
 #include <limits>
 #include <utility>
 
 namespace ffeti {
 
-RelativeKktStop::RelativeKktStop(double tolerance, std::function<double(const Vec& x)> displacement_scale)
-    : tolerance_(tolerance), displacement_scale_(std::move(displacement_scale)),
+RelativeKktStop::RelativeKktStop(double tolerance, std::function<PrimalCheck(const Vec& x)> check)
+    : tolerance_(tolerance), check_(std::move(check)), target_(tolerance),
       scale_(std::numeric_limits<double>::infinity()),
-      evaluated_violation_(std::numeric_limits<double>::infinity()) {}
+      checked_gradient_(std::numeric_limits<double>::infinity()) {}
 
 bool RelativeKktStop::operator()(const Vec& x, const Vec& projected_gradient) {
-  const double violation = projected_gradient.size() ? projected_gradient.lpNorm<Eigen::Infinity>() : 0.0;
-  // ||u|| known from a distant iterate can be far off (zero at the start of an unloaded
-  // scene with a prescribed gap): it is also recomputed each time the violation has fallen
-  // a hundredfold since the last evaluation.
-  if (violation > tolerance_ * scale_ && violation > 0.01 * evaluated_violation_) {
-    measure_ = violation / scale_;
-    return false;
-  }
-  scale_ = displacement_scale_(x);
-  evaluated_violation_ = violation;
+  const double gradient = projected_gradient.size() ? projected_gradient.lpNorm<Eigen::Infinity>() : 0.0;
+  if (gradient > target_ * scale_ && gradient > 0.01 * checked_gradient_) return false;
+  const PrimalCheck check = check_(x);
   ++evaluations_;
-  measure_ = scale_ > 0 ? violation / scale_ : (violation > 0 ? std::numeric_limits<double>::infinity() : 0.0);
-  return violation <= tolerance_ * scale_;
+  scale_ = check.displacement;
+  checked_gradient_ = gradient;
+  measure_ = check.violation;
+  if (measure_ <= tolerance_) return true;
+  // The prediction said done (or was not yet known) and the recovered field disagrees:
+  // aim lower by the ratio between them.
+  const double predicted = scale_ > 0 ? gradient / scale_ : std::numeric_limits<double>::infinity();
+  if (predicted <= target_) target_ = std::max(std::min(target_, tolerance_ * predicted / measure_), 1e-6 * tolerance_);
+  return false;
 }
 
 }  // namespace ffeti
