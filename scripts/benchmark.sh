@@ -12,6 +12,7 @@
 #   ./scripts/benchmark.sh large-contact   a large contact zone: expansion steps, stopping tests,
 #                                          against an active set reference (~4 min)
 #   ./scripts/benchmark.sh hard-cases      the hard-case suite as a table (~1 min)
+#   ./scripts/benchmark.sh accuracy        what accuracy costs in time, every scene, tol 1e-2 .. 1e-10 (~3 min)
 #   ./scripts/benchmark.sh                 all
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -29,6 +30,7 @@ case "${1:-all}" in
   scalability) /usr/bin/python3 "$root/scripts/scalability_benchmark.py" ;;
   large-contact) /usr/bin/python3 "$root/scripts/large_contact_benchmark.py" ;;
   hard-cases) /usr/bin/python3 "$root/scripts/hard_cases_table.py" ;;
+  accuracy) /usr/bin/python3 "$root/scripts/accuracy_benchmark.py" ;;
   all) /usr/bin/python3 "$root/scripts/model_problem_benchmark.py"
        /usr/bin/python3 "$root/scripts/parallel_benchmark.py"
        /usr/bin/python3 "$root/scripts/hertz_benchmark.py"
@@ -36,6 +38,7 @@ case "${1:-all}" in
        /usr/bin/python3 "$root/scripts/shape_optimization_benchmark.py"
        /usr/bin/python3 "$root/scripts/scalability_benchmark.py"
        /usr/bin/python3 "$root/scripts/large_contact_benchmark.py"
-       /usr/bin/python3 "$root/scripts/hard_cases_table.py" ;;
-  *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization|scalability|large-contact|hard-cases]" >&2; exit 2 ;;
+       /usr/bin/python3 "$root/scripts/hard_cases_table.py"
+       /usr/bin/python3 "$root/scripts/accuracy_benchmark.py" ;;
+  *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization|scalability|large-contact|hard-cases|accuracy]" >&2; exit 2 ;;
 esac

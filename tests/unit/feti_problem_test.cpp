@@ -241,7 +241,7 @@ TEST(FetiProblem, DefaultStopBoundsTheRelativeKktResidualsByTol) {
       EXPECT_LE(r.violation, tol);
       EXPECT_GE(r.scale_evaluations, 1);
       EXPECT_LE(r.scale_evaluations, 6);
-      EXPECT_LT(r.kkt.max(), 3 * tol) << "tol " << tol;
+      EXPECT_LT(r.kkt.max(), 1.1 * tol) << "tol " << tol;  // tol bounds them (round-off aside)
     }
   }
 }

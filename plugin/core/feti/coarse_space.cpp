@@ -4,6 +4,7 @@
 #include "qp/mprgp.h"
 #include "qp/norm_estimate.h"
 
+#include <cmath>
 #include <map>
 #include <set>
 #include <string>
@@ -85,6 +86,23 @@ Vec CoarseSpace::kernel_load(const std::vector<Vec>& f) const {
   Vec e = Vec::Zero(G_.rows());
   for (size_t p = 0; p < all.size(); p += 2) e[static_cast<Eigen::Index>(all[p])] = all[p + 1];
   return e;
+}
+
+double CoarseSpace::equilibrium_residual_norm(const Vec& defect) const {
+  std::map<int, std::vector<std::pair<int, double>>> by_subdomain;  // local index -> (kernel column, defect)
+  for (const auto& [g_row, k] : local_rows_)
+    by_subdomain[k].emplace_back(owner_[static_cast<size_t>(g_row)].second, defect[g_row]);
+  double squares = 0;
+  for (const auto& [k, entries] : by_subdomain) {
+    const Subdomain& s = *subdomains_[static_cast<size_t>(k)];
+    const Eigen::Index r = s.kernel().cols();
+    Vec d = Vec::Zero(r);
+    for (const auto& [j, value] : entries) d[j] = value;
+    Eigen::MatrixXd RF(r, r);  // R at the fixing dofs
+    for (Eigen::Index i = 0; i < r; ++i) RF.row(i) = s.kernel().row(s.fixing()[static_cast<size_t>(i)]);
+    squares += RF.transpose().partialPivLu().solve(d).squaredNorm();
+  }
+  return std::sqrt(comm_.sum(squares));
 }
 
 void CoarseSpace::add_kernel_component(const Vec& alpha, std::vector<Vec>& u) const {

@@ -39,6 +39,10 @@ class CoarseSpace {
   void project(const Vec& x, Vec& y) const;
   /// y = Q x = G'(GG')^{-1} G x = x - P x.
   void project_range(const Vec& x, Vec& y) const;
+  /// ||K u - f + B'lambda||_2 over all subdomains for u = K^+(f - B'lambda) + R alpha, from
+  /// the defect G lambda - e alone: the fixing-dofs K^+ leaves the residual at the fixing
+  /// dofs F of each floating subdomain, where it is (R_F')^{-1} R'(f - B'lambda). Collective.
+  double equilibrium_residual_norm(const Vec& defect) const;
   /// The least-norm solution of G lambda = e: G'(GG')^{-1} e.
   Vec least_norm_solution(const Vec& e) const;
 

@@ -105,6 +105,17 @@ void DualOperator::pseudo_inverse_of_residual(const std::vector<Vec>& v, const V
   }
 }
 
+double DualOperator::local_transpose_squared_norm(const Vec& x) const {
+  double squares = 0;
+  for (size_t i = 0; i < subdomains_.size(); ++i) {
+    if (local_[i].rows.empty()) continue;
+    Vec xs(static_cast<Eigen::Index>(local_[i].rows.size()));
+    for (size_t k = 0; k < local_[i].rows.size(); ++k) xs[static_cast<Eigen::Index>(k)] = x[local_[i].rows[k]];
+    squares += (local_[i].B.transpose() * xs).squaredNorm();
+  }
+  return squares;
+}
+
 void DualOperator::sum_local_results(Vec& y) const {
   flat_.clear();
   for (size_t s = 0; s < subdomains_.size(); ++s)

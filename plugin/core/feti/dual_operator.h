@@ -35,6 +35,9 @@ class DualOperator {
   /// y = B u for per-subdomain vectors u_s.
   void apply_B(const std::vector<Vec>& u, Vec& y) const;
 
+  /// sum_s ||B_s' x||^2 over this rank's subdomains (callers sum over the ranks).
+  double local_transpose_squared_norm(const Vec& x) const;
+
   /// w_s = K_s^+ (v_s - B_s' x) for every local subdomain (primal recovery).
   void pseudo_inverse_of_residual(const std::vector<Vec>& v, const Vec& x,
                                   std::vector<Vec>& w) const;

@@ -6,6 +6,7 @@
 #include "qp/conjugate_gradient.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace ffeti {
 namespace {
@@ -152,6 +153,13 @@ PrimalCheck DualSystem::primal_check(const DualData& data, const Vec& lambda) co
   }
   check.violation = check.displacement > 0 ? violation / check.displacement
                                            : (violation > 0 ? std::numeric_limits<double>::infinity() : 0.0);
+  if (coarse_ && !coarse_->empty()) {
+    double load_squares = 0;
+    for (const Vec& f : data.loads) load_squares += f.squaredNorm();
+    const double scale = std::sqrt(std::max(comm_.sum(load_squares), comm_.sum(F_->local_transpose_squared_norm(lambda))));
+    const double residual = coarse_->equilibrium_residual_norm(coarse_->G() * lambda - data.e);
+    check.equilibrium = scale > 0 ? residual / scale : residual;
+  }
   return check;
 }
 
@@ -299,7 +307,8 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     const SmalbeResult r = smalbe(problem, mu, smalbe_settings,
         [&](const Vec& x, const Vec& gP, const Vec&) {
           result.equality_norm = (coarse_->G() * x).norm();  // G lambda - e = G mu
-          return result.equality_norm <= tolerance * eq_reference && gradient_converged(x, gP, gP.norm());
+          if (settings.stopping == StoppingTest::relative_kkt) return kkt_stop(x, gP, result.equality_norm / eq_reference);
+          return result.equality_norm <= tolerance * eq_reference && gP.norm() <= b_tol;
         },
         settings.monitor);
     const int estimate = result.counts.hessian_norm_estimate;
