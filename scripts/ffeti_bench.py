@@ -4,6 +4,7 @@ import os
 import platform
 import re
 import subprocess
+import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EDP = os.path.join(ROOT, "edp")
@@ -13,16 +14,27 @@ MPI_ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CO
 
 def run(script, *args, ranks=0, prefixes=("RESULT", "DIRECT", "RANK")):
     """Runs an .edp script (under mpirun with `ranks` > 0) and returns {prefix: [dict, ...]}
-    of its key=value result lines."""
+    of its key=value result lines, each with the process's peak resident memory as
+    'process_peak_mb' (of FreeFEM alone; of mpirun, not its ranks, under MPI)."""
     command = ["FreeFem++-nw", "-v", "0", script, *map(str, args)]
     if ranks:
         command = ["mpirun", "--oversubscribe", "-np", str(ranks), "FreeFem++-mpi", *command[1:]]
-    text = subprocess.run(command, cwd=EDP, capture_output=True, text=True, check=True, env=MPI_ENV).stdout
+    with tempfile.TemporaryFile(mode="w+") as output:
+        process = subprocess.Popen(command, cwd=EDP, stdout=output, stderr=subprocess.DEVNULL, text=True, env=MPI_ENV)
+        _, status, usage = os.wait4(process.pid, 0)
+        process.returncode = os.waitstatus_to_exitcode(status)
+        output.seek(0)
+        text = output.read()
+    if process.returncode != 0:
+        raise subprocess.CalledProcessError(process.returncode, command, text)
+    peak_mb = usage.ru_maxrss / 1024  # kB on Linux
     lines = {prefix: [] for prefix in prefixes}
     for line in text.splitlines():
         words = line.split()
         if words and words[0] in lines:
-            lines[words[0]].append(dict(kv.split("=", 1) for kv in words[1:] if "=" in kv))
+            fields = dict(kv.split("=", 1) for kv in words[1:] if "=" in kv)
+            fields["process_peak_mb"] = f"{peak_mb:.0f}"
+            lines[words[0]].append(fields)
     if not any(lines.values()):
         raise RuntimeError(f"no result line from {' '.join(command)}:\n{text[-2000:]}")
     return lines
@@ -64,3 +76,27 @@ def save_page(name, lines):
     os.makedirs(OUT, exist_ok=True)
     with open(os.path.join(OUT, name), "w") as page:
         page.write("\n".join(lines))
+
+
+def plot_cost_over_unknowns(runs, title, name):
+    """Two log-log panels, Hessian multiplications and dual solve time against the unknowns,
+    one line per case of `runs` ({label: [result, ...]}); rows without a multiplication (a
+    scene with nothing to iterate) are left out. Saved as docs/results/<name>."""
+    import matplotlib.pyplot as plt  # the drivers choose the backend first
+
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for label, rows in runs.items():
+        rows = [r for r in rows if f(r, "hessian") > 0]
+        unknowns = [f(r, "primal") for r in rows]
+        axes[0].loglog(unknowns, [f(r, "hessian") for r in rows], "o-", label=label)
+        axes[1].loglog(unknowns, [f(r, "time_solve") for r in rows], "o-", label=label)
+    axes[0].set_ylabel("Hessian multiplications")
+    axes[1].set_ylabel("dual solve time [s]")
+    for ax in axes:
+        ax.set_xlabel("unknowns")
+        ax.grid(True, which="both", alpha=0.3)
+    axes[0].legend(fontsize=7)
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(os.path.join(OUT, name), dpi=110)
+    plt.close(fig)

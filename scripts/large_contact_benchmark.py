@@ -12,9 +12,8 @@ import time
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
 
-from ffeti_bench import OUT, f, machine, run, save_page  # noqa: E402
+from ffeti_bench import f, machine, plot_cost_over_unknowns, run, save_page  # noqa: E402
 
 SIZES = [int(n) for n in os.environ.get("FFETI_LARGE_CONTACT_SIZES", "40 80 160 320").split()]
 LARGEST_REFERENCE = 160  # the active set reference takes 35 s at n = 160 and grows fast
@@ -57,7 +56,7 @@ def main():
             r["error_vs_reference"] = (f(r, "energy") - q_ref) / abs(q_ref)
             r["reference_kind"] = "active set" if with_reference else "ffeti tol 1e-10"
             r["active_reference"] = reference["active_reference"] if with_reference else reference["active"]
-    plot(runs)
+    plot_cost_over_unknowns(runs, "Large contact zone (9 subdomains, every interior node a couple), tol = 1e-4", "large-contact.png")
     first = runs[CASES[0][0]]
     lines = [
         "# A large contact zone: expansion steps and the stopping test",
@@ -113,23 +112,6 @@ def main():
         "",
     ]
     save_page("large-contact.md", lines)
-
-
-def plot(runs):
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
-    for label, rows in runs.items():
-        unknowns = [f(r, "primal") for r in rows]
-        axes[0].loglog(unknowns, [f(r, "hessian") for r in rows], "o-", label=label)
-        axes[1].loglog(unknowns, [f(r, "time_solve") for r in rows], "o-", label=label)
-    axes[0].set_ylabel("Hessian multiplications")
-    axes[1].set_ylabel("dual solve time [s]")
-    for ax in axes:
-        ax.set_xlabel("unknowns")
-        ax.grid(True, which="both", alpha=0.3)
-    axes[0].legend(fontsize=7)
-    fig.suptitle("Large contact zone (9 subdomains, every interior node a couple), tol = 1e-4")
-    fig.tight_layout()
-    fig.savefig(os.path.join(OUT, "large-contact.png"), dpi=110)
 
 
 if __name__ == "__main__":

@@ -26,6 +26,8 @@ def main():
 
     default = [model_problem(n) for n in sizes]
     direct = [run("model-problem-direct.edp", "-n", n)["DIRECT"][0] for n in sizes]
+    ipopt = [run("model-problem-ipopt.edp", "-n", n, prefixes=("IPOPT",))["IPOPT"][0] for n in sizes]
+    tight = [model_problem(n, tol="1e-8") for n in sizes]  # about IPOPT's accuracy
     reference_energy = {n: f(model_problem(n, tol="1e-10"), "energy") for n in sizes[-2:]}
     tolerances = ["1e-2", "1e-3", "1e-4", "1e-6", "1e-8"] if not options.quick else ["1e-2", "1e-4", "1e-6"]
     accuracy = {n: [model_problem(n, tol=t) for t in tolerances] for n in sizes[-2:]}
@@ -38,11 +40,11 @@ def main():
         ("FETI-1, 1 OpenMP thread", model_problem(largest, threads=1)),
     ]
     os.makedirs(OUT, exist_ok=True)
-    write_plots(sizes, default, direct, accuracy, reference_energy)
-    write_page(sizes, default, direct, accuracy, reference_energy, variants, time.time() - started)
+    write_plots(sizes, default, direct, ipopt, accuracy, reference_energy)
+    write_page(sizes, default, direct, ipopt, tight, accuracy, reference_energy, variants, time.time() - started)
 
 
-def write_plots(sizes, default, direct, accuracy, reference_energy):
+def write_plots(sizes, default, direct, ipopt, accuracy, reference_energy):
     fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2))
     left.plot(sizes, [f(r, "hessian") for r in default], "o-", label="ffeti: Hessian multiplications")
     left.plot(sizes, [f(r, "cg") for r in default], "s--", label="ffeti: CG steps")
@@ -58,6 +60,7 @@ def write_plots(sizes, default, direct, accuracy, reference_energy):
     right.loglog(sizes, [f(r, "time_assembly") for r in default], "s--", label="FreeFEM assembly of the subdomain data")
     right.loglog(sizes, [f(r, "time_last_solve") for r in direct], "d-.", label="UMFPACK, final contact set fixed")
     right.loglog(sizes, [f(r, "time_pdas") for r in direct], "x:", label="primal-dual active set + UMFPACK")
+    right.loglog(sizes, [f(r, "time") for r in ipopt], "v-", label="IPOPT (ff-Ipopt), tol 1e-8")
     right.set_xscale("log", base=2)
     right.set_xlabel("n (h = 1/n)")
     right.set_ylabel("seconds")
@@ -84,7 +87,7 @@ def write_plots(sizes, default, direct, accuracy, reference_energy):
     plt.close(fig)
 
 
-def write_page(sizes, default, direct, accuracy, reference_energy, variants, elapsed):
+def write_page(sizes, default, direct, ipopt, tight, accuracy, reference_energy, variants, elapsed):
     seed_primal = {64: 8450, 512: 540800}
     lines = [
         "# The seed's model problem: reproduced",
@@ -133,6 +136,37 @@ def write_page(sizes, default, direct, accuracy, reference_energy, variants, ela
             f"{f(r, 'time_solve'):.3f} | {f(r, 'time_recovery'):.3f} | {total:.3f} | {f(d, 'time_last_solve'):.3f} | "
             f"{total / f(d, 'time_last_solve'):.2f} | {f(d, 'time_pdas'):.2f} ({d['pdas_iterations']}) | "
             f"{f(r, 'energy'):.8f} | {f(d, 'energy'):.8f} |")
+    lines += [
+        "",
+        "## Peers on the same meshes",
+        "",
+        "What FreeFEM users do for contact today, IPOPT through ff-Ipopt (`edp/model-problem-ipopt.edp`:",
+        "the unsplit problem, the quadratic energy and the non-penetration rows passed as matrices,",
+        "IPOPT's default tol = 1e-8), the primal-dual active set method with UMFPACK and the floor,",
+        "beside ffeti at its default tol = 1e-4 and at tol = 1e-8. Times in seconds: ffeti set-up +",
+        "solve + recovery; IPOPT its solve (A and B assembled); PDAS its whole method with assembly.",
+        "Peak memory: the FreeFEM process's resident set, assembly included, in MB. Energy error",
+        "against PDAS; violation: the largest penetration relative to max|u| (ffeti: the largest",
+        "relative KKT residual).",
+        "",
+        "| n | unknowns | ffeti tol 1e-4 [s] | ffeti tol 1e-8 [s] | IPOPT [s] | PDAS [s] | floor [s] | IPOPT / ffeti 1e-8 |"
+        " peak MB: ffeti / IPOPT / PDAS | energy error: ffeti 1e-4 / ffeti 1e-8 / IPOPT | violation: ffeti 1e-4 / 1e-8 / IPOPT |",
+        "|---|---|---|---|---|---|---|---|---|---|---|",
+    ]
+    for r, t, d, p in zip(default, tight, direct, ipopt):
+        def total(x):
+            return f(x, "time_factor") + f(x, "time_solve") + f(x, "time_recovery")
+
+        def error(x):
+            return abs(f(x, "energy") - f(d, "energy")) / abs(f(d, "energy"))
+
+        def kkt(x):
+            return max(f(x, k) for k in ("kkt_equilibrium", "kkt_equality", "kkt_inequality", "kkt_complementarity"))
+        lines.append(
+            f"| {r['n']} | {d['unknowns']} | {total(r):.3f} | {total(t):.3f} | {f(p, 'time'):.3f} | "
+            f"{f(d, 'time_pdas'):.2f} | {f(d, 'time_last_solve'):.3f} | {f(p, 'time') / total(t):.1f} | "
+            f"{r['process_peak_mb']} / {p['process_peak_mb']} / {d['process_peak_mb']} | "
+            f"{error(r):.1e} / {error(t):.1e} / {error(p):.1e} | {kkt(r):.1e} / {kkt(t):.1e} / {f(p, 'violation'):.1e} |")
     lines += [
         "",
         "## What accuracy costs",

@@ -11,9 +11,8 @@ import time
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
 
-from ffeti_bench import OUT, f, machine, model_problem, save_page  # noqa: E402
+from ffeti_bench import f, machine, model_problem, plot_cost_over_unknowns, save_page  # noqa: E402
 
 SIZES = [int(n) for n in os.environ.get("FFETI_SCALABILITY_SIZES", "64 128 256 512 1024 2048").split()]
 SEED_CG = {64: "27", 128: "27..65", 256: "27..65", 512: "54"}
@@ -34,7 +33,7 @@ def peak_memory(result):
 def main():
     started = time.time()
     runs = {label: [model_problem(n, **options) for n in SIZES] for label, options in CASES}
-    plot(runs)
+    plot_cost_over_unknowns(runs, "Model problem, H/h = 64, tol = 1e-4", "scalability.png")
     lines = [
         "# Numerical scalability: where the dual operator applications go",
         "",
@@ -67,24 +66,6 @@ def main():
                 f"{peak_memory(r):.0f} | {SEED_CG.get(n, '-') if label == CASES[0][0] else ''} |")
     lines += ["", "![scalability](scalability.png)", ""]
     save_page("scalability.md", lines)
-
-
-def plot(runs):
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
-    for label, rows in runs.items():
-        rows = [r for r in rows if f(r, "hessian") > 0]  # glued n = 64: one subdomain per body, nothing to iterate
-        unknowns = [f(r, "primal") for r in rows]
-        axes[0].loglog(unknowns, [f(r, "hessian") for r in rows], "o-", label=label)
-        axes[1].loglog(unknowns, [f(r, "time_solve") for r in rows], "o-", label=label)
-    axes[0].set_ylabel("Hessian multiplications")
-    axes[1].set_ylabel("dual solve time [s]")
-    for ax in axes:
-        ax.set_xlabel("unknowns")
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend()
-    fig.suptitle("Model problem, H/h = 64, tol = 1e-4")
-    fig.tight_layout()
-    fig.savefig(os.path.join(OUT, "scalability.png"), dpi=110)
 
 
 if __name__ == "__main__":
