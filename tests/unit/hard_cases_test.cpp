@@ -255,6 +255,34 @@ TEST(HardCases, CellsOfAspectRatioOneHundred) {
   EXPECT_LT(feti1.kkt.max(), 1e-7);
 }
 
+TEST(HardCases, MeshGradedOneToOneThousand) {
+  // Body 0 graded in x towards the contact line, its cells a thousandfold narrower there
+  // than at x = 0 (x -> 1 - (e^{a(1-x)} - 1) / (e^a - 1), a = ln 1000), 2 x 2 subdomains
+  // per body; both FETI variants must agree.
+  test::MembraneOptions o = test::membrane_options(64, 2);
+  const double a = std::log(1000.0);
+  o.x_map = [a](double x) { return 1.0 - (std::exp(a * (1.0 - x)) - 1.0) / (std::exp(a) - 1.0); };
+  const std::vector<SubdomainInput> subs = test::membrane_subdomains(o);
+  double smallest = 1, largest = 0;
+  for (const SubdomainInput& s : subs)
+    if (s.body == 0)
+      for (size_t k = 1; k < s.x.size(); ++k)
+        if (s.x[k] > s.x[k - 1] && s.y[k] == s.y[k - 1]) {
+          smallest = std::min(smallest, s.x[k] - s.x[k - 1]);
+          largest = std::max(largest, s.x[k] - s.x[k - 1]);
+        }
+  EXPECT_GT(largest / smallest, 500);
+  const FetiResult feti1 = solve_membranes(subs, FetiVariant::feti1, 1e-8);
+  const FetiResult total = solve_membranes(subs, FetiVariant::tfeti, 1e-8);
+  ASSERT_EQ(feti1.status, SolveStatus::converged);
+  ASSERT_EQ(total.status, SolveStatus::converged);
+  const double error = std::abs(feti1.energy - total.energy) / std::abs(total.energy);
+  record("mesh graded 1:" + number(std::round(largest / smallest)), feti1, error, "energy against Total FETI");
+  EXPECT_LT(error, 1e-7);
+  EXPECT_EQ(feti1.active_contact, total.active_contact);
+  EXPECT_LT(feti1.kkt.max(), 1e-7);
+}
+
 TEST(HardCases, ChainOfThreeFloatingBodiesHeldOnlyByContact) {
   // Bodies (b, b+1) x (0,1), b = 0..3, each in 2 x 2 subdomains; body 0 fixed at x = 0, the
   // others held only by the contact lines x = 1, 2, 3 (u_left <= u_right), all loaded by

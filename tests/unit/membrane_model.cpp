@@ -10,14 +10,15 @@ namespace ffeti::test {
 
 SubdomainInput p1_rectangle(double x0, double y0, double w, double h, int nx, int ny,
                             double factor, const std::function<double(double, double)>& f,
-                            int body) {
+                            int body, const std::function<double(double)>& x_map) {
   SubdomainInput s;
   s.body = body;
   const int n = (nx + 1) * (ny + 1);
   auto id = [&](int i, int j) { return j * (nx + 1) + i; };
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i) {
-      s.x.push_back(x0 + w * i / nx);
+      const double x = x0 + w * i / nx;
+      s.x.push_back(x_map ? x_map(x) : x);
       s.y.push_back(y0 + h * j / ny);
     }
   s.f = Vec::Zero(n);
@@ -85,7 +86,8 @@ std::vector<SubdomainInput> membrane_subdomains(const MembraneOptions& o) {
   for (int body = 0; body < (o.body2 ? 2 : 1); ++body)
     for (int J = 0; J < o.N; ++J)
       for (int I = 0; I < o.N; ++I) {
-        SubdomainInput s = p1_rectangle(body + I * H, J * H, H, H, m, m, 2.0, load, body);
+        SubdomainInput s = p1_rectangle(body + I * H, J * H, H, H, m, m, 2.0, load, body,
+                                        body == 0 ? o.x_map : std::function<double(double)>{});
         for (int k = 0; k < static_cast<int>(s.x.size()); ++k) {
           const bool left = body == 0 && s.x[k] == 0.0;
           const bool right = body == 1 && o.fix_right_body && std::abs(s.x[k] - 2.0) < 1e-12;

@@ -11,10 +11,12 @@
 namespace ffeti::test {
 
 /// P1 stiffness `factor` * int grad u . grad v and load int f v on [x0,x0+w] x [y0,y0+h]
-/// with nx x ny cells, each cut along the same diagonal as FreeFEM's square().
+/// with nx x ny cells, each cut along the same diagonal as FreeFEM's square(); with
+/// `x_map`, each node's x is moved to x_map(x) (a graded mesh: the same map on every
+/// subdomain of a body keeps their shared nodes shared).
 SubdomainInput p1_rectangle(double x0, double y0, double w, double h, int nx, int ny,
                             double factor, const std::function<double(double, double)>& f,
-                            int body);
+                            int body, const std::function<double(double)>& x_map = {});
 
 /// Two decoupled copies of a scalar problem as a 2-component field (dofs 2k, 2k+1, the same
 /// node): a vector problem whose kernel is the two translations, not the rotation the
@@ -28,6 +30,7 @@ struct MembraneOptions {
   bool fix_right_body = false;  ///< Dirichlet at x = 2 too: a coercive contact scene
   bool with_contact = true;
   bool body2 = true;
+  std::function<double(double)> x_map;  ///< grades body 0 in x (an increasing map of [0, 1] onto itself)
 };
 
 /// Options with n cells per unit length and N x N subdomains per body, the rest default.
