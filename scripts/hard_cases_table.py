@@ -87,9 +87,9 @@ def main():
                      f"{r['error']} | {r['check']} | {r['active']} | {r['seconds']} | {r['test']} |")
     lines += [
         "",
-        "Not in the suite yet: a body held only by an obstacle, weakly active rows (a zero",
-        "multiplier on a closed gap). Hertz's curved contact boundary is the curved",
-        "node-to-segment case.",
+        "Elsewhere: a body whose vertical motion only a rigid obstacle holds is",
+        "`tests/edp/elastic-contact.edp` case 1 (checked against the roller solution). Hertz's",
+        "curved contact boundary is the curved node-to-segment case.",
         "",
     ]
     save_page("hard-cases.md", lines)

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 namespace ffeti {
 namespace {
@@ -281,6 +282,45 @@ TEST(HardCases, MeshGradedOneToOneThousand) {
   EXPECT_LT(error, 1e-7);
   EXPECT_EQ(feti1.active_contact, total.active_contact);
   EXPECT_LT(feti1.kkt.max(), 1e-7);
+}
+
+TEST(HardCases, EveryCoupleWeaklyActive) {
+  // Mirror images: (0,1)^2 fixed at x = 0 and its mirror (1,2)x(0,1) fixed at x = 2, the
+  // same load -1 on both: the membranes meet on x = 1 with zero gap and zero force, every
+  // couple weakly active (closed, lambda = 0). u must be that of the bodies without
+  // contact, the contact forces about zero.
+  const auto membranes = [](bool with_contact) {
+    const auto load = [](double, double) { return -1.0; };
+    std::vector<SubdomainInput> subs;
+    for (int body = 0; body < 2; ++body)
+      for (int J = 0; J < 2; ++J)
+        for (int I = 0; I < 2; ++I) {
+          // Body 1 is body 0's mesh mirrored about x = 1 (x -> 2 - x): exact mirror images.
+          SubdomainInput s = test::p1_rectangle(0.5 * I, 0.5 * J, 0.5, 0.5, 16, 16, 1.0, load, body,
+                                                [body](double x) { return body == 0 ? x : 2.0 - x; });
+          for (int k = 0; k < static_cast<int>(s.x.size()); ++k)
+            if (s.x[k] == 2.0 * body) s.dirichlet_dofs.push_back(k);
+          subs.push_back(std::move(s));
+        }
+    const ContactInput contact = with_contact ? test::membrane_contact(subs) : ContactInput{};
+    const FetiProblem problem(subs, contact, FetiSetupSettings{});
+    DualSolveSettings settings;
+    settings.tolerance = 1e-8;
+    FetiResult r = problem.solve(settings);
+    double largest_load = 0, largest_contact_force = 0;  // nodal forces
+    for (const SubdomainInput& s : subs) largest_load = std::max(largest_load, s.f.cwiseAbs().maxCoeff());
+    for (int i = problem.constraints().equality_rows; i < problem.constraints().rows(); ++i)
+      largest_contact_force = std::max(largest_contact_force, std::abs(r.lambda[i]));
+    return std::make_tuple(std::move(r), largest_contact_force / largest_load);
+  };
+  const auto [touching, contact_force] = membranes(true);
+  const FetiResult apart = std::get<0>(membranes(false));
+  ASSERT_EQ(touching.status, SolveStatus::converged);
+  ASSERT_EQ(apart.status, SolveStatus::converged);
+  const double error = relative_difference(touching.u, apart.u, 1.0);
+  record("every couple weakly active (closed, zero force)", touching, error, "u against the bodies without contact");
+  EXPECT_LT(error, 1e-7);
+  EXPECT_LT(contact_force, 1e-6) << "contact forces of a contact that carries nothing, relative to a nodal load";
 }
 
 TEST(HardCases, ChainOfThreeFloatingBodiesHeldOnlyByContact) {
