@@ -681,6 +681,58 @@ class FetiContact : public E_F0mps {
   }
 };
 
+// ---- int rows = fetiConstraints(P, I, J, V, c, kind): the constraint rows as triplets ---
+/// B u = c (equality rows) and B u <= c (contact rows) over the dofs of all subdomains
+/// numbered one after the other in subdomain order: triplets (I, J, V), right-hand side c
+/// and kind per row (0 gluing, 1 Dirichlet, 2 contact). What a solver of the undivided
+/// problem needs (the peers of the benchmarks). One process only.
+class FetiConstraints : public E_F0mps {
+ public:
+  typedef long Result;
+  Expression id, rows_out, columns_out, values_out, rhs_out, kind_out;
+  explicit FetiConstraints(const basicAC_F0& args) {
+    args.SetNameParam(0, nullptr, nullptr);
+    id = to<long>(args[0]);
+    rows_out = to<KN<long>*>(args[1]);
+    columns_out = to<KN<long>*>(args[2]);
+    values_out = to<KN<double>*>(args[3]);
+    rhs_out = to<KN<double>*>(args[4]);
+    kind_out = to<KN<long>*>(args[5]);
+  }
+  static ArrayOfaType typeargs() {
+    return ArrayOfaType(atype<long>(), atype<KN<long>*>(), atype<KN<long>*>(), atype<KN<double>*>(),
+                        atype<KN<double>*>(), atype<KN<long>*>());
+  }
+  static E_F0* f(const basicAC_F0& args) { return new FetiConstraints(args); }
+  AnyType operator()(Stack stack) const {
+    return SetAny<long>(guarded("fetiConstraints", [&] {
+      const FetiProblem& problem = *handle(GetAny<long>((*id)(stack))).problem;
+      if (problem.communicator().size() > 1) throw InputError("P: fetiConstraints runs in one process only");
+      std::vector<long> offset(1, 0);
+      for (const SubdomainInput& in : problem.inputs()) offset.push_back(offset.back() + in.K.rows());
+      const Constraints& c = problem.constraints();
+      auto& I = *GetAny<KN<long>*>((*rows_out)(stack));
+      auto& J = *GetAny<KN<long>*>((*columns_out)(stack));
+      auto& V = *GetAny<KN<double>*>((*values_out)(stack));
+      auto& rhs = *GetAny<KN<double>*>((*rhs_out)(stack));
+      auto& kind = *GetAny<KN<long>*>((*kind_out)(stack));
+      const long count = static_cast<long>(c.entries.size());
+      I.resize(count), J.resize(count), V.resize(count), rhs.resize(c.rows()), kind.resize(c.rows());
+      for (int row = 0; row < c.rows(); ++row) {
+        rhs[row] = c.rhs[static_cast<size_t>(row)];
+        kind[row] = static_cast<long>(c.kind[static_cast<size_t>(row)]);
+        for (int e = c.row_start[static_cast<size_t>(row)]; e < c.row_start[static_cast<size_t>(row) + 1]; ++e) {
+          const ConstraintEntry& entry = c.entries[static_cast<size_t>(e)];
+          I[e] = row;
+          J[e] = offset[static_cast<size_t>(entry.subdomain)] + entry.dof;
+          V[e] = entry.coefficient;
+        }
+      }
+      return static_cast<long>(c.rows());
+    }));
+  }
+};
+
 /// Fills `indices` with the positions where `mask` exceeds 1/2 and returns their number: the
 /// selection loop of ffetiDofsWhere, which FreeFEM's interpreter runs 100 times slower.
 long feti_indices(KN<double>* const& mask, KN<long>* const& indices) {
@@ -820,6 +872,7 @@ static void Load_Init() {
   Global.Add("fetiAdjoint", "(", new OneOperatorCode<FetiAdjoint>());
   Global.Add("fetiAdjointGradient", "(", new OneOperatorCode<FetiAdjointGradient>());
   Global.Add("fetiContact", "(", new OneOperatorCode<FetiContact>());
+  Global.Add("fetiConstraints", "(", new OneOperatorCode<FetiConstraints>());
   Global.Add("fetiSum", "(", new OneOperator2_<double, long, double>(feti_sum));
   Global.Add("fetiMax", "(", new OneOperator2_<double, long, double>(feti_max));
   Global.Add("fetiRank", "(", new OneOperator0<long>(feti_rank));

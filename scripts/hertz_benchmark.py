@@ -22,9 +22,11 @@ def main():
     for h in SIZES:
         lines = run("hertz.edp", "-h", h, prefixes=("RESULT", "PRESSURE"))
         runs.append((h, lines["RESULT"][0], [(float(p["x"]), float(p["p"])) for p in lines["PRESSURE"]]))
+    # Peers on the undivided problem (each body one subdomain), the same discrete problem.
+    peers = [run("hertz.edp", "-h", h, "-parts", 1, "-peers", 1, prefixes=("RESULT", "PEERS"))["PEERS"][0] for h in SIZES]
     os.makedirs(OUT, exist_ok=True)
     write_plot(runs)
-    write_page(runs, time.time() - started)
+    write_page(runs, peers, time.time() - started)
 
 
 def write_plot(runs):
@@ -45,7 +47,7 @@ def write_plot(runs):
     plt.close(fig)
 
 
-def write_page(runs, elapsed):
+def write_page(runs, peers, elapsed):
     first = runs[0][1]
     lines = [
         "# Hertz: cylinder on a block",
@@ -71,12 +73,39 @@ def write_page(runs, elapsed):
                      f"{r['hessian']} | {f(r, 'time_solve'):.3f} | {r['status']} |")
     lines += [
         "",
+        "## Peers on the same meshes",
+        "",
+        "The same discrete problem (each body one subdomain, the constraint rows the plugin builds,",
+        "exported by `fetiConstraints`) solved by IPOPT through ff-Ipopt (its default tol = 1e-8)",
+        "and by a primal-dual active set method with UMFPACK (`hertz.edp -parts 1 -peers 1`),",
+        "beside ffeti with 4 subdomains per body at tol = 1e-8 (set-up, solve and recovery).",
+        "Energies ½u'Ku − f'u in N·mm (per mm of thickness), printed to 8 digits. Peak memory is",
+        "not separated here (the peers share a process with ffeti's undivided run).",
+        "",
+        "| h [mm] | unknowns | ffeti [s] | IPOPT [s] | PDAS [s] (iterations) | floor [s] | IPOPT / ffeti | energy ffeti / IPOPT / PDAS | IPOPT violation |",
+        "|---|---|---|---|---|---|---|---|---|",
+    ]
+    for (h, r, _), p in zip(runs, peers):
+        lines.append(f"| {h} | {p['unknowns']} | {f(r, 'time_total'):.3f} | {f(p, 'time_ipopt'):.3f} | "
+                     f"{f(p, 'time_pdas'):.3f} ({p['pdas_iterations']}) | {f(p, 'time_last_solve'):.3f} | "
+                     f"{f(p, 'time_ipopt') / f(r, 'time_total'):.1f} | {p['energy_ffeti']} / {p['energy_ipopt']} / "
+                     f"{p['energy_pdas']} | {f(p, 'ipopt_violation'):.1e} |")
+    lines += [
+        "",
         "![pressure](hertz.png)",
         "",
         "Reading: the pressure profile converges to Hertz's ellipse (its L2 error falls with h).",
         "The half-width a is read off the mesh, so its error is bounded by about half the node",
         "spacing over a; p0 carries the error of a one-node pressure estimate at the symmetry",
         "line. The test suite runs the h = 1 case and requires a and p0 within 10%.",
+        "",
+        "The peers agree with ffeti in energy to the printed digits. On these small 2D problems",
+        "(under 10,000 unknowns) IPOPT takes 4 to 8 times ffeti's time (set-up, solve and",
+        "recovery) and the active set method half to all of IPOPT's, while the floor, one sparse",
+        "factorization and solve with the final contact set, takes 0.4 to 1 times ffeti's: here a",
+        "direct solve is cheap, and FETI's gain over the peers grows with the problem (the model",
+        "problem at 526,338 unknowns: IPOPT 33 times ffeti's default solve,",
+        "[model problem](model-problem.md)).",
         "",
     ]
     save_page("hertz.md", lines)
