@@ -378,7 +378,7 @@ class FetiSolve : public E_F0mps {
     if (auto* lambda = optional_pointer<KN<double>>(nargs[0], stack)) binding::copy_to(r.lambda, *lambda);
     if (verbosity >= 1 && h.problem->communicator().rank() == 0)
       std::printf("ffeti: %s after %d Hessian multiplications (%d outer), path %s, ||gP||/||b|| %.2e, "
-                  "max violation/||u||_inf %.2e\n",
+                  "KKT check %.2e\n",
                   to_string(r.status).c_str(), r.counts.hessian, r.counts.outer, r.path.c_str(),
                   r.gradient_norm / r.gradient_reference, r.violation);
     std::fflush(stdout);
@@ -684,8 +684,9 @@ class FetiContact : public E_F0mps {
 // ---- int rows = fetiConstraints(P, I, J, V, c, kind): the constraint rows as triplets ---
 /// B u = c (equality rows) and B u <= c (contact rows) over the dofs of all subdomains
 /// numbered one after the other in subdomain order: triplets (I, J, V), right-hand side c
-/// and kind per row (0 gluing, 1 Dirichlet, 2 contact). What a solver of the undivided
-/// problem needs (the peers of the benchmarks). One process only.
+/// and kind per row (0 gluing, 1 Dirichlet, 2 contact). With Total FETI every condition is
+/// a row: what a solver of the undivided problem needs (the peers of the benchmarks). One
+/// process only.
 class FetiConstraints : public E_F0mps {
  public:
   typedef long Result;
@@ -708,6 +709,9 @@ class FetiConstraints : public E_F0mps {
     return SetAny<long>(guarded("fetiConstraints", [&] {
       const FetiProblem& problem = *handle(GetAny<long>((*id)(stack))).problem;
       if (problem.communicator().size() > 1) throw InputError("P: fetiConstraints runs in one process only");
+      if (problem.variant() == FetiVariant::feti1)
+        throw InputError("P: fetiConstraints needs variant=\"tfeti\" (FETI-1 eliminates the Dirichlet dofs, "
+                         "so their conditions are no rows)");
       std::vector<long> offset(1, 0);
       for (const SubdomainInput& in : problem.inputs()) offset.push_back(offset.back() + in.K.rows());
       const Constraints& c = problem.constraints();

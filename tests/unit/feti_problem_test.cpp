@@ -246,6 +246,21 @@ TEST(FetiProblem, DefaultStopBoundsTheRelativeKktResidualsByTol) {
   }
 }
 
+TEST(FetiProblem, ToleranceBelowRoundOffCostsNoCheckPerIteration) {
+  // tol = 1e-15 cannot be met (SMALBE path: the last violation is 3.5e-15): the solve ends
+  // at its limit and says so, having checked the recovered solution once per halving of the
+  // gradient at most, not every iteration (each check is a K^+ application the Hessian
+  // count does not see).
+  const FetiProblem problem = membrane_problem(test::membrane_options(32, 2), FetiVariant::feti1);
+  DualSolveSettings settings;
+  settings.tolerance = 1e-15;
+  settings.max_hessian = 1500;
+  const FetiResult r = problem.solve(settings);
+  EXPECT_NE(r.status, SolveStatus::converged);
+  EXPECT_GT(r.violation, 1e-15);
+  EXPECT_LT(r.scale_evaluations, 40) << to_string(r.status) << " after " << r.counts.hessian;
+}
+
 TEST(FetiProblem, SeedToleranceGivesSmallKktResidualsAndBoundedIterations) {
   const FetiProblem problem = membrane_problem(test::membrane_options(32, 2), FetiVariant::feti1);
   DualSolveSettings seed;

@@ -146,11 +146,17 @@ PrimalCheck DualSystem::primal_check(const DualData& data, const Vec& lambda) co
   check.displacement = comm_.max(check.displacement);
   Vec Bu;
   F_->apply_B(u, Bu);
-  double violation = 0;
+  // Feasibility, and complementarity: a contact row with a positive multiplier must hold
+  // with equality (both relative as kkt_residuals has them).
+  double violation = 0, complementarity = 0;
+  const double lambda_scale = lambda.size() ? lambda.lpNorm<Eigen::Infinity>() : 0.0;
   for (int i = 0; i < rows(); ++i) {
     const double r = Bu[i] - data.c[i];
     violation = std::max(violation, i < constraints_.equality_rows ? std::abs(r) : r);
+    if (i >= constraints_.equality_rows && lambda_scale > 0)
+      complementarity = std::max(complementarity, std::abs(lambda[i] * r) / lambda_scale);
   }
+  violation = std::max(violation, complementarity);
   check.violation = check.displacement > 0 ? violation / check.displacement
                                            : (violation > 0 ? std::numeric_limits<double>::infinity() : 0.0);
   if (coarse_ && !coarse_->empty()) {

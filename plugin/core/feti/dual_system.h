@@ -59,7 +59,7 @@ struct DualSolution {
   double gradient_reference = 0;
   double equality_norm = 0;      ///< final ||G lambda - e|| and its reference ||e||
   double equality_reference = 0;
-  double violation = 0;          ///< relative_kkt: the last check's violation / ||u||_inf
+  double violation = -1;         ///< relative_kkt: the last check's measure (-1: no check ran)
   int scale_evaluations = 0;     ///< relative_kkt: primal checks (a K^+ application each)
   Vec lambda;                    ///< multipliers, rows ordered as constraints()
   std::vector<Vec> u;            ///< primal solution per subdomain of this rank

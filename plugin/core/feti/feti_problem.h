@@ -42,7 +42,7 @@ struct FetiResult {
   double gradient_reference = 0;
   double equality_norm = 0;      ///< final ||G lambda - e|| and its reference ||e||
   double equality_reference = 0;
-  double violation = 0;        ///< relative_kkt stop: ||gP||_inf / ||u||_inf at the end
+  double violation = -1;       ///< relative_kkt stop: the last check's measure (-1: no check ran)
   int scale_evaluations = 0;   ///< relative_kkt stop: ||u(lambda)||_inf computed
   std::vector<Vec> u;            ///< primal solution per subdomain of this rank
   Vec lambda;                    ///< multipliers, rows ordered as constraints()

@@ -12,15 +12,21 @@ RelativeKktStop::RelativeKktStop(double tolerance, std::function<PrimalCheck(con
       checked_gradient_(std::numeric_limits<double>::infinity()) {}
 
 bool RelativeKktStop::operator()(const Vec& x, const Vec& projected_gradient, double equality) {
+  if (passed_.size() == x.size() && passed_ == x) return true;
   const double gradient = projected_gradient.size() ? projected_gradient.lpNorm<Eigen::Infinity>() : 0.0;
-  const bool predicted_done = gradient <= target_ * scale_ && equality <= equality_target_;
+  const bool predicted_done = gradient <= target_ * scale_ && equality <= equality_target_ &&
+                              (!last_check_failed_ || gradient <= 0.5 * checked_gradient_);
   if (!predicted_done && gradient > 0.01 * checked_gradient_) return false;
   const PrimalCheck check = check_(x);
   ++evaluations_;
   scale_ = check.displacement;
   checked_gradient_ = gradient;
   measure_ = std::max(check.violation, check.equilibrium);
-  if (measure_ <= tolerance_) return true;
+  last_check_failed_ = measure_ > tolerance_;
+  if (!last_check_failed_) {
+    passed_ = x;
+    return true;
+  }
   // A prediction that said done while the recovered field disagrees aims lower by the
   // ratio between them.
   const auto lower = [&](double& target, double predicted, double actual) {
