@@ -11,9 +11,8 @@ RelativeKktStop::RelativeKktStop(double tolerance, std::function<PrimalCheck(con
       scale_(std::numeric_limits<double>::infinity()),
       checked_gradient_(std::numeric_limits<double>::infinity()) {}
 
-bool RelativeKktStop::operator()(const Vec& x, const Vec& projected_gradient, double equality) {
+bool RelativeKktStop::operator()(const Vec& x, double gradient, double equality) {
   if (passed_.size() == x.size() && passed_ == x) return true;
-  const double gradient = projected_gradient.size() ? projected_gradient.lpNorm<Eigen::Infinity>() : 0.0;
   const bool predicted_done = gradient <= target_ * scale_ && equality <= equality_target_ &&
                               (!last_check_failed_ || gradient <= 0.5 * checked_gradient_);
   if (!predicted_done && gradient > 0.01 * checked_gradient_) return false;

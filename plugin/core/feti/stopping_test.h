@@ -46,9 +46,9 @@ class RelativeKktStop {
   /// with the same x on every rank).
   RelativeKktStop(double tolerance, std::function<PrimalCheck(const Vec& x)> check);
 
-  /// True if the primal field of x meets the test. `equality` is ||G lambda - e|| relative
-  /// to its reference (0 without a coarse space).
-  bool operator()(const Vec& x, const Vec& projected_gradient, double equality = 0);
+  /// True if the primal field of x meets the test. `gradient` is ||gP(x)||_inf, `equality`
+  /// ||G lambda - e|| relative to its reference (0 without a coarse space).
+  bool operator()(const Vec& x, double gradient, double equality = 0);
 
   /// The equality prediction's target: check when ||G lambda - e|| / reference is below it.
   double equality_target() const { return equality_target_; }
