@@ -6,9 +6,11 @@
 #include "binding_convert.h"
 #include "feti/errors.h"
 #include "feti/feti_problem.h"
+#include "feti/option_names.h"
 #include "feti/statistics.h"
 #include "parallel/mpi_communicator.h"
 #include "feti/convergence_history.h"
+#include "feti/progress_monitor.h"
 #include "sens/sensitivity_statistics.h"
 
 #include <mpi.h>
@@ -72,20 +74,6 @@ std::shared_ptr<const Communicator> communicator(void* script_comm) {
   return std::make_shared<MpiCommunicator>(script_comm ? *static_cast<MPI_Comm*>(script_comm) : MPI_COMM_WORLD);
 }
 
-/// Default OpenMP threads per rank: the node's cores shared by the ranks on the node, so
-/// that ranks and threads do not fight for the same cores.
-int default_threads(const Communicator& comm) {
-  int initialized = 0;
-  MPI_Initialized(&initialized);
-  if (!initialized || comm.size() == 1) return 0;  // OpenMP's default
-  MPI_Comm node;
-  int node_ranks = 1;
-  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
-  MPI_Comm_size(node, &node_ranks);
-  MPI_Comm_free(&node);
-  return std::max(1, resolve_thread_count(0) / node_ranks);
-}
-
 /// Owner of each subdomain: among the ranks that assembled it (non-empty K[s]), the
 /// (s mod count)-th, so that a script assembling everything on every rank is spread
 /// round-robin and a script assembling each subdomain once keeps its own split.
@@ -108,21 +96,6 @@ std::vector<int> owners(const std::vector<long long>& assembled_here, const Comm
     owner[s] = providers[s % providers.size()];
   }
   return owner;
-}
-
-/// Like PETSc's monitors: verbosity 1 prints one line per iteration of the outer solver
-/// (SMALBE's multiplier updates, or every MPRGP / CG step), 2 also every inner step. Rank 0
-/// prints; verbosity 0 installs no monitor.
-Monitor progress_monitor(long verbosity, const Communicator& comm) {
-  if (verbosity < 1 || comm.rank() != 0) return {};
-  auto last_outer = std::make_shared<int>(-1);
-  return [verbosity, last_outer](const ProgressLine& line) {
-    const bool outer_solver = std::string(line.solver) == "smalbe";
-    if (outer_solver && verbosity < 2 && line.iteration == *last_outer) return;
-    *last_outer = line.iteration;
-    std::printf("  ffeti %-6s %4d  hessian %5d  ||gP|| %.3e  ||Q mu|| %.3e  contact %d\n", line.solver, line.iteration,
-                line.hessian, line.gradient_norm, line.equality_norm, line.active);
-  };
 }
 
 template <class T>
@@ -195,7 +168,7 @@ class FetiSetup : public E_F0mps {
       contact = contact_input(stack, count, ids, dofs);
       settings = setup_settings(stack);
     });
-    if (settings.threads == 0) settings.threads = default_threads(*comm);
+    if (settings.threads == 0) settings.threads = default_threads_per_rank(*comm);
     const long id = handles().empty() ? 1 : handles().rbegin()->first + 1;
     auto problem = std::make_unique<FetiProblem>(std::move(subdomains), ids, static_cast<int>(count), contact,
                                                  settings, comm);
@@ -289,20 +262,11 @@ class FetiSetup : public E_F0mps {
   FetiSetupSettings setup_settings(Stack stack) const {
     FetiSetupSettings settings;
     const bool vector_field = nargs[kComponent] != nullptr;
-    const std::string variant = optional_string(nargs[kVariant], stack, vector_field ? "tfeti" : "feti1");
-    if (variant == "feti1") settings.variant = FetiVariant::feti1;
-    else if (variant == "tfeti") settings.variant = FetiVariant::tfeti;
-    else throw InputError("variant: \"" + variant + "\" is not one of \"feti1\", \"tfeti\"");
-    const std::string factor = optional_string(nargs[kFactor], stack, "simplicial");
-    if (factor == "simplicial") settings.factor = FactorKind::simplicial;
-    else if (factor == "supernodal") settings.factor = FactorKind::supernodal;
-    else throw InputError("factor: \"" + factor + "\" is not one of \"simplicial\", \"supernodal\"");
-    settings.threads = static_cast<int>(optional_int(nargs[kThreads], stack, 0));
-    if (settings.threads < 0) throw InputError("threads: must be >= 0 (0: the default)");
-    const std::string preconditioner = optional_string(nargs[kPreconditioner], stack, "none");
-    if (preconditioner == "dirichlet") settings.dirichlet_preconditioner = true;
-    else if (preconditioner != "none")
-      throw InputError("preconditioner: \"" + preconditioner + "\" is not one of \"none\", \"dirichlet\"");
+    settings.variant = variant_from_name(optional_string(nargs[kVariant], stack, default_variant_name(vector_field)));
+    settings.factor = factor_from_name(optional_string(nargs[kFactor], stack, "simplicial"));
+    settings.threads = checked_threads(optional_int(nargs[kThreads], stack, 0));
+    settings.dirichlet_preconditioner =
+        dirichlet_preconditioner_from_name(optional_string(nargs[kPreconditioner], stack, "none"));
     return settings;
   }
 };
@@ -343,23 +307,14 @@ class FetiSolve : public E_F0mps {
     DualSolveSettings settings;
     settings.tolerance = optional_real(nargs[1], stack, settings.tolerance);
     settings.max_hessian = static_cast<int>(optional_int(nargs[2], stack, settings.max_hessian));
-    const std::string algorithm = optional_string(nargs[3], stack, "smalbe-m");
-    if (algorithm == "smalbe-m") settings.smalbe.variant = SmalbeVariant::smalbe_m;
-    else if (algorithm == "seed") settings.smalbe.variant = SmalbeVariant::seed_alg31;
-    else throw InputError("algorithm: \"" + algorithm + "\" is not one of \"smalbe-m\", \"seed\"");
+    settings.smalbe.variant = algorithm_from_name(optional_string(nargs[3], stack, "smalbe-m"));
     const long verbosity = optional_int(nargs[4], stack, 0);
     settings.smalbe.rho_factor = optional_real(nargs[5], stack, settings.smalbe.rho_factor);
     settings.smalbe.M_factor = optional_real(nargs[6], stack, settings.smalbe.M_factor);
     settings.smalbe.eta_factor = optional_real(nargs[7], stack, settings.smalbe.eta_factor);
     settings.mprgp.gamma = optional_real(nargs[8], stack, settings.mprgp.gamma);
-    const std::string expansion = optional_string(nargs[10], stack, "projected-cg");
-    if (expansion == "projected-cg") settings.mprgp.expansion = MprgpExpansion::projected_cg;
-    else if (expansion == "fixed") settings.mprgp.expansion = MprgpExpansion::fixed_step;
-    else throw InputError("expansion: \"" + expansion + "\" is not one of \"projected-cg\", \"fixed\"");
-    const std::string stop = optional_string(nargs[11], stack, "kkt");
-    if (stop == "kkt") settings.stopping = StoppingTest::relative_kkt;
-    else if (stop == "seed") settings.stopping = StoppingTest::seed;
-    else throw InputError("stop: \"" + stop + "\" is not one of \"kkt\", \"seed\"");
+    settings.mprgp.expansion = expansion_from_name(optional_string(nargs[10], stack, "projected-cg"));
+    settings.stopping = stop_from_name(optional_string(nargs[11], stack, "kkt"));
     settings.monitor = h.history.start(progress_monitor(verbosity, h.problem->communicator()));
     h.sensitivity.reset();
     h.result.reset();

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Sets ffeti up on Debian 12: installs the Debian packages that are missing, configures,
-# builds and installs the plugin and its .idp library, and tells FreeFEM where they are.
+# builds and installs the plugin, its .idp library and ffeti-solve (the file-driven front end
+# for gmsh/GetDP), and tells FreeFEM where the plugin is.
 # Idempotent: a second run only rebuilds what changed.
 #   FFETI_PREFIX   install prefix (default /usr/local)
 #   FFETI_BUILD    build folder (default <checkout>/build)
@@ -10,7 +11,7 @@ prefix=${FFETI_PREFIX:-/usr/local}
 build=${FFETI_BUILD:-$root/build}
 
 packages=(build-essential cmake freefem++ libfreefem++-dev gmsh libeigen3-dev
-          libsuitesparse-dev libopenmpi-dev openmpi-bin libgtest-dev)
+          libsuitesparse-dev libopenmpi-dev openmpi-bin libgtest-dev getdp libgmsh-dev nlohmann-json3-dev)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")

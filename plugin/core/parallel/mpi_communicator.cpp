@@ -1,5 +1,9 @@
 #include "parallel/mpi_communicator.h"
 
+#include "feti/dual_operator.h"
+
+#include <algorithm>
+
 namespace ffeti {
 
 MpiCommunicator::MpiCommunicator(MPI_Comm comm) : comm_(comm) {
@@ -58,6 +62,18 @@ std::string MpiCommunicator::first_error(const std::string& local_error) const {
   message.resize(static_cast<size_t>(length));
   MPI_Bcast(message.data(), length, MPI_CHAR, failing, comm_);
   return size_ > 1 ? "rank " + std::to_string(failing) + ": " + message : message;
+}
+
+int default_threads_per_rank(const Communicator& comm) {
+  int initialized = 0;
+  MPI_Initialized(&initialized);
+  if (!initialized || comm.size() == 1) return 0;
+  MPI_Comm node;
+  int node_ranks = 1;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+  MPI_Comm_size(node, &node_ranks);
+  MPI_Comm_free(&node);
+  return std::max(1, resolve_thread_count(0) / node_ranks);
 }
 
 }  // namespace ffeti

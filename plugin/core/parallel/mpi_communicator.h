@@ -28,4 +28,9 @@ class MpiCommunicator final : public Communicator {
   int rank_ = 0, size_ = 1;
 };
 
+/// Default OpenMP threads per rank: the node's cores shared by the ranks on the node, so
+/// that ranks and threads do not fight for the same cores (0, OpenMP's default, in one
+/// process or without MPI).
+int default_threads_per_rank(const Communicator& comm);
+
 }  // namespace ffeti

@@ -1,0 +1,58 @@
+#include "feti/option_names.h"
+
+#include "feti/errors.h"
+
+#include <utility>
+#include <vector>
+
+namespace ffeti {
+namespace {
+
+/// The value named `name` among `choices`, or InputError listing them under `option`.
+template <class T>
+T choose(const std::string& option, const std::string& name, const std::vector<std::pair<const char*, T>>& choices) {
+  std::string list;
+  for (const auto& [word, value] : choices) {
+    if (name == word) return value;
+    list += (list.empty() ? "\"" : ", \"") + std::string(word) + "\"";
+  }
+  throw InputError(option + ": \"" + name + "\" is not one of " + list);
+}
+
+}  // namespace
+
+FetiVariant variant_from_name(const std::string& name) {
+  return choose<FetiVariant>("variant", name, {{"feti1", FetiVariant::feti1}, {"tfeti", FetiVariant::tfeti}});
+}
+
+FactorKind factor_from_name(const std::string& name) {
+  return choose<FactorKind>("factor", name,
+                            {{"simplicial", FactorKind::simplicial}, {"supernodal", FactorKind::supernodal}});
+}
+
+bool dirichlet_preconditioner_from_name(const std::string& name) {
+  return choose<bool>("preconditioner", name, {{"none", false}, {"dirichlet", true}});
+}
+
+SmalbeVariant algorithm_from_name(const std::string& name) {
+  return choose<SmalbeVariant>("algorithm", name,
+                               {{"smalbe-m", SmalbeVariant::smalbe_m}, {"seed", SmalbeVariant::seed_alg31}});
+}
+
+MprgpExpansion expansion_from_name(const std::string& name) {
+  return choose<MprgpExpansion>("expansion", name,
+                                {{"projected-cg", MprgpExpansion::projected_cg}, {"fixed", MprgpExpansion::fixed_step}});
+}
+
+StoppingTest stop_from_name(const std::string& name) {
+  return choose<StoppingTest>("stop", name, {{"kkt", StoppingTest::relative_kkt}, {"seed", StoppingTest::seed}});
+}
+
+const char* default_variant_name(bool vector_field) { return vector_field ? "tfeti" : "feti1"; }
+
+int checked_threads(long threads) {
+  if (threads < 0) throw InputError("threads: must be >= 0 (0: the default)");
+  return static_cast<int>(threads);
+}
+
+}  // namespace ffeti

@@ -1,0 +1,28 @@
+// The solver options by the names users write (FreeFEM's fetiSetup/fetiSolve arguments and
+// ffeti-solve's problem file): one place for the accepted words, the defaults and the error
+// messages, so that both front ends accept and refuse the same input.
+#pragma once
+
+#include "feti/dual_system.h"
+#include "feti/feti_problem.h"
+
+#include <string>
+
+namespace ffeti {
+
+/// Each throws InputError("<option>: \"<word>\" is not one of ...") for an unknown word.
+FetiVariant variant_from_name(const std::string& name);          ///< "feti1", "tfeti"
+FactorKind factor_from_name(const std::string& name);            ///< "simplicial", "supernodal"
+bool dirichlet_preconditioner_from_name(const std::string& name);  ///< "none", "dirichlet"
+SmalbeVariant algorithm_from_name(const std::string& name);      ///< "smalbe-m", "seed"
+MprgpExpansion expansion_from_name(const std::string& name);     ///< "projected-cg", "fixed"
+StoppingTest stop_from_name(const std::string& name);            ///< "kkt", "seed"
+
+/// The default variant: FETI-1 for scalar fields (the seed's), Total FETI for vector fields,
+/// whose partially constrained subdomains FETI-1 would have to treat as floating.
+const char* default_variant_name(bool vector_field);
+
+/// threads: >= 0 (0: OpenMP's default).
+int checked_threads(long threads);
+
+}  // namespace ffeti

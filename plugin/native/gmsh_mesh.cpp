@@ -1,0 +1,134 @@
+#include "native/gmsh_mesh.h"
+
+#include "feti/errors.h"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <fstream>
+
+namespace ffeti::native {
+namespace {
+
+constexpr int kLine2 = 1, kTriangle3 = 2;  // gmsh element types
+
+/// gmsh reports errors by throwing (its API), sometimes as std::string.
+template <class Step>
+void with_gmsh(const std::string& what, Step step) {
+  try {
+    step();
+  } catch (const std::string& message) {
+    throw InputError(what + ": gmsh: " + message);
+  } catch (const std::exception& error) {
+    throw InputError(what + ": gmsh: " + error.what());
+  }
+}
+
+std::string group_list(int dim) {
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, dim);
+  std::string list;
+  for (const auto& [d, tag] : groups) list += (list.empty() ? "" : ", ") + std::to_string(tag);
+  return list.empty() ? "none" : list;
+}
+
+const char* dimension_word(int dim) { return dim == 0 ? "point" : dim == 1 ? "curve" : "surface"; }
+
+}  // namespace
+
+GmshMesh::GmshMesh(const std::string& path) : path_(path) {
+  if (!std::ifstream(path)) throw InputError(path + ": cannot open the mesh file");
+  gmsh::initialize();  // one GmshMesh at a time: gmsh keeps global state
+  gmsh::option::setNumber("General.Verbosity", 1);  // errors only: ffeti-solve prints its own lines
+  with_gmsh(path, [&] {
+    gmsh::clear();
+    gmsh::open(path);
+    gmsh::model::getCurrent(model_);
+  });
+  std::vector<NodeTag> tags;
+  std::vector<double> coordinates, parametric;
+  gmsh::model::mesh::getNodes(tags, coordinates, parametric, -1, -1, false, false);
+  if (tags.empty()) throw InputError(path + ": the mesh has no nodes (not a mesh file, or not meshed)");
+  positions_.reserve(tags.size());
+  for (size_t i = 0; i < tags.size(); ++i) positions_[tags[i]] = {coordinates[3 * i], coordinates[3 * i + 1]};
+}
+
+GmshMesh::~GmshMesh() {
+  gmsh::finalize();
+}
+
+std::array<double, 2> GmshMesh::position(NodeTag node) const {
+  const auto found = positions_.find(node);
+  if (found == positions_.end())
+    throw InputError(path_ + ": node " + std::to_string(node) + " is not in the mesh");
+  return found->second;
+}
+
+void GmshMesh::require_group(int dim, int group) const {
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, dim);
+  if (std::find(groups.begin(), groups.end(), std::make_pair(dim, group)) == groups.end())
+    throw InputError(path_ + ": no physical " + dimension_word(dim) + " " + std::to_string(group) +
+                     " (the mesh has " + group_list(dim) + ")");
+}
+
+std::vector<Triangle> GmshMesh::triangles(int group, int partition) const {
+  require_group(2, group);
+  std::vector<int> entities;
+  gmsh::model::getEntitiesForPhysicalGroup(2, group, entities);
+  std::vector<Triangle> result;
+  for (int entity : entities) {
+    if (partition > 0) {  // a partitioned mesh: keep the entities of that partition
+      std::vector<int> partitions;
+      gmsh::model::getPartitions(2, entity, partitions);
+      if (std::find(partitions.begin(), partitions.end(), partition) == partitions.end()) continue;
+    }
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> element_tags, node_tags;
+    gmsh::model::mesh::getElements(types, element_tags, node_tags, 2, entity);
+    for (size_t t = 0; t < types.size(); ++t) {
+      if (types[t] != kTriangle3)
+        throw InputError(path_ + ": physical surface " + std::to_string(group) +
+                         " holds elements of gmsh type " + std::to_string(types[t]) +
+                         "; ffeti-solve reads 3-node triangles only");
+      for (size_t e = 0; e < element_tags[t].size(); ++e)
+        result.push_back({element_tags[t][e], {node_tags[t][3 * e], node_tags[t][3 * e + 1], node_tags[t][3 * e + 2]}});
+    }
+  }
+  if (result.empty())
+    throw InputError(path_ + ": physical surface " + std::to_string(group) + " has no triangles" +
+                     (partition > 0 ? " in partition " + std::to_string(partition) : std::string()));
+  return result;
+}
+
+std::vector<std::array<NodeTag, 2>> GmshMesh::segments(int group) const {
+  require_group(1, group);
+  std::vector<int> entities;
+  gmsh::model::getEntitiesForPhysicalGroup(1, group, entities);
+  std::vector<std::array<NodeTag, 2>> result;
+  for (int entity : entities) {
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> element_tags, node_tags;
+    gmsh::model::mesh::getElements(types, element_tags, node_tags, 1, entity);
+    for (size_t t = 0; t < types.size(); ++t) {
+      if (types[t] != kLine2)
+        throw InputError(path_ + ": physical curve " + std::to_string(group) + " holds elements of gmsh type " +
+                         std::to_string(types[t]) + "; ffeti-solve reads 2-node lines only");
+      for (size_t e = 0; e < element_tags[t].size(); ++e)
+        result.push_back({node_tags[t][2 * e], node_tags[t][2 * e + 1]});
+    }
+  }
+  return result;
+}
+
+std::vector<NodeTag> GmshMesh::nodes(int dim, int group) const {
+  require_group(dim, group);
+  std::vector<NodeTag> tags;
+  std::vector<double> coordinates;
+  gmsh::model::mesh::getNodesForPhysicalGroup(dim, group, tags, coordinates);
+  std::sort(tags.begin(), tags.end());
+  tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
+  return tags;
+}
+
+}  // namespace ffeti::native

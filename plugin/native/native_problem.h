@@ -1,0 +1,42 @@
+// The core's input (SubdomainInput, ContactInput, settings) built from a problem file, its
+// gmsh mesh and the subdomain systems on disk, for the subdomains one rank holds.
+#pragma once
+
+#include "feti/dual_system.h"
+#include "feti/feti_problem.h"
+#include "native/gmsh_mesh.h"
+#include "native/problem_file.h"
+#include "native/system_files.h"
+
+#include <vector>
+
+namespace ffeti::native {
+
+/// What the result writers need to know about one subdomain beyond the core's input.
+struct SubdomainLayout {
+  int id = 0;                       ///< global index (position in the problem file)
+  std::vector<DofLocation> dofs;    ///< node and component of each row
+  std::vector<Triangle> triangles;  ///< the mesh elements of the subdomain
+};
+
+struct NativeInput {
+  std::vector<SubdomainInput> subdomains;  ///< this rank's, in ascending global index
+  std::vector<SubdomainLayout> layouts;    ///< the same subdomains
+  ContactInput contact;                    ///< of this rank's subdomains
+  /// Master segments on this rank's subdomains, and on the master curves in all: every
+  /// segment must lie on some rank's subdomain (checked by the caller over the ranks).
+  long master_segments_here = 0, master_segments_total = 0;
+  FetiSetupSettings setup;
+  DualSolveSettings solve;
+};
+
+/// Builds the input of the subdomains `ids` (ascending). InputError naming the problem
+/// file entry and the data file for sizes that disagree (matrix, right-hand side, dof
+/// map), dofs at nodes outside the subdomain's triangles, triangle nodes without dofs,
+/// physical groups that do not exist, and bad options.
+NativeInput build_input(const ProblemFile& problem, const GmshMesh& mesh, const std::vector<int>& ids);
+
+/// A path of the problem file resolved against its directory.
+std::string resolve(const ProblemFile& problem, const std::string& path);
+
+}  // namespace ffeti::native

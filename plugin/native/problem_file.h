@@ -1,0 +1,89 @@
+// The problem file of ffeti-solve (JSON, read with nlohmann/json): which mesh, which
+// subdomain systems, which physical groups carry the conditions, and the solver options.
+// The format is documented in docs/reference.md ("ffeti-solve").
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ffeti::native {
+
+/// How the rows of a subdomain matrix map to mesh nodes and field components.
+struct DofMapSpec {
+  std::string getdp_pre;  ///< GetDP's .pre file (with `system`), or
+  int system = 0;         ///< its $DofData block: the system's position in the resolution
+  std::string explicit_file;  ///< a text file, one "node_tag component" line per row
+};
+
+struct SubdomainSpec {
+  std::vector<int> surfaces;  ///< physical surfaces whose triangles form the subdomain
+  int partition = 0;          ///< > 0: only the elements of this mesh partition
+  int body = 0;
+  std::string matrix, rhs;    ///< GetDP's Print[] output (.m) or Matrix Market (.mtx)
+  DofMapSpec dofs;
+};
+
+/// Linear elastic material of a body (plane strain or plane stress): von Mises views.
+struct MaterialSpec {
+  double young = 0, poisson = 0;
+  bool plane_stress = false;
+};
+
+struct BodySpec {
+  std::string name;
+  std::optional<MaterialSpec> material;
+};
+
+struct DirichletSpec {
+  int group = 0;                ///< physical group tag
+  int dim = 1;                  ///< its dimension: 1 curve (default), 0 point
+  std::vector<int> components;  ///< fixed components (vector fields); empty: all
+  double value = 0;
+};
+
+struct ContactSpec {
+  int slave = 0;      ///< physical curve of the slave nodes
+  int master = 0;     ///< physical curve of the master segments (0 with an obstacle)
+  double search_distance = 1e300;
+  double gap = 0;     ///< node to node (scalar fields) only
+  bool obstacle = false;
+  std::array<double, 2> obstacle_point{0, 0}, obstacle_normal{0, 1};
+};
+
+struct SolverSpec {  ///< the names and defaults of fetiSetup and fetiSolve
+  std::string variant;  ///< empty: the plugin's default for the field
+  std::string factor = "simplicial", preconditioner = "none", algorithm = "smalbe-m";
+  std::string expansion = "projected-cg", stop = "kkt";
+  long threads = 0, maxit = 10000, verbosity = 0;
+  double tol = 1e-4;
+  std::optional<double> rho, M, eta, gamma;
+};
+
+struct OutputSpec {  ///< files to write; empty: not written
+  std::string views;           ///< gmsh views (.msh or .pos)
+  std::string table;           ///< nodal results, CSV
+  std::string stress_table;    ///< von Mises per element, CSV
+  std::string getdp_solution;  ///< GetDP's .res, one $Solution per subdomain system
+  std::string history;         ///< convergence history, CSV
+};
+
+struct ProblemFile {
+  std::string path;       ///< of the problem file, for error messages
+  std::string directory;  ///< relative paths inside are relative to it
+  std::string mesh;
+  int components = 2;     ///< field components per node: 1 (membranes) or 2 (plane elasticity)
+  std::vector<BodySpec> bodies;
+  std::vector<SubdomainSpec> subdomains;
+  std::vector<DirichletSpec> dirichlet;
+  std::vector<ContactSpec> contact;
+  SolverSpec solver;
+  OutputSpec output;
+};
+
+/// Reads and checks the problem file. InputError naming the file and the key for a missing
+/// file, malformed JSON, a missing or mistyped entry, an unknown key or a bad value.
+ProblemFile read_problem_file(const std::string& path);
+
+}  // namespace ffeti::native

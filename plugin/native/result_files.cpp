@@ -1,0 +1,235 @@
+#include "native/result_files.h"
+
+#include "feti/errors.h"
+
+#include <gmsh.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+
+namespace ffeti::native {
+namespace {
+
+std::ofstream open_output(const std::string& path) {
+  std::ofstream out(path);
+  if (!out) throw InputError(path + ": cannot write this output file");
+  out << std::setprecision(17);
+  return out;
+}
+
+/// Each slave node's share of its slave curves: half the length of each segment at it.
+std::map<NodeTag, double> tributary_lengths(const ProblemFile& problem, const GmshMesh& mesh) {
+  std::map<NodeTag, double> share;
+  for (const ContactSpec& c : problem.contact)
+    for (const auto& [a, b] : mesh.segments(c.slave)) {
+      const auto pa = mesh.position(a), pb = mesh.position(b);
+      const double half = 0.5 * std::hypot(pb[0] - pa[0], pb[1] - pa[1]);
+      share[a] += half;
+      share[b] += half;
+    }
+  return share;
+}
+
+}  // namespace
+
+GatheredSolution gather_solution(const FetiResult& result, const std::vector<SubdomainLayout>& layouts,
+                                 int subdomain_count, const Communicator& comm) {
+  std::vector<long long> local_dofs;  // per subdomain: id, rows, then (node, component) per row
+  std::vector<double> local_values;
+  for (size_t k = 0; k < layouts.size(); ++k) {
+    local_dofs.push_back(layouts[k].id);
+    local_dofs.push_back(static_cast<long long>(layouts[k].dofs.size()));
+    for (const DofLocation& dof : layouts[k].dofs) {
+      local_dofs.push_back(static_cast<long long>(dof.node));
+      local_dofs.push_back(dof.component);
+    }
+    local_values.insert(local_values.end(), result.u[k].data(), result.u[k].data() + result.u[k].size());
+  }
+  const std::vector<long long> dofs = comm.allgather(local_dofs);
+  const std::vector<double> values = comm.allgather(local_values);
+  GatheredSolution solution;
+  solution.dofs.resize(static_cast<size_t>(subdomain_count));
+  solution.u.resize(static_cast<size_t>(subdomain_count));
+  size_t at = 0, value_at = 0;
+  while (at < dofs.size()) {
+    const auto id = static_cast<size_t>(dofs[at]);
+    const auto rows = static_cast<size_t>(dofs[at + 1]);
+    at += 2;
+    for (size_t i = 0; i < rows; ++i, at += 2)
+      solution.dofs[id].push_back({static_cast<NodeTag>(dofs[at]), static_cast<int>(dofs[at + 1])});
+    solution.u[id] = Eigen::Map<const Vec>(values.data() + value_at, static_cast<Eigen::Index>(rows));
+    value_at += rows;
+  }
+  return solution;
+}
+
+NodalResults nodal_results(const ProblemFile& problem, const GmshMesh& mesh, const GatheredSolution& solution,
+                           const std::vector<ContactMultiplier>& contact) {
+  NodalResults results;
+  std::map<std::pair<NodeTag, int>, std::pair<double, int>> sums;  // (node, component) -> (sum, copies)
+  for (size_t s = 0; s < solution.dofs.size(); ++s)
+    for (size_t i = 0; i < solution.dofs[s].size(); ++i) {
+      const DofLocation& dof = solution.dofs[s][i];
+      auto& [sum, copies] = sums[{dof.node, dof.component}];
+      sum += solution.u[s][static_cast<Eigen::Index>(i)];
+      ++copies;
+      results.body[dof.node] = problem.subdomains[s].body;
+    }
+  for (const auto& [key, value] : sums) results.displacement[key.first][static_cast<size_t>(key.second)] = value.first / value.second;
+
+  std::map<std::array<double, 2>, NodeTag> slave_at;  // exact positions: the rows' came from the mesh
+  for (const ContactSpec& c : problem.contact)
+    for (NodeTag node : mesh.nodes(1, c.slave)) slave_at[mesh.position(node)] = node;
+  const std::map<NodeTag, double> share = tributary_lengths(problem, mesh);
+  for (const ContactMultiplier& row : contact) {
+    const auto node = slave_at.find({row.x, row.y});
+    if (node == slave_at.end()) continue;  // a row of another kind at this position: none expected
+    results.contact_force[node->second] += row.lambda;
+  }
+  for (const auto& [node, force] : results.contact_force) {
+    const auto length = share.find(node);
+    results.contact_pressure[node] = length != share.end() && length->second > 0 ? force / length->second : 0.0;
+  }
+  return results;
+}
+
+double von_mises(const MaterialSpec& material, const std::array<std::array<double, 2>, 3>& p,
+                 const std::array<std::array<double, 2>, 3>& u) {
+  // Gradients of the P1 basis functions from the triangle's edge vectors.
+  const double area2 = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]);
+  double exx = 0, eyy = 0, gxy = 0;
+  for (int i = 0; i < 3; ++i) {
+    const auto& a = p[(i + 1) % 3];
+    const auto& b = p[(i + 2) % 3];
+    const double dx = (a[1] - b[1]) / area2, dy = (b[0] - a[0]) / area2;
+    exx += dx * u[i][0];
+    eyy += dy * u[i][1];
+    gxy += dy * u[i][0] + dx * u[i][1];
+  }
+  const double E = material.young, nu = material.poisson;
+  const double mu = E / (2 * (1 + nu));
+  double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+  if (material.plane_stress) lambda = 2 * lambda * mu / (lambda + 2 * mu);
+  const double sxx = (lambda + 2 * mu) * exx + lambda * eyy;
+  const double syy = lambda * exx + (lambda + 2 * mu) * eyy;
+  const double sxy = mu * gxy;
+  const double szz = material.plane_stress ? 0.0 : lambda * (exx + eyy);
+  return std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
+                   3 * sxy * sxy);
+}
+
+std::vector<ElementStress> element_stresses(const ProblemFile& problem, const GmshMesh& mesh,
+                                           const NodalResults& results) {
+  std::vector<ElementStress> stresses;
+  if (problem.components != 2) return stresses;
+  for (const SubdomainSpec& sub : problem.subdomains) {
+    const auto& material = problem.bodies[static_cast<size_t>(sub.body)].material;
+    if (!material) continue;
+    for (int surface : sub.surfaces)
+      for (const Triangle& t : mesh.triangles(surface, sub.partition)) {
+        std::array<std::array<double, 2>, 3> points, displacements;
+        for (int i = 0; i < 3; ++i) {
+          points[i] = mesh.position(t.nodes[i]);
+          displacements[i] = results.displacement.at(t.nodes[i]);
+        }
+        const double cx = (points[0][0] + points[1][0] + points[2][0]) / 3;
+        const double cy = (points[0][1] + points[1][1] + points[2][1]) / 3;
+        stresses.push_back({t.tag, sub.body, cx, cy, von_mises(*material, points, displacements)});
+      }
+  }
+  return stresses;
+}
+
+void write_views(const std::string& path, const ProblemFile& problem, const GmshMesh& mesh,
+                 const NodalResults& results) {
+  if (!std::ofstream(path)) throw InputError(path + ": cannot write this output file");
+  std::vector<int> views;
+  auto node_view = [&](const std::string& name, const std::map<NodeTag, double>& values) {
+    if (values.empty()) return;
+    std::vector<std::size_t> tags;
+    std::vector<double> data;
+    for (const auto& [node, value] : values) {
+      tags.push_back(node);
+      data.push_back(value);
+    }
+    views.push_back(gmsh::view::add(name));
+    gmsh::view::addHomogeneousModelData(views.back(), 0, mesh.model_name(), "NodeData", tags, data, 0, 1);
+  };
+  {
+    std::vector<std::size_t> tags;
+    std::vector<double> data;
+    for (const auto& [node, u] : results.displacement) {
+      tags.push_back(node);
+      if (problem.components == 1) data.push_back(u[0]);
+      else data.insert(data.end(), {u[0], u[1], 0.0});
+    }
+    views.push_back(gmsh::view::add("displacement"));
+    gmsh::view::addHomogeneousModelData(views.back(), 0, mesh.model_name(), "NodeData", tags, data, 0,
+                                        problem.components == 1 ? 1 : 3);
+  }
+  node_view("contact pressure", results.contact_pressure);
+  std::map<NodeTag, double> active;
+  for (const auto& [node, force] : results.contact_force) active[node] = force > 0 ? 1.0 : 0.0;
+  node_view("active set", active);
+
+  const std::vector<ElementStress> stresses = element_stresses(problem, mesh, results);
+  std::vector<std::size_t> element_tags;
+  std::vector<double> stress;
+  for (const ElementStress& e : stresses) {
+    element_tags.push_back(e.tag);
+    stress.push_back(e.von_mises);
+  }
+  if (!element_tags.empty()) {
+    views.push_back(gmsh::view::add("von Mises"));
+    gmsh::view::addHomogeneousModelData(views.back(), 0, mesh.model_name(), "ElementData", element_tags, stress, 0, 1);
+  }
+  for (size_t k = 0; k < views.size(); ++k) {
+    gmsh::option::setNumber("PostProcessing.SaveMesh", k == 0);  // the mesh once, before the first view
+    gmsh::view::write(views[k], path, k > 0);
+  }
+}
+
+void write_table(const std::string& path, const GmshMesh& mesh, const NodalResults& results) {
+  std::ofstream out = open_output(path);
+  out << "node,body,x,y,u_x,u_y,contact_row,contact_force,contact_pressure,active\n";
+  for (const auto& [node, u] : results.displacement) {
+    const auto p = mesh.position(node);
+    const auto force = results.contact_force.find(node);
+    const bool slave = force != results.contact_force.end();
+    out << node << ',' << results.body.at(node) << ',' << p[0] << ',' << p[1] << ',' << u[0] << ',' << u[1] << ','
+        << slave << ',' << (slave ? force->second : 0.0) << ',' << (slave ? results.contact_pressure.at(node) : 0.0) << ','
+        << (slave && force->second > 0 ? 1 : 0) << '\n';
+  }
+}
+
+void write_stress_table(const std::string& path, const ProblemFile& problem, const GmshMesh& mesh,
+                        const NodalResults& results) {
+  std::ofstream out = open_output(path);
+  out << "element,body,x,y,von_mises\n";
+  for (const ElementStress& e : element_stresses(problem, mesh, results))
+    out << e.tag << ',' << e.body << ',' << e.x << ',' << e.y << ',' << e.von_mises << '\n';
+}
+
+void write_getdp_solution(const std::string& path, const ProblemFile& problem, const GatheredSolution& solution) {
+  std::map<int, size_t> subdomain_of_system;
+  for (size_t s = 0; s < problem.subdomains.size(); ++s) {
+    const DofMapSpec& dofs = problem.subdomains[s].dofs;
+    if (dofs.getdp_pre.empty() || dofs.getdp_pre != problem.subdomains.front().dofs.getdp_pre)
+      throw InputError(problem.path + ": output.getdp_solution: every subdomain's dofs must come from one GetDP "
+                       ".pre file (subdomains[" + std::to_string(s) + "] differs)");
+    if (!subdomain_of_system.emplace(dofs.system, s).second)
+      throw InputError(problem.path + ": output.getdp_solution: system " + std::to_string(dofs.system) +
+                       " is the dof map of two subdomains");
+  }
+  std::ofstream out = open_output(path);
+  out << "$ResFormat /* ffeti-solve, ascii */\n1.1 0\n$EndResFormat\n";
+  for (const auto& [system, s] : subdomain_of_system) {
+    out << "$Solution  /* DofData #" << system << " */\n" << system << " 0 0 0\n";
+    for (Eigen::Index i = 0; i < solution.u[s].size(); ++i) out << solution.u[s][i] << '\n';
+    out << "$EndSolution\n";
+  }
+}
+
+}  // namespace ffeti::native

@@ -1,0 +1,70 @@
+// What ffeti-solve writes after a solve: gmsh views (displacement, contact pressure, active
+// set, von Mises), a CSV table of nodal results and GetDP's .res solution file.
+#pragma once
+
+#include "feti/feti_problem.h"
+#include "feti/statistics.h"
+#include "native/gmsh_mesh.h"
+#include "native/native_problem.h"
+#include "native/problem_file.h"
+#include "parallel/communicator.h"
+
+#include <map>
+#include <vector>
+
+namespace ffeti::native {
+
+/// The solution of every subdomain, gathered on every rank, in problem-file order.
+struct GatheredSolution {
+  std::vector<std::vector<DofLocation>> dofs;  ///< per subdomain
+  std::vector<Vec> u;                          ///< per subdomain, row order
+};
+
+/// Collective.
+GatheredSolution gather_solution(const FetiResult& result, const std::vector<SubdomainLayout>& layouts,
+                                 int subdomain_count, const Communicator& comm);
+
+/// Nodal values: displacement (averaged over the subdomain copies of a node, which agree
+/// to the solver's tolerance) and, at the slave nodes, the contact force (the multiplier),
+/// the pressure (force over the node's share of the slave curve) and the active flag.
+struct NodalResults {
+  std::map<NodeTag, std::array<double, 2>> displacement;
+  std::map<NodeTag, int> body;
+  std::map<NodeTag, double> contact_force, contact_pressure;
+};
+
+NodalResults nodal_results(const ProblemFile& problem, const GmshMesh& mesh, const GatheredSolution& solution,
+                           const std::vector<ContactMultiplier>& contact);
+
+/// Von Mises stress of each triangle of the bodies with a material (plane displacements).
+struct ElementStress {
+  std::size_t tag;
+  int body;
+  double x, y;  ///< the triangle's centroid
+  double von_mises;
+};
+std::vector<ElementStress> element_stresses(const ProblemFile& problem, const GmshMesh& mesh,
+                                            const NodalResults& results);
+
+/// Views in one file that gmsh opens (format from the extension: .msh or .pos).
+void write_views(const std::string& path, const ProblemFile& problem, const GmshMesh& mesh,
+                 const NodalResults& results);
+
+/// node,body,x,y,u_x,u_y,contact_row,contact_force,contact_pressure,active (contact_row: 1 at
+/// the slave nodes that have a contact row)
+void write_table(const std::string& path, const GmshMesh& mesh, const NodalResults& results);
+
+/// element,body,x,y,von_mises (centroids), for the bodies with a material.
+void write_stress_table(const std::string& path, const ProblemFile& problem, const GmshMesh& mesh,
+                        const NodalResults& results);
+
+/// GetDP's .res: one $Solution per subdomain system, numbered by its $DofData block, so that
+/// `getdp ... -pre <resolution> -res <file> -pos <post-operation>` post-processes it.
+/// InputError unless every subdomain's dofs come from one .pre file, each system once.
+void write_getdp_solution(const std::string& path, const ProblemFile& problem, const GatheredSolution& solution);
+
+/// Von Mises stress of one P1 triangle (constant strain) of a body with `material`.
+double von_mises(const MaterialSpec& material, const std::array<std::array<double, 2>, 3>& points,
+                 const std::array<std::array<double, 2>, 3>& displacements);
+
+}  // namespace ffeti::native

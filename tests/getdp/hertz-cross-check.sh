@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# The Hertz scene through GetDP and ffeti-solve (getdp/hertz.pro, getdp/hertz.json) against
+# the same scene through FreeFEM and the plugin (edp/hertz.edp -pair) on the same gmsh mesh
+# with the same P1 elements, at tol = 1e-10: displacements, contact forces and GetDP's von
+# Mises stresses agree to 1e-6 relative; a and p0 within 5% of Hertz's. Then the same
+# problem file under mpirun -np 1, 2 and 3 gives the serial result (1e-8 relative).
+# Usage: hertz-cross-check.sh SOURCE_DIR FFETI_SOLVE   (in a folder with the tests' freefem++.pref)
+# Exit 77 (skipped) when GetDP is not installed.
+set -euo pipefail
+source_dir=$1
+ffeti_solve=$2
+command -v getdp >/dev/null || { echo "SKIPPED: getdp is not installed (apt-get install getdp)"; exit 77; }
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+pref=$PWD/freefem++.pref
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+cp "$pref" .
+cp "$source_dir/getdp/hertz.pro" .
+gmsh -2 -format msh22 -v 0 "$source_dir/meshes/hertz-pair.geo" -o hertz.msh
+# The example's problem file at tol = 1e-10, with the element stress table for the check.
+python3 - "$source_dir/getdp/hertz.json" <<'PY'
+import json, sys
+problem = json.load(open(sys.argv[1]))
+problem["solver"]["tol"] = 1e-10
+problem["output"]["stress_table"] = "hertz-ffeti-stress.csv"
+json.dump(problem, open("hertz-tight.json", "w"), indent=2)
+PY
+getdp hertz.pro -msh hertz.msh -setstring solver "$ffeti_solve" -setstring problem hertz-tight.json \
+  -solve Hertz -v 1 | grep '^RESULT'
+FreeFem++-nw -v 0 "$source_dir/edp/hertz.edp" -pair hertz.msh -parts 2 -tol 1e-10 -table freefem.csv | grep '^RESULT'
+python3 "$source_dir/tests/getdp/compare_hertz.py" hertz-ffeti.csv freefem.csv hertz-ffeti-stress.csv \
+  'hertz-vonmises-*.txt' 1e-6 0.05
+
+# The same problem file under mpirun on 1, 2 and 3 ranks (6 subdomains: 3-3 on 2 ranks, 2-2-2 on 3).
+failures=0
+for ranks in 1 2 3; do
+  python3 - "$ranks" <<'PY'
+import json, sys
+problem = json.load(open("hertz-tight.json"))
+problem["output"] = {"table": f"ranks{sys.argv[1]}.csv"}
+json.dump(problem, open(f"ranks{sys.argv[1]}.json", "w"), indent=2)
+PY
+  mpirun --oversubscribe -np "$ranks" "$ffeti_solve" "ranks$ranks.json" | grep '^RESULT' | grep -q 'status_name=converged' \
+    || { echo "FAILED: $ranks ranks did not converge"; failures=$((failures + 1)); continue; }
+  python3 - "$ranks" <<'PY' || failures=$((failures + 1))
+import csv, sys
+serial = {r["node"]: r for r in csv.DictReader(open("hertz-ffeti.csv"))}
+ranks = {r["node"]: r for r in csv.DictReader(open(f"ranks{sys.argv[1]}.csv"))}
+assert serial.keys() == ranks.keys(), "node sets differ"
+scale = {k: max(abs(float(r[k])) for r in serial.values()) for k in ("u_x", "u_y", "contact_force")}
+error = max(abs(float(serial[n][k]) - float(ranks[n][k])) / scale[k] for n in serial for k in scale)
+ok = error <= 1e-8
+print(f"{'ok' if ok else 'FAILED'}: {sys.argv[1]} ranks: largest relative difference from the serial run {error:.2e}")
+sys.exit(0 if ok else 1)
+PY
+done
+exit $failures
