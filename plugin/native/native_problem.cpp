@@ -189,8 +189,12 @@ std::string resolve(const ProblemFile& problem, const std::string& path) {
 
 NativeInput build_input(const ProblemFile& problem, const GmshMesh& mesh, const std::vector<int>& ids) {
   NativeInput input;
-  input.setup = setup_settings(problem.solver, problem.components > 1);
-  input.solve = solve_settings(problem.solver);
+  try {  // the core's messages name the option; say where it was written
+    input.setup = setup_settings(problem.solver, problem.components > 1);
+    input.solve = solve_settings(problem.solver);
+  } catch (const InputError& error) {
+    throw InputError(problem.path + ": solver." + error.what());
+  }
   for (int s : ids) {
     input.layouts.emplace_back();
     input.subdomains.push_back(read_subdomain(problem, mesh, s, input.layouts.back()));

@@ -1,0 +1,99 @@
+#!/usr/bin/env bash
+# ffeti-solve on bad input: each case must exit with status 2 and a message naming the file
+# and what is wrong. Also the Matrix Market path: GetDP's systems converted to Matrix Market
+# with an explicit dof map give GetDP's result.
+# Usage: bad-input.sh SOURCE_DIR FFETI_SOLVE.  Exit 77 (skipped) when GetDP is not installed.
+set -euo pipefail
+source_dir=$1
+ffeti_solve=$2
+command -v getdp >/dev/null || { echo "SKIPPED: getdp is not installed (apt-get install getdp)"; exit 77; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+cp "$source_dir/getdp/hertz.pro" "$source_dir/getdp/hertz.json" .
+gmsh -2 -format msh22 -v 0 "$source_dir/meshes/hertz-pair.geo" -o hertz.msh
+getdp hertz.pro -msh hertz.msh -solve Assemble -v 0
+
+failures=0
+# expect NAME PATTERN JSON_EDIT: applies the Python statement JSON_EDIT to the problem `p`,
+# runs ffeti-solve and checks exit status 2 and PATTERN in its message.
+expect() {
+  local name=$1 pattern=$2 edit=$3
+  python3 -c "
+import json
+p = json.load(open('hertz.json'))
+$edit
+open('case.json', 'w').write(p if isinstance(p, str) else json.dumps(p))"
+  local status=0
+  "$ffeti_solve" case.json > out.txt 2>&1 || status=$?
+  if [ "$status" -eq 2 ] && grep -q -- "$pattern" out.txt; then
+    echo "ok: $name: $(tail -n 1 out.txt)"
+  else
+    echo "FAILED: $name: exit status $status, expected 2 and \"$pattern\"; got:"; cat out.txt
+    failures=$((failures + 1))
+  fi
+}
+"$ffeti_solve" nothing.json > out.txt 2>&1 && status=0 || status=$?
+{ [ "$status" -eq 2 ] && grep -q "nothing.json: cannot open the problem file" out.txt && echo "ok: missing problem file"; } \
+  || { echo "FAILED: missing problem file"; cat out.txt; failures=$((failures + 1)); }
+expect "malformed JSON" "case.json: not valid JSON" "p = '{\"mesh\": \"hertz.msh\",'"
+expect "unknown key" "case.json: solver.tolerance: unknown key" "p['solver']['tolerance'] = 1e-6"
+expect "mistyped value" "case.json: solver.tol: must be a number" "p['solver']['tol'] = 'small'"
+expect "bad option word" "case.json: solver.variant: \"feti2\" is not one of \"feti1\", \"tfeti\"" "p['solver']['variant'] = 'feti2'"
+expect "missing mesh file" "nowhere.msh: cannot open the mesh file" "p['mesh'] = 'nowhere.msh'"
+expect "missing matrix file" "absent.m: cannot open the matrix file" "p['subdomains'][1]['matrix'] = 'absent.m'"
+expect "malformed matrix file" "hertz.json: no \"= \[\" block" "p['subdomains'][0]['matrix'] = 'hertz.json'"
+expect "matrix and dof map sizes differ" "subdomains\[0\]: sizes differ: ./file_mat_hertz-A2.m has" \
+  "p['subdomains'][0]['matrix'] = 'file_mat_hertz-A2.m'"
+expect "dof map of another subdomain" "hertz.pre: subdomains\[1\]: node .* has a row but is not a vertex" \
+  "p['subdomains'][1]['dofs']['system'] = 0; p['subdomains'][1]['matrix'] = 'file_mat_hertz-A1.m'; p['subdomains'][1]['rhs'] = 'file_vec_hertz-A1.m'"
+expect "no such system in the .pre" "hertz.pre: no system 9" "p['subdomains'][0]['dofs']['system'] = 9"
+expect "physical surface that does not exist" "hertz.msh: no physical surface 999 (the mesh has 101, 102, 201" \
+  "p['subdomains'][0]['surfaces'] = [999]"
+expect "physical curve that does not exist" "hertz.msh: no physical curve 77" "p['dirichlet'][0]['group'] = 77"
+expect "body out of range" "subdomains\[2\].body: must lie in \[0, 2)" "p['subdomains'][2]['body'] = 5"
+expect "component out of range" "dirichlet\[0\].components: entry 2 is not a component" "p['dirichlet'][0]['components'] = [2]"
+expect "bad tolerance" "case.json: solver.tol: must lie in (0, 1)" "p['solver']['tol'] = 2"
+
+# Matrix Market and an explicit dof map: GetDP's systems converted give GetDP's result.
+python3 - <<'PY'
+import json, re
+problem = json.load(open("hertz.json"))
+pre = open("hertz.pre").read()
+blocks = re.findall(r"\$DofData.*?\n(.*?)\$EndDofData", pre, re.S)
+for k, sub in enumerate(problem["subdomains"]):
+    rows = {}
+    lines = blocks[sub["dofs"]["system"]].strip().splitlines()[5:]  # after the four header lines and the counts
+    bases = sorted({int(l.split()[0]) for l in lines})
+    for l in lines:
+        basis, node, _, _, equation = (int(v) for v in l.split()[:5])
+        rows[equation] = (node, bases.index(basis))
+    with open(f"dofs{k}.txt", "w") as out:
+        out.write("# node component, one line per row\n")
+        for equation in sorted(rows):
+            out.write(f"{rows[equation][0]} {rows[equation][1]}\n")
+    entries = re.findall(r"^(\d+) (\d+)\s+(\S+)$", open(sub["matrix"]).read(), re.M)
+    n = len(rows)
+    with open(f"K{k}.mtx", "w") as out:
+        out.write(f"%%MatrixMarket matrix coordinate real general\n{n} {n} {len(entries)}\n")
+        out.writelines(f"{i} {j} {v}\n" for i, j, v in entries)
+    values = [l for l in open(sub["rhs"]).read().split("[", 1)[1].split("]")[0].split()]
+    with open(f"f{k}.mtx", "w") as out:
+        out.write(f"%%MatrixMarket matrix array real general\n{n} 1\n" + "\n".join(values) + "\n")
+    sub.update({"matrix": f"K{k}.mtx", "rhs": f"f{k}.mtx", "dofs": {"file": f"dofs{k}.txt"}})
+problem["output"] = {"table": "market.csv"}
+json.dump(problem, open("market.json", "w"), indent=2)
+problem["output"] = {"table": "getdp.csv"}
+problem_getdp = json.load(open("hertz.json"))
+problem_getdp["output"] = {"table": "getdp.csv"}
+json.dump(problem_getdp, open("getdp.json", "w"), indent=2)
+PY
+"$ffeti_solve" getdp.json | grep -q "status_name=converged" || { echo "FAILED: GetDP files did not converge"; failures=$((failures + 1)); }
+"$ffeti_solve" market.json | grep -q "status_name=converged" || { echo "FAILED: Matrix Market files did not converge"; failures=$((failures + 1)); }
+if cmp -s getdp.csv market.csv; then
+  echo "ok: Matrix Market + explicit dof map: the same results as GetDP's files ($(wc -l < market.csv) lines)"
+else
+  echo "FAILED: Matrix Market results differ from GetDP's"; failures=$((failures + 1))
+fi
+echo "failures: $failures"
+exit $failures
