@@ -11,7 +11,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 cp "$source_dir/getdp/hertz.pro" "$source_dir/getdp/hertz.json" .
-gmsh -2 -format msh22 -v 0 "$source_dir/meshes/hertz-pair.geo" -o hertz.msh
+# The mesh split by gmsh's partitioner too (GetDP ignores the partitions; ffeti-solve can select one).
+gmsh -2 -part 4 -format msh22 -v 0 "$source_dir/meshes/hertz-pair.geo" -o hertz.msh
 getdp hertz.pro -msh hertz.msh -solve Assemble -v 0
 
 failures=0
@@ -53,6 +54,10 @@ expect "physical surface that does not exist" "hertz.msh: no physical surface 99
 expect "physical curve that does not exist" "hertz.msh: no physical curve 77" "p['dirichlet'][0]['group'] = 77"
 expect "body out of range" "subdomains\[2\].body: must lie in \[0, 2)" "p['subdomains'][2]['body'] = 5"
 expect "component out of range" "dirichlet\[0\].components: entry 2 is not a component" "p['dirichlet'][0]['components'] = [2]"
+expect "partition without the surface's triangles" "hertz.msh: physical surface 204 has no triangles in partition 1" \
+  "p['subdomains'][5]['partition'] = 1"
+expect "system of the whole surface for one partition" "subdomains\[2\]: node .* has a row but is not a vertex" \
+  "p['subdomains'][2]['partition'] = 2"
 expect "bad tolerance" "case.json: solver.tol: must lie in (0, 1)" "p['solver']['tol'] = 2"
 
 # Matrix Market and an explicit dof map: GetDP's systems converted give GetDP's result.
