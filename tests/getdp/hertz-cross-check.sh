@@ -2,7 +2,8 @@
 # The Hertz scene through GetDP and ffeti-solve (getdp/hertz.pro, getdp/hertz.json) against
 # the same scene through FreeFEM and the plugin (edp/hertz.edp -pair) on the same gmsh mesh
 # with the same P1 elements, at tol = 1e-10: displacements, contact forces and GetDP's von
-# Mises stresses agree to 1e-6 relative; a and p0 within 5% of Hertz's. Then the same
+# Mises stresses agree to 1e-6 relative; a and p0 within 5% of Hertz's. The cylinder alone
+# on a rigid obstacle against Hertz and the force balance. Then the same
 # problem file under mpirun -np 1, 2 and 3 gives the serial result (1e-8 relative).
 # Usage: hertz-cross-check.sh SOURCE_DIR FFETI_SOLVE   (in a folder with the tests' freefem++.pref)
 # Exit 77 (skipped) when GetDP is not installed.
@@ -31,6 +32,37 @@ getdp hertz.pro -msh hertz.msh -setstring solver "$ffeti_solve" -setstring probl
 FreeFem++-nw -v 0 "$source_dir/edp/hertz.edp" -pair hertz.msh -parts 2 -tol 1e-10 -table freefem.csv | grep '^RESULT'
 python3 "$source_dir/tests/getdp/compare_hertz.py" hertz-ffeti.csv freefem.csv hertz-ffeti-stress.csv \
   'hertz-vonmises-*.txt' 1e-6 0.05
+
+# The cylinder alone on a rigid plane (the block's two subdomains dropped, an obstacle
+# instead): the contact forces balance the load (1e-8), a and p0 within 5% of Hertz with a
+# rigid half-space (E* = E1 / (1 - nu^2)).
+python3 - <<'PY'
+import json
+problem = json.load(open("hertz-tight.json"))
+problem["subdomains"] = problem["subdomains"][:2]
+problem["bodies"] = problem["bodies"][:1]
+problem["dirichlet"] = [{"group": 3, "components": [0]}]
+problem["contact"] = [{"slave": 1, "obstacle": {"point": [0, 0], "normal": [0, 1]}}]
+problem["output"] = {"table": "obstacle.csv"}
+json.dump(problem, open("obstacle.json", "w"), indent=2)
+PY
+"$ffeti_solve" obstacle.json | grep '^RESULT' | grep -q 'status_name=converged' || { echo "FAILED: obstacle"; exit 1; }
+python3 - <<'PY'
+import csv, math, sys
+rows = sorted((r for r in csv.DictReader(open("obstacle.csv")) if r["contact_row"] == "1"), key=lambda r: float(r["x"]))
+x = [float(r["x"]) for r in rows]
+f = [float(r["contact_force"]) for r in rows]
+E1, nu, R, F = 70e3, 0.3, 50.0, 35000.0
+a_exact = math.sqrt(4 * F * R / (math.pi * E1 / (1 - nu**2)))
+p0_exact = 2 * F / (math.pi * a_exact)
+last = max(i for i in range(len(f)) if f[i] > 0)
+a, p0 = (x[last] + x[last + 1]) / 2, f[0] / ((x[1] - x[0]) / 2)
+checks = [("obstacle: force balance", abs(sum(f) - F / 2) / (F / 2), 1e-8),
+          ("obstacle: Hertz a", abs(a - a_exact) / a_exact, 0.05), ("obstacle: Hertz p0", abs(p0 - p0_exact) / p0_exact, 0.05)]
+for name, error, bound in checks:
+    print(f"{'ok' if error <= bound else 'FAILED'}: {name}: relative difference {error:.3e} (bound {bound:g})")
+sys.exit(0 if all(e <= b for _, e, b in checks) else 1)
+PY
 
 # The same problem file under mpirun on 1, 2 and 3 ranks (6 subdomains: 3-3 on 2 ranks, 2-2-2 on 3).
 failures=0
