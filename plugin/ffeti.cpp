@@ -263,10 +263,10 @@ class FetiSetup : public E_F0mps {
     FetiSetupSettings settings;
     const bool vector_field = nargs[kComponent] != nullptr;
     settings.variant = variant_from_name(optional_string(nargs[kVariant], stack, default_variant_name(vector_field)));
-    settings.factor = factor_from_name(optional_string(nargs[kFactor], stack, "simplicial"));
+    settings.factor = factor_from_name(optional_string(nargs[kFactor], stack, option_defaults::factor));
     settings.threads = checked_threads(optional_int(nargs[kThreads], stack, 0));
     settings.dirichlet_preconditioner =
-        dirichlet_preconditioner_from_name(optional_string(nargs[kPreconditioner], stack, "none"));
+        dirichlet_preconditioner_from_name(optional_string(nargs[kPreconditioner], stack, option_defaults::preconditioner));
     return settings;
   }
 };
@@ -307,14 +307,14 @@ class FetiSolve : public E_F0mps {
     DualSolveSettings settings;
     settings.tolerance = optional_real(nargs[1], stack, settings.tolerance);
     settings.max_hessian = static_cast<int>(optional_int(nargs[2], stack, settings.max_hessian));
-    settings.smalbe.variant = algorithm_from_name(optional_string(nargs[3], stack, "smalbe-m"));
+    settings.smalbe.variant = algorithm_from_name(optional_string(nargs[3], stack, option_defaults::algorithm));
     const long verbosity = optional_int(nargs[4], stack, 0);
     settings.smalbe.rho_factor = optional_real(nargs[5], stack, settings.smalbe.rho_factor);
     settings.smalbe.M_factor = optional_real(nargs[6], stack, settings.smalbe.M_factor);
     settings.smalbe.eta_factor = optional_real(nargs[7], stack, settings.smalbe.eta_factor);
     settings.mprgp.gamma = optional_real(nargs[8], stack, settings.mprgp.gamma);
-    settings.mprgp.expansion = expansion_from_name(optional_string(nargs[10], stack, "projected-cg"));
-    settings.stopping = stop_from_name(optional_string(nargs[11], stack, "kkt"));
+    settings.mprgp.expansion = expansion_from_name(optional_string(nargs[10], stack, option_defaults::expansion));
+    settings.stopping = stop_from_name(optional_string(nargs[11], stack, option_defaults::stop));
     settings.monitor = h.history.start(progress_monitor(verbosity, h.problem->communicator()));
     h.sensitivity.reset();
     h.result.reset();

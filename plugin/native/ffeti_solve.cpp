@@ -4,7 +4,7 @@
 // s mod ranks). Usage and file format: docs/reference.md ("ffeti-solve"), docs/getdp.md.
 //
 // Exit status: 0 converged, 1 not converged (the RESULT line names the status), 2 bad
-// input (the message names the file and what is wrong).
+// input (the message names the file and what is wrong), 3 another failure (out of memory).
 #include "feti/convergence_history.h"
 #include "feti/errors.h"
 #include "feti/feti_problem.h"
@@ -20,6 +20,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -27,23 +28,33 @@
 namespace ffeti::native {
 namespace {
 
-constexpr int kConverged = 0, kNotConverged = 1, kBadInput = 2;
+constexpr int kConverged = 0, kNotConverged = 1, kBadInput = 2, kFailure = 3;
 
 const char* const kUsage =
     "usage: ffeti-solve PROBLEM.json\n"
     "  Solves the contact problem described by PROBLEM.json (docs/reference.md, \"ffeti-solve\").\n"
     "  Under mpirun -np P, subdomain s is solved on rank s mod P.\n";
 
+/// Every output file can be written: found out before the solve, not after.
+void check_outputs_writable(const ProblemFile& problem) {
+  const OutputSpec& out = problem.output;
+  for (const auto& [key, path] : {std::pair{"views", out.views}, {"table", out.table}, {"stress_table", out.stress_table},
+                                  {"getdp_solution", out.getdp_solution}, {"history", out.history}})
+    if (!path.empty() && !std::ofstream(resolve(problem, path), std::ios::app))
+      throw InputError(problem.path + ": output." + key + ": cannot write " + resolve(problem, path));
+}
+
 int run(const std::string& problem_path, const std::shared_ptr<const Communicator>& comm) {
   ProblemFile problem;
   std::unique_ptr<GmshMesh> mesh;
   NativeInput input;
+  std::vector<int> ids;  // subdomain s on rank s mod ranks
   collectively(*comm, [&] {
     problem = read_problem_file(problem_path);
     mesh = std::make_unique<GmshMesh>(resolve(problem, problem.mesh));
-    std::vector<int> ids;
     for (int s = comm->rank(); s < static_cast<int>(problem.subdomains.size()); s += comm->size()) ids.push_back(s);
     input = build_input(problem, *mesh, ids);
+    if (comm->rank() == 0) check_outputs_writable(problem);
   });
   const long missing = input.master_segments_total - static_cast<long>(comm->sum(input.master_segments_here));
   if (missing != 0)
@@ -52,12 +63,16 @@ int run(const std::string& problem_path, const std::shared_ptr<const Communicato
                      "of the subdomains listed)");
   if (input.setup.threads == 0) input.setup.threads = default_threads_per_rank(*comm);
 
-  std::vector<int> ids;
-  for (const SubdomainLayout& layout : input.layouts) ids.push_back(layout.id);
   const int count = static_cast<int>(problem.subdomains.size());
-  const FetiProblem feti(std::move(input.subdomains), ids, count, input.contact, input.setup, comm);
+  std::unique_ptr<FetiProblem> built;
+  try {  // the core's checks name K[s], F[s]: the system of subdomains[s]
+    built = std::make_unique<FetiProblem>(std::move(input.subdomains), ids, count, input.contact, input.setup, comm);
+  } catch (const InputError& error) {
+    throw InputError(problem.path + ": " + error.what() + " (K[s], F[s]: the system of subdomains[s])");
+  }
+  const FetiProblem& feti = *built;
   ConvergenceHistory history;
-  input.solve.monitor = history.start(progress_monitor(problem.solver.verbosity, *comm));
+  input.solve.monitor = history.start(progress_monitor(problem.solver.verbosity.value_or(0), *comm));
   const FetiResult result = feti.solve(input.solve);
 
   const GatheredSolution solution = gather_solution(result, input.layouts, count, *comm);
@@ -98,6 +113,9 @@ int main(int argc, char** argv) {
     } catch (const ffeti::InputError& error) {
       if (rank == 0) std::cerr << "ffeti-solve: " << error.what() << std::endl;
       status = ffeti::native::kBadInput;
+    } catch (const std::exception& error) {  // not the input: out of memory, a library failure
+      std::cerr << "ffeti-solve: rank " << rank << ": failed: " << error.what() << std::endl;
+      MPI_Abort(MPI_COMM_WORLD, ffeti::native::kFailure);
     }
   }
   MPI_Finalize();

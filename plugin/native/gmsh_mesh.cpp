@@ -39,18 +39,22 @@ const char* dimension_word(int dim) { return dim == 0 ? "point" : dim == 1 ? "cu
 GmshMesh::GmshMesh(const std::string& path) : path_(path) {
   if (!std::ifstream(path)) throw InputError(path + ": cannot open the mesh file");
   gmsh::initialize();  // one GmshMesh at a time: gmsh keeps global state
-  gmsh::option::setNumber("General.Verbosity", 1);  // errors only: ffeti-solve prints its own lines
-  with_gmsh(path, [&] {
-    gmsh::clear();
-    gmsh::open(path);
-    gmsh::model::getCurrent(model_);
-  });
-  std::vector<NodeTag> tags;
-  std::vector<double> coordinates, parametric;
-  gmsh::model::mesh::getNodes(tags, coordinates, parametric, -1, -1, false, false);
-  if (tags.empty()) throw InputError(path + ": the mesh has no nodes (not a mesh file, or not meshed)");
-  positions_.reserve(tags.size());
-  for (size_t i = 0; i < tags.size(); ++i) positions_[tags[i]] = {coordinates[3 * i], coordinates[3 * i + 1]};
+  try {
+    gmsh::option::setNumber("General.Verbosity", 1);  // errors only: ffeti-solve prints its own lines
+    with_gmsh(path, [&] {
+      gmsh::open(path);
+      gmsh::model::getCurrent(model_);
+    });
+    std::vector<NodeTag> tags;
+    std::vector<double> coordinates, parametric;
+    gmsh::model::mesh::getNodes(tags, coordinates, parametric, -1, -1, false, false);
+    if (tags.empty()) throw InputError(path + ": the mesh has no nodes (not a mesh file, or not meshed)");
+    positions_.reserve(tags.size());
+    for (size_t i = 0; i < tags.size(); ++i) positions_[tags[i]] = {coordinates[3 * i], coordinates[3 * i + 1]};
+  } catch (...) {
+    gmsh::finalize();  // the destructor does not run for a constructor that throws
+    throw;
+  }
 }
 
 GmshMesh::~GmshMesh() {

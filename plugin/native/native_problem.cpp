@@ -21,14 +21,124 @@ RowIndex index_rows(const std::vector<DofLocation>& dofs) {
   return rows;
 }
 
+/// A physical group's nodes or segments, a missing group named by the problem file's key.
+template <class Lookup>
+auto from_group(const ProblemFile& problem, const std::string& key, Lookup lookup) {
+  try {
+    return lookup();
+  } catch (const InputError& error) {
+    throw InputError(problem.path + ": " + key + ": " + error.what());
+  }
+}
+
+/// The mesh split as the problem file says, on every rank alike (each reads the whole mesh):
+/// the triangles of each subdomain, and the body of every node.
+struct MeshSplit {
+  std::vector<std::vector<Triangle>> triangles;  ///< per subdomain
+  std::map<NodeTag, int> body_of_node;
+};
+
+/// Refuses a triangle in two subdomains (or twice in one: a surface listed twice) and a
+/// node shared by two bodies, which would glue or double what the user meant apart.
+MeshSplit split_mesh(const ProblemFile& problem, const GmshMesh& mesh) {
+  MeshSplit split;
+  std::map<std::size_t, int> owner;
+  for (size_t s = 0; s < problem.subdomains.size(); ++s) {
+    const SubdomainSpec& spec = problem.subdomains[s];
+    auto& triangles = split.triangles.emplace_back();
+    for (int surface : spec.surfaces) {
+      const std::vector<Triangle> part = from_group(problem, entry(static_cast<int>(s)) + ".surfaces", [&] {
+        return mesh.triangles(surface, spec.partition);
+      });
+      triangles.insert(triangles.end(), part.begin(), part.end());
+    }
+    for (const Triangle& t : triangles) {
+      const auto [it, fresh] = owner.emplace(t.tag, static_cast<int>(s));
+      if (!fresh)
+        throw InputError(problem.path + ": " + entry(it->second) + " and " + entry(static_cast<int>(s)) +
+                         " both hold triangle " + std::to_string(t.tag) +
+                         " (a surface or partition listed twice?): each triangle belongs to one subdomain");
+      for (NodeTag node : t.nodes) {
+        const auto [body, first] = split.body_of_node.emplace(node, spec.body);
+        if (!first && body->second != spec.body)
+          throw InputError(problem.path + ": node " + std::to_string(node) + " belongs to bodies " +
+                           std::to_string(body->second) + " and " + std::to_string(spec.body) + " (" +
+                           entry(static_cast<int>(s)) + "): bodies must not share nodes");
+      }
+    }
+  }
+  return split;
+}
+
+/// The prescribed value of each fixed (node, component), from every "dirichlet" entry. A
+/// group without a node in the subdomains, or two entries fixing one dof to different
+/// values, are errors.
+std::map<std::pair<NodeTag, int>, double> dirichlet_values(const ProblemFile& problem, const GmshMesh& mesh,
+                                                         const MeshSplit& split) {
+  std::map<std::pair<NodeTag, int>, std::pair<double, size_t>> fixed;  // value and the entry that set it
+  for (size_t i = 0; i < problem.dirichlet.size(); ++i) {
+    const DirichletSpec& d = problem.dirichlet[i];
+    const std::string key = "dirichlet[" + std::to_string(i) + "]";
+    const std::vector<NodeTag> nodes = from_group(problem, key + ".group", [&] { return mesh.nodes(d.dim, d.group); });
+    std::vector<int> components = d.components;
+    if (components.empty())
+      for (int c = 0; c < problem.components; ++c) components.push_back(c);
+    bool touches = false;
+    for (NodeTag node : nodes) {
+      if (!split.body_of_node.count(node)) continue;
+      touches = true;
+      for (int c : components) {
+        const auto [it, fresh] = fixed.emplace(std::make_pair(node, c), std::make_pair(d.value, i));
+        if (!fresh && it->second.first != d.value)
+          throw InputError(problem.path + ": " + key + " and dirichlet[" + std::to_string(it->second.second) +
+                           "] fix node " + std::to_string(node) + " component " + std::to_string(c) +
+                           " to different values");
+      }
+    }
+    if (!touches)
+      throw InputError(problem.path + ": " + key + ".group: physical group " + std::to_string(d.group) +
+                       " has no node in the subdomains");
+  }
+  std::map<std::pair<NodeTag, int>, double> values;
+  for (const auto& [dof, value] : fixed) values[dof] = value.first;
+  return values;
+}
+
+/// The bodies the nodes of curve `group` lie on; a node in no subdomain is an error.
+std::set<int> bodies_of_curve(const ProblemFile& problem, const GmshMesh& mesh, const MeshSplit& split, int group,
+                              const std::string& key) {
+  std::set<int> bodies;
+  for (NodeTag node : from_group(problem, key, [&] { return mesh.nodes(1, group); })) {
+    const auto body = split.body_of_node.find(node);
+    if (body == split.body_of_node.end())
+      throw InputError(problem.path + ": " + key + ": node " + std::to_string(node) + " of curve " +
+                       std::to_string(group) + " lies in no subdomain");
+    bodies.insert(body->second);
+  }
+  return bodies;
+}
+
+/// Slave and master on the same body would give no contact row at all: refused.
+void check_contact_bodies(const ProblemFile& problem, const GmshMesh& mesh, const MeshSplit& split) {
+  for (size_t i = 0; i < problem.contact.size(); ++i) {
+    const ContactSpec& c = problem.contact[i];
+    const std::string key = "contact[" + std::to_string(i) + "]";
+    const std::set<int> slave = bodies_of_curve(problem, mesh, split, c.slave, key + ".slave");
+    if (c.obstacle) continue;
+    for (int body : bodies_of_curve(problem, mesh, split, c.master, key + ".master"))
+      if (slave.count(body))
+        throw InputError(problem.path + ": " + key + ": the slave curve " + std::to_string(c.slave) +
+                         " and the master curve " + std::to_string(c.master) + " both lie on body " +
+                         std::to_string(body) + " (contact acts between different bodies)");
+  }
+}
+
 /// Reads one subdomain's system and checks it against its mesh part.
-SubdomainInput read_subdomain(const ProblemFile& problem, const GmshMesh& mesh, int s, SubdomainLayout& layout) {
+SubdomainInput read_subdomain(const ProblemFile& problem, const GmshMesh& mesh, int s, std::vector<Triangle> triangles,
+                              const std::map<std::pair<NodeTag, int>, double>& fixed, SubdomainLayout& layout) {
   const SubdomainSpec& spec = problem.subdomains[static_cast<size_t>(s)];
   layout.id = s;
-  for (int surface : spec.surfaces) {
-    const std::vector<Triangle> part = mesh.triangles(surface, spec.partition);
-    layout.triangles.insert(layout.triangles.end(), part.begin(), part.end());
-  }
+  layout.triangles = std::move(triangles);
   const std::string matrix_file = resolve(problem, spec.matrix), rhs_file = resolve(problem, spec.rhs);
   const std::string map_file = resolve(problem, spec.dofs.getdp_pre.empty() ? spec.dofs.explicit_file : spec.dofs.getdp_pre);
   SubdomainInput sub;
@@ -42,8 +152,8 @@ SubdomainInput read_subdomain(const ProblemFile& problem, const GmshMesh& mesh, 
                      " entries, the dof map " + map_file + " " + std::to_string(layout.dofs.size()) + " rows");
   std::set<NodeTag> element_nodes;
   for (const Triangle& t : layout.triangles) element_nodes.insert(t.nodes.begin(), t.nodes.end());
-  const RowIndex rows = index_rows(layout.dofs);
-  if (rows.size() != layout.dofs.size())
+  layout.rows = index_rows(layout.dofs);
+  if (layout.rows.size() != layout.dofs.size())
     throw InputError(map_file + ": " + entry(s) + ": a node and component appear on two rows");
   for (const DofLocation& dof : layout.dofs)
     if (!element_nodes.count(dof.node))
@@ -52,28 +162,22 @@ SubdomainInput read_subdomain(const ProblemFile& problem, const GmshMesh& mesh, 
                        entry(s) + ".surfaces): the mesh and the system do not match");
   for (NodeTag node : element_nodes)
     for (int c = 0; c < problem.components; ++c)
-      if (!rows.count({node, c}))
+      if (!layout.rows.count({node, c}))
         throw InputError(map_file + ": " + entry(s) + ": node " + std::to_string(node) + " component " +
                          std::to_string(c) + " has no row: the mesh and the system do not match");
-  for (const DofLocation& dof : layout.dofs) {
+  for (size_t i = 0; i < layout.dofs.size(); ++i) {
+    const DofLocation& dof = layout.dofs[i];
     const auto position = mesh.position(dof.node);
     sub.x.push_back(position[0]);
     sub.y.push_back(position[1]);
     if (problem.components > 1) sub.component.push_back(dof.component);
-  }
-  sub.body = spec.body;
-  for (const DirichletSpec& d : problem.dirichlet) {
-    const std::vector<NodeTag> nodes = mesh.nodes(d.dim, d.group);
-    for (size_t i = 0; i < layout.dofs.size(); ++i) {
-      const DofLocation& dof = layout.dofs[i];
-      const bool component = d.components.empty() ||
-                             std::find(d.components.begin(), d.components.end(), dof.component) != d.components.end();
-      if (component && std::binary_search(nodes.begin(), nodes.end(), dof.node)) {
-        sub.dirichlet_dofs.push_back(static_cast<int>(i));
-        sub.dirichlet_values.push_back(d.value);
-      }
+    const auto value = fixed.find({dof.node, dof.component});
+    if (value != fixed.end()) {
+      sub.dirichlet_dofs.push_back(static_cast<int>(i));
+      sub.dirichlet_values.push_back(value->second);
     }
   }
+  sub.body = spec.body;
   return sub;
 }
 
@@ -95,11 +199,9 @@ EdgeMap edges_of(const std::vector<SubdomainLayout>& layouts) {
 /// subdomain holding the segment's triangle, oriented with that triangle on the left (the
 /// core's convention, whatever the curve's orientation in the mesh). Returns how many of
 /// the curve's segments are here; the caller checks that every rank together found all.
-long add_master_segments(const GmshMesh& mesh, int group, const std::vector<SubdomainLayout>& layouts,
-                         const EdgeMap& edges, ContactInput& contact, long& total) {
+long add_master_segments(const std::vector<std::array<NodeTag, 2>>& segments, const GmshMesh& mesh,
+                         const std::vector<SubdomainLayout>& layouts, const EdgeMap& edges, ContactInput& contact) {
   long found = 0;
-  const auto segments = mesh.segments(group);
-  total += static_cast<long>(segments.size());
   for (const auto& [a, b] : segments) {
     const auto edge = edges.find({std::min(a, b), std::max(a, b)});
     if (edge == edges.end()) continue;
@@ -107,7 +209,7 @@ long add_master_segments(const GmshMesh& mesh, int group, const std::vector<Subd
     const auto pa = mesh.position(a), pb = mesh.position(b), pc = mesh.position(c);
     const double left = (pb[0] - pa[0]) * (pc[1] - pa[1]) - (pb[1] - pa[1]) * (pc[0] - pa[0]);
     const NodeTag first = left > 0 ? a : b, second = left > 0 ? b : a;
-    const RowIndex rows = index_rows(layouts[k].dofs);
+    const RowIndex& rows = layouts[k].rows;
     contact.master_segments[k].push_back(
         {rows.at({first, 0}), rows.at({first, 1}), rows.at({second, 0}), rows.at({second, 1})});
     ++found;
@@ -115,10 +217,9 @@ long add_master_segments(const GmshMesh& mesh, int group, const std::vector<Subd
   return found;
 }
 
-/// Dofs of the local subdomains at the nodes of curve `group` (all components).
-void add_node_dofs(const GmshMesh& mesh, int group, const std::vector<SubdomainLayout>& layouts,
+/// Dofs of the local subdomains at `nodes` (sorted; all components).
+void add_node_dofs(const std::vector<NodeTag>& nodes, const std::vector<SubdomainLayout>& layouts,
                    std::vector<std::vector<int>>& dofs) {
-  const std::vector<NodeTag> nodes = mesh.nodes(1, group);
   for (size_t k = 0; k < layouts.size(); ++k)
     for (size_t i = 0; i < layouts[k].dofs.size(); ++i)
       if (std::binary_search(nodes.begin(), nodes.end(), layouts[k].dofs[i].node))
@@ -133,25 +234,31 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
   const size_t n = layouts.size();
   contact.slave_dofs.resize(n);
   const ContactSpec& first = problem.contact.front();
-  contact.search_distance = first.search_distance;
-  contact.gap = first.gap;
+  if (first.search_distance) contact.search_distance = *first.search_distance;
+  contact.gap = first.gap.value_or(0.0);
   for (size_t i = 0; i < problem.contact.size(); ++i) {
     const ContactSpec& c = problem.contact[i];
-    const std::string name = problem.path + ": contact[" + std::to_string(i) + "]";
+    const std::string key = "contact[" + std::to_string(i) + "]";
     if (c.search_distance != first.search_distance || c.gap != first.gap)
-      throw InputError(name + ": search_distance and gap must be those of contact[0] (one value per problem)");
-    add_node_dofs(mesh, c.slave, layouts, contact.slave_dofs);
+      throw InputError(problem.path + ": " + key +
+                       ": search_distance and gap must be those of contact[0] (one value per problem)");
+    add_node_dofs(from_group(problem, key + ".slave", [&] { return mesh.nodes(1, c.slave); }), layouts,
+                  contact.slave_dofs);
     if (c.obstacle) {
-      if (contact.obstacle) throw InputError(name + ": a second obstacle (one rigid obstacle per problem)");
+      if (contact.obstacle)
+        throw InputError(problem.path + ": " + key + ": a second obstacle (one rigid obstacle per problem)");
       contact.obstacle = true;
       contact.obstacle_point = c.obstacle_point;
       contact.obstacle_normal = c.obstacle_normal;
     } else if (problem.components == 1) {  // node to node, matching meshes
       contact.master_dofs.resize(n);
-      add_node_dofs(mesh, c.master, layouts, contact.master_dofs);
+      add_node_dofs(from_group(problem, key + ".master", [&] { return mesh.nodes(1, c.master); }), layouts,
+                    contact.master_dofs);
     } else {
       contact.master_segments.resize(n);
-      segments_here += add_master_segments(mesh, c.master, layouts, edges, contact, segments_total);
+      const auto segments = from_group(problem, key + ".master", [&] { return mesh.segments(c.master); });
+      segments_total += static_cast<long>(segments.size());
+      segments_here += add_master_segments(segments, mesh, layouts, edges, contact);
     }
   }
   return contact;
@@ -159,33 +266,30 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
 
 FetiSetupSettings setup_settings(const SolverSpec& s, bool vector_field) {
   FetiSetupSettings settings;
-  settings.variant = variant_from_name(s.variant.empty() ? default_variant_name(vector_field) : s.variant);
-  settings.factor = factor_from_name(s.factor);
-  settings.threads = checked_threads(s.threads);
-  settings.dirichlet_preconditioner = dirichlet_preconditioner_from_name(s.preconditioner);
+  settings.variant = variant_from_name(s.variant.value_or(default_variant_name(vector_field)));
+  settings.factor = factor_from_name(s.factor.value_or(option_defaults::factor));
+  settings.threads = checked_threads(s.threads.value_or(0));
+  settings.dirichlet_preconditioner =
+      dirichlet_preconditioner_from_name(s.preconditioner.value_or(option_defaults::preconditioner));
   return settings;
 }
 
 DualSolveSettings solve_settings(const SolverSpec& s) {
   DualSolveSettings settings;
-  settings.tolerance = s.tol;
-  settings.max_hessian = static_cast<int>(std::min<long>(s.maxit, 1L << 30));
-  settings.smalbe.variant = algorithm_from_name(s.algorithm);
-  settings.mprgp.expansion = expansion_from_name(s.expansion);
-  settings.stopping = stop_from_name(s.stop);
-  if (s.rho) settings.smalbe.rho_factor = *s.rho;
-  if (s.M) settings.smalbe.M_factor = *s.M;
-  if (s.eta) settings.smalbe.eta_factor = *s.eta;
-  if (s.gamma) settings.mprgp.gamma = *s.gamma;
+  settings.tolerance = s.tol.value_or(settings.tolerance);
+  settings.max_hessian = static_cast<int>(std::min<long>(s.maxit.value_or(settings.max_hessian), 1L << 30));
+  settings.smalbe.variant = algorithm_from_name(s.algorithm.value_or(option_defaults::algorithm));
+  settings.mprgp.expansion = expansion_from_name(s.expansion.value_or(option_defaults::expansion));
+  settings.stopping = stop_from_name(s.stop.value_or(option_defaults::stop));
+  settings.smalbe.rho_factor = s.rho.value_or(settings.smalbe.rho_factor);
+  settings.smalbe.M_factor = s.M.value_or(settings.smalbe.M_factor);
+  settings.smalbe.eta_factor = s.eta.value_or(settings.smalbe.eta_factor);
+  settings.mprgp.gamma = s.gamma.value_or(settings.mprgp.gamma);
   settings.validate();
   return settings;
 }
 
 }  // namespace
-
-std::string resolve(const ProblemFile& problem, const std::string& path) {
-  return path.empty() || path[0] == '/' ? path : problem.directory + "/" + path;
-}
 
 NativeInput build_input(const ProblemFile& problem, const GmshMesh& mesh, const std::vector<int>& ids) {
   NativeInput input;
@@ -195,9 +299,13 @@ NativeInput build_input(const ProblemFile& problem, const GmshMesh& mesh, const 
   } catch (const InputError& error) {
     throw InputError(problem.path + ": solver." + error.what());
   }
+  MeshSplit split = split_mesh(problem, mesh);
+  const auto fixed = dirichlet_values(problem, mesh, split);
+  check_contact_bodies(problem, mesh, split);
   for (int s : ids) {
     input.layouts.emplace_back();
-    input.subdomains.push_back(read_subdomain(problem, mesh, s, input.layouts.back()));
+    input.subdomains.push_back(
+        read_subdomain(problem, mesh, s, std::move(split.triangles[static_cast<size_t>(s)]), fixed, input.layouts.back()));
   }
   input.contact = build_contact(problem, mesh, input.layouts, input.master_segments_here, input.master_segments_total);
   return input;

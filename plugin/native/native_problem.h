@@ -8,6 +8,7 @@
 #include "native/problem_file.h"
 #include "native/system_files.h"
 
+#include <map>
 #include <vector>
 
 namespace ffeti::native {
@@ -16,6 +17,7 @@ namespace ffeti::native {
 struct SubdomainLayout {
   int id = 0;                       ///< global index (position in the problem file)
   std::vector<DofLocation> dofs;    ///< node and component of each row
+  std::map<std::pair<NodeTag, int>, int> rows;  ///< the row of each (node, component)
   std::vector<Triangle> triangles;  ///< the mesh elements of the subdomain
 };
 
@@ -33,10 +35,9 @@ struct NativeInput {
 /// Builds the input of the subdomains `ids` (ascending). InputError naming the problem
 /// file entry and the data file for sizes that disagree (matrix, right-hand side, dof
 /// map), dofs at nodes outside the subdomain's triangles, triangle nodes without dofs,
-/// physical groups that do not exist, and bad options.
+/// physical groups that do not exist, bad options, and (checked on every rank alike, from
+/// the whole mesh) a triangle in two subdomains, a node in two bodies, a Dirichlet group
+/// without a node in the subdomains or fixing a dof to two values, a contact pair on one body.
 NativeInput build_input(const ProblemFile& problem, const GmshMesh& mesh, const std::vector<int>& ids);
-
-/// A path of the problem file resolved against its directory.
-std::string resolve(const ProblemFile& problem, const std::string& path);
 
 }  // namespace ffeti::native

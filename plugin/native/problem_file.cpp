@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <set>
 
@@ -57,14 +59,23 @@ class ObjectReader {
   }
 
  private:
+  /// The value of `key` if its JSON type is T's: no silent conversion (0.7 to an integer,
+  /// true to 1, 101.9 to 101).
   template <class T>
   T get(const std::string& key) {
     known_.insert(key);
-    try {
-      return object_.at(key).get<T>();
-    } catch (const json::exception&) {
-      fail(path(key), std::string("must be ") + type_name<T>() + ", got " + object_.at(key).dump());
-    }
+    const json& value = object_.at(key);
+    if (!has_type<T>(value)) fail(path(key), std::string("must be ") + type_name<T>() + ", got " + value.dump());
+    return value.get<T>();
+  }
+
+  template <class T>
+  static bool has_type(const json& value) {
+    if constexpr (std::is_same_v<T, std::string>) return value.is_string();
+    else if constexpr (std::is_same_v<T, bool>) return value.is_boolean();
+    else if constexpr (std::is_integral_v<T>) return value.is_number_integer();
+    else if constexpr (std::is_floating_point_v<T>) return value.is_number();
+    else return value.is_array() && std::all_of(value.begin(), value.end(), has_type<typename T::value_type>);
   }
 
   template <class T>
@@ -73,7 +84,8 @@ class ObjectReader {
     else if constexpr (std::is_same_v<T, bool>) return "true or false";
     else if constexpr (std::is_integral_v<T>) return "an integer";
     else if constexpr (std::is_floating_point_v<T>) return "a number";
-    else return "a list of integers";
+    else if constexpr (std::is_integral_v<typename T::value_type>) return "a list of integers";
+    else return "a list of numbers";
   }
 
   const json& object_;
@@ -81,7 +93,8 @@ class ObjectReader {
   std::set<std::string> known_;
 };
 
-/// The entries of the list `key` (required), each read by `read_one(reader)`.
+/// The entries of the list `key` (an error if absent and `required`), each read by
+/// `read_one(reader)`.
 template <class T, class Read>
 std::vector<T> read_list(ObjectReader& parent, const std::string& key, bool required, Read read_one) {
   std::vector<T> items;
@@ -168,7 +181,7 @@ DirichletSpec read_dirichlet(ObjectReader& r, int components) {
   return d;
 }
 
-ContactSpec read_contact(ObjectReader& r) {
+ContactSpec read_contact(ObjectReader& r, int components) {
   ContactSpec c;
   c.slave = r.required<int>("slave");
   c.obstacle = r.has("obstacle");
@@ -176,30 +189,36 @@ ContactSpec read_contact(ObjectReader& r) {
     ObjectReader o(r.child("obstacle"), r.file(), r.path("obstacle"));
     c.obstacle_point = pair_of_numbers(o, "point");
     c.obstacle_normal = pair_of_numbers(o, "normal");
+    if (!(std::hypot(c.obstacle_normal[0], c.obstacle_normal[1]) > 0)) o.fail(o.path("normal"), "must not be zero");
     o.finish();
+    if (components != 2) r.fail(r.path("obstacle"), "needs plane displacements (\"components\": 2)");
     if (r.has("master")) r.fail(r.path("master"), "give a master curve or an obstacle, not both");
   } else {
     c.master = r.required<int>("master");
   }
-  c.search_distance = r.optional<double>("search_distance", c.search_distance);
-  if (!(c.search_distance > 0)) r.fail(r.path("search_distance"), "must be > 0");
-  c.gap = r.optional<double>("gap", 0.0);
+  // Each option only where it means something: node to segment searches, node to node has a gap.
+  const bool segments = components == 2 && !c.obstacle;
+  if (r.has("search_distance")) {
+    if (!segments) r.fail(r.path("search_distance"), "applies to node-to-segment contact (2 components, a master curve) only");
+    c.search_distance = r.required<double>("search_distance");
+    if (!(*c.search_distance > 0)) r.fail(r.path("search_distance"), "must be > 0");
+  }
+  if (r.has("gap")) {
+    if (components != 1) r.fail(r.path("gap"), "applies to node-to-node contact (1 component) only");
+    c.gap = r.required<double>("gap");
+  }
+  if (c.slave == c.master) r.fail(r.path("master"), "is the slave curve");
   return c;
 }
 
 SolverSpec read_solver(ObjectReader& r) {
   SolverSpec s;
-  s.variant = r.optional<std::string>("variant", "");
-  s.factor = r.optional<std::string>("factor", s.factor);
-  s.preconditioner = r.optional<std::string>("preconditioner", s.preconditioner);
-  s.algorithm = r.optional<std::string>("algorithm", s.algorithm);
-  s.expansion = r.optional<std::string>("expansion", s.expansion);
-  s.stop = r.optional<std::string>("stop", s.stop);
-  s.threads = r.optional<long>("threads", s.threads);
-  s.maxit = r.optional<long>("maxit", s.maxit);
-  s.verbosity = r.optional<long>("verbosity", s.verbosity);
-  s.tol = r.optional<double>("tol", s.tol);
-  for (auto [key, slot] : {std::pair{"rho", &s.rho}, {"M", &s.M}, {"eta", &s.eta}, {"gamma", &s.gamma}})
+  for (auto [key, slot] : {std::pair{"variant", &s.variant}, {"factor", &s.factor}, {"preconditioner", &s.preconditioner},
+                           {"algorithm", &s.algorithm}, {"expansion", &s.expansion}, {"stop", &s.stop}})
+    if (r.has(key)) *slot = r.required<std::string>(key);
+  for (auto [key, slot] : {std::pair{"threads", &s.threads}, {"maxit", &s.maxit}, {"verbosity", &s.verbosity}})
+    if (r.has(key)) *slot = r.required<long>(key);
+  for (auto [key, slot] : {std::pair{"tol", &s.tol}, {"rho", &s.rho}, {"M", &s.M}, {"eta", &s.eta}, {"gamma", &s.gamma}})
     if (r.has(key)) *slot = r.required<double>(key);
   return s;
 }
@@ -214,7 +233,28 @@ OutputSpec read_output(ObjectReader& r) {
   return o;
 }
 
+/// output.getdp_solution numbers its solutions by the systems of one .pre file: checked
+/// before any work, not after the solve.
+void check_getdp_solution(const ProblemFile& problem) {
+  if (problem.output.getdp_solution.empty()) return;
+  const std::string where = problem.path + ": output.getdp_solution: ";
+  const std::string pre = resolve(problem, problem.subdomains.front().dofs.getdp_pre);
+  std::set<int> systems;
+  for (size_t s = 0; s < problem.subdomains.size(); ++s) {
+    const DofMapSpec& dofs = problem.subdomains[s].dofs;
+    if (dofs.getdp_pre.empty() || resolve(problem, dofs.getdp_pre) != pre)
+      throw InputError(where + "needs every subdomain's dofs from one GetDP .pre file; subdomains[" + std::to_string(s) +
+                       "] differs from subdomains[0]");
+    if (!systems.insert(dofs.system).second)
+      throw InputError(where + "system " + std::to_string(dofs.system) + " is the dof map of two subdomains");
+  }
+}
+
 }  // namespace
+
+std::string resolve(const ProblemFile& problem, const std::string& path) {
+  return path.empty() || path[0] == '/' ? path : problem.directory + "/" + path;
+}
 
 ProblemFile read_problem_file(const std::string& path) {
   std::ifstream in(path);
@@ -235,7 +275,9 @@ ProblemFile read_problem_file(const std::string& path) {
   problem.components = r.optional<int>("components", 2);
   if (problem.components != 1 && problem.components != 2)
     r.fail("components", "must be 1 (scalar field) or 2 (plane displacements)");
+  const bool bodies_given = r.has("bodies");
   problem.bodies = read_list<BodySpec>(r, "bodies", false, read_body);
+  if (bodies_given && problem.bodies.empty()) r.fail("bodies", "needs at least one body (or leave it out: one body)");
   if (problem.bodies.empty()) problem.bodies.resize(1);
   const int body_count = static_cast<int>(problem.bodies.size());
   problem.subdomains = read_list<SubdomainSpec>(r, "subdomains", true, [&](ObjectReader& s) {
@@ -245,7 +287,14 @@ ProblemFile read_problem_file(const std::string& path) {
   problem.dirichlet = read_list<DirichletSpec>(r, "dirichlet", false, [&](ObjectReader& d) {
     return read_dirichlet(d, problem.components);
   });
-  problem.contact = read_list<ContactSpec>(r, "contact", false, read_contact);
+  problem.contact = read_list<ContactSpec>(r, "contact", false, [&](ObjectReader& c) {
+    return read_contact(c, problem.components);
+  });
+  for (size_t i = 0; i < problem.contact.size(); ++i)
+    for (size_t j = 0; j < i; ++j)
+      if (problem.contact[i].slave == problem.contact[j].slave)
+        r.fail("contact[" + std::to_string(i) + "].slave", "curve " + std::to_string(problem.contact[i].slave) +
+                                                             " is already the slave of contact[" + std::to_string(j) + "]");
   if (r.has("solver")) {
     ObjectReader s(r.child("solver"), path, "solver");
     problem.solver = read_solver(s);
@@ -257,6 +306,7 @@ ProblemFile read_problem_file(const std::string& path) {
     o.finish();
   }
   r.finish();
+  check_getdp_solution(problem);
   return problem;
 }
 

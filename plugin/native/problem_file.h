@@ -46,19 +46,17 @@ struct DirichletSpec {
 struct ContactSpec {
   int slave = 0;      ///< physical curve of the slave nodes
   int master = 0;     ///< physical curve of the master segments (0 with an obstacle)
-  double search_distance = 1e300;
-  double gap = 0;     ///< node to node (scalar fields) only
+  std::optional<double> search_distance;  ///< node to segment only (default: no limit)
+  std::optional<double> gap;              ///< node to node (scalar fields) only (default 0)
   bool obstacle = false;
   std::array<double, 2> obstacle_point{0, 0}, obstacle_normal{0, 1};
 };
 
-struct SolverSpec {  ///< the names and defaults of fetiSetup and fetiSolve
-  std::string variant;  ///< empty: the plugin's default for the field
-  std::string factor = "simplicial", preconditioner = "none", algorithm = "smalbe-m";
-  std::string expansion = "projected-cg", stop = "kkt";
-  long threads = 0, maxit = 10000, verbosity = 0;
-  double tol = 1e-4;
-  std::optional<double> rho, M, eta, gamma;
+/// What the file's "solver" sets; absent entries take fetiSetup's and fetiSolve's defaults.
+struct SolverSpec {
+  std::optional<std::string> variant, factor, preconditioner, algorithm, expansion, stop;
+  std::optional<long> threads, maxit, verbosity;
+  std::optional<double> tol, rho, M, eta, gamma;
 };
 
 struct OutputSpec {  ///< files to write; empty: not written
@@ -85,5 +83,8 @@ struct ProblemFile {
 /// Reads and checks the problem file. InputError naming the file and the key for a missing
 /// file, malformed JSON, a missing or mistyped entry, an unknown key or a bad value.
 ProblemFile read_problem_file(const std::string& path);
+
+/// A path of the problem file resolved against its directory.
+std::string resolve(const ProblemFile& problem, const std::string& path);
 
 }  // namespace ffeti::native

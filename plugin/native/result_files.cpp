@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
+#include <set>
 
 namespace ffeti::native {
 namespace {
@@ -22,14 +23,72 @@ std::ofstream open_output(const std::string& path) {
 /// Each slave node's share of its slave curves: half the length of each segment at it.
 std::map<NodeTag, double> tributary_lengths(const ProblemFile& problem, const GmshMesh& mesh) {
   std::map<NodeTag, double> share;
+  std::set<std::pair<NodeTag, NodeTag>> counted;  // a segment of two slave curves counts once
   for (const ContactSpec& c : problem.contact)
     for (const auto& [a, b] : mesh.segments(c.slave)) {
+      if (!counted.insert({std::min(a, b), std::max(a, b)}).second) continue;
       const auto pa = mesh.position(a), pb = mesh.position(b);
       const double half = 0.5 * std::hypot(pb[0] - pa[0], pb[1] - pa[1]);
       share[a] += half;
       share[b] += half;
     }
   return share;
+}
+
+/// Von Mises stress of one P1 triangle (constant strain).
+double von_mises(const MaterialSpec& material, const std::array<std::array<double, 2>, 3>& p,
+                 const std::array<std::array<double, 2>, 3>& u) {
+  // Gradients of the P1 basis functions from the triangle's edge vectors.
+  const double area2 = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]);
+  double exx = 0, eyy = 0, gxy = 0;
+  for (int i = 0; i < 3; ++i) {
+    const auto& a = p[(i + 1) % 3];
+    const auto& b = p[(i + 2) % 3];
+    const double dx = (a[1] - b[1]) / area2, dy = (b[0] - a[0]) / area2;
+    exx += dx * u[i][0];
+    eyy += dy * u[i][1];
+    gxy += dy * u[i][0] + dx * u[i][1];
+  }
+  const double E = material.young, nu = material.poisson;
+  const double mu = E / (2 * (1 + nu));
+  double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+  if (material.plane_stress) lambda = 2 * lambda * mu / (lambda + 2 * mu);
+  const double sxx = (lambda + 2 * mu) * exx + lambda * eyy;
+  const double syy = lambda * exx + (lambda + 2 * mu) * eyy;
+  const double sxy = mu * gxy;
+  const double szz = material.plane_stress ? 0.0 : lambda * (exx + eyy);
+  return std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
+                   3 * sxy * sxy);
+}
+
+/// Von Mises stress of each triangle of the bodies with a material (plane displacements).
+struct ElementStress {
+  std::size_t tag;
+  int body;
+  double x, y;  ///< the triangle's centroid
+  double von_mises;
+};
+
+std::vector<ElementStress> element_stresses(const ProblemFile& problem, const GmshMesh& mesh,
+                                           const NodalResults& results) {
+  std::vector<ElementStress> stresses;
+  if (problem.components != 2) return stresses;
+  for (const SubdomainSpec& sub : problem.subdomains) {
+    const auto& material = problem.bodies[static_cast<size_t>(sub.body)].material;
+    if (!material) continue;
+    for (int surface : sub.surfaces)
+      for (const Triangle& t : mesh.triangles(surface, sub.partition)) {
+        std::array<std::array<double, 2>, 3> points, displacements;
+        for (int i = 0; i < 3; ++i) {
+          points[i] = mesh.position(t.nodes[i]);
+          displacements[i] = results.displacement.at(t.nodes[i]);
+        }
+        const double cx = (points[0][0] + points[1][0] + points[2][0]) / 3;
+        const double cy = (points[0][1] + points[1][1] + points[2][1]) / 3;
+        stresses.push_back({t.tag, sub.body, cx, cy, von_mises(*material, points, displacements)});
+      }
+  }
+  return stresses;
 }
 
 }  // namespace
@@ -93,53 +152,6 @@ NodalResults nodal_results(const ProblemFile& problem, const GmshMesh& mesh, con
     results.contact_pressure[node] = length != share.end() && length->second > 0 ? force / length->second : 0.0;
   }
   return results;
-}
-
-double von_mises(const MaterialSpec& material, const std::array<std::array<double, 2>, 3>& p,
-                 const std::array<std::array<double, 2>, 3>& u) {
-  // Gradients of the P1 basis functions from the triangle's edge vectors.
-  const double area2 = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]);
-  double exx = 0, eyy = 0, gxy = 0;
-  for (int i = 0; i < 3; ++i) {
-    const auto& a = p[(i + 1) % 3];
-    const auto& b = p[(i + 2) % 3];
-    const double dx = (a[1] - b[1]) / area2, dy = (b[0] - a[0]) / area2;
-    exx += dx * u[i][0];
-    eyy += dy * u[i][1];
-    gxy += dy * u[i][0] + dx * u[i][1];
-  }
-  const double E = material.young, nu = material.poisson;
-  const double mu = E / (2 * (1 + nu));
-  double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
-  if (material.plane_stress) lambda = 2 * lambda * mu / (lambda + 2 * mu);
-  const double sxx = (lambda + 2 * mu) * exx + lambda * eyy;
-  const double syy = lambda * exx + (lambda + 2 * mu) * eyy;
-  const double sxy = mu * gxy;
-  const double szz = material.plane_stress ? 0.0 : lambda * (exx + eyy);
-  return std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
-                   3 * sxy * sxy);
-}
-
-std::vector<ElementStress> element_stresses(const ProblemFile& problem, const GmshMesh& mesh,
-                                           const NodalResults& results) {
-  std::vector<ElementStress> stresses;
-  if (problem.components != 2) return stresses;
-  for (const SubdomainSpec& sub : problem.subdomains) {
-    const auto& material = problem.bodies[static_cast<size_t>(sub.body)].material;
-    if (!material) continue;
-    for (int surface : sub.surfaces)
-      for (const Triangle& t : mesh.triangles(surface, sub.partition)) {
-        std::array<std::array<double, 2>, 3> points, displacements;
-        for (int i = 0; i < 3; ++i) {
-          points[i] = mesh.position(t.nodes[i]);
-          displacements[i] = results.displacement.at(t.nodes[i]);
-        }
-        const double cx = (points[0][0] + points[1][0] + points[2][0]) / 3;
-        const double cy = (points[0][1] + points[1][1] + points[2][1]) / 3;
-        stresses.push_back({t.tag, sub.body, cx, cy, von_mises(*material, points, displacements)});
-      }
-  }
-  return stresses;
 }
 
 void write_views(const std::string& path, const ProblemFile& problem, const GmshMesh& mesh,
@@ -213,16 +225,8 @@ void write_stress_table(const std::string& path, const ProblemFile& problem, con
 }
 
 void write_getdp_solution(const std::string& path, const ProblemFile& problem, const GatheredSolution& solution) {
-  std::map<int, size_t> subdomain_of_system;
-  for (size_t s = 0; s < problem.subdomains.size(); ++s) {
-    const DofMapSpec& dofs = problem.subdomains[s].dofs;
-    if (dofs.getdp_pre.empty() || dofs.getdp_pre != problem.subdomains.front().dofs.getdp_pre)
-      throw InputError(problem.path + ": output.getdp_solution: every subdomain's dofs must come from one GetDP "
-                       ".pre file (subdomains[" + std::to_string(s) + "] differs)");
-    if (!subdomain_of_system.emplace(dofs.system, s).second)
-      throw InputError(problem.path + ": output.getdp_solution: system " + std::to_string(dofs.system) +
-                       " is the dof map of two subdomains");
-  }
+  std::map<int, size_t> subdomain_of_system;  // one .pre, each system once: read_problem_file checked it
+  for (size_t s = 0; s < problem.subdomains.size(); ++s) subdomain_of_system[problem.subdomains[s].dofs.system] = s;
   std::ofstream out = open_output(path);
   out << "$ResFormat /* ffeti-solve, ascii */\n1.1 0\n$EndResFormat\n";
   for (const auto& [system, s] : subdomain_of_system) {

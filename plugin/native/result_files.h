@@ -36,16 +36,6 @@ struct NodalResults {
 NodalResults nodal_results(const ProblemFile& problem, const GmshMesh& mesh, const GatheredSolution& solution,
                            const std::vector<ContactMultiplier>& contact);
 
-/// Von Mises stress of each triangle of the bodies with a material (plane displacements).
-struct ElementStress {
-  std::size_t tag;
-  int body;
-  double x, y;  ///< the triangle's centroid
-  double von_mises;
-};
-std::vector<ElementStress> element_stresses(const ProblemFile& problem, const GmshMesh& mesh,
-                                            const NodalResults& results);
-
 /// Views in one file that gmsh opens (format from the extension: .msh or .pos).
 void write_views(const std::string& path, const ProblemFile& problem, const GmshMesh& mesh,
                  const NodalResults& results);
@@ -60,11 +50,7 @@ void write_stress_table(const std::string& path, const ProblemFile& problem, con
 
 /// GetDP's .res: one $Solution per subdomain system, numbered by its $DofData block, so that
 /// `getdp ... -pre <resolution> -res <file> -pos <post-operation>` post-processes it.
-/// InputError unless every subdomain's dofs come from one .pre file, each system once.
+/// Every subdomain's dofs come from one .pre file, each system once (read_problem_file checks).
 void write_getdp_solution(const std::string& path, const ProblemFile& problem, const GatheredSolution& solution);
-
-/// Von Mises stress of one P1 triangle (constant strain) of a body with `material`.
-double von_mises(const MaterialSpec& material, const std::array<std::array<double, 2>, 3>& points,
-                 const std::array<std::array<double, 2>, 3>& displacements);
 
 }  // namespace ffeti::native

@@ -5,6 +5,7 @@
 #include <cholmod.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -24,6 +25,15 @@ std::ifstream open_text(const std::string& path, const char* what) {
   return in;
 }
 
+/// True if the Matrix Market banner declares real (or integer) values.
+bool real_banner(const std::string& path) {
+  std::ifstream in(path);
+  std::string banner, object, format, field;
+  in >> banner >> object >> format >> field;
+  std::transform(field.begin(), field.end(), field.begin(), [](unsigned char c) { return std::tolower(c); });
+  return field == "real" || field == "integer";
+}
+
 /// A Matrix Market file read by CHOLMOD: sparse with both triangles, or dense.
 class MarketFile {
  public:
@@ -31,23 +41,26 @@ class MarketFile {
     cholmod_start(&common_);
     common_.print = 0;  // errors come back to us as a null result, worded below
     std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "r"), std::fclose);
-    if (!file) throw InputError(path + ": cannot open the Matrix Market file");
+    if (!file) {
+      cholmod_finish(&common_);
+      throw InputError(path + ": cannot open the Matrix Market file");
+    }
     data_ = cholmod_read_matrix(file.get(), 1, &type_, &common_);
     if (!data_) {
       cholmod_finish(&common_);
       throw InputError(path + ": not a valid Matrix Market file (CHOLMOD could not read it)");
     }
-  }
-  ~MarketFile() {
-    if (type_ == CHOLMOD_SPARSE) {
-      auto* sparse = static_cast<cholmod_sparse*>(data_);
-      cholmod_free_sparse(&sparse, &common_);
-    } else if (type_ == CHOLMOD_DENSE) {
-      auto* dense = static_cast<cholmod_dense*>(data_);
-      cholmod_free_dense(&dense, &common_);
+    const int xtype = type_ == CHOLMOD_SPARSE ? static_cast<cholmod_sparse*>(data_)->xtype
+                                              : static_cast<cholmod_dense*>(data_)->xtype;
+    if (xtype != CHOLMOD_REAL || !real_banner(path)) {  // CHOLMOD reads a pattern as ones
+      release();
+      throw InputError(path + ": needs real values (the file is a pattern or complex Matrix Market file)");
     }
-    cholmod_finish(&common_);
   }
+  ~MarketFile() { release(); }
+
+  MarketFile(const MarketFile&) = delete;
+  MarketFile& operator=(const MarketFile&) = delete;
 
   SparseMatrix sparse() const {
     if (type_ != CHOLMOD_SPARSE) throw InputError(path_ + ": a matrix needs the Matrix Market coordinate format");
@@ -61,7 +74,7 @@ class MarketFile {
     const auto* x = static_cast<const double*>(a->x);
     for (size_t col = 0; col < a->ncol; ++col)
       for (int k = p[col]; k < p[col + 1]; ++k)
-        entries.emplace_back(i[k], static_cast<int>(col), x ? x[k] : 1.0);
+        entries.emplace_back(i[k], static_cast<int>(col), x[k]);
     SparseMatrix matrix(static_cast<Eigen::Index>(a->nrow), static_cast<Eigen::Index>(a->ncol));
     matrix.setFromTriplets(entries.begin(), entries.end());
     return matrix;
@@ -76,6 +89,17 @@ class MarketFile {
   }
 
  private:
+  void release() {  // the data and the CHOLMOD workspace, once
+    if (type_ == CHOLMOD_SPARSE) {
+      auto* sparse = static_cast<cholmod_sparse*>(data_);
+      cholmod_free_sparse(&sparse, &common_);
+    } else if (type_ == CHOLMOD_DENSE) {
+      auto* dense = static_cast<cholmod_dense*>(data_);
+      cholmod_free_dense(&dense, &common_);
+    }
+    cholmod_finish(&common_);
+  }
+
   std::string path_;
   cholmod_common common_;
   void* data_ = nullptr;
@@ -178,9 +202,11 @@ std::vector<DofLocation> read_getdp_dof_map(const std::string& path, int system,
       throw InputError(path + ": system " + std::to_string(system) + ": dof " + std::to_string(k + 1) + " unreadable");
     std::getline(in, line);
     std::istringstream data(line);
-    if (type == 2 || type == 3)
-      throw InputError(path + ": system " + std::to_string(system) + " has " + (type == 2 ? "fixed" : "linked") +
-                       " dofs (a GetDP Constraint): assemble the subdomain systems without Dirichlet constraints "
+    // GetDP's dof types: 1 unknown, 5 unknown with an initial value; the others (2, 3, 4, 6
+    // fixed, 7, 8 linked) come from a Constraint.
+    if (type != 1 && type != 5)
+      throw InputError(path + ": system " + std::to_string(system) + " has dofs of GetDP type " + std::to_string(type) +
+                       " (fixed or linked by a Constraint): assemble the subdomain systems without constraints "
                        "and name the fixed groups in the problem file's \"dirichlet\"");
     long equation = 0;
     if (!(data >> equation) || equation < 1 || equation > unknowns)

@@ -47,7 +47,7 @@ expect "malformed matrix file" "hertz.json: no \"= \[\" block" "p['subdomains'][
 expect "matrix and dof map sizes differ" "subdomains\[0\]: sizes differ: ./file_mat_hertz-A2.m has" \
   "p['subdomains'][0]['matrix'] = 'file_mat_hertz-A2.m'"
 expect "dof map of another subdomain" "hertz.pre: subdomains\[1\]: node .* has a row but is not a vertex" \
-  "p['subdomains'][1]['dofs']['system'] = 0; p['subdomains'][1]['matrix'] = 'file_mat_hertz-A1.m'; p['subdomains'][1]['rhs'] = 'file_vec_hertz-A1.m'"
+  "p['subdomains'][1]['dofs']['system'] = 0; p['subdomains'][1]['matrix'] = 'file_mat_hertz-A1.m'; p['subdomains'][1]['rhs'] = 'file_vec_hertz-A1.m'; p['output'] = {}"
 expect "no such system in the .pre" "hertz.pre: no system 9" "p['subdomains'][0]['dofs']['system'] = 9"
 expect "physical surface that does not exist" "hertz.msh: no physical surface 999 (the mesh has 101, 102, 201" \
   "p['subdomains'][0]['surfaces'] = [999]"
@@ -57,8 +57,24 @@ expect "component out of range" "dirichlet\[0\].components: entry 2 is not a com
 expect "partition without the surface's triangles" "hertz.msh: physical surface 204 has no triangles in partition 1" \
   "p['subdomains'][5]['partition'] = 1"
 expect "system of the whole surface for one partition" "subdomains\[2\]: node .* has a row but is not a vertex" \
-  "p['subdomains'][2]['partition'] = 2"
+  "p['subdomains'][2]['partition'] = 2; p['contact'] = []"
 expect "bad tolerance" "case.json: solver.tol: must lie in (0, 1)" "p['solver']['tol'] = 2"
+expect "bad penalty factor" "case.json: solver.rho: must be > 0" "p['solver']['rho'] = -1"
+expect "a number where an integer belongs" "subdomains\[0\].partition: must be an integer, got 0.7" "p['subdomains'][0]['partition'] = 0.7"
+expect "true where a body index belongs" "subdomains\[0\].body: must be an integer, got true" "p['subdomains'][0]['body'] = True"
+expect "a number in a list of surfaces" "subdomains\[0\].surfaces: must be a list of integers" "p['subdomains'][0]['surfaces'] = [101.9]"
+expect "a subdomain listed twice" "subdomains\[0\] and subdomains\[6\] both hold triangle" "p['subdomains'].append(dict(p['subdomains'][0])); p['output'] = {}"
+expect "a surface listed twice in one subdomain" "subdomains\[0\] and subdomains\[0\] both hold triangle" "p['subdomains'][0]['surfaces'] = [101, 101]"
+expect "one node in two bodies" "belongs to bodies 0 and 1" "p['subdomains'][1]['body'] = 1"
+expect "conflicting Dirichlet values" "dirichlet\[1\] and dirichlet\[0\] fix node .* to different values" "p['dirichlet'].insert(1, {'group': 3, 'components': [0], 'value': 1})"
+expect "a Dirichlet group off the subdomains" "dirichlet\[0\].group: physical group 3 has no node in the subdomains" "p['subdomains'] = p['subdomains'][2:]; p['contact'] = []; p['bodies'] = p['bodies'][1:]; [s.update(body=0) for s in p['subdomains']]"
+expect "a missing slave curve named by its key" "case.json: contact\[0\].slave: ./hertz.msh: no physical curve 5" "p['contact'][0]['slave'] = 5"
+expect "slave and master on one body" "contact\[0\]: the slave curve 1 and the master curve 2 both lie on body 0" "p['contact'][0]['master'] = 2"
+expect "the same slave curve twice" "contact\[1\].slave: curve 1 is already the slave of contact\[0\]" "p['contact'].append(dict(p['contact'][0]))"
+expect "a gap for node-to-segment contact" "contact\[0\].gap: applies to node-to-node contact" "p['contact'][0]['gap'] = 0.1"
+expect "no bodies" "case.json: bodies: needs at least one body" "p['bodies'] = []"
+expect "GetDP solution from two .pre files" "output.getdp_solution: needs every subdomain's dofs from one GetDP .pre file; subdomains\[1\]" "p['output']['getdp_solution'] = 'x.res'; p['subdomains'][1]['dofs'] = {'file': 'dofs1.txt'}"
+expect "an output that cannot be written" "output.table: cannot write ./no/such/folder.csv" "p['output'] = {'table': 'no/such/folder.csv'}"
 
 # Matrix Market and an explicit dof map: GetDP's systems converted give GetDP's result.
 python3 - <<'PY'
@@ -95,10 +111,25 @@ json.dump(problem_getdp, open("getdp.json", "w"), indent=2)
 PY
 "$ffeti_solve" getdp.json | grep -q "status_name=converged" || { echo "FAILED: GetDP files did not converge"; failures=$((failures + 1)); }
 "$ffeti_solve" market.json | grep -q "status_name=converged" || { echo "FAILED: Matrix Market files did not converge"; failures=$((failures + 1)); }
+# A pattern Matrix Market file (no values) is refused.
+sed '1s/real/pattern/; 3,$s/ [^ ]*$//' K0.mtx > pattern.mtx
+expect "pattern Matrix Market" "pattern.mtx: needs real values" "p = json.load(open('market.json')); p['subdomains'][0]['matrix'] = 'pattern.mtx'"
+# Not converged (one Hessian multiplication allowed): exit status 1 and a RESULT line.
+python3 -c "
+import json
+p = json.load(open('hertz.json')); p['solver']['maxit'] = 1; p['output'] = {}
+json.dump(p, open('maxit.json', 'w'))"
+status=0
+"$ffeti_solve" maxit.json > out.txt 2>&1 || status=$?
+if [ "$status" -eq 1 ] && grep -q "status_name=max_iterations" out.txt && grep -q "not converged: max_iterations" out.txt; then
+  echo "ok: not converged: exit status 1, status_name=max_iterations"
+else
+  echo "FAILED: not converged: exit status $status"; cat out.txt; failures=$((failures + 1))
+fi
 if cmp -s getdp.csv market.csv; then
   echo "ok: Matrix Market + explicit dof map: the same results as GetDP's files ($(wc -l < market.csv) lines)"
 else
   echo "FAILED: Matrix Market results differ from GetDP's"; failures=$((failures + 1))
 fi
 echo "failures: $failures"
-exit $failures
+[ "$failures" -eq 0 ]

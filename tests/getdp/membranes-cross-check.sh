@@ -27,6 +27,9 @@ freefem_result=$(FreeFem++-nw -v 0 "$source_dir/tests/getdp/membranes.edp" -mesh
   -table freefem.csv | grep '^RESULT')
 echo "ffeti-solve: $getdp_result" | cut -c1-200
 echo "plugin:      $freefem_result" | cut -c1-200
+for result in "$getdp_result" "$freefem_result"; do
+  grep -q 'status_name=converged' <<< "$result" || { echo "FAILED: not converged: $result"; exit 1; }
+done
 python3 - "$getdp_result" "$freefem_result" <<'PY'
 import csv, sys
 def value(line, key):

@@ -24,6 +24,10 @@ Vec lambda_from_shifted(const Vec& mu, const Vec& lower, const Vec& lambda_tilde
 void DualSolveSettings::validate() const {
   if (!(tolerance > 0 && tolerance < 1)) throw InputError("tol: must lie in (0, 1)");
   if (max_hessian < 1) throw InputError("maxit: must be >= 1");
+  const std::pair<const char*, double> positive[] = {
+      {"rho", smalbe.rho_factor}, {"M", smalbe.M_factor}, {"eta", smalbe.eta_factor}, {"gamma", mprgp.gamma}};
+  for (const auto& [name, value] : positive)
+    if (!(value > 0)) throw InputError(std::string(name) + ": must be > 0");
   try {
     smalbe.validate();
     mprgp.validate();

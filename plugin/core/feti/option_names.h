@@ -10,6 +10,15 @@
 
 namespace ffeti {
 
+/// The defaults of the named options (the numeric ones are the settings structs' own).
+namespace option_defaults {
+inline constexpr const char* factor = "simplicial";
+inline constexpr const char* preconditioner = "none";
+inline constexpr const char* algorithm = "smalbe-m";
+inline constexpr const char* expansion = "projected-cg";
+inline constexpr const char* stop = "kkt";
+}  // namespace option_defaults
+
 /// Each throws InputError("<option>: \"<word>\" is not one of ...") for an unknown word.
 FetiVariant variant_from_name(const std::string& name);          ///< "feti1", "tfeti"
 FactorKind factor_from_name(const std::string& name);            ///< "simplicial", "supernodal"
