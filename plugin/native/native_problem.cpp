@@ -4,6 +4,7 @@
 #include "feti/option_names.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -217,6 +218,38 @@ long add_master_segments(const std::vector<std::array<NodeTag, 2>>& segments, co
   return found;
 }
 
+/// The line of a straight obstacle curve, its normal pointing to the slave nodes' side.
+/// InputError if the curve is not straight or the slave nodes' centroid lies on it.
+void obstacle_from_curve(const ProblemFile& problem, const GmshMesh& mesh, const ContactSpec& c, const std::string& key,
+                         ContactInput& contact) {
+  const auto nodes = from_group(problem, key + ".obstacle.curve", [&] { return mesh.nodes(1, c.obstacle_curve); });
+  const auto p0 = mesh.position(nodes.front());
+  std::array<double, 2> far = p0;
+  for (NodeTag node : nodes) {
+    const auto p = mesh.position(node);
+    if (std::hypot(p[0] - p0[0], p[1] - p0[1]) > std::hypot(far[0] - p0[0], far[1] - p0[1])) far = p;
+  }
+  const double length = std::hypot(far[0] - p0[0], far[1] - p0[1]);
+  if (!(length > 0)) throw InputError(problem.path + ": " + key + ".obstacle.curve: the curve has no length");
+  std::array<double, 2> normal{-(far[1] - p0[1]) / length, (far[0] - p0[0]) / length};
+  auto offset = [&](const std::array<double, 2>& p) { return normal[0] * (p[0] - p0[0]) + normal[1] * (p[1] - p0[1]); };
+  for (NodeTag node : nodes)
+    if (std::abs(offset(mesh.position(node))) > 1e-9 * length)
+      throw InputError(problem.path + ": " + key + ".obstacle.curve: curve " + std::to_string(c.obstacle_curve) +
+                       " is not straight (node " + std::to_string(node) + " lies off the line): a rigid obstacle is a line");
+  std::array<double, 2> centroid{0, 0};
+  const auto slaves = mesh.nodes(1, c.slave);
+  for (NodeTag node : slaves)
+    for (int k = 0; k < 2; ++k) centroid[k] += mesh.position(node)[k] / static_cast<double>(slaves.size());
+  const double side = offset(centroid);
+  if (std::abs(side) <= 1e-9 * length)
+    throw InputError(problem.path + ": " + key + ".obstacle.curve: the slave nodes' centroid lies on the obstacle's "
+                     "line: give \"point\" and \"normal\" instead");
+  if (side < 0) normal = {-normal[0], -normal[1]};
+  contact.obstacle_point = p0;
+  contact.obstacle_normal = normal;
+}
+
 /// Dofs of the local subdomains at `nodes` (sorted; all components).
 void add_node_dofs(const std::vector<NodeTag>& nodes, const std::vector<SubdomainLayout>& layouts,
                    std::vector<std::vector<int>>& dofs) {
@@ -250,6 +283,7 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
       contact.obstacle = true;
       contact.obstacle_point = c.obstacle_point;
       contact.obstacle_normal = c.obstacle_normal;
+      if (c.obstacle_curve > 0) obstacle_from_curve(problem, mesh, c, key, contact);
     } else if (problem.components == 1) {  // node to node, matching meshes
       contact.master_dofs.resize(n);
       add_node_dofs(from_group(problem, key + ".master", [&] { return mesh.nodes(1, c.master); }), layouts,

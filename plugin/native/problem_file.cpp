@@ -187,9 +187,14 @@ ContactSpec read_contact(ObjectReader& r, int components) {
   c.obstacle = r.has("obstacle");
   if (c.obstacle) {
     ObjectReader o(r.child("obstacle"), r.file(), r.path("obstacle"));
-    c.obstacle_point = pair_of_numbers(o, "point");
-    c.obstacle_normal = pair_of_numbers(o, "normal");
-    if (!(std::hypot(c.obstacle_normal[0], c.obstacle_normal[1]) > 0)) o.fail(o.path("normal"), "must not be zero");
+    if (o.has("curve")) {
+      c.obstacle_curve = o.required<int>("curve");
+      if (o.has("point") || o.has("normal")) o.fail(o.path("curve"), "give a curve or a point and a normal, not both");
+    } else {
+      c.obstacle_point = pair_of_numbers(o, "point");
+      c.obstacle_normal = pair_of_numbers(o, "normal");
+      if (!(std::hypot(c.obstacle_normal[0], c.obstacle_normal[1]) > 0)) o.fail(o.path("normal"), "must not be zero");
+    }
     o.finish();
     if (components != 2) r.fail(r.path("obstacle"), "needs plane displacements (\"components\": 2)");
     if (r.has("master")) r.fail(r.path("master"), "give a master curve or an obstacle, not both");

@@ -48,8 +48,9 @@ struct ContactSpec {
   int master = 0;     ///< physical curve of the master segments (0 with an obstacle)
   std::optional<double> search_distance;  ///< node to segment only (default: no limit)
   std::optional<double> gap;              ///< node to node (scalar fields) only (default 0)
-  bool obstacle = false;
+  bool obstacle = false;  ///< a rigid straight obstacle: a point and a normal, or a curve
   std::array<double, 2> obstacle_point{0, 0}, obstacle_normal{0, 1};
+  int obstacle_curve = 0;  ///< > 0: a straight physical curve, its normal towards the slave
 };
 
 /// What the file's "solver" sets; absent entries take fetiSetup's and fetiSolve's defaults.

@@ -72,6 +72,7 @@ expect "a missing slave curve named by its key" "case.json: contact\[0\].slave: 
 expect "slave and master on one body" "contact\[0\]: the slave curve 1 and the master curve 2 both lie on body 0" "p['contact'][0]['master'] = 2"
 expect "the same slave curve twice" "contact\[1\].slave: curve 1 is already the slave of contact\[0\]" "p['contact'].append(dict(p['contact'][0]))"
 expect "a gap for node-to-segment contact" "contact\[0\].gap: applies to node-to-node contact" "p['contact'][0]['gap'] = 0.1"
+expect "an obstacle curve that is not straight" "contact\[0\].obstacle.curve: curve 4 is not straight" "p['contact'] = [{'slave': 1, 'obstacle': {'curve': 4}}]"
 expect "no bodies" "case.json: bodies: needs at least one body" "p['bodies'] = []"
 expect "GetDP solution from two .pre files" "output.getdp_solution: needs every subdomain's dofs from one GetDP .pre file; subdomains\[1\]" "p['output']['getdp_solution'] = 'x.res'; p['subdomains'][1]['dofs'] = {'file': 'dofs1.txt'}"
 expect "an output that cannot be written" "output.table: cannot write ./no/such/folder.csv" "p['output'] = {'table': 'no/such/folder.csv'}"

@@ -46,8 +46,23 @@ problem["dirichlet"] = [{"group": 3, "components": [0]}]
 problem["contact"] = [{"slave": 1, "obstacle": {"point": [0, 0], "normal": [0, 1]}}]
 problem["output"] = {"table": "obstacle.csv"}
 json.dump(problem, open("obstacle.json", "w"), indent=2)
+problem["contact"] = [{"slave": 1, "obstacle": {"curve": 11}}]  # the same plane drawn in gmsh: the block's top
+problem["output"] = {"table": "obstacle-curve.csv"}
+json.dump(problem, open("obstacle-curve.json", "w"), indent=2)
 PY
-"$ffeti_solve" obstacle.json | grep '^RESULT' | grep -q 'status_name=converged' || { echo "FAILED: obstacle"; exit 1; }
+for case in obstacle obstacle-curve; do
+  "$ffeti_solve" $case.json | grep '^RESULT' | grep -q 'status_name=converged' || { echo "FAILED: $case"; exit 1; }
+done
+python3 - <<'PY'
+import csv, sys
+a = list(csv.DictReader(open("obstacle.csv")))
+b = list(csv.DictReader(open("obstacle-curve.csv")))
+scale = max(abs(float(r["u_y"])) for r in a)
+error = max(abs(float(x[k]) - float(y[k])) for x, y in zip(a, b) for k in ("u_x", "u_y")) / scale
+ok = len(a) == len(b) and error <= 1e-9
+print(f"{'ok' if ok else 'FAILED'}: obstacle as a physical curve: relative difference {error:.1e} from point and normal (bound 1e-9)")
+sys.exit(0 if ok else 1)
+PY
 python3 - <<'PY'
 import csv, math, sys
 rows = sorted((r for r in csv.DictReader(open("obstacle.csv")) if r["contact_row"] == "1"), key=lambda r: float(r["x"]))
