@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Runs one lesson as a student would with FreeFem++-nw, turns the pictures it writes (EPS)
+# into the PNG files its page shows, and checks the figures the page quotes.
+# Usage: run-lesson.sh SOURCE_DIR LESSON [PICTURES_DIR]   (LESSON e.g. 01-obstacle; run where
+# the tests' freefem++.pref is; PICTURES_DIR: where the PNG files go, default: a scratch folder)
+set -euo pipefail
+source_dir=$1
+lesson=$2
+pictures=${3:-}
+pref=$PWD/freefem++.pref
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+cp "$pref" .
+echo 'includepath += "'"$source_dir"'/edp/tutorial"' >> freefem++.pref
+FreeFem++-nw -v 0 "$source_dir/edp/tutorial/$lesson.edp" > output.txt 2>&1 || { cat output.txt; exit 1; }
+grep '^LESSON' output.txt
+for eps in *.eps; do
+  [ -e "$eps" ] || continue
+  gs -q -dSAFER -dBATCH -dNOPAUSE -sDEVICE=png16m -r80 -dEPSCrop -sOutputFile="${eps%.eps}.png" "$eps"
+  [ -s "${eps%.eps}.png" ] || { echo "FAILED: no PNG from $eps"; exit 1; }
+  if [ -n "$pictures" ]; then cp "${eps%.eps}.png" "$pictures/"; fi
+done
+python3 "$source_dir/tests/tutorial/compare_lesson.py" "$source_dir/docs/tutorial/$lesson.md" output.txt
