@@ -1,19 +1,27 @@
 #!/usr/bin/env bash
 # Runs one lesson as a student would with FreeFem++-nw, turns the pictures it writes (EPS)
 # into the PNG files its page shows, and checks the figures the page quotes.
-# Usage: run-lesson.sh SOURCE_DIR LESSON [PICTURES_DIR]   (LESSON e.g. 01-obstacle; run where
-# the tests' freefem++.pref is; PICTURES_DIR: where the PNG files go, default: a scratch folder)
+# Usage: run-lesson.sh SOURCE_DIR LESSON [PICTURES_DIR] [RANKS]   (LESSON e.g. 01-obstacle; run
+# where the tests' freefem++.pref is; PICTURES_DIR: where the PNG files go, default (or ""):
+# a scratch folder; RANKS: run under mpirun -np RANKS FreeFem++-mpi instead)
 set -euo pipefail
 source_dir=$1
 lesson=$2
 pictures=${3:-}
+ranks=${4:-}
 pref=$PWD/freefem++.pref
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 cp "$pref" .
 echo 'includepath += "'"$source_dir"'/edp/tutorial"' >> freefem++.pref
-FreeFem++-nw -v 0 "$source_dir/edp/tutorial/$lesson.edp" > output.txt 2>&1 || { cat output.txt; exit 1; }
+if [ -n "$ranks" ]; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+  run=(mpirun --oversubscribe -np "$ranks" FreeFem++-mpi -nw)
+else
+  run=(FreeFem++-nw)
+fi
+"${run[@]}" -v 0 "$source_dir/edp/tutorial/$lesson.edp" > output.txt 2>&1 || { cat output.txt; exit 1; }
 grep '^LESSON' output.txt
 for eps in *.eps; do
   [ -e "$eps" ] || continue
