@@ -310,7 +310,8 @@ class FetiSolve : public E_F0mps {
     settings.smalbe.variant = algorithm_from_name(optional_string(nargs[3], stack, option_defaults::algorithm));
     const long verbosity = optional_int(nargs[4], stack, 0);
     settings.smalbe.rho_factor = optional_real(nargs[5], stack, settings.smalbe.rho_factor);
-    settings.smalbe.M_factor = optional_real(nargs[6], stack, settings.smalbe.M_factor);
+    settings.smalbe.M_factor =
+        optional_real(nargs[6], stack, default_M_factor(settings.smalbe.variant, h.problem->variant()));
     settings.smalbe.eta_factor = optional_real(nargs[7], stack, settings.smalbe.eta_factor);
     settings.mprgp.gamma = optional_real(nargs[8], stack, settings.mprgp.gamma);
     settings.mprgp.expansion = expansion_from_name(optional_string(nargs[10], stack, option_defaults::expansion));

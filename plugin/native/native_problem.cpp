@@ -308,7 +308,7 @@ FetiSetupSettings setup_settings(const SolverSpec& s, bool vector_field) {
   return settings;
 }
 
-DualSolveSettings solve_settings(const SolverSpec& s) {
+DualSolveSettings solve_settings(const SolverSpec& s, FetiVariant variant) {
   DualSolveSettings settings;
   settings.tolerance = s.tol.value_or(settings.tolerance);
   settings.max_hessian = static_cast<int>(std::min<long>(s.maxit.value_or(settings.max_hessian), 1L << 30));
@@ -316,7 +316,7 @@ DualSolveSettings solve_settings(const SolverSpec& s) {
   settings.mprgp.expansion = expansion_from_name(s.expansion.value_or(option_defaults::expansion));
   settings.stopping = stop_from_name(s.stop.value_or(option_defaults::stop));
   settings.smalbe.rho_factor = s.rho.value_or(settings.smalbe.rho_factor);
-  settings.smalbe.M_factor = s.M.value_or(settings.smalbe.M_factor);
+  settings.smalbe.M_factor = s.M.value_or(default_M_factor(settings.smalbe.variant, variant));
   settings.smalbe.eta_factor = s.eta.value_or(settings.smalbe.eta_factor);
   settings.mprgp.gamma = s.gamma.value_or(settings.mprgp.gamma);
   settings.validate();
@@ -329,7 +329,7 @@ NativeInput build_input(const ProblemFile& problem, const GmshMesh& mesh, const 
   NativeInput input;
   try {  // the core's messages name the option; say where it was written
     input.setup = setup_settings(problem.solver, problem.components > 1);
-    input.solve = solve_settings(problem.solver);
+    input.solve = solve_settings(problem.solver, input.setup.variant);
   } catch (const InputError& error) {
     throw InputError(problem.path + ": solver." + error.what());
   }

@@ -50,6 +50,11 @@ StoppingTest stop_from_name(const std::string& name) {
 
 const char* default_variant_name(bool vector_field) { return vector_field ? "tfeti" : "feti1"; }
 
+double default_M_factor(SmalbeVariant algorithm, FetiVariant variant) {
+  if (algorithm == SmalbeVariant::smalbe_m) return SmalbeSettings{}.M_factor;
+  return variant == FetiVariant::feti1 ? 10.0 : 1.0;
+}
+
 int checked_threads(long threads) {
   if (threads < 0) throw InputError("threads: must be >= 0 (0: the default)");
   return static_cast<int>(threads);

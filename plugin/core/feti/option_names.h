@@ -31,6 +31,12 @@ StoppingTest stop_from_name(const std::string& name);            ///< "kkt", "se
 /// whose partially constrained subdomains FETI-1 would have to treat as floating.
 const char* default_variant_name(bool vector_field);
 
+/// The default M_factor of SMALBE (M_0 = M_factor ||A||): 100 for SMALBE-M; for the seed's
+/// Algorithm 3.1, whose M stays fixed, 10 with FETI-1 and 1 with Total FETI (Hessian
+/// multiplications on the model problem, n = 128, 256, 512: FETI-1 44, 50, 77 with 10
+/// against 56, 56, 144 with 100; Total FETI 43, 46, 64 with 1 against 56, 63, 157).
+double default_M_factor(SmalbeVariant algorithm, FetiVariant variant);
+
 /// threads: >= 0 (0: OpenMP's default).
 int checked_threads(long threads);
 
