@@ -83,7 +83,7 @@ int run(const std::string& problem_path, const std::shared_ptr<const Communicato
     const NodalResults nodal = nodal_results(problem, *mesh, solution, contact);
     if (!out.views.empty()) write_views(resolve(problem, out.views), problem, *mesh, nodal);
     if (!out.table.empty()) write_table(resolve(problem, out.table), *mesh, nodal);
-    if (!out.stress_table.empty()) write_stress_table(resolve(problem, out.stress_table), problem, *mesh, nodal);
+    if (!out.stress_table.empty()) write_stress_table(resolve(problem, out.stress_table), nodal);
     if (!out.getdp_solution.empty()) write_getdp_solution(resolve(problem, out.getdp_solution), problem, solution);
     if (!out.history.empty()) history.write_csv(resolve(problem, out.history));
   });

@@ -62,15 +62,8 @@ double von_mises(const MaterialSpec& material, const std::array<std::array<doubl
 }
 
 /// Von Mises stress of each triangle of the bodies with a material (plane displacements).
-struct ElementStress {
-  std::size_t tag;
-  int body;
-  double x, y;  ///< the triangle's centroid
-  double von_mises;
-};
-
 std::vector<ElementStress> element_stresses(const ProblemFile& problem, const GmshMesh& mesh,
-                                           const NodalResults& results) {
+                                            const NodalResults& results) {
   std::vector<ElementStress> stresses;
   if (problem.components != 2) return stresses;
   for (const SubdomainSpec& sub : problem.subdomains) {
@@ -151,6 +144,7 @@ NodalResults nodal_results(const ProblemFile& problem, const GmshMesh& mesh, con
     const auto length = share.find(node);
     results.contact_pressure[node] = length != share.end() && length->second > 0 ? force / length->second : 0.0;
   }
+  results.stresses = element_stresses(problem, mesh, results);
   return results;
 }
 
@@ -186,10 +180,9 @@ void write_views(const std::string& path, const ProblemFile& problem, const Gmsh
   for (const auto& [node, force] : results.contact_force) active[node] = force > 0 ? 1.0 : 0.0;
   node_view("active set", active);
 
-  const std::vector<ElementStress> stresses = element_stresses(problem, mesh, results);
   std::vector<std::size_t> element_tags;
   std::vector<double> stress;
-  for (const ElementStress& e : stresses) {
+  for (const ElementStress& e : results.stresses) {
     element_tags.push_back(e.tag);
     stress.push_back(e.von_mises);
   }
@@ -216,11 +209,10 @@ void write_table(const std::string& path, const GmshMesh& mesh, const NodalResul
   }
 }
 
-void write_stress_table(const std::string& path, const ProblemFile& problem, const GmshMesh& mesh,
-                        const NodalResults& results) {
+void write_stress_table(const std::string& path, const NodalResults& results) {
   std::ofstream out = open_output(path);
   out << "element,body,x,y,von_mises\n";
-  for (const ElementStress& e : element_stresses(problem, mesh, results))
+  for (const ElementStress& e : results.stresses)
     out << e.tag << ',' << e.body << ',' << e.x << ',' << e.y << ',' << e.von_mises << '\n';
 }
 

@@ -24,13 +24,23 @@ struct GatheredSolution {
 GatheredSolution gather_solution(const FetiResult& result, const std::vector<SubdomainLayout>& layouts,
                                  int subdomain_count, const Communicator& comm);
 
+/// Von Mises stress of one triangle of a body with a material, at its centroid.
+struct ElementStress {
+  std::size_t tag;
+  int body;
+  double x, y;
+  double von_mises;
+};
+
 /// Nodal values: displacement (averaged over the subdomain copies of a node, which agree
 /// to the solver's tolerance) and, at the slave nodes, the contact force (the multiplier),
-/// the pressure (force over the node's share of the slave curve) and the active flag.
+/// the pressure (force over the node's share of the slave curve) and the active flag; per
+/// triangle of a body with a material, the von Mises stress.
 struct NodalResults {
   std::map<NodeTag, std::array<double, 2>> displacement;
   std::map<NodeTag, int> body;
   std::map<NodeTag, double> contact_force, contact_pressure;
+  std::vector<ElementStress> stresses;  ///< plane displacements, bodies with a material
 };
 
 NodalResults nodal_results(const ProblemFile& problem, const GmshMesh& mesh, const GatheredSolution& solution,
@@ -45,8 +55,7 @@ void write_views(const std::string& path, const ProblemFile& problem, const Gmsh
 void write_table(const std::string& path, const GmshMesh& mesh, const NodalResults& results);
 
 /// element,body,x,y,von_mises (centroids), for the bodies with a material.
-void write_stress_table(const std::string& path, const ProblemFile& problem, const GmshMesh& mesh,
-                        const NodalResults& results);
+void write_stress_table(const std::string& path, const NodalResults& results);
 
 /// GetDP's .res: one $Solution per subdomain system, numbered by its $DofData block, so that
 /// `getdp ... -pre <resolution> -res <file> -pos <post-operation>` post-processes it.
