@@ -284,7 +284,7 @@ basicAC_F0::name_and_type FetiSetup::name_param[] = {
 class FetiSolve : public E_F0mps {
  public:
   typedef long Result;
-  static const int n_name_param = 12;
+  static const int n_name_param = 13;
   static basicAC_F0::name_and_type name_param[];
   Expression nargs[n_name_param];
   Expression id, U;
@@ -310,8 +310,9 @@ class FetiSolve : public E_F0mps {
     settings.smalbe.variant = algorithm_from_name(optional_string(nargs[3], stack, option_defaults::algorithm));
     const long verbosity = optional_int(nargs[4], stack, 0);
     settings.smalbe.rho_factor = optional_real(nargs[5], stack, settings.smalbe.rho_factor);
-    settings.smalbe.M_factor =
-        optional_real(nargs[6], stack, default_M_factor(settings.smalbe.variant, h.problem->variant()));
+    settings.coarse_constraints = coarse_from_name(optional_string(nargs[12], stack, option_defaults::coarse));
+    settings.smalbe.M_factor = optional_real(
+        nargs[6], stack, default_M_factor(settings.smalbe.variant, h.problem->variant(), settings.coarse_constraints));
     settings.smalbe.eta_factor = optional_real(nargs[7], stack, settings.smalbe.eta_factor);
     settings.mprgp.gamma = optional_real(nargs[8], stack, settings.mprgp.gamma);
     settings.mprgp.expansion = expansion_from_name(optional_string(nargs[10], stack, option_defaults::expansion));
@@ -347,7 +348,7 @@ basicAC_F0::name_and_type FetiSolve::name_param[] = {
     {"algorithm", &typeid(std::string*)}, {"verbosity", &typeid(long)}, {"rho", &typeid(double)},
     {"M", &typeid(double)},           {"eta", &typeid(double)},       {"gamma", &typeid(double)},
     {"history", &typeid(std::string*)}, {"expansion", &typeid(std::string*)},
-    {"stop", &typeid(std::string*)}};
+    {"stop", &typeid(std::string*)},  {"coarse", &typeid(std::string*)}};
 
 // ---- sensitivities (seed eq. 12) -------------------------------------------------------
 

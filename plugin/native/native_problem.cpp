@@ -316,7 +316,8 @@ DualSolveSettings solve_settings(const SolverSpec& s, FetiVariant variant) {
   settings.mprgp.expansion = expansion_from_name(s.expansion.value_or(option_defaults::expansion));
   settings.stopping = stop_from_name(s.stop.value_or(option_defaults::stop));
   settings.smalbe.rho_factor = s.rho.value_or(settings.smalbe.rho_factor);
-  settings.smalbe.M_factor = s.M.value_or(default_M_factor(settings.smalbe.variant, variant));
+  settings.coarse_constraints = coarse_from_name(s.coarse.value_or(option_defaults::coarse));
+  settings.smalbe.M_factor = s.M.value_or(default_M_factor(settings.smalbe.variant, variant, settings.coarse_constraints));
   settings.smalbe.eta_factor = s.eta.value_or(settings.smalbe.eta_factor);
   settings.mprgp.gamma = s.gamma.value_or(settings.mprgp.gamma);
   settings.validate();

@@ -219,7 +219,8 @@ ContactSpec read_contact(ObjectReader& r, int components) {
 SolverSpec read_solver(ObjectReader& r) {
   SolverSpec s;
   for (auto [key, slot] : {std::pair{"variant", &s.variant}, {"factor", &s.factor}, {"preconditioner", &s.preconditioner},
-                           {"algorithm", &s.algorithm}, {"expansion", &s.expansion}, {"stop", &s.stop}})
+                           {"algorithm", &s.algorithm}, {"expansion", &s.expansion}, {"stop", &s.stop},
+                           {"coarse", &s.coarse}})
     if (r.has(key)) *slot = r.required<std::string>(key);
   for (auto [key, slot] : {std::pair{"threads", &s.threads}, {"maxit", &s.maxit}, {"verbosity", &s.verbosity}})
     if (r.has(key)) *slot = r.required<long>(key);

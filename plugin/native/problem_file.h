@@ -55,7 +55,7 @@ struct ContactSpec {
 
 /// What the file's "solver" sets; absent entries take fetiSetup's and fetiSolve's defaults.
 struct SolverSpec {
-  std::optional<std::string> variant, factor, preconditioner, algorithm, expansion, stop;
+  std::optional<std::string> variant, factor, preconditioner, algorithm, expansion, stop, coarse;
   std::optional<long> threads, maxit, verbosity;
   std::optional<double> tol, rho, M, eta, gamma;
 };

@@ -4,6 +4,7 @@
 #include "feti/primal.h"
 #include "feti/stopwatch.h"
 #include "qp/conjugate_gradient.h"
+#include "qp/norm_estimate.h"
 
 #include <algorithm>
 #include <cmath>
@@ -218,6 +219,94 @@ std::vector<DualSolution> DualSystem::solve(const std::vector<DualData>& data,
   return results;
 }
 
+const FreeRowProjector& DualSystem::free_rows() const {
+  if (!free_rows_) free_rows_ = std::make_unique<FreeRowProjector>(coarse_->G(), constraints_.equality_rows);
+  return *free_rows_;
+}
+
+void DualSystem::solve_by_free_rows(const DualData& data, const DualSolveSettings& settings, const Vec& lower_bounds,
+                                    RelativeKktStop& kkt_stop, double b_tol, DualSolution& result,
+                                    Vec& lambda) const {
+  // mu = T nu: every iterate meets G mu = 0 but for the rows of C (docs/algorithms.md).
+  const FreeRowProjector& T = free_rows();
+  const int m = rows();
+  Vec Tx(m), PFPTx(m);
+  const LinearOperator hessian = [&](const Vec& x, Vec& y) {  // T' P F P T
+    T.apply(x, Tx);
+    apply_PFP(Tx, PFPTx);
+    T.apply_transpose(PFPTx, y);
+  };
+  if (!norm_reduced_) {
+    Stopwatch clock;
+    const NormEstimate estimate = estimate_norm(hessian, m, settings.norm_estimate);
+    norm_reduced_ = estimate.norm;
+    norm_reduced_cost_ = estimate.multiplications;
+    result.norm_estimate_seconds = clock.seconds();
+  }
+  result.counts.hessian_norm_estimate += norm_reduced_cost_;
+  const double norm = *norm_reduced_;
+  Vec b;
+  T.apply_transpose(data.b, b);
+  const double eq_reference =
+      result.equality_reference > 0 ? result.equality_reference : result.gradient_reference / norm;
+  result.equality_reference = eq_reference;
+  Vec mu(m);
+  const auto converged = [&](const Vec& x, double gp_inf, double gp_norm) {
+    T.apply(x, mu);
+    result.equality_norm = (coarse_->G() * mu).norm();  // G lambda - e = G mu
+    if (settings.stopping == StoppingTest::relative_kkt)
+      return kkt_stop(mu, gp_inf, result.equality_norm / eq_reference);
+    return result.equality_norm <= settings.tolerance * eq_reference && gp_norm <= b_tol;
+  };
+  LinearOperator preconditioner;  // approximates (T'PFPT)^+ from M^{-1} ~ (PFP)^+
+  if (preconditioner_)
+    preconditioner = [&](const Vec& v, Vec& y) {
+      T.project_out_kernel(v, Tx);
+      coarse_->project(Tx, projected_);
+      preconditioner_->apply(projected_, applied_);
+      coarse_->project(applied_, Tx);
+      T.project_out_kernel(Tx, y);
+    };
+  Vec x = Vec::Zero(m);
+  const int estimate = result.counts.hessian_norm_estimate;
+  if (T.remaining() == 0) {  // nothing floats as a whole: bounds only
+    MprgpSettings mprgp_settings = settings.mprgp;
+    mprgp_settings.max_hessian = settings.max_hessian;
+    Vec g;
+    const MprgpResult r = mprgp(hessian, b, lower_bounds, norm, x, g, false, mprgp_settings,
+        [&](const Vec& xi, const Vec& gi, double norm_gp) {
+          return converged(xi, projected_gradient(xi, gi, lower_bounds).lpNorm<Eigen::Infinity>(), norm_gp);
+        },
+        settings.monitor, preconditioner);
+    result.counts = r.counts;
+    result.status = r.status;
+    result.gradient_norm = r.projected_gradient_norm;
+  } else {
+    SmalbeProblem problem;
+    problem.hessian = hessian;
+    problem.range_projector = [&](const Vec& v, Vec& y) { T.project_remaining_range(v, y); };
+    problem.b = &b;
+    problem.lower = &lower_bounds;
+    problem.hessian_norm = norm;
+    problem.preconditioner = preconditioner;
+    SmalbeSettings smalbe_settings = settings.smalbe;
+    smalbe_settings.max_hessian = settings.max_hessian;
+    smalbe_settings.inner = settings.mprgp;
+    const SmalbeResult r = smalbe(problem, x, smalbe_settings,
+        [&](const Vec& xi, const Vec& gP, const Vec&) {
+          return converged(xi, gP.lpNorm<Eigen::Infinity>(), gP.norm());
+        },
+        settings.monitor);
+    result.counts = r.counts;
+    result.status = r.status;
+    result.gradient_norm = r.projected_gradient_norm;
+  }
+  result.counts.hessian_norm_estimate = estimate;
+  T.apply(x, mu);
+  result.equality_norm = (coarse_->G() * mu).norm();
+  lambda = lambda_from_shifted(mu, lower_bounds, data.lambda_tilde);
+}
+
 DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& settings) const {
   settings.validate();
   DualSolution result = prepared(data, settings);
@@ -306,6 +395,8 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     result.status = SolveStatus::infeasible;
     result.equality_norm = distance * result.equality_reference;
     lambda = data.lambda_tilde;
+  } else if (settings.coarse_constraints == CoarseConstraints::free_rows) {
+    solve_by_free_rows(data, settings, lower_bounds, kkt_stop, b_tol, result, lambda);
   } else {  // smalbe
     const double norm = operator_norm(true, settings.norm_estimate, result.counts, result.norm_estimate_seconds);
     const double eq_reference =

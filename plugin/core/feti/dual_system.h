@@ -9,6 +9,7 @@
 #include "feti/constraints.h"
 #include "feti/dirichlet_preconditioner.h"
 #include "feti/dual_operator.h"
+#include "feti/free_row_projector.h"
 #include "feti/stopping_test.h"
 #include "parallel/subdomain_sum.h"
 #include "qp/norm_estimate.h"
@@ -25,8 +26,15 @@ namespace ffeti {
 /// u(lambda) violates no constraint by more than tolerance ||u||_inf,
 /// or the seed's  ||gP||_2 <= tolerance ||b||_2,  b = P(d - F lambda~);  and on both, where
 /// there is a coarse space,  ||G lambda - e||_2 <= tolerance ||e||_2.
+/// How the SMALBE path meets the coarse constraints G lambda = e (docs/algorithms.md).
+enum class CoarseConstraints {
+  penalty,    ///< all rows of G by SMALBE's augmented Lagrangian, on P F P
+  free_rows,  ///< the rows the free multipliers can meet by the oblique projector T; the rest by SMALBE
+};
+
 struct DualSolveSettings {
   double tolerance = 1e-4;
+  CoarseConstraints coarse_constraints = CoarseConstraints::free_rows;
   StoppingTest stopping = StoppingTest::relative_kkt;
   int max_hessian = 10000;          ///< over the whole solve
   SmalbeSettings smalbe{};          ///< used on the SMALBE path (its max_hessian is overridden)
@@ -113,6 +121,9 @@ class DualSystem {
   DualSolution prepared(const DualData& data, const DualSolveSettings& settings) const;  // path, references
   LinearOperator preconditioner_operator() const;  // M^{-1}, or empty without a preconditioner
   void recover(const DualData& data, Vec lambda, DualSolution& result) const;
+  const FreeRowProjector& free_rows() const;  // built at first use
+  void solve_by_free_rows(const DualData& data, const DualSolveSettings& settings, const Vec& lower_bounds,
+                          RelativeKktStop& kkt_stop, double b_tol, DualSolution& result, Vec& lambda) const;
   PrimalCheck primal_check(const DualData& data, const Vec& lambda) const;  // of the recovered u(lambda)
 
   const SubdomainList& subdomains_;
@@ -127,6 +138,9 @@ class DualSystem {
   mutable Eigen::MatrixXd block_projected_, block_applied_;  // of the block apply_PFP
   mutable std::optional<double> norm_F_, norm_PFP_;  // cached: the same F for every load case
   mutable int norm_F_cost_ = 0, norm_PFP_cost_ = 0;
+  mutable std::unique_ptr<FreeRowProjector> free_rows_;
+  mutable std::optional<double> norm_reduced_;  // of T'PFPT
+  mutable int norm_reduced_cost_ = 0;
 };
 
 }  // namespace ffeti

@@ -48,10 +48,15 @@ StoppingTest stop_from_name(const std::string& name) {
   return choose<StoppingTest>("stop", name, {{"kkt", StoppingTest::relative_kkt}, {"seed", StoppingTest::seed}});
 }
 
+CoarseConstraints coarse_from_name(const std::string& name) {
+  return choose<CoarseConstraints>("coarse", name,
+                                   {{"free-rows", CoarseConstraints::free_rows}, {"penalty", CoarseConstraints::penalty}});
+}
+
 const char* default_variant_name(bool vector_field) { return vector_field ? "tfeti" : "feti1"; }
 
-double default_M_factor(SmalbeVariant algorithm, FetiVariant variant) {
-  if (algorithm == SmalbeVariant::smalbe_m) return SmalbeSettings{}.M_factor;
+double default_M_factor(SmalbeVariant algorithm, FetiVariant variant, CoarseConstraints coarse) {
+  if (algorithm == SmalbeVariant::smalbe_m) return coarse == CoarseConstraints::free_rows ? 1.0 : 100.0;
   return variant == FetiVariant::feti1 ? 10.0 : 1.0;
 }
 

@@ -17,6 +17,7 @@ inline constexpr const char* preconditioner = "none";
 inline constexpr const char* algorithm = "smalbe-m";
 inline constexpr const char* expansion = "projected-cg";
 inline constexpr const char* stop = "kkt";
+inline constexpr const char* coarse = "free-rows";
 }  // namespace option_defaults
 
 /// Each throws InputError("<option>: \"<word>\" is not one of ...") for an unknown word.
@@ -26,16 +27,19 @@ bool dirichlet_preconditioner_from_name(const std::string& name);  ///< "none", 
 SmalbeVariant algorithm_from_name(const std::string& name);      ///< "smalbe-m", "seed"
 MprgpExpansion expansion_from_name(const std::string& name);     ///< "projected-cg", "fixed"
 StoppingTest stop_from_name(const std::string& name);            ///< "kkt", "seed"
+CoarseConstraints coarse_from_name(const std::string& name);     ///< "free-rows", "penalty"
 
 /// The default variant: FETI-1 for scalar fields (the seed's), Total FETI for vector fields,
 /// whose partially constrained subdomains FETI-1 would have to treat as floating.
 const char* default_variant_name(bool vector_field);
 
-/// The default M_factor of SMALBE (M_0 = M_factor ||A||): 100 for SMALBE-M; for the seed's
-/// Algorithm 3.1, whose M stays fixed, 10 with FETI-1 and 1 with Total FETI (Hessian
-/// multiplications on the model problem, n = 128, 256, 512: FETI-1 44, 50, 77 with 10
-/// against 56, 56, 144 with 100; Total FETI 43, 46, 64 with 1 against 56, 63, 157).
-double default_M_factor(SmalbeVariant algorithm, FetiVariant variant);
+/// The default M_factor of SMALBE (M_0 = M_factor ||A||). SMALBE-M: 1 where only the
+/// floating bodies' modes are left to it (coarse "free-rows"), 100 where it penalizes all of G
+/// ("penalty"; docs/algorithms.md has the measurements). The seed's Algorithm 3.1, whose M
+/// stays fixed: 10 with FETI-1 and 1 with Total FETI (Hessian multiplications on the model
+/// problem with "penalty", n = 128, 256, 512: FETI-1 44, 50, 77 with 10 against 56, 56, 144
+/// with 100; Total FETI 43, 46, 64 with 1 against 56, 63, 157).
+double default_M_factor(SmalbeVariant algorithm, FetiVariant variant, CoarseConstraints coarse);
 
 /// threads: >= 0 (0: OpenMP's default).
 int checked_threads(long threads);

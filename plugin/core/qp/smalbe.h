@@ -18,7 +18,7 @@ enum class SmalbeVariant {
 struct SmalbeSettings {
   SmalbeVariant variant = SmalbeVariant::smalbe_m;
   double rho_factor = 1.1;    ///< rho_0 = rho_factor * ||H||
-  double M_factor = 100.0;    ///< M_0 = M_factor * ||A||, A = H + rho Q (M has the units of A)
+  double M_factor = 1.0;      ///< M_0 = M_factor * ||A||, A = H + rho Q (M has the units of A)
   double eta_factor = 0.1;    ///< eta_0 = eta_factor * ||b||
   double alpha = 0.1;         ///< seed_alg31: eta <- alpha eta when ||Qx|| <= eta
   double beta = 2.0;          ///< smalbe_m: M <- M / beta; seed_alg31: rho <- beta rho

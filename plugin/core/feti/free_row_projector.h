@@ -1,0 +1,55 @@
+// The coarse constraints G mu = 0 met by the unbounded multipliers alone. Only contact
+// rows carry bounds; gluing and Dirichlet rows are free. The free columns G_F of G span
+// its row space except for the rigid modes of whole floating bodies, which gluing cannot
+// hold and only contact forces balance (W: an orthonormal basis of Ker G_F', one vector
+// for a floating membrane, three for a floating elastic body). The oblique projector
+//     T = I - E_F G_F' (G_F G_F')^+ (I - W W') G
+// corrects any mu by free multipliers only (bounds stay satisfied) so that G T mu lies in
+// Im W: each subdomain's imbalance, less its body's share, is carried by gluing forces. The
+// remaining rows C = W'G act on contact multipliers only (W'G_F = 0), and
+//     {mu : G mu = 0, mu_I >= l} = {T nu : C nu = 0, nu_I >= l},  nu_I = mu_I,
+// so the dual QP keeps its bounds and only the few rows of C are left to an augmented
+// Lagrangian (none when no body floats as a whole). See docs/algorithms.md.
+#pragma once
+
+#include "qp/qp_types.h"
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+namespace ffeti {
+
+class FreeRowProjector {
+ public:
+  using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+
+  /// G: the natural coarse space (full row rank); its first `free_columns` columns are the
+  /// unbounded multipliers.
+  FreeRowProjector(const RowMatrix& G, int free_columns);
+
+  /// Rows of C (the floating bodies' rigid modes).
+  int remaining() const { return static_cast<int>(W_.cols()); }
+  /// y = T x.
+  void apply(const Vec& x, Vec& y) const;
+  /// y = T' x.
+  void apply_transpose(const Vec& x, Vec& y) const;
+  /// y = x less its component in Ker T = Im E_F G_F': the orthogonal projector onto the
+  /// subspace on which T is one to one. With M an approximate inverse of P F P, this
+  /// projector, then P M P, then it again approximate the inverse of T'PFPT there.
+  void project_out_kernel(const Vec& x, Vec& y) const;
+  /// y = C'(CC')^{-1} C x: the orthogonal projector onto Im C' (zero when C is empty).
+  void project_remaining_range(const Vec& x, Vec& y) const;
+
+ private:
+  void remove_body_modes(Vec& v) const;  // v <- (I - W W') v
+
+  const RowMatrix& G_;
+  RowMatrix G_F_;                         // the free columns of G
+  Eigen::MatrixXd W_;                     // orthonormal basis of Ker G_F'
+  Eigen::LLT<Eigen::MatrixXd> solver_;    // of G_F G_F' + s W W': its inverse is (G_F G_F')^+ on Im G_F
+  Eigen::MatrixXd C_;                     // W'G
+  Eigen::LLT<Eigen::MatrixXd> solver_C_;  // of C C'
+  Eigen::Index free_ = 0;
+};
+
+}  // namespace ffeti

@@ -1,0 +1,85 @@
+#include "feti/free_row_projector.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace ffeti {
+namespace {
+
+using RowMatrix = FreeRowProjector::RowMatrix;
+
+/// A coarse matrix like a floating body's: 6 rows over 40 multipliers, the first 30 free.
+/// Row 5's free part is the sum of rows 0..4's (a whole-body rigid mode that gluing cannot
+/// hold); its bounded part differs, so G keeps full row rank.
+RowMatrix coarse_with_one_body_mode() {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(6, 40);
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 30; ++j)
+      if ((i + j) % 3 == 0) G(i, j) = value(random);
+  G.row(5).head(30) = G.topRows(5).leftCols(30).colwise().sum();
+  for (int j = 30; j < 40; ++j) G(5, j) = value(random);
+  for (int j = 30; j < 34; ++j) G(0, j) = value(random);
+  return G.sparseView();
+}
+
+Vec random_vector(Eigen::Index n, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  Vec v(n);
+  for (Eigen::Index i = 0; i < n; ++i) v[i] = value(random);
+  return v;
+}
+
+TEST(FreeRowProjector, MapsOntoKerGByMovingFreeMultipliersOnly) {
+  const RowMatrix G = coarse_with_one_body_mode();
+  const FreeRowProjector T(G, 30);
+  EXPECT_EQ(T.remaining(), 1);  // the body mode
+  const Vec x = random_vector(40, 1);
+  Vec Tx, TTx, Cx;
+  T.apply(x, Tx);
+  EXPECT_EQ((Tx - x).tail(10).norm(), 0.0) << "bounded multipliers changed";
+  T.apply(Tx, TTx);
+  EXPECT_LT((TTx - Tx).norm(), 1e-12 * x.norm()) << "not a projector";
+  // G T x lies in the span of the remaining rows only: removing C's part leaves G T x = 0
+  // wherever the constraint C T x = 0 holds.
+  T.project_remaining_range(Tx, Cx);
+  Vec y = Tx - Cx, Ty;  // C y = 0
+  T.apply(y, Ty);
+  EXPECT_LT((G * Ty).norm(), 1e-12 * x.norm());
+}
+
+TEST(FreeRowProjector, IsTheIdentityOnKerGAndItsTransposeIsConsistent) {
+  const RowMatrix G = coarse_with_one_body_mode();
+  const FreeRowProjector T(G, 30);
+  // A vector of Ker G: x minus its component in Im G'.
+  const Eigen::MatrixXd Gd(G);
+  const Vec x0 = random_vector(40, 2);
+  const Vec x = x0 - Gd.transpose() * (Gd * Gd.transpose()).llt().solve(Gd * x0);
+  Vec Tx;
+  T.apply(x, Tx);
+  EXPECT_LT((Tx - x).norm(), 1e-12 * x.norm());
+  Vec r;
+  T.project_remaining_range(x, r);
+  EXPECT_LT(r.norm(), 1e-12 * x.norm()) << "C x = 0 on Ker G";
+  const Vec a = random_vector(40, 3), b = random_vector(40, 4);
+  Vec Ta, Ttb;
+  T.apply(a, Ta);
+  T.apply_transpose(b, Ttb);
+  EXPECT_NEAR(b.dot(Ta), a.dot(Ttb), 1e-12);
+}
+
+TEST(FreeRowProjector, NothingRemainsWhenTheFreeColumnsSpanTheRowSpace) {
+  RowMatrix G = coarse_with_one_body_mode();
+  G = G.topRows(5);
+  const FreeRowProjector T(G, 30);
+  EXPECT_EQ(T.remaining(), 0);
+  Vec Tx;
+  T.apply(random_vector(40, 5), Tx);
+  EXPECT_LT((G * Tx).norm(), 1e-12);
+}
+
+}  // namespace
+}  // namespace ffeti
