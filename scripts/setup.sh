@@ -11,7 +11,7 @@ prefix=${FFETI_PREFIX:-/usr/local}
 build=${FFETI_BUILD:-$root/build}
 
 packages=(build-essential cmake freefem++ libfreefem++-dev gmsh libeigen3-dev
-          libsuitesparse-dev libopenmpi-dev openmpi-bin libgtest-dev getdp libgmsh-dev nlohmann-json3-dev
+          libsuitesparse-dev liblapack-dev libopenmpi-dev openmpi-bin libgtest-dev getdp libgmsh-dev nlohmann-json3-dev
           ghostscript)
 missing=()
 for package in "${packages[@]}"; do

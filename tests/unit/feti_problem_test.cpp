@@ -225,6 +225,31 @@ TEST(FetiProblem, DirichletPreconditionerInFaceKeepsTheContactSolution) {
   }
 }
 
+TEST(FetiProblem, FreeRowsAndPenaltyGiveTheSameSolution) {
+  // The coarse constraints met by the free multipliers (T, SMALBE-M on the floating
+  // membrane's one mode) against all of G penalized: the same QP two ways, FETI-1 (the left
+  // membrane's fixed subdomains ground the gluing) and Total FETI (Dirichlet rows are free
+  // rows too), 4 x 4 subdomains per body.
+  const test::MembraneOptions o = test::membrane_options(64, 4);
+  for (FetiVariant variant : {FetiVariant::feti1, FetiVariant::tfeti}) {
+    const FetiProblem problem = membrane_problem(o, variant);
+    DualSolveSettings settings;
+    settings.tolerance = 1e-10;
+    const FetiResult free_rows = problem.solve(settings);
+    settings.coarse_constraints = CoarseConstraints::penalty;
+    settings.smalbe.M_factor = 100;
+    const FetiResult penalty = problem.solve(settings);
+    ASSERT_EQ(free_rows.status, SolveStatus::converged);
+    ASSERT_EQ(penalty.status, SolveStatus::converged);
+    EXPECT_EQ(free_rows.path, "smalbe");
+    EXPECT_NEAR(free_rows.energy, penalty.energy, 1e-10 * std::abs(penalty.energy));
+    EXPECT_EQ(free_rows.active_contact, penalty.active_contact);
+    EXPECT_LT(free_rows.kkt.max(), 1e-8);
+    EXPECT_LT((free_rows.lambda - penalty.lambda).lpNorm<Eigen::Infinity>(),
+              1e-6 * penalty.lambda.lpNorm<Eigen::Infinity>());
+  }
+}
+
 TEST(FetiProblem, DefaultStopBoundsTheRelativeKktResidualsByTol) {
   // The stopping test in primal terms: tol bounds the relative KKT residuals, recomputed in
   // primal form after the solve, on the SMALBE path (a floating membrane) and the MPRGP one.

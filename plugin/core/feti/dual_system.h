@@ -72,6 +72,7 @@ struct DualSolution {
   Vec lambda;                    ///< multipliers, rows ordered as constraints()
   std::vector<Vec> u;            ///< primal solution per subdomain of this rank
   double norm_estimate_seconds = 0, solve_seconds = 0, recovery_seconds = 0;  ///< this rank's
+  double projector_seconds = 0;  ///< building T of coarse "free-rows" (first solve of a system only)
 };
 
 class DualSystem {

@@ -202,6 +202,7 @@ FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
   result.u = std::move(dual.u);
   result.lambda = std::move(dual.lambda);
   result.times.norm_estimate = dual.norm_estimate_seconds;
+  result.times.free_rows = dual.projector_seconds;
   result.times.solve = dual.solve_seconds;
   result.times.recovery = dual.recovery_seconds;
   result.phases = "constraints,factorization";

@@ -30,7 +30,7 @@ struct FetiSetupSettings {
 
 struct PhaseTimes {  ///< wall-clock seconds; over several ranks, the slowest rank's
   double constraints = 0, factorization = 0, coarse_space = 0, dual_data = 0;
-  double norm_estimate = 0, solve = 0, recovery = 0, kkt = 0;
+  double norm_estimate = 0, free_rows = 0, solve = 0, recovery = 0, kkt = 0;
 };
 
 struct FetiResult {
@@ -49,7 +49,7 @@ struct FetiResult {
   double energy = 0;             ///< 1/2 u'Ku - f'u
   KktResiduals kkt;
   int active_contact = 0;        ///< contact rows with lambda > 0
-  PhaseTimes times;              ///< norm_estimate, solve, recovery, kkt of this call
+  PhaseTimes times;              ///< norm_estimate, free_rows (building T), solve, recovery, kkt of this call
 };
 
 /// What one rank holds and spent, for load-balance reports.

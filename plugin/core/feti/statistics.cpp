@@ -54,6 +54,7 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
       {"kkt_dual", result->kkt.dual_feasibility},
       {"kkt_complementarity", result->kkt.complementarity},
       {"time_norm_estimate", result->times.norm_estimate},
+      {"time_free_rows", result->times.free_rows},
       {"time_solve", result->times.solve},
       {"time_recovery", result->times.recovery},
       {"time_kkt", result->times.kkt},
