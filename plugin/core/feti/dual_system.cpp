@@ -20,6 +20,16 @@ Vec lambda_from_shifted(const Vec& mu, const Vec& lower, const Vec& lambda_tilde
   return lambda;
 }
 
+/// ||gP||_inf without forming gP: the stopping tests call this every iteration.
+double projected_gradient_max(const Vec& x, const Vec& g, const Vec& lower) {
+  double largest = 0;
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
+    const bool at_bound = lower[i] != kUnbounded && x[i] <= lower[i];
+    largest = std::max(largest, std::abs(at_bound ? std::min(g[i], 0.0) : g[i]));
+  }
+  return largest;
+}
+
 }  // namespace
 
 void DualSolveSettings::validate() const {
@@ -277,7 +287,7 @@ void DualSystem::solve_by_free_rows(const DualData& data, const DualSolveSetting
     Vec g;
     const MprgpResult r = mprgp(hessian, b, lower_bounds, norm, x, g, false, mprgp_settings,
         [&](const Vec& xi, const Vec& gi, double norm_gp) {
-          return converged(xi, projected_gradient(xi, gi, lower_bounds).lpNorm<Eigen::Infinity>(), norm_gp);
+          return converged(xi, projected_gradient_max(xi, gi, lower_bounds), norm_gp);
         },
         settings.monitor, preconditioner);
     result.counts = r.counts;
@@ -375,12 +385,7 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     const MprgpResult r = mprgp(
         [&](const Vec& v, Vec& y) { F_->apply(v, y); }, data.b, lower_bounds, norm, x, g, false, mprgp_settings,
         [&](const Vec& xi, const Vec& gi, double norm_gp) {
-          double gp_inf = 0;  // ||gP||_inf without forming gP: this runs every iteration
-          for (Eigen::Index i = 0; i < xi.size(); ++i) {
-            const bool at_bound = lower_bounds[i] != kUnbounded && xi[i] <= lower_bounds[i];
-            gp_inf = std::max(gp_inf, std::abs(at_bound ? std::min(gi[i], 0.0) : gi[i]));
-          }
-          return gradient_converged(xi, gp_inf, norm_gp);
+          return gradient_converged(xi, projected_gradient_max(xi, gi, lower_bounds), norm_gp);
         },
         settings.monitor, M);
     const int estimate = result.counts.hessian_norm_estimate;

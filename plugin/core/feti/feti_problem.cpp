@@ -224,8 +224,8 @@ FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
     if (c.kind[static_cast<size_t>(i)] == RowKind::contact && result.lambda[i] > 0) ++result.active_contact;
   result.times.kkt = kkt_clock.seconds();
   gather_rank_statistics(result.times.norm_estimate + result.times.solve);
-  PhaseTimes& t = result.times;
-  t = {0, 0, 0, 0, comm_->max(t.norm_estimate), comm_->max(t.solve), comm_->max(t.recovery), comm_->max(t.kkt)};
+  PhaseTimes& t = result.times;  // the slowest rank's, by name (a positional list broke once a phase was added)
+  for (double* phase : {&t.norm_estimate, &t.free_rows, &t.solve, &t.recovery, &t.kkt}) *phase = comm_->max(*phase);
   return result;
 }
 
