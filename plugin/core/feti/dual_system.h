@@ -22,15 +22,17 @@
 
 namespace ffeti {
 
-/// Stopping test of every path (docs/algorithms.md): by default (relative_kkt) the recovered
-/// u(lambda) violates no constraint by more than tolerance ||u||_inf,
-/// or the seed's  ||gP||_2 <= tolerance ||b||_2,  b = P(d - F lambda~);  and on both, where
-/// there is a coarse space,  ||G lambda - e||_2 <= tolerance ||e||_2.
 /// How the SMALBE path meets the coarse constraints G lambda = e (docs/algorithms.md).
 enum class CoarseConstraints {
   penalty,    ///< all rows of G by SMALBE's augmented Lagrangian, on P F P
   free_rows,  ///< the rows the free multipliers can meet by the oblique projector T; the rest by SMALBE
 };
+
+/// Stopping test of every path (docs/algorithms.md): by default (relative_kkt) the recovered
+/// u(lambda) violates no constraint by more than tolerance ||u||_inf,
+/// or the seed's  ||gP||_2 <= tolerance ||b||_2,  b = P(d - F lambda~) (T'b with coarse
+/// free_rows: the gradient at the start);  and on both, where there is a coarse space,
+/// ||G lambda - e||_2 <= tolerance ||e||_2.
 
 struct DualSolveSettings {
   double tolerance = 1e-4;
@@ -124,7 +126,7 @@ class DualSystem {
   void recover(const DualData& data, Vec lambda, DualSolution& result) const;
   const FreeRowProjector& free_rows() const;  // built at first use
   void solve_by_free_rows(const DualData& data, const DualSolveSettings& settings, const Vec& lower_bounds,
-                          RelativeKktStop& kkt_stop, double b_tol, DualSolution& result, Vec& lambda) const;
+                          RelativeKktStop& kkt_stop, DualSolution& result, Vec& lambda) const;
   PrimalCheck primal_check(const DualData& data, const Vec& lambda) const;  // of the recovered u(lambda)
 
   const SubdomainList& subdomains_;
