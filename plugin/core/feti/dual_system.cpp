@@ -30,6 +30,29 @@ double projected_gradient_max(const Vec& x, const Vec& g, const Vec& lower) {
   return largest;
 }
 
+/// The inner solvers' settings, limited by the whole solve's multiplications.
+MprgpSettings mprgp_within(const DualSolveSettings& settings) {
+  MprgpSettings mprgp = settings.mprgp;
+  mprgp.max_hessian = settings.max_hessian;
+  return mprgp;
+}
+
+SmalbeSettings smalbe_within(const DualSolveSettings& settings) {
+  SmalbeSettings smalbe = settings.smalbe;
+  smalbe.max_hessian = settings.max_hessian;
+  smalbe.inner = settings.mprgp;
+  return smalbe;
+}
+
+/// A solver's outcome into the solution, keeping the norm estimate's count.
+void record(DualSolution& result, const IterationCounts& counts, SolveStatus status, double gradient_norm) {
+  const int estimate = result.counts.hessian_norm_estimate;
+  result.counts = counts;
+  result.counts.hessian_norm_estimate = estimate;
+  result.status = status;
+  result.gradient_norm = gradient_norm;
+}
+
 }  // namespace
 
 void DualSolveSettings::validate() const {
@@ -293,19 +316,14 @@ void DualSystem::solve_by_free_rows(const DualData& data, const DualSolveSetting
       T.project_out_kernel(Tx, y);
     };
   Vec x = Vec::Zero(m);
-  const int estimate = result.counts.hessian_norm_estimate;
   if (T.remaining() == 0) {  // nothing floats as a whole: bounds only
-    MprgpSettings mprgp_settings = settings.mprgp;
-    mprgp_settings.max_hessian = settings.max_hessian;
     Vec g;
-    const MprgpResult r = mprgp(hessian, b, lower_bounds, norm, x, g, false, mprgp_settings,
+    const MprgpResult r = mprgp(hessian, b, lower_bounds, norm, x, g, false, mprgp_within(settings),
         [&](const Vec& xi, const Vec& gi, double norm_gp) {
           return converged(xi, projected_gradient_max(xi, gi, lower_bounds), norm_gp);
         },
         settings.monitor, preconditioner);
-    result.counts = r.counts;
-    result.status = r.status;
-    result.gradient_norm = r.projected_gradient_norm;
+    record(result, r.counts, r.status, r.projected_gradient_norm);
   } else {
     SmalbeProblem problem;
     problem.hessian = hessian;
@@ -314,19 +332,13 @@ void DualSystem::solve_by_free_rows(const DualData& data, const DualSolveSetting
     problem.lower = &lower_bounds;
     problem.hessian_norm = norm;
     problem.preconditioner = preconditioner;
-    SmalbeSettings smalbe_settings = settings.smalbe;
-    smalbe_settings.max_hessian = settings.max_hessian;
-    smalbe_settings.inner = settings.mprgp;
-    const SmalbeResult r = smalbe(problem, x, smalbe_settings,
+    const SmalbeResult r = smalbe(problem, x, smalbe_within(settings),
         [&](const Vec& xi, const Vec& gP, const Vec&) {
           return converged(xi, gP.lpNorm<Eigen::Infinity>(), gP.norm());
         },
         settings.monitor);
-    result.counts = r.counts;
-    result.status = r.status;
-    result.gradient_norm = r.projected_gradient_norm;
+    record(result, r.counts, r.status, r.projected_gradient_norm);
   }
-  result.counts.hessian_norm_estimate = estimate;
   T.apply(x, mu);
   result.equality_norm = (coarse_->G() * mu).norm();
   lambda = lambda_from_shifted(mu, lower_bounds, data.lambda_tilde);
@@ -385,27 +397,19 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
           return gradient_converged(x, gx.lpNorm<Eigen::Infinity>(), norm);
         },
         settings.monitor, M);
-    result.status = cg_result.status;
-    result.counts = cg_result.counts;
-    result.gradient_norm = cg_result.gradient_norm;
+    record(result, cg_result.counts, cg_result.status, cg_result.gradient_norm);
     lambda = mu + data.lambda_tilde;
   } else if (result.path == "mprgp") {
     const double norm = operator_norm(false, settings.norm_estimate, result.counts, result.norm_estimate_seconds);
-    MprgpSettings mprgp_settings = settings.mprgp;
-    mprgp_settings.max_hessian = settings.max_hessian;
     Vec x = Vec::Zero(m), g;
     const LinearOperator M = preconditioner_operator();
     const MprgpResult r = mprgp(
-        [&](const Vec& v, Vec& y) { F_->apply(v, y); }, data.b, lower_bounds, norm, x, g, false, mprgp_settings,
+        [&](const Vec& v, Vec& y) { F_->apply(v, y); }, data.b, lower_bounds, norm, x, g, false, mprgp_within(settings),
         [&](const Vec& xi, const Vec& gi, double norm_gp) {
           return gradient_converged(xi, projected_gradient_max(xi, gi, lower_bounds), norm_gp);
         },
         settings.monitor, M);
-    const int estimate = result.counts.hessian_norm_estimate;
-    result.counts = r.counts;
-    result.counts.hessian_norm_estimate = estimate;
-    result.status = r.status;
-    result.gradient_norm = r.projected_gradient_norm;
+    record(result, r.counts, r.status, r.projected_gradient_norm);
     lambda = lambda_from_shifted(x, lower_bounds, data.lambda_tilde);
   } else if (const double distance = coarse_->feasibility_residual(data.e, constraints_.equality_rows);
              distance > tolerance) {
@@ -429,22 +433,15 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     problem.lower = &lower_bounds;
     problem.hessian_norm = norm;
     problem.preconditioner = preconditioner_operator();
-    SmalbeSettings smalbe_settings = settings.smalbe;
-    smalbe_settings.max_hessian = settings.max_hessian;
-    smalbe_settings.inner = settings.mprgp;
     Vec mu = Vec::Zero(m);
-    const SmalbeResult r = smalbe(problem, mu, smalbe_settings,
+    const SmalbeResult r = smalbe(problem, mu, smalbe_within(settings),
         [&](const Vec& x, const Vec& gP, const Vec&) {
           result.equality_norm = (coarse_->G() * x).norm();  // G lambda - e = G mu
           if (settings.stopping == StoppingTest::relative_kkt) return kkt_stop(x, gP.lpNorm<Eigen::Infinity>(), result.equality_norm / eq_reference);
           return result.equality_norm <= tolerance * eq_reference && gP.norm() <= b_tol;
         },
         settings.monitor);
-    const int estimate = result.counts.hessian_norm_estimate;
-    result.counts = r.counts;
-    result.counts.hessian_norm_estimate = estimate;
-    result.status = r.status;
-    result.gradient_norm = r.projected_gradient_norm;
+    record(result, r.counts, r.status, r.projected_gradient_norm);
     result.equality_norm = (coarse_->G() * mu).norm();
     lambda = lambda_from_shifted(mu, lower_bounds, data.lambda_tilde);
   }
