@@ -33,7 +33,8 @@ TEST_P(MprgpManufactured, FindsTheKnownSolution) {
   // The estimate is within a few percent above ||A||_2 = condition.
   EXPECT_GT(norm.norm, 0.9 * c.condition);
   EXPECT_LT(norm.norm, 1.06 * c.condition);
-  for (MprgpExpansion expansion : {MprgpExpansion::fixed_step, MprgpExpansion::projected_cg}) {
+  for (MprgpExpansion expansion :
+       {MprgpExpansion::fixed_step, MprgpExpansion::projected_cg_restart, MprgpExpansion::projected_cg}) {
     Vec x = Vec::Zero(c.n), g;
     const double tol = 1e-10 * qp.b.norm();
     MprgpSettings settings;

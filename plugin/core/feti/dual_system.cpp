@@ -12,6 +12,12 @@
 namespace ffeti {
 namespace {
 
+/// The relative distance min ||G lambda - e|| / ||e|| over lambda_I >= 0 below which a scene
+/// counts as feasible whatever tol: MPRGP on G'G resolves it only to about 1e-11 (a feasible
+/// spanner gave 1.3e-11, depending on the expansion steps), so a smaller tol must not turn
+/// that round-off into "infeasible"; infeasible scenes are off by far more (docs/algorithms.md).
+constexpr double kFeasibilityResolution = 1e-8;
+
 /// Multipliers exactly at their bound are exactly zero in lambda (not round-off).
 Vec lambda_from_shifted(const Vec& mu, const Vec& lower, const Vec& lambda_tilde) {
   Vec lambda = mu + lambda_tilde;
@@ -412,7 +418,7 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     record(result, r.counts, r.status, r.projected_gradient_norm);
     lambda = lambda_from_shifted(x, lower_bounds, data.lambda_tilde);
   } else if (const double distance = coarse_->feasibility_residual(data.e, constraints_.equality_rows);
-             distance > tolerance) {
+             distance > std::max(tolerance, kFeasibilityResolution)) {
     // No multipliers of the right signs balance the loads on the floating bodies (Farkas):
     // no equilibrium, and SMALBE could only iterate until maxit. The least-norm lambda~
     // (G lambda~ = e, some contact multipliers negative) gives the field the recovery shows.

@@ -41,7 +41,9 @@ SmalbeVariant algorithm_from_name(const std::string& name) {
 
 MprgpExpansion expansion_from_name(const std::string& name) {
   return choose<MprgpExpansion>("expansion", name,
-                                {{"projected-cg", MprgpExpansion::projected_cg}, {"fixed", MprgpExpansion::fixed_step}});
+                                {{"projected-cg", MprgpExpansion::projected_cg},
+                                 {"projected-cg-restart", MprgpExpansion::projected_cg_restart},
+                                 {"fixed", MprgpExpansion::fixed_step}});
 }
 
 StoppingTest stop_from_name(const std::string& name) {

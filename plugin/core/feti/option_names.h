@@ -25,7 +25,7 @@ FetiVariant variant_from_name(const std::string& name);          ///< "feti1", "
 FactorKind factor_from_name(const std::string& name);            ///< "simplicial", "supernodal"
 bool dirichlet_preconditioner_from_name(const std::string& name);  ///< "none", "dirichlet"
 SmalbeVariant algorithm_from_name(const std::string& name);      ///< "smalbe-m", "seed"
-MprgpExpansion expansion_from_name(const std::string& name);     ///< "projected-cg", "fixed"
+MprgpExpansion expansion_from_name(const std::string& name);     ///< "projected-cg", "projected-cg-restart", "fixed"
 StoppingTest stop_from_name(const std::string& name);            ///< "kkt", "seed"
 CoarseConstraints coarse_from_name(const std::string& name);     ///< "free-rows", "penalty"
 

@@ -65,7 +65,7 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
   IterationCounts& counts = result.counts;
 
   auto multiply = [&](const Vec& v, Vec& Av) { A(v, Av); ++counts.hessian; };
-  Vec phi(n), beta(n), p(n), Ap(n), z(n), trial, trial_gradient;
+  Vec phi(n), beta(n), p(n), Ap(n), z(n), trial, trial_gradient, A_trial;
   // z = M phi on the free set, 0 on the active set (z = phi without a preconditioner).
   const auto precondition_in_face = [&]() -> const Vec& {
     if (!preconditioner) return phi;
@@ -85,9 +85,14 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
   free_gradient(x, g, lower, phi);
   p = precondition_in_face();
 
+  // True while the direction descends from one carried across a face change (expansion
+  // projected_cg): such a direction is not a Krylov direction of the current face, so a step
+  // along it must decrease f at least as much as the fixed step abar along the reduced free
+  // gradient is guaranteed to; a step that does not restarts CG from the free gradient.
+  bool continued = false;
   for (int iteration = 0;; ++iteration) {
     // Split the gradient; chopped gradient beta and reduced free gradient phit.
-    double beta_sq = 0, phit_phi = 0, gp_sq = 0;
+    double beta_sq = 0, phit_phi = 0, phit_sq = 0, gp_sq = 0;
     for (Eigen::Index i = 0; i < n; ++i) {
       const bool free = is_free(x[i], lower[i]);
       beta[i] = free ? 0.0 : std::min(g[i], 0.0);
@@ -95,6 +100,7 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
           (!free || lower[i] == kUnbounded) ? phi[i] : std::min((x[i] - lower[i]) / abar, phi[i]);
       beta_sq += beta[i] * beta[i];
       phit_phi += phit * phi[i];
+      phit_sq += phit * phit;
       gp_sq += phi[i] * phi[i] + beta[i] * beta[i];
     }
     result.projected_gradient_norm = std::sqrt(gp_sq);
@@ -116,19 +122,27 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
         result.status = SolveStatus::not_positive_definite;
         return result;
       }
-      const double a_cg = g.dot(p) / pAp;
+      const double g_p = g.dot(p);
+      const double a_cg = g_p / pAp;
       const double a_f = feasible_step(x, p, lower);
       if (a_cg <= a_f) {
+        // Exact line search decreases f by (g'p)^2 / (2 p'Ap); the fixed step's guarantee:
+        const bool guaranteed = 0.5 * a_cg * g_p >= abar * phit_phi - 0.5 * a_norm * abar * abar * phit_sq;
         x -= a_cg * p;   // x_{k+1} = x_k - a_cg p
         g -= a_cg * Ap;  // g = A x - b
         free_gradient(x, g, lower, phi);
         const Vec& direction = precondition_in_face();
-        p = direction - (direction.dot(Ap) / pAp) * p;  // A-conjugate to the previous direction
+        if (continued && !guaranteed) {
+          p = direction;
+          continued = false;
+        } else {
+          p = direction - (direction.dot(Ap) / pAp) * p;  // A-conjugate to the previous direction
+        }
         ++counts.cg;
       } else {
         ++counts.expansion;
         bool expanded = false;
-        if (settings.expansion == MprgpExpansion::projected_cg) {
+        if (settings.expansion != MprgpExpansion::fixed_step) {
           // The CG step taken in full and projected: it can add many bounds at once, where
           // the fixed step moves at most abar |phi| per step. Kept only if it decreases f at
           // least as much as the fixed-step expansion is guaranteed to (the bound below).
@@ -146,8 +160,8 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
             reduced_sq += phit * phit;
           }
           const double guaranteed = f_half - abar * phi_reduced + 0.5 * a_norm * abar * abar * reduced_sq;
-          multiply(trial, Ap);
-          trial_gradient = Ap - b;
+          multiply(trial, A_trial);
+          trial_gradient = A_trial - b;
           if (0.5 * trial.dot(trial_gradient - b) <= guaranteed) {
             x.swap(trial);
             g.swap(trial_gradient);
@@ -167,7 +181,19 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
           g = Ap - b;
         }
         free_gradient(x, g, lower, phi);
-        p = precondition_in_face();
+        const Vec& direction = precondition_in_face();
+        continued = false;
+        if (expanded && settings.expansion == MprgpExpansion::projected_cg) {
+          // The CG recurrence goes on in the new face: a restart from the free gradient after
+          // every expansion is steepest descent where the contact zone's edge moves a band per
+          // step (the large contact zone: 1.7 times the multiplications, docs/algorithms.md).
+          for (Eigen::Index i = 0; i < n; ++i)
+            if (!is_free(x[i], lower[i])) p[i] = 0.0;
+          trial = direction - (direction.dot(Ap) / pAp) * p;  // Ap = A p of the last direction
+          continued = trial.dot(g) > 0;                       // a descent direction, or restart
+        }
+        if (continued) p.swap(trial);
+        else p = direction;
       }
     } else {
       // Proportioning: release components of the active set along the chopped gradient.
@@ -182,6 +208,7 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
       g -= a * Ap;
       free_gradient(x, g, lower, phi);
       p = precondition_in_face();
+      continued = false;
       ++counts.proportioning;
     }
   }

@@ -8,9 +8,13 @@ namespace ffeti {
 
 /// How MPRGP expands the active set when a CG step would leave the feasible set.
 enum class MprgpExpansion {
-  fixed_step,    ///< the feasible part of the CG step, then a projected free-gradient step abar
-  projected_cg,  ///< the whole CG step projected, kept if it decreases f at least as much as
-                 ///< the fixed step is guaranteed to; otherwise the fixed step (Kruzik et al. 2020)
+  fixed_step,            ///< the feasible part of the CG step, then a projected free-gradient step abar
+  projected_cg_restart,  ///< the whole CG step projected, kept if it decreases f at least as much as
+                         ///< the fixed step is guaranteed to; otherwise the fixed step (Kruzik et al.
+                         ///< 2020); CG restarts from the free gradient after it
+  projected_cg,          ///< the same step, and after a kept one the CG recurrence goes on in the
+                         ///< new face (its last direction restricted to the free set), each step
+                         ///< until the next restart checked against the fixed step's decrease
 };
 
 struct MprgpSettings {
