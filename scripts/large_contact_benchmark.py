@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """A large contact zone (edp/large-contact.edp: two clamped membranes stacked, every interior
 node a contact couple, 9 subdomains whatever h, the MPRGP path): Hessian multiplications,
-time and accuracy over h, for the expansion step (fixed step against projected CG) and the
+time and accuracy over h, for the expansion step (fixed step against projected CG, with CG
+restarted or continued after it) and the
 stopping test (the seed's against the relative KKT one), side by side in one run. Accuracy
 is measured against a primal-dual active set solution of the unsplit problem (UMFPACK) up
 to n = 160, and against ffeti at tol = 1e-10 beyond. Writes docs/results/large-contact.md
@@ -19,11 +20,13 @@ SIZES = [int(n) for n in os.environ.get("FFETI_LARGE_CONTACT_SIZES", "40 80 160 
 LARGEST_REFERENCE = 160  # the active set reference takes 35 s at n = 160 and grows fast
 # (label, options of edp/large-contact.edp)
 CASES = [
-    ("default: projected CG expansion, KKT stop", {}),
-    ("projected CG expansion, seed's stop", {"stop": "seed"}),
-    ("fixed-step expansion, KKT stop", {"expansion": "fixed"}),
-    ("fixed-step expansion, seed's stop (before)", {"expansion": "fixed", "stop": "seed"}),
+    ("default: projected CG expansion, CG continued, KKT stop", {}),
+    ("the same, seed's stop", {"stop": "seed"}),
+    ("projected CG expansion, CG restarted (before)", {"expansion": "projected-cg-restart"}),
+    ("fixed-step expansion", {"expansion": "fixed"}),
+    ("fixed-step expansion, seed's stop (first default)", {"expansion": "fixed", "stop": "seed"}),
     ("default + Dirichlet preconditioner in face", {"preconditioner": "dirichlet"}),
+    ("CG restarted + Dirichlet preconditioner", {"expansion": "projected-cg-restart", "preconditioner": "dirichlet"}),
     ("glued: no contact, CG", {"glued": 1}),
     ("glued, Dirichlet preconditioner", {"glued": 1, "preconditioner": "dirichlet"}),
 ]
@@ -74,9 +77,11 @@ def main():
         "  violation (gluing jumps, penetration) of the primal solution; the seed's `||gP||_2 <= tol ||b||_2`",
         "  sums over all rows, so with thousands of couples it stops with violations 5 to 9 times tol.",
         "- *expansion*: the fixed step (`expansion=\"fixed\"`) moves each multiplier by at most",
-        "  abar |phi_i| per expansion; the projected CG step (default) takes the whole CG step and",
+        "  abar |phi_i| per expansion; the projected CG step takes the whole CG step and",
         "  projects it, kept if it decreases the cost at least as much as the fixed step is",
-        "  guaranteed to (otherwise the fixed step: \"fallbacks\").",
+        "  guaranteed to (otherwise the fixed step: \"fallbacks\"). After a kept one the default",
+        "  goes on with the CG recurrence in the new face (`expansion=\"projected-cg\"`); before, CG",
+        "  restarted from the free gradient (`expansion=\"projected-cg-restart\"`).",
         "",
         "Energy error: relative to the reference (a primal-dual active set solution of the unsplit",
         "problem up to n = 160, ffeti at tol 1e-10 beyond); negative means below the minimum, which",

@@ -1,5 +1,7 @@
 #include "feti/dual_operator.h"
 
+#include "feti/stopwatch.h"
+
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -30,6 +32,7 @@ DualOperator::DualOperator(const SubdomainList& subdomains, const std::vector<Lo
 }
 
 void DualOperator::apply(const Vec& x, Vec& y) const {
+  Stopwatch clock;
   const int count = static_cast<int>(subdomains_.size());
 #pragma omp parallel for schedule(dynamic) num_threads(threads_)
   for (int s = 0; s < count; ++s) {
@@ -42,9 +45,11 @@ void DualOperator::apply(const Vec& x, Vec& y) const {
     local_result_[i].noalias() = local_[i].B * local_solution_[i];     // B_s K_s^+ B_s' x
   }
   sum_local_results(y);
+  application_seconds_ += clock.seconds();
 }
 
 void DualOperator::apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
+  Stopwatch clock;
   const int count = static_cast<int>(subdomains_.size());
   block_gathered_.resize(subdomains_.size()), block_rhs_.resize(subdomains_.size());
   block_solution_.resize(subdomains_.size()), block_result_.resize(subdomains_.size());
@@ -70,6 +75,7 @@ void DualOperator::apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
     sum_.sum(flat_, column);
     y.col(j) = column;
   }
+  application_seconds_ += clock.seconds();
 }
 
 void DualOperator::apply_B_pseudo_inverse(const std::vector<Vec>& v, Vec& y) const {

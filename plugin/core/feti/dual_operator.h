@@ -35,6 +35,10 @@ class DualOperator {
   /// y = B u for per-subdomain vectors u_s.
   void apply_B(const std::vector<Vec>& u, Vec& y) const;
 
+  /// Wall-clock seconds spent in apply() (both forms) since construction: a solve's share
+  /// of its time that is the dual operator itself, apart from the vector and coarse work.
+  double application_seconds() const { return application_seconds_; }
+
   /// sum_s ||B_s' x||^2 over this rank's subdomains (callers sum over the ranks).
   double local_transpose_squared_norm(const Vec& x) const;
 
@@ -53,6 +57,7 @@ class DualOperator {
   mutable std::vector<Vec> gathered_, local_rhs_, local_solution_, local_result_;
   mutable std::vector<Eigen::MatrixXd> block_gathered_, block_rhs_, block_solution_, block_result_;
   mutable Vec column_;
+  mutable double application_seconds_ = 0;
   mutable std::vector<double> flat_;
 };
 

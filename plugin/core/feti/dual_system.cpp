@@ -132,12 +132,12 @@ DualData DualSystem::data(std::vector<Vec> loads, const Vec& c) const {
   return data;
 }
 
-double DualSystem::operator_norm(bool projected, const NormEstimateSettings& settings, IterationCounts& counts,
-                                 double& seconds) const {
+double DualSystem::operator_norm(bool projected, const NormEstimateSettings& settings, DualSolution& result) const {
   std::optional<double>& cached = projected ? norm_PFP_ : norm_F_;
   int& cost = projected ? norm_PFP_cost_ : norm_F_cost_;
   if (!cached) {
     Stopwatch clock;
+    const double operator_start = F_->application_seconds();
     NormEstimate estimate;
     if (projected) {
       estimate = estimate_norm([&](const Vec& x, Vec& y) { apply_PFP(x, y); }, rows(), settings,
@@ -147,9 +147,10 @@ double DualSystem::operator_norm(bool projected, const NormEstimateSettings& set
     }
     cached = estimate.norm;
     cost = estimate.multiplications;
-    seconds = clock.seconds();
+    result.norm_estimate_seconds = clock.seconds();
+    result.operator_seconds -= F_->application_seconds() - operator_start;  // the estimate's, not the solve's
   }
-  counts.hessian_norm_estimate += cost;
+  result.counts.hessian_norm_estimate += cost;
   return *cached;
 }
 
@@ -241,6 +242,7 @@ std::vector<DualSolution> DualSystem::solve(const std::vector<DualData>& data,
   CgSettings cg;
   cg.max_hessian = settings.max_hessian;
   Stopwatch solve_clock;
+  const double operator_start = F_->application_seconds();
   const std::vector<CgResult> cg_results = conjugate_gradient_block(
       [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) {
         if (coarse_) apply_PFP(x, y);
@@ -248,7 +250,9 @@ std::vector<DualSolution> DualSystem::solve(const std::vector<DualData>& data,
       },
       b, mu, g, cg, stop);
   const double seconds = solve_clock.seconds() / static_cast<double>(data.size());
+  const double operator_seconds = (F_->application_seconds() - operator_start) / static_cast<double>(data.size());
   for (size_t j = 0; j < data.size(); ++j) {
+    results[j].operator_seconds = operator_seconds;
     results[j].status = cg_results[j].status;
     results[j].counts = cg_results[j].counts;
     results[j].gradient_norm = cg_results[j].gradient_norm;
@@ -288,10 +292,12 @@ void DualSystem::solve_by_free_rows(const DualData& data, const DualSolveSetting
   };
   if (!norm_reduced_) {
     Stopwatch clock;
+    const double operator_start = F_->application_seconds();
     const NormEstimate estimate = estimate_norm(reduced, m, settings.norm_estimate);
     norm_reduced_ = estimate.norm;
     norm_reduced_cost_ = estimate.multiplications;
     result.norm_estimate_seconds = clock.seconds();
+    result.operator_seconds -= F_->application_seconds() - operator_start;  // the estimate's, not the solve's
   }
   result.counts.hessian_norm_estimate += norm_reduced_cost_;
   const double norm = *norm_reduced_;
@@ -356,6 +362,7 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
   const int m = rows();
   const double tolerance = settings.tolerance;
   Stopwatch solve_clock;
+  const double operator_start = F_->application_seconds();
 
   if (result.path == "cholesky") {
     result.status = SolveStatus::converged;
@@ -406,7 +413,7 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     record(result, cg_result.counts, cg_result.status, cg_result.gradient_norm);
     lambda = mu + data.lambda_tilde;
   } else if (result.path == "mprgp") {
-    const double norm = operator_norm(false, settings.norm_estimate, result.counts, result.norm_estimate_seconds);
+    const double norm = operator_norm(false, settings.norm_estimate, result);
     Vec x = Vec::Zero(m), g;
     const LinearOperator M = preconditioner_operator();
     const MprgpResult r = mprgp(
@@ -428,7 +435,7 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
   } else if (settings.coarse_constraints == CoarseConstraints::free_rows) {
     solve_by_free_rows(data, settings, lower_bounds, kkt_stop, result, lambda);
   } else {  // smalbe
-    const double norm = operator_norm(true, settings.norm_estimate, result.counts, result.norm_estimate_seconds);
+    const double norm = operator_norm(true, settings.norm_estimate, result);
     const double eq_reference =
         result.equality_reference > 0 ? result.equality_reference : result.gradient_reference / norm;
     result.equality_reference = eq_reference;
@@ -454,6 +461,7 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
   result.violation = kkt_stop.measure();
   result.scale_evaluations = kkt_stop.evaluations();
   result.solve_seconds = solve_clock.seconds() - result.norm_estimate_seconds - result.projector_seconds;
+  result.operator_seconds += F_->application_seconds() - operator_start;
   recover(data, std::move(lambda), result);
   return result;
 }

@@ -75,6 +75,7 @@ struct DualSolution {
   std::vector<Vec> u;            ///< primal solution per subdomain of this rank
   double norm_estimate_seconds = 0, solve_seconds = 0, recovery_seconds = 0;  ///< this rank's
   double projector_seconds = 0;  ///< building T of coarse "free-rows" (first solve of a system only)
+  double operator_seconds = 0;   ///< the part of solve_seconds spent applying F (this rank's)
 };
 
 class DualSystem {
@@ -117,8 +118,7 @@ class DualSystem {
   std::vector<DualSolution> solve(const std::vector<DualData>& data, const DualSolveSettings& settings) const;
 
  private:
-  double operator_norm(bool projected, const NormEstimateSettings& settings, IterationCounts& counts,
-                       double& seconds) const;
+  double operator_norm(bool projected, const NormEstimateSettings& settings, DualSolution& result) const;
   void apply_PFP(const Vec& x, Vec& y) const;  // the projected dual operator, on reused buffers
   void apply_PFP(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const;
   DualSolution prepared(const DualData& data, const DualSolveSettings& settings) const;  // path, references

@@ -31,6 +31,7 @@ struct FetiSetupSettings {
 struct PhaseTimes {  ///< wall-clock seconds; over several ranks, the slowest rank's
   double constraints = 0, factorization = 0, coarse_space = 0, dual_data = 0;
   double norm_estimate = 0, free_rows = 0, solve = 0, recovery = 0, kkt = 0;
+  double dual_operator = 0;  ///< the part of solve spent applying F
 };
 
 struct FetiResult {

@@ -56,6 +56,7 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
       {"time_norm_estimate", result->times.norm_estimate},
       {"time_free_rows", result->times.free_rows},
       {"time_solve", result->times.solve},
+      {"time_dual_operator", result->times.dual_operator},
       {"time_recovery", result->times.recovery},
       {"time_kkt", result->times.kkt},
   };
