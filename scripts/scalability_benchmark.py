@@ -59,7 +59,7 @@ def main():
         "(`coarse=\"penalty\"`, SMALBE-M on every subdomain's balance, M0 = 100 ||A||), with MPRGP's",
         "conjugate gradients restarted after every expansion as they were then; \"CG restarted after",
         "expansions (before)\" is the free-rows default before MPRGP went on with the CG recurrence",
-        "after a projected expansion (`expansion=\"projected-cg-restart\"`). Hessian"
+        "after a projected expansion (`expansion=\"projected-cg-restart\"`). Hessian",
         "multiplications count every application of F in the solve (the norm estimate's apart);",
         "with the preconditioner each CG step also applies it (\"precond.\": one K_ii solve per",
         "subdomain, about the cost of F; in face on the contact path: MPRGP's conjugate gradient",
