@@ -265,8 +265,8 @@ class FetiSetup : public E_F0mps {
     settings.variant = variant_from_name(optional_string(nargs[kVariant], stack, default_variant_name(vector_field)));
     settings.factor = factor_from_name(optional_string(nargs[kFactor], stack, option_defaults::factor));
     settings.threads = checked_threads(optional_int(nargs[kThreads], stack, 0));
-    settings.dirichlet_preconditioner =
-        dirichlet_preconditioner_from_name(optional_string(nargs[kPreconditioner], stack, option_defaults::preconditioner));
+    settings.preconditioner =
+        preconditioner_from_name(optional_string(nargs[kPreconditioner], stack, option_defaults::preconditioner));
     return settings;
   }
 };

@@ -303,8 +303,8 @@ FetiSetupSettings setup_settings(const SolverSpec& s, bool vector_field) {
   settings.variant = variant_from_name(s.variant.value_or(default_variant_name(vector_field)));
   settings.factor = factor_from_name(s.factor.value_or(option_defaults::factor));
   settings.threads = checked_threads(s.threads.value_or(0));
-  settings.dirichlet_preconditioner =
-      dirichlet_preconditioner_from_name(s.preconditioner.value_or(option_defaults::preconditioner));
+  settings.preconditioner =
+      preconditioner_from_name(s.preconditioner.value_or(option_defaults::preconditioner));
   return settings;
 }
 

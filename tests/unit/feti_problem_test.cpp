@@ -3,6 +3,7 @@
 #include "feti/errors.h"
 #include "feti/feti_problem.h"
 #include "feti/kernel.h"
+#include "feti/option_names.h"
 #include "membrane_model.h"
 
 #include <Eigen/Dense>
@@ -15,13 +16,13 @@ namespace ffeti {
 namespace {
 
 FetiProblem membrane_problem(const test::MembraneOptions& o, FetiVariant variant, int threads = 0,
-                             bool dirichlet_preconditioner = false) {
+                             DualPreconditioner preconditioner = DualPreconditioner::none) {
   auto subs = test::membrane_subdomains(o);
   ContactInput contact = o.with_contact ? test::membrane_contact(subs) : ContactInput{};
   FetiSetupSettings setup;
   setup.variant = variant;
   setup.threads = threads;
-  setup.dirichlet_preconditioner = dirichlet_preconditioner;
+  setup.preconditioner = preconditioner;
   return FetiProblem(std::move(subs), contact, setup);
 }
 
@@ -175,17 +176,19 @@ TEST(FetiProblem, MembraneMatchesMonolithicActiveSetReference) {
   }
 }
 
-TEST(FetiProblem, DirichletPreconditionerGivesTheSameSolutionInFewerSteps) {
+TEST(FetiProblem, PreconditionersGiveTheSameSolutionInFewerSteps) {
   // Both membranes fixed, no contact: glued subdomains, projected CG (FETI-1) and CG on the
-  // Dirichlet rows too (Total FETI), 4 x 4 subdomains per body with cross points.
+  // Dirichlet rows too (Total FETI), 4 x 4 subdomains per body with cross points. Dirichlet:
+  // fewer than half the steps; lumped: fewer.
   test::MembraneOptions glued = test::membrane_options(64, 4);
   glued.with_contact = false;
   glued.fix_right_body = true;
-  for (FetiVariant variant : {FetiVariant::feti1, FetiVariant::tfeti}) {
+  for (FetiVariant variant : {FetiVariant::feti1, FetiVariant::tfeti})
+  for (DualPreconditioner kind : {DualPreconditioner::dirichlet, DualPreconditioner::lumped}) {
     DualSolveSettings settings;
     settings.tolerance = 1e-10;
     const FetiProblem plain = membrane_problem(glued, variant);
-    const FetiProblem preconditioned = membrane_problem(glued, variant, 0, true);
+    const FetiProblem preconditioned = membrane_problem(glued, variant, 0, kind);
     const FetiResult a = plain.solve(settings), b = preconditioned.solve(settings);
     ASSERT_EQ(a.status, SolveStatus::converged);
     ASSERT_EQ(b.status, SolveStatus::converged);
@@ -198,21 +201,23 @@ TEST(FetiProblem, DirichletPreconditionerGivesTheSameSolutionInFewerSteps) {
     }
     EXPECT_LT(difference, 1e-8 * size);
     EXPECT_LT(b.kkt.max(), 1e-8);
-    EXPECT_LT(2 * b.counts.cg, a.counts.cg) << "plain " << a.counts.cg << ", preconditioned " << b.counts.cg;
+    EXPECT_LT((kind == DualPreconditioner::dirichlet ? 2 : 1) * b.counts.cg, a.counts.cg)
+        << preconditioner_name(kind) << ": plain " << a.counts.cg << ", preconditioned " << b.counts.cg;
   }
 }
 
-TEST(FetiProblem, DirichletPreconditionerInFaceKeepsTheContactSolution) {
+TEST(FetiProblem, PreconditionersInFaceKeepTheContactSolution) {
   // The membranes with contact: SMALBE-M (FETI-1, 4 x 4 subdomains per body, a floating
   // membrane) and MPRGP (one subdomain per body, both fixed: nothing floats),
-  // preconditioned in face against unpreconditioned.
+  // preconditioned in face (Dirichlet, lumped) against unpreconditioned.
+  for (DualPreconditioner kind : {DualPreconditioner::dirichlet, DualPreconditioner::lumped})
   for (bool fix_right : {false, true}) {
     test::MembraneOptions o = test::membrane_options(64, fix_right ? 1 : 4);
     o.fix_right_body = fix_right;
     DualSolveSettings settings;
     settings.tolerance = 1e-10;
     const FetiResult a = membrane_problem(o, FetiVariant::feti1).solve(settings);
-    const FetiResult b = membrane_problem(o, FetiVariant::feti1, 0, true).solve(settings);
+    const FetiResult b = membrane_problem(o, FetiVariant::feti1, 0, kind).solve(settings);
     ASSERT_EQ(a.status, SolveStatus::converged);
     ASSERT_EQ(b.status, SolveStatus::converged);
     EXPECT_EQ(b.path, fix_right ? "mprgp" : "smalbe");
@@ -221,7 +226,8 @@ TEST(FetiProblem, DirichletPreconditionerInFaceKeepsTheContactSolution) {
     EXPECT_LT(b.kkt.max(), 1e-7);
     if (fix_right) continue;  // the fixed membranes part at once: nothing to iterate
     EXPECT_GT(b.counts.preconditioner, 0);
-    EXPECT_LT(b.counts.hessian, a.counts.hessian) << "plain " << a.counts.hessian << ", in face " << b.counts.hessian;
+    EXPECT_LT(b.counts.hessian, a.counts.hessian)
+        << preconditioner_name(kind) << ": plain " << a.counts.hessian << ", in face " << b.counts.hessian;
   }
 }
 

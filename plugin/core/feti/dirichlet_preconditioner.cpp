@@ -58,7 +58,7 @@ struct DirichletPreconditioner::Block {
 DirichletPreconditioner::DirichletPreconditioner(const std::vector<SparseMatrix>& operator_matrices,
                                                  const std::vector<LocalConstraints>& local,
                                                  const Constraints& constraints, const SubdomainSum& sum,
-                                                 int threads)
+                                                 int threads, bool lumped)
     : local_(local), sum_(sum), threads_(resolve_thread_count(threads)) {
   // B has full row rank, so B B' is positive definite (block diagonal: rows meet only at
   // the nodes they share).
@@ -77,6 +77,7 @@ DirichletPreconditioner::DirichletPreconditioner(const std::vector<SparseMatrix>
       if (SparseMatrix::InnerIterator(local[k].B, j)) constrained[static_cast<size_t>(j)] = 1;
     for (int i = 0; i < K.rows(); ++i) (constrained[static_cast<size_t>(i)] ? block->boundary : block->interior).push_back(i);
     block->Kbb = submatrix(K, block->boundary, block->boundary);
+    if (lumped) block->interior.clear();  // S_s ~ K_bb: the K_ii correction is what it leaves out
     block->Kib = submatrix(K, block->interior, block->boundary);
     // K_ii is K with every constrained dof fixed: regular whenever some dof is constrained.
     if (!block->interior.empty() && block->Kii.factorize(submatrix(K, block->interior, block->interior)) >= 0)

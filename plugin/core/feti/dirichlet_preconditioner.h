@@ -8,6 +8,7 @@
 // projected CG takes a number of iterations bounded in h and in the number of subdomains
 // (docs/results/scalability.md). Costs one more factorization per subdomain (K_ii) and per
 // application one K_ii solve per subdomain, as much as an application of F.
+// The lumped variant keeps S_s ~ K_bb: no factorization, a sparse product per application.
 #pragma once
 
 #include "feti/cholmod_factor.h"
@@ -19,14 +20,18 @@
 
 namespace ffeti {
 
+/// The preconditioner of the dual problem a set-up asks for (fetiSetup's `preconditioner`).
+enum class DualPreconditioner { none, lumped, dirichlet };
+
 class DirichletPreconditioner {
  public:
   /// `operator_matrices[k]`: the K of local subdomain k as the dual operator sees it;
   /// `local[k]` its constraint block; `constraints` all rows (every rank's copy); `sum` the
-  /// ordered sum over subdomains of F. Keeps references to `local` and `sum`.
+  /// ordered sum over subdomains of F; `lumped`: S_s replaced by K_bb (no K_ii). Keeps
+  /// references to `local` and `sum`.
   DirichletPreconditioner(const std::vector<SparseMatrix>& operator_matrices,
                           const std::vector<LocalConstraints>& local, const Constraints& constraints,
-                          const SubdomainSum& sum, int threads);
+                          const SubdomainSum& sum, int threads, bool lumped);
   ~DirichletPreconditioner();
 
   /// y = M^{-1} x. Collective.

@@ -92,8 +92,15 @@ DualSystem::DualSystem(const SubdomainList& subdomains, const std::vector<int>& 
     coarse_ = std::make_unique<CoarseSpace>(subdomains_, local_, global_ids, constraints_.rows(), bodies, comm);
 }
 
-void DualSystem::use_dirichlet_preconditioner(const std::vector<SparseMatrix>& operator_matrices, int threads) {
-  preconditioner_ = std::make_unique<DirichletPreconditioner>(operator_matrices, local_, constraints_, *sum_, threads);
+void DualSystem::use_preconditioner(DualPreconditioner kind, const std::vector<SparseMatrix>& operator_matrices,
+                                    int threads) {
+  preconditioner_kind_ = kind;
+  if (kind == DualPreconditioner::none) {
+    preconditioner_.reset();
+    return;
+  }
+  preconditioner_ = std::make_unique<DirichletPreconditioner>(operator_matrices, local_, constraints_, *sum_, threads,
+                                                              kind == DualPreconditioner::lumped);
 }
 
 LinearOperator DualSystem::preconditioner_operator() const {

@@ -96,12 +96,13 @@ class DualSystem {
   /// The solver path the constraints call for (ALGORITHMS.md section 6).
   std::string path() const;
 
-  /// Preconditions the CG paths with the Dirichlet preconditioner built from
-  /// `operator_matrices` (this rank's K as the dual operator sees them): one more
-  /// factorization per subdomain. The MPRGP and SMALBE paths stay unpreconditioned (their
-  /// bound constraints need a preconditioner that acts on the free set alone). Collective.
-  void use_dirichlet_preconditioner(const std::vector<SparseMatrix>& operator_matrices, int threads);
+  /// Preconditions every path with the Dirichlet (or lumped) preconditioner built from
+  /// `operator_matrices` (this rank's K as the dual operator sees them): CG and projected CG
+  /// directly, MPRGP and SMALBE in face (docs/algorithms.md). The Dirichlet one costs one
+  /// more factorization per subdomain, the lumped one none. Collective.
+  void use_preconditioner(DualPreconditioner kind, const std::vector<SparseMatrix>& operator_matrices, int threads);
   bool preconditioned() const { return preconditioner_ != nullptr; }
+  DualPreconditioner preconditioner_kind() const { return preconditioner_kind_; }
 
   /// The dual right-hand side for loads `loads` (this rank's) and constraint right-hand
   /// side `c` (all rows). Collective: two dual operator applications.
@@ -137,6 +138,7 @@ class DualSystem {
   std::unique_ptr<DualOperator> F_;
   std::unique_ptr<CoarseSpace> coarse_;
   std::unique_ptr<DirichletPreconditioner> preconditioner_;
+  DualPreconditioner preconditioner_kind_ = DualPreconditioner::none;
   mutable Vec projected_, applied_;                   // buffers of apply_PFP and the preconditioner
   mutable Eigen::MatrixXd block_projected_, block_applied_;  // of the block apply_PFP
   mutable std::optional<double> norm_F_, norm_PFP_;  // cached: the same F for every load case

@@ -93,14 +93,14 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   dual_ = std::make_unique<DualSystem>(subdomains_, global_ids_, owner, bodies, std::move(constraints),
                                        settings_.threads, comm);
   (dual_->coarse() ? setup_times_.coarse_space : setup_times_.constraints) += coarse_clock.seconds();
-  if (settings_.dirichlet_preconditioner) {
+  if (settings_.preconditioner != DualPreconditioner::none) {
     Stopwatch preconditioner_clock;
     std::vector<SparseMatrix> operator_matrices;
     for (const SubdomainInput& in : inputs_)
       operator_matrices.push_back(settings_.variant == FetiVariant::feti1 && !in.dirichlet_dofs.empty()
                                       ? eliminate_dirichlet(in.K, in.dirichlet_dofs)
                                       : in.K);
-    dual_->use_dirichlet_preconditioner(operator_matrices, settings_.threads);
+    dual_->use_preconditioner(settings_.preconditioner, operator_matrices, settings_.threads);
     setup_times_.factorization += preconditioner_clock.seconds();
   }
   compute_dual_data();

@@ -21,11 +21,10 @@ struct FetiSetupSettings {
   /// OpenMP threads over subdomains; 0: the runtime default. Supernodal factors run on one
   /// thread: they call BLAS, and Debian's serial OpenBLAS is not safe to call concurrently.
   int threads = 0;
-  /// Dirichlet preconditioner: projected CG (iterations bounded in h and in the number of
-  /// subdomains) and MPRGP preconditioned in face, for one more factorization per subdomain
-  /// (docs/results/scalability.md). Off by default: on the contact scenes measured it saves
-  /// iterations, not time.
-  bool dirichlet_preconditioner = false;
+  /// Preconditioner of the dual problem (docs/algorithms.md): Dirichlet (iterations bounded
+  /// in h and in the number of subdomains, one more factorization per subdomain) or lumped
+  /// (no factorization); projected CG directly, MPRGP in face (docs/results/scalability.md).
+  DualPreconditioner preconditioner = DualPreconditioner::none;
 };
 
 struct PhaseTimes {  ///< wall-clock seconds; over several ranks, the slowest rank's

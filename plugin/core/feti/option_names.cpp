@@ -30,8 +30,20 @@ FactorKind factor_from_name(const std::string& name) {
                             {{"simplicial", FactorKind::simplicial}, {"supernodal", FactorKind::supernodal}});
 }
 
-bool dirichlet_preconditioner_from_name(const std::string& name) {
-  return choose<bool>("preconditioner", name, {{"none", false}, {"dirichlet", true}});
+DualPreconditioner preconditioner_from_name(const std::string& name) {
+  return choose<DualPreconditioner>("preconditioner", name,
+                                    {{"none", DualPreconditioner::none},
+                                     {"lumped", DualPreconditioner::lumped},
+                                     {"dirichlet", DualPreconditioner::dirichlet}});
+}
+
+std::string preconditioner_name(DualPreconditioner kind) {
+  switch (kind) {
+    case DualPreconditioner::lumped: return "lumped";
+    case DualPreconditioner::dirichlet: return "dirichlet";
+    case DualPreconditioner::none: break;
+  }
+  return "none";
 }
 
 SmalbeVariant algorithm_from_name(const std::string& name) {

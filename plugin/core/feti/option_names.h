@@ -23,7 +23,8 @@ inline constexpr const char* coarse = "free-rows";
 /// Each throws InputError("<option>: \"<word>\" is not one of ...") for an unknown word.
 FetiVariant variant_from_name(const std::string& name);          ///< "feti1", "tfeti"
 FactorKind factor_from_name(const std::string& name);            ///< "simplicial", "supernodal"
-bool dirichlet_preconditioner_from_name(const std::string& name);  ///< "none", "dirichlet"
+DualPreconditioner preconditioner_from_name(const std::string& name);  ///< "none", "lumped", "dirichlet"
+std::string preconditioner_name(DualPreconditioner kind);
 SmalbeVariant algorithm_from_name(const std::string& name);      ///< "smalbe-m", "seed"
 MprgpExpansion expansion_from_name(const std::string& name);     ///< "projected-cg", "projected-cg-restart", "fixed"
 StoppingTest stop_from_name(const std::string& name);            ///< "kkt", "seed"

@@ -1,5 +1,7 @@
 #include "feti/statistics.h"
 
+#include "feti/option_names.h"
+
 #include <sstream>
 
 namespace ffeti {
@@ -89,7 +91,7 @@ std::string format_report(const FetiProblem& problem, const FetiResult* result) 
   out.precision(10);
   out << "variant=" << (problem.variant() == FetiVariant::feti1 ? "feti1" : "tfeti")
       << " path=" << problem.path()
-      << " preconditioner=" << (problem.dual().preconditioned() ? "dirichlet" : "none");
+      << " preconditioner=" << preconditioner_name(problem.dual().preconditioner_kind());
   if (result) out << " status_name=" << to_string(result->status) << " phases=" << result->phases;
   for (const auto& [key, value] : statistics(problem, result)) out << ' ' << key << '=' << value;
   return out.str();
