@@ -55,14 +55,14 @@ struct DirichletPreconditioner::Block {
   mutable Vec gathered, xb, t, ti, yb, full;  // buffers of apply()
 };
 
-DirichletPreconditioner::DirichletPreconditioner(const std::vector<SparseMatrix>& operator_matrices,
+DirichletPreconditioner::DirichletPreconditioner(const std::vector<const SparseMatrix*>& operator_matrices,
                                                  const std::vector<LocalConstraints>& local,
                                                  const Constraints& constraints, const SubdomainSum& sum,
                                                  int threads, bool lumped)
     : local_(local), sum_(sum), threads_(resolve_thread_count(threads)) {
   // B has full row rank, so B B' is positive definite (block diagonal: rows meet only at
   // the nodes they share).
-  if (constraints.rows() > 0 && row_gram_.factorize(row_gram(constraints)) >= 0)
+  if (constraints.rows() > 0 && (row_gram_.compute(row_gram(constraints)), row_gram_.info() != Eigen::Success))
     throw InputError("constraints: B B' is not positive definite (Dirichlet preconditioner)");
   blocks_.resize(local.size());
   results_.resize(local.size());
@@ -71,7 +71,7 @@ DirichletPreconditioner::DirichletPreconditioner(const std::vector<SparseMatrix>
   for (int s = 0; s < count; ++s) {
     const auto k = static_cast<size_t>(s);
     auto block = std::make_unique<Block>();
-    const SparseMatrix& K = operator_matrices[k];
+    const SparseMatrix& K = *operator_matrices[k];
     std::vector<char> constrained(static_cast<size_t>(K.rows()), 0);
     for (int j = 0; j < local[k].B.outerSize(); ++j)
       if (SparseMatrix::InnerIterator(local[k].B, j)) constrained[static_cast<size_t>(j)] = 1;
@@ -90,7 +90,7 @@ DirichletPreconditioner::DirichletPreconditioner(const std::vector<SparseMatrix>
 DirichletPreconditioner::~DirichletPreconditioner() = default;
 
 void DirichletPreconditioner::apply(const Vec& x, Vec& y) const {
-  row_gram_.solve(x, scaled_);  // (B B')^{-1} x
+  scaled_ = row_gram_.solve(x);  // (B B')^{-1} x
   const int count = static_cast<int>(local_.size());
 #pragma omp parallel for schedule(dynamic) num_threads(threads_)
   for (int s = 0; s < count; ++s) {
@@ -117,7 +117,7 @@ void DirichletPreconditioner::apply(const Vec& x, Vec& y) const {
   for (size_t k = 0; k < local_.size(); ++k)
     flat_.insert(flat_.end(), results_[k].data(), results_[k].data() + results_[k].size());
   sum_.sum(flat_, summed_);
-  row_gram_.solve(summed_, y);
+  y = row_gram_.solve(summed_);
 }
 
 }  // namespace ffeti

@@ -15,6 +15,8 @@
 #include "feti/constraints.h"
 #include "parallel/subdomain_sum.h"
 
+#include <Eigen/SparseCholesky>
+
 #include <memory>
 #include <vector>
 
@@ -29,7 +31,7 @@ class DirichletPreconditioner {
   /// `local[k]` its constraint block; `constraints` all rows (every rank's copy); `sum` the
   /// ordered sum over subdomains of F; `lumped`: S_s replaced by K_bb (no K_ii). Keeps
   /// references to `local` and `sum`.
-  DirichletPreconditioner(const std::vector<SparseMatrix>& operator_matrices,
+  DirichletPreconditioner(const std::vector<const SparseMatrix*>& operator_matrices,
                           const std::vector<LocalConstraints>& local, const Constraints& constraints,
                           const SubdomainSum& sum, int threads, bool lumped);
   ~DirichletPreconditioner();
@@ -42,7 +44,9 @@ class DirichletPreconditioner {
   const std::vector<LocalConstraints>& local_;
   const SubdomainSum& sum_;
   int threads_;
-  CholmodFactor row_gram_;  // of B B'
+  // B B' has a block of a few rows per node (and per contact couple): Eigen's simplicial
+  // Cholesky is enough, and it is not a subdomain factorization (fetiFactorizations).
+  Eigen::SimplicialLLT<SparseMatrix> row_gram_;
   std::vector<std::unique_ptr<Block>> blocks_;
   mutable Vec scaled_, summed_;
   mutable std::vector<Vec> results_;

@@ -92,7 +92,7 @@ DualSystem::DualSystem(const SubdomainList& subdomains, const std::vector<int>& 
     coarse_ = std::make_unique<CoarseSpace>(subdomains_, local_, global_ids, constraints_.rows(), bodies, comm);
 }
 
-void DualSystem::use_preconditioner(DualPreconditioner kind, const std::vector<SparseMatrix>& operator_matrices,
+void DualSystem::use_preconditioner(DualPreconditioner kind, const std::vector<const SparseMatrix*>& operator_matrices,
                                     int threads) {
   preconditioner_kind_ = kind;
   if (kind == DualPreconditioner::none) {

@@ -100,7 +100,8 @@ class DualSystem {
   /// `operator_matrices` (this rank's K as the dual operator sees them): CG and projected CG
   /// directly, MPRGP and SMALBE in face (docs/algorithms.md). The Dirichlet one costs one
   /// more factorization per subdomain, the lumped one none. Collective.
-  void use_preconditioner(DualPreconditioner kind, const std::vector<SparseMatrix>& operator_matrices, int threads);
+  void use_preconditioner(DualPreconditioner kind, const std::vector<const SparseMatrix*>& operator_matrices,
+                          int threads);
   bool preconditioned() const { return preconditioner_ != nullptr; }
   DualPreconditioner preconditioner_kind() const { return preconditioner_kind_; }
 

@@ -95,11 +95,19 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   (dual_->coarse() ? setup_times_.coarse_space : setup_times_.constraints) += coarse_clock.seconds();
   if (settings_.preconditioner != DualPreconditioner::none) {
     Stopwatch preconditioner_clock;
-    std::vector<SparseMatrix> operator_matrices;
-    for (const SubdomainInput& in : inputs_)
-      operator_matrices.push_back(settings_.variant == FetiVariant::feti1 && !in.dirichlet_dofs.empty()
-                                      ? eliminate_dirichlet(in.K, in.dirichlet_dofs)
-                                      : in.K);
+    // The K the dual operator sees, copied only where FETI-1 eliminates Dirichlet dofs (a
+    // copy of every K cost as much as the lumped preconditioner's whole set-up).
+    std::vector<SparseMatrix> eliminated;
+    eliminated.reserve(inputs_.size());  // the pointers below stay valid
+    std::vector<const SparseMatrix*> operator_matrices;
+    for (const SubdomainInput& in : inputs_) {
+      if (settings_.variant == FetiVariant::feti1 && !in.dirichlet_dofs.empty()) {
+        eliminated.push_back(eliminate_dirichlet(in.K, in.dirichlet_dofs));
+        operator_matrices.push_back(&eliminated.back());
+      } else {
+        operator_matrices.push_back(&in.K);
+      }
+    }
     dual_->use_preconditioner(settings_.preconditioner, operator_matrices, settings_.threads);
     setup_times_.factorization += preconditioner_clock.seconds();
   }

@@ -13,7 +13,7 @@ namespace ffeti {
 /// The defaults of the named options (the numeric ones are the settings structs' own).
 namespace option_defaults {
 inline constexpr const char* factor = "simplicial";
-inline constexpr const char* preconditioner = "none";
+inline constexpr const char* preconditioner = "lumped";
 inline constexpr const char* algorithm = "smalbe-m";
 inline constexpr const char* expansion = "projected-cg";
 inline constexpr const char* stop = "kkt";
