@@ -36,6 +36,7 @@ def main():
         ("Total FETI, SMALBE-M", model_problem(largest, variant="tfeti")),
         ("FETI-1, seed Algorithm 3.1", model_problem(largest, algorithm="seed")),
         ("FETI-1, SMALBE-M, the seed's stopping test", model_problem(largest, stop="seed")),
+        ("FETI-1, SMALBE-M, no preconditioner", model_problem(largest, preconditioner="none")),
         ("FETI-1, supernodal CHOLMOD (1 thread)", model_problem(largest, factor="supernodal")),
         ("FETI-1, 1 OpenMP thread", model_problem(largest, threads=1)),
     ]
