@@ -9,6 +9,7 @@
 #include "parallel/communicator.h"
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
 
 #include <vector>
 
@@ -58,7 +59,10 @@ class CoarseSpace {
   Eigen::SparseMatrix<double, Eigen::RowMajor, int> G_;
   std::vector<std::pair<int, int>> owner_;
   std::vector<std::pair<int, int>> local_rows_;  // (row of G, local subdomain index)
-  Eigen::LLT<Eigen::MatrixXd> GGt_;
+  // GG' couples the rigid modes of neighbouring subdomains only: sparse. Its dense factor
+  // made every projection cost O(dim^2), which at 2016 floating subdomains grew the time
+  // per dual operator application faster than the unknowns (docs/results/scalability.md).
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> GGt_;
   const SubdomainList& subdomains_;
   const Communicator& comm_;
 };

@@ -46,12 +46,22 @@ FreeRowProjector::FreeRowProjector(const RowMatrix& G, int free_columns) : G_(G)
   } else {
     W_.resize(r, 0);
   }
-  // A + s W W' is regular, acts as A on Im A and as s on Ker A; s of A's scale keeps it
-  // as well conditioned as A is on its range.
-  const double s = largest > 0 ? largest : 1.0;  // G_F = 0: every row of G is left to C
-  solver_.compute(A + s * W_ * W_.transpose());
-  if (r > 0 && (solver_.info() != Eigen::Success || solver_.rcond() < 1e-14))
-    throw std::runtime_error("FreeRowProjector: G_F G_F' + s W W' is singular");
+  // A^+ y for y in Im A (every use): delete the k rows and columns of the last pivots (the
+  // leading block of the pivoted factor is regular, and the deleted equations follow from
+  // the kept ones for such y), solve the rest by a sparse factor, then remove Ker A = Im W.
+  std::vector<char> kept(static_cast<size_t>(r), 1);
+  for (Eigen::Index i = rank; i < r; ++i) kept[static_cast<size_t>(pivot[static_cast<size_t>(i)] - 1)] = 0;
+  std::vector<Eigen::Triplet<double, int>> selection;
+  for (Eigen::Index i = 0, column = 0; i < r; ++i)
+    if (kept[static_cast<size_t>(i)]) selection.emplace_back(static_cast<int>(i), static_cast<int>(column++), 1.0);
+  keep_.resize(r, static_cast<Eigen::Index>(selection.size()));
+  keep_.setFromTriplets(selection.begin(), selection.end());
+  if (keep_.cols() > 0) {
+    const Eigen::SparseMatrix<double> A_sparse = G_F_ * G_F_.transpose();
+    solver_.compute(Eigen::SparseMatrix<double>(keep_.transpose() * A_sparse * keep_));
+    if (solver_.info() != Eigen::Success)
+      throw std::runtime_error("FreeRowProjector: G_F G_F' restricted to its pivots is singular");
+  }
 
   C_ = W_.transpose() * G;
   if (k > 0) {
@@ -65,29 +75,31 @@ void FreeRowProjector::remove_body_modes(Vec& v) const {
   if (W_.cols() > 0) v.noalias() -= W_ * (W_.transpose() * v);
 }
 
+Vec FreeRowProjector::pseudo_solve(const Vec& y) const {
+  Vec x = Vec::Zero(y.size());
+  if (keep_.cols() > 0) x = keep_ * solver_.solve(Vec(keep_.transpose() * y));
+  remove_body_modes(x);
+  return x;
+}
+
 void FreeRowProjector::apply(const Vec& x, Vec& y) const {
   y = x;
   if (G_.rows() == 0) return;
   Vec defect = G_ * x;
   remove_body_modes(defect);
-  const Vec z = solver_.solve(defect);
-  y.head(free_).noalias() -= G_F_.transpose() * z;
+  y.head(free_).noalias() -= G_F_.transpose() * pseudo_solve(defect);
 }
 
 void FreeRowProjector::apply_transpose(const Vec& x, Vec& y) const {
   y = x;
   if (G_.rows() == 0) return;
-  Vec z = solver_.solve(G_F_ * x.head(free_));
-  remove_body_modes(z);
-  y.noalias() -= G_.transpose() * z;
+  y.noalias() -= G_.transpose() * pseudo_solve(G_F_ * x.head(free_));
 }
 
 void FreeRowProjector::project_out_kernel(const Vec& x, Vec& y) const {
   y = x;
   if (G_.rows() == 0) return;
-  Vec z = solver_.solve(G_F_ * x.head(free_));
-  remove_body_modes(z);
-  y.head(free_).noalias() -= G_F_.transpose() * z;
+  y.head(free_).noalias() -= G_F_.transpose() * pseudo_solve(G_F_ * x.head(free_));
 }
 
 void FreeRowProjector::project_remaining_range(const Vec& x, Vec& y) const {

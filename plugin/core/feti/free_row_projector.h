@@ -16,6 +16,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
 
 namespace ffeti {
 
@@ -42,11 +43,15 @@ class FreeRowProjector {
 
  private:
   void remove_body_modes(Vec& v) const;  // v <- (I - W W') v
+  Vec pseudo_solve(const Vec& y) const;   // (G_F G_F')^+ y for y in Im G_F
 
   const RowMatrix& G_;
   RowMatrix G_F_;                         // the free columns of G
   Eigen::MatrixXd W_;                     // orthonormal basis of Ker G_F'
-  Eigen::LLT<Eigen::MatrixXd> solver_;    // of G_F G_F' + s W W': its inverse is (G_F G_F')^+ on Im G_F
+  // G_F G_F' with the k rows and columns of its last pivots removed (regular, sparse): a
+  // dense factor made each application O(r^2) in the r subdomain modes.
+  RowMatrix keep_;                        // r x rank: selects the kept rows
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> solver_;
   Eigen::MatrixXd C_;                     // W'G
   Eigen::LLT<Eigen::MatrixXd> solver_C_;  // of C C'
   Eigen::Index free_ = 0;
