@@ -2,6 +2,7 @@
 
 #include "feti/dual_operator.h"
 #include "feti/errors.h"
+#include "feti/stopwatch.h"
 
 #include <map>
 #include <string>
@@ -90,6 +91,7 @@ DirichletPreconditioner::DirichletPreconditioner(const std::vector<const SparseM
 DirichletPreconditioner::~DirichletPreconditioner() = default;
 
 void DirichletPreconditioner::apply(const Vec& x, Vec& y) const {
+  Stopwatch clock;
   scaled_ = row_gram_.solve(x);  // (B B')^{-1} x
   const int count = static_cast<int>(local_.size());
 #pragma omp parallel for schedule(dynamic) num_threads(threads_)
@@ -118,6 +120,7 @@ void DirichletPreconditioner::apply(const Vec& x, Vec& y) const {
     flat_.insert(flat_.end(), results_[k].data(), results_[k].data() + results_[k].size());
   sum_.sum(flat_, summed_);
   y = row_gram_.solve(summed_);
+  application_seconds_ += clock.seconds();
 }
 
 }  // namespace ffeti

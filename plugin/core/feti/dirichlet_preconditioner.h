@@ -38,6 +38,8 @@ class DirichletPreconditioner {
 
   /// y = M^{-1} x. Collective.
   void apply(const Vec& x, Vec& y) const;
+  /// Wall-clock seconds spent in apply so far.
+  double application_seconds() const { return application_seconds_; }
 
  private:
   struct Block;
@@ -51,6 +53,7 @@ class DirichletPreconditioner {
   mutable Vec scaled_, summed_;
   mutable std::vector<Vec> results_;
   mutable std::vector<double> flat_;
+  mutable double application_seconds_ = 0;
 };
 
 }  // namespace ffeti

@@ -191,6 +191,7 @@ DualSolution DualSystem::prepared(const DualData& data, const DualSolveSettings&
 }
 
 PrimalCheck DualSystem::primal_check(const DualData& data, const Vec& lambda) const {
+  Stopwatch clock;
   const std::vector<Vec> u = recover_primal(*F_, coarse_.get(), constraints_, data.loads, data.c, lambda);
   PrimalCheck check;
   for (const Vec& us : u)
@@ -218,6 +219,7 @@ PrimalCheck DualSystem::primal_check(const DualData& data, const Vec& lambda) co
     const double residual = coarse_->equilibrium_residual_norm(coarse_->G() * lambda - data.e);
     check.equilibrium = scale > 0 ? residual / scale : residual;
   }
+  check_seconds_ += clock.seconds();
   return check;
 }
 
@@ -370,6 +372,8 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
   const double tolerance = settings.tolerance;
   Stopwatch solve_clock;
   const double operator_start = F_->application_seconds();
+  const double preconditioner_start = preconditioner_ ? preconditioner_->application_seconds() : 0.0;
+  const double check_start = check_seconds_;
 
   if (result.path == "cholesky") {
     result.status = SolveStatus::converged;
@@ -469,6 +473,8 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
   result.scale_evaluations = kkt_stop.evaluations();
   result.solve_seconds = solve_clock.seconds() - result.norm_estimate_seconds - result.projector_seconds;
   result.operator_seconds += F_->application_seconds() - operator_start;
+  if (preconditioner_) result.preconditioner_seconds = preconditioner_->application_seconds() - preconditioner_start;
+  result.check_seconds = check_seconds_ - check_start;
   recover(data, std::move(lambda), result);
   return result;
 }

@@ -76,6 +76,8 @@ struct DualSolution {
   double norm_estimate_seconds = 0, solve_seconds = 0, recovery_seconds = 0;  ///< this rank's
   double projector_seconds = 0;  ///< building T of coarse "free-rows" (first solve of a system only)
   double operator_seconds = 0;   ///< the part of solve_seconds spent applying F (this rank's)
+  double preconditioner_seconds = 0;  ///< the part spent applying the preconditioner
+  double check_seconds = 0;      ///< the part spent in the stopping test's primal checks
 };
 
 class DualSystem {
@@ -147,6 +149,7 @@ class DualSystem {
   mutable std::unique_ptr<FreeRowProjector> free_rows_;
   mutable std::optional<double> norm_reduced_;  // of T'PFPT
   mutable int norm_reduced_cost_ = 0;
+  mutable double check_seconds_ = 0;  // spent in primal_check so far
 };
 
 }  // namespace ffeti

@@ -213,6 +213,8 @@ FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
   result.times.free_rows = dual.projector_seconds;
   result.times.solve = dual.solve_seconds;
   result.times.dual_operator = dual.operator_seconds;
+  result.times.preconditioner = dual.preconditioner_seconds;
+  result.times.primal_checks = dual.check_seconds;
   result.times.recovery = dual.recovery_seconds;
   result.phases = "constraints,factorization";
   if (dual_->coarse()) result.phases += ",coarse_space";
@@ -234,7 +236,8 @@ FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
   result.times.kkt = kkt_clock.seconds();
   gather_rank_statistics(result.times.norm_estimate + result.times.solve);
   PhaseTimes& t = result.times;  // the slowest rank's, by name (a positional list broke once a phase was added)
-  for (double* phase : {&t.norm_estimate, &t.free_rows, &t.solve, &t.dual_operator, &t.recovery, &t.kkt})
+  for (double* phase : {&t.norm_estimate, &t.free_rows, &t.solve, &t.dual_operator, &t.preconditioner, &t.primal_checks, &t.recovery,
+                         &t.kkt})
     *phase = comm_->max(*phase);
   return result;
 }

@@ -31,6 +31,8 @@ struct PhaseTimes {  ///< wall-clock seconds; over several ranks, the slowest ra
   double constraints = 0, factorization = 0, coarse_space = 0, dual_data = 0;
   double norm_estimate = 0, free_rows = 0, solve = 0, recovery = 0, kkt = 0;
   double dual_operator = 0;  ///< the part of solve spent applying F
+  double preconditioner = 0;  ///< the part of solve spent applying the preconditioner
+  double primal_checks = 0;   ///< the part of solve spent in the stopping test's primal checks
 };
 
 struct FetiResult {

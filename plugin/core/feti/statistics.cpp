@@ -59,6 +59,8 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
       {"time_free_rows", result->times.free_rows},
       {"time_solve", result->times.solve},
       {"time_dual_operator", result->times.dual_operator},
+      {"time_preconditioner", result->times.preconditioner},
+      {"time_primal_checks", result->times.primal_checks},
       {"time_recovery", result->times.recovery},
       {"time_kkt", result->times.kkt},
   };
