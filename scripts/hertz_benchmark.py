@@ -106,7 +106,7 @@ def write_page(runs, peers, elapsed):
         "recovery) and the active set method half to all of IPOPT's, while the floor, one sparse",
         "factorization and solve with the final contact set, takes 0.4 to 1 times ffeti's: here a",
         "direct solve is cheap, and FETI's gain over the peers grows with the problem (the model",
-        "problem at 526,338 unknowns: IPOPT 47 times ffeti's default solve,",
+        "problem at 526,338 unknowns: IPOPT 77 times ffeti's default solve,",
         "[model problem](model-problem.md)).",
         "",
     ]
