@@ -141,7 +141,7 @@ Vec CoarseSpace::least_norm_solution(const Vec& e) const {
   return G_.transpose() * GGt_.solve(e);
 }
 
-double CoarseSpace::feasibility_residual(const Vec& e, int first_bounded) const {
+double CoarseSpace::feasibility_residual(const Vec& e, int first_bounded, double enough) const {
   const double e_norm = e.norm();
   if (empty() || !(e_norm > 0)) return 0.0;
   const Eigen::Index m = G_.cols();
@@ -160,10 +160,12 @@ double CoarseSpace::feasibility_residual(const Vec& e, int first_bounded) const 
   MprgpSettings settings;
   settings.max_hessian = 20000;
   Vec g;
-  const MprgpResult r = mprgp(GtG, b, lower, norm, lambda, g, false, settings,
-                              [&](const Vec&, const Vec&, double gp) { return gp <= stop_at; });
-  if (r.status != SolveStatus::converged) return -1.0;
-  return (G_ * lambda - e).norm() / e_norm;
+  double distance = -1.0;  // of the last iterate, relative
+  const MprgpResult r = mprgp(GtG, b, lower, norm, lambda, g, false, settings, [&](const Vec& x, const Vec&, double gp) {
+    distance = (G_ * x - e).norm() / e_norm;
+    return distance <= enough || gp <= stop_at;
+  });
+  return r.status == SolveStatus::converged ? distance : -1.0;
 }
 
 }  // namespace ffeti

@@ -51,9 +51,11 @@ class CoarseSpace {
   /// ||e||; 0 when no bound is active at the minimum or e = 0. Positive: no multipliers of the
   /// right signs balance the loads on the floating bodies (a body pulled off the contacts
   /// that could hold it), so the problem has no solution. Found by MPRGP on G'G (cheap: G
-  /// has one row per rigid mode); -1 if MPRGP did not converge (undecided). Same on every
-  /// rank.
-  double feasibility_residual(const Vec& e, int first_bounded) const;
+  /// has one row per rigid mode); -1 if MPRGP did not converge (undecided). Stops at the
+  /// first iterate within `enough` (returning that distance): feasibility needs no more, and
+  /// resolving the minimum to round-off took 306 multiplications, 0.7 s, at 2016 floating
+  /// subdomains. Same on every rank.
+  double feasibility_residual(const Vec& e, int first_bounded, double enough) const;
 
  private:
   Eigen::SparseMatrix<double, Eigen::RowMajor, int> G_;

@@ -435,8 +435,9 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
         settings.monitor, M);
     record(result, r.counts, r.status, r.projected_gradient_norm);
     lambda = lambda_from_shifted(x, lower_bounds, data.lambda_tilde);
-  } else if (const double distance = coarse_->feasibility_residual(data.e, constraints_.equality_rows);
-             distance > std::max(tolerance, kFeasibilityResolution)) {
+  } else if (const double resolution = std::max(tolerance, kFeasibilityResolution),
+             distance = coarse_->feasibility_residual(data.e, constraints_.equality_rows, resolution);
+             distance > resolution) {
     // No multipliers of the right signs balance the loads on the floating bodies (Farkas):
     // no equilibrium, and SMALBE could only iterate until maxit. The least-norm lambda~
     // (G lambda~ = e, some contact multipliers negative) gives the field the recovery shows.
