@@ -61,9 +61,9 @@ class CoarseSpace {
   Eigen::SparseMatrix<double, Eigen::RowMajor, int> G_;
   std::vector<std::pair<int, int>> owner_;
   std::vector<std::pair<int, int>> local_rows_;  // (row of G, local subdomain index)
-  // GG' couples the rigid modes of neighbouring subdomains only: sparse. Its dense factor
-  // made every projection cost O(dim^2), which at 2016 floating subdomains grew the time
-  // per dual operator application faster than the unknowns (docs/results/scalability.md).
+  // GG' couples the rigid modes of neighbouring subdomains only: sparse. A dense factor
+  // costs O(dim^3) to build and O(dim^2) per projection (dim = 2016 floating subdomains at
+  // n = 2048 of the model problem, docs/results/scalability.md).
   Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> GGt_;
   const SubdomainList& subdomains_;
   const Communicator& comm_;
