@@ -84,7 +84,7 @@ def plot_cost_over_unknowns(runs, title, name):
     scene with nothing to iterate) are left out. Saved as docs/results/<name>."""
     import matplotlib.pyplot as plt  # the drivers choose the backend first
 
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    fig, axes = plt.subplots(1, 2, figsize=(11, 5.4))
     for label, rows in runs.items():
         rows = [r for r in rows if f(r, "hessian") > 0]
         unknowns = [f(r, "primal") for r in rows]
@@ -95,8 +95,10 @@ def plot_cost_over_unknowns(runs, title, name):
     for ax in axes:
         ax.set_xlabel("unknowns")
         ax.grid(True, which="both", alpha=0.3)
-    axes[0].legend(fontsize=7)
+    # Below the panels: inside, the legend hid the lowest lines (the glued cases).
+    handles, labels = axes[0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=3, fontsize=7, frameon=False)
     fig.suptitle(title)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.14, 1, 1))
     fig.savefig(os.path.join(OUT, name), dpi=110)
     plt.close(fig)
