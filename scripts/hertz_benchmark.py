@@ -102,7 +102,7 @@ def write_page(runs, peers, elapsed):
         "line. The test suite runs the h = 1 case and requires a and p0 within 10%.",
         "",
         "The peers agree with ffeti in energy to the printed digits. On these small 2D problems",
-        "(under 10,000 unknowns) IPOPT takes 3 to 8 times ffeti's time (set-up, solve and",
+        "(under 10,000 unknowns) IPOPT takes 4 to 8 times ffeti's time (set-up, solve and",
         "recovery) and the active set method half to all of IPOPT's, while the floor, one sparse",
         "factorization and solve with the final contact set, takes 0.4 to 1 times ffeti's: here a",
         "direct solve is cheap, and FETI's gain over the peers grows with the problem (the model",
