@@ -20,10 +20,10 @@ double inf_norm(const std::vector<Vec>& u) {
 
 double safe_ratio(double a, double b) { return b > 0 ? a / b : a; }
 
-// (G_S G_S')^+-like solve of the normal equations for alpha. G_S G_S' couples the rigid modes
-// of neighbouring subdomains only: a sparse factor keeps each primal recovery linear in the
-// subdomains (a dense one of order 2016 took 0.7 s per stopping-test check at n = 2048,
-// docs/results/scalability.md). A body whose modes meet no row of S (a floating body with no
+// The normal equations (G_S G_S') alpha = rhs. G_S G_S' couples the rigid modes of
+// neighbouring subdomains only: a sparse factor keeps each primal recovery linear in the
+// subdomains (with a dense one of order 2016 a stopping-test check at n = 2048 took 0.85 s,
+// 0.31 s now; docs/results/scalability-reading.md). A body whose modes meet no row of S (a floating body with no
 // active contact) makes it singular; then the dense LDLT, which leaves the undetermined
 // modes at zero, decides, as it always did.
 Vec solve_normal_equations(const Eigen::SparseMatrix<double>& normal, const Vec& rhs) {
