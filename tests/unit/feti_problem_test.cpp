@@ -203,6 +203,13 @@ TEST(FetiProblem, PreconditionersGiveTheSameSolutionInFewerSteps) {
     EXPECT_LT(b.kkt.max(), 1e-8);
     EXPECT_LT((kind == DualPreconditioner::dirichlet ? 2 : 1) * b.counts.cg, a.counts.cg)
         << preconditioner_name(kind) << ": plain " << a.counts.cg << ", preconditioned " << b.counts.cg;
+    // The split of the solve's time (fetiInfo): the preconditioner's only where it ran, the
+    // stopping test's primal checks wherever it checked, all parts within the solve.
+    EXPECT_EQ(a.times.preconditioner, 0.0);
+    EXPECT_GT(b.times.preconditioner, 0.0);
+    EXPECT_GT(b.scale_evaluations, 0);
+    EXPECT_GT(b.times.primal_checks, 0.0);
+    EXPECT_LE(b.times.dual_operator + b.times.preconditioner + b.times.primal_checks, b.times.solve);
   }
 }
 
