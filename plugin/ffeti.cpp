@@ -284,7 +284,7 @@ basicAC_F0::name_and_type FetiSetup::name_param[] = {
 class FetiSolve : public E_F0mps {
  public:
   typedef long Result;
-  static const int n_name_param = 13;
+  static const int n_name_param = 14;
   static basicAC_F0::name_and_type name_param[];
   Expression nargs[n_name_param];
   Expression id, U;
@@ -317,6 +317,7 @@ class FetiSolve : public E_F0mps {
     settings.mprgp.gamma = optional_real(nargs[8], stack, settings.mprgp.gamma);
     settings.mprgp.expansion = expansion_from_name(optional_string(nargs[10], stack, option_defaults::expansion));
     settings.stopping = stop_from_name(optional_string(nargs[11], stack, option_defaults::stop));
+    if (auto* start = optional_pointer<KN<double>>(nargs[13], stack)) settings.start = binding::to_vec(*start);
     settings.monitor = h.history.start(progress_monitor(verbosity, h.problem->communicator()));
     h.sensitivity.reset();
     h.result.reset();
@@ -348,7 +349,7 @@ basicAC_F0::name_and_type FetiSolve::name_param[] = {
     {"algorithm", &typeid(std::string*)}, {"verbosity", &typeid(long)}, {"rho", &typeid(double)},
     {"M", &typeid(double)},           {"eta", &typeid(double)},       {"gamma", &typeid(double)},
     {"history", &typeid(std::string*)}, {"expansion", &typeid(std::string*)},
-    {"stop", &typeid(std::string*)},  {"coarse", &typeid(std::string*)}};
+    {"stop", &typeid(std::string*)},  {"coarse", &typeid(std::string*)}, {"start", &typeid(KN<double>*)}};
 
 // ---- sensitivities (seed eq. 12) -------------------------------------------------------
 
@@ -602,7 +603,8 @@ long feti_set_loads(const long& id, KN<KN<double>>* const& loads) {
 }
 
 /// Fills xc, yc with the slave positions of the contact rows and lc with their multipliers
-/// from the last solve; returns the number of contact rows.
+/// from the last solve (0 before any: the positions serve to build a start); returns the
+/// number of contact rows.
 class FetiContact : public E_F0mps {
  public:
   typedef long Result;
@@ -621,8 +623,7 @@ class FetiContact : public E_F0mps {
   AnyType operator()(Stack stack) const {
     return SetAny<long>(guarded("fetiContact", [&] {
       const Handle& h = handle(GetAny<long>((*id)(stack)));
-      if (!h.result) throw InputError("no solution yet: call fetiSolve first");
-      const auto rows = contact_multipliers(*h.problem, *h.result);
+      const auto rows = contact_multipliers(*h.problem, h.result ? &*h.result : nullptr);
       auto& x = *GetAny<KN<double>*>((*xc)(stack));
       auto& y = *GetAny<KN<double>*>((*yc)(stack));
       auto& l = *GetAny<KN<double>*>((*lc)(stack));

@@ -76,7 +76,7 @@ int run(const std::string& problem_path, const std::shared_ptr<const Communicato
   const FetiResult result = feti.solve(input.solve);
 
   const GatheredSolution solution = gather_solution(result, input.layouts, count, *comm);
-  const std::vector<ContactMultiplier> contact = contact_multipliers(feti, result);
+  const std::vector<ContactMultiplier> contact = contact_multipliers(feti, &result);
   collectively(*comm, [&] {
     if (comm->rank() != 0) return;
     const OutputSpec& out = problem.output;

@@ -387,6 +387,53 @@ TEST(FetiProblem, ThreadCountDoesNotChangeTheResult) {
   EXPECT_EQ(one.lambda, two.lambda);  // bitwise: the scatter order is fixed
 }
 
+TEST(FetiProblem, AStartAtTheSolutionCostsAFewMultiplicationsAndAnyStartConverges) {
+  // Every dual path: projected CG (glued, floating), MPRGP (both membranes fixed, pressed
+  // into each other by a negative gap: some couples active), SMALBE-M with the free-rows
+  // projector and with all of G penalized (floating contact).
+  test::MembraneOptions glued = test::membrane_options(16, 2);
+  glued.body2 = false;
+  glued.with_contact = false;
+  test::MembraneOptions coercive = test::membrane_options(16, 1);
+  coercive.fix_right_body = true;
+  const test::MembraneOptions floating = test::membrane_options(16, 2);
+  struct Case {
+    test::MembraneOptions options;
+    double gap;
+    CoarseConstraints coarse;
+    const char* path;
+  };
+  for (const Case& c : {Case{glued, 0.0, CoarseConstraints::free_rows, "projected_cg"},
+                        Case{coercive, -0.2, CoarseConstraints::free_rows, "mprgp"},
+                        Case{floating, 0.0, CoarseConstraints::free_rows, "smalbe"},
+                        Case{floating, 0.0, CoarseConstraints::penalty, "smalbe"}}) {
+    auto subs = test::membrane_subdomains(c.options);
+    ContactInput contact = c.options.with_contact ? test::membrane_contact(subs) : ContactInput{};
+    contact.gap = c.gap;
+    const FetiProblem problem(std::move(subs), contact, FetiSetupSettings{});
+    ASSERT_EQ(problem.path(), c.path);
+    DualSolveSettings settings;
+    settings.coarse_constraints = c.coarse;
+    settings.tolerance = 1e-8;
+    const FetiResult cold = problem.solve(settings);
+    ASSERT_EQ(cold.status, SolveStatus::converged) << c.path;
+    EXPECT_GE(cold.counts.hessian, 10) << c.path;  // a start that saves something
+    if (c.options.with_contact) EXPECT_GT(cold.active_contact, 0) << c.path;
+    settings.start = cold.lambda;
+    const FetiResult warm = problem.solve(settings);
+    ASSERT_EQ(warm.status, SolveStatus::converged) << c.path;
+    EXPECT_LE(warm.counts.hessian, 3) << c.path << " cold: " << cold.counts.hessian;
+    EXPECT_NEAR(warm.energy, cold.energy, 1e-10 * std::abs(cold.energy)) << c.path;
+    // A start off the feasible set (pulling contact forces, G lambda != e) is moved onto it.
+    settings.start = Vec::Random(cold.lambda.size()) * cold.lambda.lpNorm<Eigen::Infinity>();
+    const FetiResult any = problem.solve(settings);
+    ASSERT_EQ(any.status, SolveStatus::converged) << c.path;
+    EXPECT_NEAR(any.energy, cold.energy, 1e-7 * std::abs(cold.energy)) << c.path;
+    EXPECT_LT(any.kkt.max(), 1e-7) << c.path;
+    EXPECT_EQ(any.active_contact, cold.active_contact) << c.path;
+  }
+}
+
 TEST(FetiProblem, NonConvergenceIsAStatusNotAnException) {
   const FetiProblem problem = membrane_problem(test::membrane_options(16, 2), FetiVariant::feti1);
   DualSolveSettings settings;
@@ -412,6 +459,13 @@ TEST(FetiProblem, BadInputIsAnErrorNamingTheArgument) {
     spoil(subs);
     FetiProblem problem(std::move(subs), contact);
   };
+  const FetiProblem problem = membrane_problem(test::membrane_options(8, 2), FetiVariant::feti1);
+  DualSolveSettings wrong_start;
+  wrong_start.start = Vec::Zero(problem.constraints().rows() + 1);
+  expect_input_error([&] { problem.solve(wrong_start); }, "start: has");
+  wrong_start.start = Vec::Zero(problem.constraints().rows());
+  wrong_start.start[0] = NAN;
+  expect_input_error([&] { problem.solve(wrong_start); }, "start: has entries that are not finite");
   expect_input_error([&] { make([](auto& s) { s[2].K.coeffRef(0, 1) += 1.0; }); }, "K[2]: not symmetric");
   expect_input_error([&] { make([](auto& s) { s[1].f.conservativeResize(3); }); }, "f[1]");
   expect_input_error([&] { make([](auto& s) { s[3].f[0] = NAN; }); }, "f[3]");

@@ -59,6 +59,15 @@ void record(DualSolution& result, const IterationCounts& counts, SolveStatus sta
   result.gradient_norm = gradient_norm;
 }
 
+/// The solvers' first iterate mu = lambda - lambda~ from settings.start (zero without one).
+Vec shifted_start(const DualSolveSettings& settings, const DualData& data, Eigen::Index rows) {
+  if (settings.start.size() == 0) return Vec::Zero(rows);
+  if (settings.start.size() != rows)
+    throw InputError("start: has " + std::to_string(settings.start.size()) + " values, the problem has " +
+                     std::to_string(rows) + " multipliers (fetiInfo(P, \"dual\"))");
+  return settings.start - data.lambda_tilde;
+}
+
 }  // namespace
 
 void DualSolveSettings::validate() const {
@@ -68,6 +77,7 @@ void DualSolveSettings::validate() const {
       {"rho", smalbe.rho_factor}, {"M", smalbe.M_factor}, {"eta", smalbe.eta_factor}, {"gamma", mprgp.gamma}};
   for (const auto& [name, value] : positive)
     if (!(value > 0)) throw InputError(std::string(name) + ": must be > 0");
+  if (!start.allFinite()) throw InputError("start: has entries that are not finite numbers");
   try {
     smalbe.validate();
     mprgp.validate();
@@ -336,7 +346,8 @@ void DualSystem::solve_by_free_rows(const DualData& data, const DualSolveSetting
       coarse_->project(applied_, Tx);
       T.project_out_kernel(Tx, y);
     };
-  Vec x = Vec::Zero(m);
+  Vec x(m);  // without its part in Ker T, which T'PFPT does not see (free rows only: bounds kept)
+  T.project_out_kernel(shifted_start(settings, data, m), x);
   if (T.remaining() == 0) {  // nothing floats as a whole: bounds only
     Vec g;
     const MprgpResult r = mprgp(hessian, b, lower_bounds, norm, x, g, false, mprgp_within(settings),
@@ -415,7 +426,8 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
       };
     CgSettings cg;
     cg.max_hessian = settings.max_hessian;
-    Vec mu = Vec::Zero(m), g;
+    Vec mu = shifted_start(settings, data, m), g;
+    if (coarse_ && settings.start.size() > 0) coarse_->project(Vec(mu), mu);  // G mu = 0
     const CgResult cg_result = conjugate_gradient(
         A, data.b, mu, g, cg, [&](const Vec& x, const Vec& gx, double norm) {
           return gradient_converged(x, gx.lpNorm<Eigen::Infinity>(), norm);
@@ -425,7 +437,7 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     lambda = mu + data.lambda_tilde;
   } else if (result.path == "mprgp") {
     const double norm = operator_norm(false, settings.norm_estimate, result);
-    Vec x = Vec::Zero(m), g;
+    Vec x = shifted_start(settings, data, m), g;
     const LinearOperator M = preconditioner_operator();
     const MprgpResult r = mprgp(
         [&](const Vec& v, Vec& y) { F_->apply(v, y); }, data.b, lower_bounds, norm, x, g, false, mprgp_within(settings),
@@ -458,7 +470,7 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     problem.lower = &lower_bounds;
     problem.hessian_norm = norm;
     problem.preconditioner = preconditioner_operator();
-    Vec mu = Vec::Zero(m);
+    Vec mu = shifted_start(settings, data, m);
     const SmalbeResult r = smalbe(problem, mu, smalbe_within(settings),
         [&](const Vec& x, const Vec& gP, const Vec&) {
           result.equality_norm = (coarse_->G() * x).norm();  // G lambda - e = G mu

@@ -48,6 +48,10 @@ struct DualSolveSettings {
   /// ||b|| lies below the round-off of the data it came from, and a tolerance relative to it
   /// cannot be reached.
   bool reference_includes_data = false;
+  /// Multipliers to start from (rows as constraints()), e.g. a previous solve's lambda or
+  /// one interpolated from a coarser mesh; empty: lambda = 0 (lambda~ where bodies float).
+  /// Moved onto the constraints' feasible set first, so any values of the right size do.
+  Vec start;
 
   void validate() const;  ///< throws InputError naming the setting
 };

@@ -68,12 +68,12 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
   return s;
 }
 
-std::vector<ContactMultiplier> contact_multipliers(const FetiProblem& problem, const FetiResult& result) {
+std::vector<ContactMultiplier> contact_multipliers(const FetiProblem& problem, const FetiResult* result) {
   const Constraints& c = problem.constraints();
   std::vector<ContactMultiplier> rows;
   for (int i = c.equality_rows; i < c.rows(); ++i) {
     const auto& position = problem.contact_positions()[static_cast<size_t>(i - c.equality_rows)];
-    rows.push_back({position[0], position[1], result.lambda.size() ? result.lambda[i] : 0.0});
+    rows.push_back({position[0], position[1], result && result->lambda.size() ? result->lambda[i] : 0.0});
   }
   return rows;
 }

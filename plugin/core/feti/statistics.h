@@ -24,8 +24,9 @@ int status_code(SolveStatus status);
 struct ContactMultiplier {
   double x, y, lambda;
 };
-/// The contact rows of a solve, in row order.
-std::vector<ContactMultiplier> contact_multipliers(const FetiProblem& problem, const FetiResult& result);
+/// The contact rows in row order, with the multipliers of `result` (0 without one: the
+/// positions alone, known from the set-up).
+std::vector<ContactMultiplier> contact_multipliers(const FetiProblem& problem, const FetiResult* result);
 
 /// One line "RANK rank=r subdomains=... primal=... time_factor=... time_solve=...
 /// peak_memory_mb=..." per rank: the load balance (subdomains, unknowns) and per-rank times.
