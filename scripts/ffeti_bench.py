@@ -85,11 +85,12 @@ def plot_cost_over_unknowns(runs, title, name):
     import matplotlib.pyplot as plt  # the drivers choose the backend first
 
     fig, axes = plt.subplots(1, 2, figsize=(11, 5.4))
-    for label, rows in runs.items():
+    for k, (label, rows) in enumerate(runs.items()):
         rows = [r for r in rows if f(r, "hessian") > 0]
         unknowns = [f(r, "primal") for r in rows]
-        axes[0].loglog(unknowns, [f(r, "hessian") for r in rows], "o-", label=label)
-        axes[1].loglog(unknowns, [f(r, "time_solve") for r in rows], "o-", label=label)
+        style = "o-" if k < 10 else "s--"  # the colour cycle has 10 colours: past it, another line style
+        axes[0].loglog(unknowns, [f(r, "hessian") for r in rows], style, label=label)
+        axes[1].loglog(unknowns, [f(r, "time_solve") for r in rows], style, label=label)
     axes[0].set_ylabel("Hessian multiplications")
     axes[1].set_ylabel("dual solve time [s]")
     for ax in axes:
