@@ -71,6 +71,24 @@ TEST(FreeRowProjector, IsTheIdentityOnKerGAndItsTransposeIsConsistent) {
   EXPECT_NEAR(b.dot(Ta), a.dot(Ttb), 1e-12);
 }
 
+TEST(FreeRowProjector, ProjectingOutItsKernelChangesNeitherTNorTheBoundedMultipliers) {
+  // A start of the free-rows path is projected this way: T x must not change, nor the
+  // bounded part, and what is removed is Ker T = Im E_F G_F' (so G_F y_F = 0 after it).
+  const RowMatrix G = coarse_with_one_body_mode();
+  const FreeRowProjector T(G, 30);
+  const Vec x = random_vector(40, 6);
+  Vec y, yy, Tx, Ty;
+  T.project_out_kernel(x, y);
+  EXPECT_EQ((y - x).tail(10).norm(), 0.0) << "bounded multipliers changed";
+  const RowMatrix G_F = G.leftCols(30);
+  EXPECT_LT((G_F * y.head(30)).norm(), 1e-12 * x.norm());
+  T.project_out_kernel(y, yy);
+  EXPECT_LT((yy - y).norm(), 1e-12 * x.norm()) << "not a projector";
+  T.apply(x, Tx);
+  T.apply(y, Ty);
+  EXPECT_LT((Tx - Ty).norm(), 1e-12 * x.norm()) << "T sees the removed part";
+}
+
 TEST(FreeRowProjector, NothingRemainsWhenTheFreeColumnsSpanTheRowSpace) {
   RowMatrix G = coarse_with_one_body_mode();
   G = G.topRows(5);
