@@ -15,7 +15,8 @@ MPI_ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CO
 def run(script, *args, ranks=0, prefixes=("RESULT", "DIRECT", "RANK")):
     """Runs an .edp script (under mpirun with `ranks` > 0) and returns {prefix: [dict, ...]}
     of its key=value result lines, each with the process's peak resident memory as
-    'process_peak_mb' (of FreeFEM alone; of mpirun, not its ranks, under MPI)."""
+    'process_peak_mb' (of FreeFEM alone; of mpirun, not its ranks, under MPI), and its whole
+    standard output under 'output' (progress lines)."""
     command = ["FreeFem++-nw", "-v", "0", script, *map(str, args)]
     if ranks:
         command = ["mpirun", "--oversubscribe", "-np", str(ranks), "FreeFem++-mpi", *command[1:]]
@@ -37,6 +38,7 @@ def run(script, *args, ranks=0, prefixes=("RESULT", "DIRECT", "RANK")):
             lines[words[0]].append(fields)
     if not any(lines.values()):
         raise RuntimeError(f"no result line from {' '.join(command)}:\n{text[-2000:]}")
+    lines["output"] = text
     return lines
 
 

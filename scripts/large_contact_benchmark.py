@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """A large contact zone (edp/large-contact.edp: two clamped membranes stacked, every interior
-node a contact couple, 9 subdomains whatever h, the MPRGP path): Hessian multiplications,
+node a contact couple, 9 subdomains whatever h, the MPRGP path, and H/h fixed): Hessian multiplications,
 time and accuracy over h, for the expansion step (fixed step against projected CG, with CG
 restarted or continued after it) and the
 stopping test (the seed's against the relative KKT one), side by side in one run. Accuracy
@@ -8,15 +8,19 @@ is measured against a primal-dual active set solution of the unsplit problem (UM
 to n = 160, and against ffeti at tol = 1e-10 beyond. Writes docs/results/large-contact.md
 and its plot. FFETI_LARGE_CONTACT_SIZES overrides the sizes (default "40 80 160 320")."""
 import os
+import re
 import time
 
 import matplotlib
 
 matplotlib.use("Agg")
 
-from ffeti_bench import f, machine, plot_cost_over_unknowns, run, save_page  # noqa: E402
+from ffeti_bench import OUT, f, machine, plot_cost_over_unknowns, run, save_page  # noqa: E402
 
 SIZES = [int(n) for n in os.environ.get("FFETI_LARGE_CONTACT_SIZES", "40 80 160 320").split()]
+# At fixed H/h (option Hh) one more size, twice the largest (about 900,000 unknowns, 2048
+# subdomains), without a reference: it costs seconds where the 9-subdomain cases cost minutes.
+FIXED_H_EXTRA_SIZE = 2 * SIZES[-1]
 LARGEST_REFERENCE = 160  # the active set reference takes 35 s at n = 160 and grows fast
 # (label, options of edp/large-contact.edp)
 CASES = [
@@ -30,16 +34,63 @@ CASES = [
     ("lumped preconditioner, CG restarted", {"expansion": "projected-cg-restart"}),
     ("default, started from the solution on n/2 (nested iteration)", {"nested": 1}),
     ("default, nested over n/4, n/2, n", {"nested": 2}),
+    ("H/h = 20 fixed (squares of 20 cells), from zero", {"Hh": 20}),
+    ("H/h = 20 fixed, nested over n/2", {"Hh": 20, "nested": 1}),
     ("glued: no contact, CG", {"glued": 1, "preconditioner": "none"}),
     ("glued, lumped preconditioner", {"glued": 1}),
 ]
 
 
-def scene(n, **options):
+def arguments(n, options):
     args = ["-n", n]
     for key, value in options.items():
         args += [f"-{key}", value]
-    return run("large-contact.edp", *args)["RESULT"][0]
+    return args
+
+
+def scene(n, **options):
+    return run("large-contact.edp", *arguments(n, options))["RESULT"][0]
+
+
+PROGRESS = re.compile(r"ffeti mprgp\s+\d+\s+hessian\s+(\d+)\s+\|\|gP\|\|\s+(\S+).*contact\s+(\d+)")
+
+
+def trace(n, **options):
+    """MPRGP's progress lines of the (finest) solve: [(Hessian mult., ||gP||, couples in contact)]."""
+    output = run("large-contact.edp", *arguments(n, dict(options, reference=0)), "-v", 1)["output"]
+    return [(int(h), float(g), int(c)) for h, g, c in PROGRESS.findall(output)]
+
+
+def plot_traces(traces, contact, n, name):
+    """Couples in contact and ||gP|| against the Hessian multiplications, one line per trace."""
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.6))
+    for label, points in traces.items():
+        hessian = [p[0] for p in points]
+        axes[0].plot(hessian, [p[2] for p in points], ".-", label=label)
+        axes[1].semilogy(hessian, [p[1] for p in points], ".-", label=label)
+    axes[0].axhline(contact, color="k", linestyle="--", linewidth=0.8, label="contact set of the solution")
+    axes[0].set_ylabel("couples in contact")
+    axes[1].set_ylabel("||gP||_2")
+    for ax in axes:
+        ax.set_xlabel("Hessian multiplications")
+        ax.grid(True, alpha=0.3)
+    axes[0].legend(fontsize=8)
+    fig.suptitle(f"Large contact zone, n = {n}, 9 subdomains: how MPRGP finds the contact set")
+    fig.tight_layout()
+    fig.savefig(os.path.join(OUT, name), dpi=110)
+    plt.close(fig)
+
+
+def ring_summary(n, reference):
+    """The active set reference starts with every couple in contact and releases couples until
+    the set repeats: couples released per iteration, beside the edge of the contact zone (a
+    square-like zone of c nodes has about 4 sqrt(c) on its edge)."""
+    contact = int(reference["active_reference"])
+    released = (int(reference["couples"]) - contact) / max(int(reference["pdas_iterations"]) - 1, 1)
+    return (f"n = {n}: {reference['pdas_iterations']} active set iterations, {f(reference, 'time_reference'):.1f} s, "
+            f"{released:.0f} couples released per iteration (edge of the zone: {4 * contact ** 0.5:.0f} nodes)")
 
 
 def main():
@@ -62,8 +113,14 @@ def main():
             r["error_vs_reference"] = (f(r, "energy") - q_ref) / abs(q_ref)
             r["reference_kind"] = "active set" if with_reference else "ffeti tol 1e-10"
             r["active_reference"] = reference["active_reference"] if with_reference else reference["active"]
-    plot_cost_over_unknowns(runs, "Large contact zone (9 subdomains, every interior node a couple), tol = 1e-4", "large-contact.png")
-    first = runs[CASES[0][0]]
+    for label, options in CASES:
+        if "Hh" in options:
+            runs[label].append(scene(FIXED_H_EXTRA_SIZE, reference=0, **options))
+    plot_cost_over_unknowns(runs, "Large contact zone (every interior node a couple), tol = 1e-4", "large-contact.png")
+    largest = SIZES[-1]
+    traces = {"default (cold start)": trace(largest), "nested over n/2": trace(largest, nested=1)}
+    plot_traces(traces, int(references[largest]["active_reference"] if largest <= LARGEST_REFERENCE
+                            else references[largest]["active"]), largest, "large-contact-trace.png")
     lines = [
         "# A large contact zone: expansion steps and the stopping test",
         "",
@@ -75,6 +132,11 @@ def main():
         "0.01; every interior node is a contact couple, about half end up in contact. The split is",
         "fixed, 9 subdomains whatever h (H/h grows with n), none floats: the dual problem is bound",
         "constrained and MPRGP solves it. tol = 1e-4 in every case.",
+        "",
+        "- *H/h = 20 fixed* (`-Hh 20`): instead each membrane in squares of 20 cells per side, as the",
+        "  seed measures scalability (H/h fixed as h shrinks); the inner squares float (the SMALBE-M",
+        "  path with the free-rows projector; \"outer\": its multiplier updates). These cases also",
+        f"  run at n = {FIXED_H_EXTRA_SIZE}, without a reference.",
         "",
         "- *stop*: the default KKT test `||gP||_inf <= tol ||u||_inf` bounds the relative constraint",
         "  violation (gluing jumps, penetration) of the primal solution; the seed's `||gP||_2 <= tol ||b||_2`",
@@ -102,28 +164,35 @@ def main():
         "contact set. Every interior node is a couple, so no subdomain has interior dofs and the",
         "Dirichlet preconditioner is the lumped one (the default), at no factorization.",
         "",
-        "| n | unknowns | couples | case | Hessian mult. | expansions | fallbacks | CG steps | solve [s] |"
+        "| n | unknowns | couples | subdomains | case | outer | Hessian mult. | expansions | fallbacks | CG steps | solve [s] |"
         " coarser levels: mult., [s] | energy error | violation | contact (reference) |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
-    for i, n in enumerate(SIZES):
+    for n in SIZES + [FIXED_H_EXTRA_SIZE]:
         for label, _ in CASES:
-            r = runs[label][i]
+            rows = [r for r in runs[label] if int(r["n"]) == n]
+            if not rows:
+                continue
+            r = rows[0]
             violation = max(f(r, "kkt_equality"), f(r, "kkt_inequality"))
             error = f"{r['error_vs_reference']:.1e}" if "error_vs_reference" in r else "-"
             contact = f"{r['active']} ({r['active_reference']})" if "error_vs_reference" in r else "-"
             coarser = f"{r['nested_hessian']}, {f(r, 'time_nested'):.2f}" if f(r, "nested") > 0 else "-"
             lines.append(
-                f"| {n} | {r['primal']} | {r['couples']} | {label} | {r['hessian']} | {r['expansion']} | "
+                f"| {n} | {r['primal']} | {r['couples']} | {r['subdomains']} | {label} | {r['outer']} | {r['hessian']} | {r['expansion']} | "
                 f"{r['expansion_fallback']} | {r['cg']} | {f(r, 'time_solve'):.3f} | {coarser} | {error} | "
                 f"{violation:.1e} | {contact} |")
     lines += [
         "",
-        "Reference solutions: " + ", ".join(
-            f"n = {n}: {references[n]['pdas_iterations']} active set iterations, {f(references[n], 'time_reference'):.1f} s"
-            for n in SIZES if n <= LARGEST_REFERENCE) + ".",
+        "Reference solutions (from every couple in contact): " + "; ".join(
+            ring_summary(n, references[n]) for n in SIZES if n <= LARGEST_REFERENCE) + ".",
         "",
         "![large contact zone](large-contact.png)",
+        "",
+        f"MPRGP's progress at n = {largest} (9 subdomains): couples in contact and the projected gradient",
+        "after each step, against the Hessian multiplications so far.",
+        "",
+        "![how the contact set is found](large-contact-trace.png)",
         "",
     ]
     save_page("large-contact.md", lines)
