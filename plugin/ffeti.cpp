@@ -4,6 +4,7 @@
 #include "ff++.hpp"
 
 #include "binding_convert.h"
+#include "feti/contact_transfer.h"
 #include "feti/errors.h"
 #include "feti/feti_problem.h"
 #include "feti/option_names.h"
@@ -639,6 +640,37 @@ class FetiContact : public E_F0mps {
   }
 };
 
+// ---- int rows = fetiContactStart(P, Pfrom, start): a start from another problem's forces --
+/// Fills `start` with multipliers for P (fetiSolve's start): on P's contact rows the contact
+/// forces of Pfrom's last solve, each row taking the force of Pfrom's nearest contact row
+/// shared among the rows nearest to it; 0 on the equality rows. Pfrom is the same scene on a
+/// coarser mesh (nested iteration), another split or the previous design. Returns P's number
+/// of contact rows.
+class FetiContactStart : public E_F0mps {
+ public:
+  typedef long Result;
+  Expression id, from_id, start_out;
+  explicit FetiContactStart(const basicAC_F0& args) {
+    args.SetNameParam(0, nullptr, nullptr);
+    id = to<long>(args[0]);
+    from_id = to<long>(args[1]);
+    start_out = to<KN<double>*>(args[2]);
+  }
+  static ArrayOfaType typeargs() { return ArrayOfaType(atype<long>(), atype<long>(), atype<KN<double>*>()); }
+  static E_F0* f(const basicAC_F0& args) { return new FetiContactStart(args); }
+  AnyType operator()(Stack stack) const {
+    return SetAny<long>(guarded("fetiContactStart", [&] {
+      const Handle& h = handle(GetAny<long>((*id)(stack)));
+      const Handle& from = handle(GetAny<long>((*from_id)(stack)));
+      if (!from.result) throw InputError("Pfrom: no solution yet: call fetiSolve on it first");
+      const auto forces = contact_multipliers(*from.problem, &*from.result);
+      if (forces.empty()) throw InputError("Pfrom: has no contact rows, so no contact forces to start from");
+      binding::copy_to(start_from_contact_forces(*h.problem, forces), *GetAny<KN<double>*>((*start_out)(stack)));
+      return static_cast<long>(h.problem->contact_positions().size());
+    }));
+  }
+};
+
 // ---- int rows = fetiConstraints(P, I, J, V, c, kind): the constraint rows as triplets ---
 /// B u = c (equality rows) and B u <= c (contact rows) over the dofs of all subdomains
 /// numbered one after the other in subdomain order: triplets (I, J, V), right-hand side c
@@ -834,6 +866,7 @@ static void Load_Init() {
   Global.Add("fetiAdjoint", "(", new OneOperatorCode<FetiAdjoint>());
   Global.Add("fetiAdjointGradient", "(", new OneOperatorCode<FetiAdjointGradient>());
   Global.Add("fetiContact", "(", new OneOperatorCode<FetiContact>());
+  Global.Add("fetiContactStart", "(", new OneOperatorCode<FetiContactStart>());
   Global.Add("fetiConstraints", "(", new OneOperatorCode<FetiConstraints>());
   Global.Add("fetiSum", "(", new OneOperator2_<double, long, double>(feti_sum));
   Global.Add("fetiMax", "(", new OneOperator2_<double, long, double>(feti_max));

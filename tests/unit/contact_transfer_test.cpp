@@ -1,0 +1,69 @@
+#include "feti/contact_transfer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace ffeti {
+namespace {
+
+/// The nearest source row by brute force: what the scan in transfer_contact_forces must find.
+size_t brute_force_nearest(const std::vector<ContactMultiplier>& from, const std::array<double, 2>& p) {
+  size_t best = 0;
+  for (size_t j = 1; j < from.size(); ++j)
+    if (std::hypot(from[j].x - p[0], from[j].y - p[1]) < std::hypot(from[best].x - p[0], from[best].y - p[1])) best = j;
+  return best;
+}
+
+TEST(ContactTransfer, EveryRowTakesItsNearestSourcesForceSharedAmongThoseItServes) {
+  // Random clouds (ties have probability 0): each source gets a distinct force, so the force
+  // a row receives times the rows sharing it identifies the source it was given.
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<ContactMultiplier> from(300);
+  for (size_t j = 0; j < from.size(); ++j) from[j] = {unit(random), unit(random), 1.0 + static_cast<double>(j)};
+  std::vector<std::array<double, 2>> to(1000);
+  for (auto& p : to) p = {1.5 * unit(random) - 0.25, 1.5 * unit(random) - 0.25};  // some outside the cloud
+  const std::vector<double> forces = transfer_contact_forces(from, to);
+  std::vector<int> sharing(from.size(), 0);
+  for (const auto& p : to) ++sharing[brute_force_nearest(from, p)];
+  double total = 0, served = 0;
+  for (size_t k = 0; k < to.size(); ++k) {
+    const size_t j = brute_force_nearest(from, to[k]);
+    EXPECT_DOUBLE_EQ(forces[k], from[j].lambda / sharing[j]) << "row " << k;
+    total += forces[k];
+  }
+  for (size_t j = 0; j < from.size(); ++j) served += sharing[j] > 0 ? from[j].lambda : 0.0;
+  EXPECT_NEAR(total, served, 1e-9 * served);  // the force of every source that serves a row is kept
+}
+
+TEST(ContactTransfer, AFinerLineOfCouplesKeepsTheTotalForceWhateverTheUnits) {
+  // A contact line of 11 couples refined to 41 (every coarse couple is also a fine one),
+  // in metres and in millimetres.
+  for (const double scale : {1.0, 1000.0}) {
+    std::vector<ContactMultiplier> coarse;
+    for (int j = 0; j <= 10; ++j) coarse.push_back({scale * j / 10.0, 2.0 * scale, std::sin(0.3 * j) + 1.5});
+    std::vector<std::array<double, 2>> fine;
+    for (int k = 0; k <= 40; ++k) fine.push_back({scale * (k / 40.0 + 1e-9), 2.0 * scale});
+    const std::vector<double> forces = transfer_contact_forces(coarse, fine);
+    double coarse_total = 0, fine_total = 0;
+    for (const auto& c : coarse) coarse_total += c.lambda;
+    for (double f : forces) fine_total += f;
+    EXPECT_NEAR(fine_total, coarse_total, 1e-12 * coarse_total) << "scale " << scale;
+    // Fine couple 4 j sits on coarse couple j, and with 4 j - 1, 4 j + 1, 4 j + 2 (ties broken
+    // by the shift) shares its force in four.
+    EXPECT_DOUBLE_EQ(forces[20], coarse[5].lambda / 4);
+    EXPECT_DOUBLE_EQ(forces[19], coarse[5].lambda / 4);
+  }
+}
+
+TEST(ContactTransfer, NoSourceRowsGiveZeroForces) {
+  const std::vector<double> forces = transfer_contact_forces({}, {{0.0, 0.0}, {1.0, 1.0}});
+  ASSERT_EQ(forces.size(), 2u);
+  EXPECT_EQ(forces[0], 0.0);
+  EXPECT_EQ(forces[1], 0.0);
+}
+
+}  // namespace
+}  // namespace ffeti
