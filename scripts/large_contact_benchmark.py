@@ -138,7 +138,6 @@ def main():
         "  seed measures scalability (H/h fixed as h shrinks); the inner squares float (the SMALBE-M",
         "  path with the free-rows projector; \"outer\": its multiplier updates). These cases also",
         f"  run at n = {FIXED_H_EXTRA_SIZE}, without a reference.",
-        "",
         "- *stop*: the default KKT test `||gP||_inf <= tol ||u||_inf` bounds the relative constraint",
         "  violation (gluing jumps, penetration) of the primal solution; the seed's `||gP||_2 <= tol ||b||_2`",
         "  sums over all rows, so with thousands of couples it stops with violations 5 to 9 times tol.",
