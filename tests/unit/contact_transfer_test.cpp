@@ -58,6 +58,22 @@ TEST(ContactTransfer, AFinerLineOfCouplesKeepsTheTotalForceWhateverTheUnits) {
   }
 }
 
+TEST(ContactTransfer, AContactLineAlongYIsTransferredAsOneAlongX) {
+  // The same line of couples laid along y (one x for all: the model problem's contact line)
+  // and along x: the same forces, row for row.
+  std::vector<ContactMultiplier> along_x, along_y;
+  std::vector<std::array<double, 2>> fine_x, fine_y;
+  for (int j = 0; j <= 20; ++j) {
+    along_x.push_back({j / 20.0, 1.0, 1.0 + j % 3});
+    along_y.push_back({1.0, j / 20.0, 1.0 + j % 3});
+  }
+  for (int k = 0; k <= 40; ++k) {
+    fine_x.push_back({k / 40.0 + 1e-9, 1.0});
+    fine_y.push_back({1.0, k / 40.0 + 1e-9});
+  }
+  EXPECT_EQ(transfer_contact_forces(along_x, fine_x), transfer_contact_forces(along_y, fine_y));
+}
+
 TEST(ContactTransfer, NoSourceRowsGiveZeroForces) {
   const std::vector<double> forces = transfer_contact_forces({}, {{0.0, 0.0}, {1.0, 1.0}});
   ASSERT_EQ(forces.size(), 2u);

@@ -6,20 +6,27 @@
 namespace ffeti {
 namespace {
 
-/// Index of the point of `points` (sorted by x) nearest to (x, y): a scan outwards from x
-/// that stops once the x distance alone exceeds the best distance found.
-size_t nearest(const std::vector<ContactMultiplier>& points, double x, double y) {
-  const auto by_x = [](const ContactMultiplier& p, double value) { return p.x < value; };
-  const auto middle = static_cast<size_t>(std::lower_bound(points.begin(), points.end(), x, by_x) - points.begin());
+/// A row of the source problem in coordinates (u, v), u along the axis over which the rows
+/// spread the most: a contact line along y has a single x, and a scan sorted by x would
+/// visit every row for every query.
+struct Source {
+  double u, v, force;
+};
+
+/// Index of the source (sorted by u) nearest to (u, v): a scan outwards from u that stops
+/// once the u distance alone exceeds the best distance found.
+size_t nearest(const std::vector<Source>& sources, double u, double v) {
+  const auto by_u = [](const Source& s, double value) { return s.u < value; };
+  const auto middle = static_cast<size_t>(std::lower_bound(sources.begin(), sources.end(), u, by_u) - sources.begin());
   size_t best = 0;
   double best_sq = std::numeric_limits<double>::infinity();
   const auto consider = [&](size_t i) {
-    const double dx = points[i].x - x, dy = points[i].y - y;
-    if (dx * dx >= best_sq) return false;  // every point further out in this direction is too
-    if (dx * dx + dy * dy < best_sq) best_sq = dx * dx + dy * dy, best = i;
+    const double du = sources[i].u - u, dv = sources[i].v - v;
+    if (du * du >= best_sq) return false;  // every source further out in this direction is too
+    if (du * du + dv * dv < best_sq) best_sq = du * du + dv * dv, best = i;
     return true;
   };
-  for (size_t i = middle; i < points.size() && consider(i); ++i) {}
+  for (size_t i = middle; i < sources.size() && consider(i); ++i) {}
   for (size_t i = middle; i-- > 0 && consider(i);) {}
   return best;
 }
@@ -30,12 +37,20 @@ std::vector<double> transfer_contact_forces(const std::vector<ContactMultiplier>
                                             const std::vector<std::array<double, 2>>& to) {
   std::vector<double> forces(to.size(), 0.0);
   if (from.empty()) return forces;
-  std::vector<ContactMultiplier> sorted = from;
-  std::sort(sorted.begin(), sorted.end(), [](const ContactMultiplier& a, const ContactMultiplier& b) { return a.x < b.x; });
+  const auto [x_low, x_high] = std::minmax_element(from.begin(), from.end(), [](auto& a, auto& b) { return a.x < b.x; });
+  const auto [y_low, y_high] = std::minmax_element(from.begin(), from.end(), [](auto& a, auto& b) { return a.y < b.y; });
+  const bool along_y = y_high->y - y_low->y > x_high->x - x_low->x;
+  std::vector<Source> sources;
+  for (const ContactMultiplier& row : from)
+    sources.push_back(along_y ? Source{row.y, row.x, row.lambda} : Source{row.x, row.y, row.lambda});
+  std::sort(sources.begin(), sources.end(), [](const Source& a, const Source& b) { return a.u < b.u; });
   std::vector<size_t> source(to.size());
-  std::vector<int> sharing(sorted.size(), 0);
-  for (size_t k = 0; k < to.size(); ++k) ++sharing[source[k] = nearest(sorted, to[k][0], to[k][1])];
-  for (size_t k = 0; k < to.size(); ++k) forces[k] = sorted[source[k]].lambda / sharing[source[k]];
+  std::vector<int> sharing(sources.size(), 0);
+  for (size_t k = 0; k < to.size(); ++k) {
+    const auto& [x, y] = to[k];
+    ++sharing[source[k] = along_y ? nearest(sources, y, x) : nearest(sources, x, y)];
+  }
+  for (size_t k = 0; k < to.size(); ++k) forces[k] = sources[source[k]].force / sharing[source[k]];
   return forces;
 }
 
