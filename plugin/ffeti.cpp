@@ -285,7 +285,7 @@ basicAC_F0::name_and_type FetiSetup::name_param[] = {
 class FetiSolve : public E_F0mps {
  public:
   typedef long Result;
-  static const int n_name_param = 14;
+  static const int n_name_param = 15;
   static basicAC_F0::name_and_type name_param[];
   Expression nargs[n_name_param];
   Expression id, U;
@@ -319,6 +319,7 @@ class FetiSolve : public E_F0mps {
     settings.mprgp.expansion = expansion_from_name(optional_string(nargs[10], stack, option_defaults::expansion));
     settings.stopping = stop_from_name(optional_string(nargs[11], stack, option_defaults::stop));
     if (auto* start = optional_pointer<KN<double>>(nargs[13], stack)) settings.start = binding::to_vec(*start);
+    settings.settle = static_cast<int>(optional_int(nargs[14], stack, settings.settle));
     settings.monitor = h.history.start(progress_monitor(verbosity, h.problem->communicator()));
     h.sensitivity.reset();
     h.result.reset();
@@ -350,7 +351,8 @@ basicAC_F0::name_and_type FetiSolve::name_param[] = {
     {"algorithm", &typeid(std::string*)}, {"verbosity", &typeid(long)}, {"rho", &typeid(double)},
     {"M", &typeid(double)},           {"eta", &typeid(double)},       {"gamma", &typeid(double)},
     {"history", &typeid(std::string*)}, {"expansion", &typeid(std::string*)},
-    {"stop", &typeid(std::string*)},  {"coarse", &typeid(std::string*)}, {"start", &typeid(KN<double>*)}};
+    {"stop", &typeid(std::string*)},  {"coarse", &typeid(std::string*)}, {"start", &typeid(KN<double>*)},
+    {"settle", &typeid(long)}};
 
 // ---- sensitivities (seed eq. 12) -------------------------------------------------------
 

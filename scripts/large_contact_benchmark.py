@@ -32,11 +32,14 @@ CASES = [
     ("no preconditioner, fixed-step expansion, seed's stop (first default)",
      {"preconditioner": "none", "expansion": "fixed", "stop": "seed"}),
     ("lumped preconditioner, CG restarted", {"expansion": "projected-cg-restart"}),
-    ("default, started from the solution on n/2 (nested iteration)", {"nested": 1}),
+    ("default, started from the solution on n/2 (nested iteration), start settled", {"nested": 1}),
+    ("the same, start not settled (settle=0, before)", {"nested": 1, "settle": 0}),
     ("default, nested over n/4, n/2, n", {"nested": 2}),
     ("nested over n/2, the plugin's nearest-couple transfer (fetiContactStart)", {"nested": 1, "transfer": "nearest"}),
     ("H/h = 20 fixed (squares of 20 cells), from zero", {"Hh": 20}),
     ("H/h = 20 fixed, nested over n/2", {"Hh": 20, "nested": 1}),
+    ("H/h = 20 fixed, nested over n/2, not settled (before)", {"Hh": 20, "nested": 1, "settle": 0}),
+    ("H/h = 20 fixed, nested from n = 40 (every level started from the one before)", {"Hh": 20, "nested": "from 40"}),
     ("glued: no contact, CG", {"glued": 1, "preconditioner": "none"}),
     ("glued, lumped preconditioner", {"glued": 1}),
 ]
@@ -45,6 +48,8 @@ CASES = [
 def arguments(n, options):
     args = ["-n", n]
     for key, value in options.items():
+        if value == "from 40":  # levels 40, 80, ..., n: nested over log2(n / 40) coarser levels
+            value = (n // 40).bit_length() - 1
         args += [f"-{key}", value]
     return args
 
@@ -119,7 +124,8 @@ def main():
             runs[label].append(scene(FIXED_H_EXTRA_SIZE, reference=0, **options))
     plot_cost_over_unknowns(runs, "Large contact zone (every interior node a couple), tol = 1e-4", "large-contact.png")
     largest = SIZES[-1]
-    traces = {"default (cold start)": trace(largest), "nested over n/2": trace(largest, nested=1)}
+    traces = {"default (cold start)": trace(largest), "nested over n/2, start settled": trace(largest, nested=1),
+              "nested over n/2, not settled (before)": trace(largest, nested=1, settle=0)}
     plot_traces(traces, int(references[largest]["active_reference"] if largest <= LARGEST_REFERENCE
                             else references[largest]["active"]), largest, "large-contact-trace.png")
     lines = [
@@ -151,9 +157,14 @@ def main():
         "  started (`fetiSolve(..., start=)`) from the contact pressure of the one before, sampled",
         "  at the finer couples (`largeContactStart` in `edp/large-contact.idp`), or with the",
         "  plugin's transfer for any scene (`fetiContactStart`: each couple the force of the",
-        "  nearest coarser couple, shared among the couples nearest to it). \"Hessian mult.\"",
-        "  and \"solve\" are the finest level's; the coarser levels' multiplications and whole time",
-        "  (assembly, set-up, solve, transfer) are in their own column.",
+        "  nearest coarser couple, shared among the couples nearest to it). Each start is settled",
+        "  first (`fetiSolve(..., settle=2)`, the default): up to two face solves, conjugate",
+        "  gradients on the start's contact set with the bounds ignored, then projected, each kept",
+        "  if it lowers the cost (their CG steps: \"settle\"); `settle=0` starts MPRGP from the",
+        "  transferred multipliers as they are. \"Hessian mult.\" and \"solve\" are the finest",
+        "  level's; the coarser levels' multiplications, the same weighted by each level's unknowns",
+        "  over the finest's (\"finest equiv.\": their cost in multiplications of the finest level),",
+        "  and their whole time (assembly, set-up, solve, transfer) are in their own column.",
         "",
         "Energy error: relative to the reference (a primal-dual active set solution of the unsplit",
         "problem up to n = 160, ffeti at tol 1e-10 beyond); negative means below the minimum, which",
@@ -166,9 +177,9 @@ def main():
         "contact set. Every interior node is a couple, so no subdomain has interior dofs and the",
         "Dirichlet preconditioner is the lumped one (the default), at no factorization.",
         "",
-        "| n | unknowns | couples | subdomains | case | outer | Hessian mult. | expansions | fallbacks | CG steps | solve [s] |"
-        " coarser levels: mult., [s] | energy error | violation | contact (reference) |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+        "| n | unknowns | couples | subdomains | case | outer | Hessian mult. | expansions | fallbacks | CG steps | settle |"
+        " solve [s] | coarser levels: mult. (finest equiv.), [s] | energy error | violation | contact (reference) |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     for n in SIZES + [FIXED_H_EXTRA_SIZE]:
         for label, _ in CASES:
@@ -179,10 +190,11 @@ def main():
             violation = max(f(r, "kkt_equality"), f(r, "kkt_inequality"))
             error = f"{r['error_vs_reference']:.1e}" if "error_vs_reference" in r else "-"
             contact = f"{r['active']} ({r['active_reference']})" if "error_vs_reference" in r else "-"
-            coarser = f"{r['nested_hessian']}, {f(r, 'time_nested'):.2f}" if f(r, "nested") > 0 else "-"
+            coarser = (f"{r['nested_hessian']} ({f(r, 'nested_work'):.0f}), {f(r, 'time_nested'):.2f}"
+                       if f(r, "nested") > 0 else "-")
             lines.append(
                 f"| {n} | {r['primal']} | {r['couples']} | {r['subdomains']} | {label} | {r['outer']} | {r['hessian']} | {r['expansion']} | "
-                f"{r['expansion_fallback']} | {r['cg']} | {f(r, 'time_solve'):.3f} | {coarser} | {error} | "
+                f"{r['expansion_fallback']} | {r['cg']} | {r['settle']} | {f(r, 'time_solve'):.3f} | {coarser} | {error} | "
                 f"{violation:.1e} | {contact} |")
     lines += [
         "",

@@ -40,13 +40,14 @@ double projected_gradient_max(const Vec& x, const Vec& g, const Vec& lower) {
 MprgpSettings mprgp_within(const DualSolveSettings& settings) {
   MprgpSettings mprgp = settings.mprgp;
   mprgp.max_hessian = settings.max_hessian;
+  mprgp.settle_rounds = settings.start.size() > 0 ? settings.settle : 0;  // nothing to settle from zero
   return mprgp;
 }
 
 SmalbeSettings smalbe_within(const DualSolveSettings& settings) {
   SmalbeSettings smalbe = settings.smalbe;
   smalbe.max_hessian = settings.max_hessian;
-  smalbe.inner = settings.mprgp;
+  smalbe.inner = mprgp_within(settings);  // its first inner solve settles the start
   return smalbe;
 }
 
@@ -78,6 +79,7 @@ void DualSolveSettings::validate() const {
   for (const auto& [name, value] : positive)
     if (!(value > 0)) throw InputError(std::string(name) + ": must be > 0");
   if (!start.allFinite()) throw InputError("start: has entries that are not finite numbers");
+  if (settle < 0) throw InputError("settle: must be >= 0");
   try {
     smalbe.validate();
     mprgp.validate();

@@ -52,6 +52,9 @@ struct DualSolveSettings {
   /// one interpolated from a coarser mesh; empty: lambda = 0 (lambda~ where bodies float).
   /// Moved onto the constraints' feasible set first, so any values of the right size do.
   Vec start;
+  /// Face solves that settle a given start before MPRGP (qp/start_settling.h); 0: MPRGP
+  /// from the start as given. Ignored without a start. 2: measured, docs/results/large-contact.md.
+  int settle = 2;
 
   void validate() const;  ///< throws InputError naming the setting
 };

@@ -1,16 +1,16 @@
 #include "qp/mprgp.h"
 
+#include "qp/start_settling.h"
+
 #include <cmath>
 #include <stdexcept>
 
 namespace ffeti {
 namespace {
 
-bool is_free(double x, double l) { return l == kUnbounded || x > l; }
-
 /// Free gradient phi: g on the free set, 0 on the active set.
 void free_gradient(const Vec& x, const Vec& g, const Vec& lower, Vec& phi) {
-  for (Eigen::Index i = 0; i < x.size(); ++i) phi[i] = is_free(x[i], lower[i]) ? g[i] : 0.0;
+  for (Eigen::Index i = 0; i < x.size(); ++i) phi[i] = above_bound(x[i], lower[i]) ? g[i] : 0.0;
 }
 
 /// Largest step a >= 0 with x - a p >= l on the bounded components.
@@ -29,26 +29,28 @@ int off_bound_count(const Vec& x, const Vec& lower) {
   return count;
 }
 
-namespace {
-
-void project(Vec& x, const Vec& lower) {
+int project_onto_bounds(Vec& x, const Vec& lower) {
+  int projected = 0;
   for (Eigen::Index i = 0; i < x.size(); ++i)
-    if (lower[i] != kUnbounded && x[i] < lower[i]) x[i] = lower[i];
+    if (lower[i] != kUnbounded && x[i] < lower[i]) {
+      x[i] = lower[i];
+      ++projected;
+    }
+  return projected;
 }
-
-}  // namespace
 
 void MprgpSettings::validate() const {
   if (!(gamma > 0)) throw std::invalid_argument("MPRGP gamma must be > 0");
   if (!(step_factor > 0 && step_factor <= 2))
     throw std::invalid_argument("MPRGP step_factor must lie in (0, 2]");
   if (max_hessian < 1) throw std::invalid_argument("MPRGP max_hessian must be >= 1");
+  if (settle_rounds < 0) throw std::invalid_argument("MPRGP settle_rounds must be >= 0");
 }
 
 Vec projected_gradient(const Vec& x, const Vec& g, const Vec& lower) {
   Vec gp(x.size());
   for (Eigen::Index i = 0; i < x.size(); ++i)
-    gp[i] = is_free(x[i], lower[i]) ? g[i] : std::min(g[i], 0.0);
+    gp[i] = above_bound(x[i], lower[i]) ? g[i] : std::min(g[i], 0.0);
   return gp;
 }
 
@@ -72,12 +74,12 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
     preconditioner(phi, z);
     ++counts.preconditioner;
     for (Eigen::Index i = 0; i < n; ++i)
-      if (!is_free(x[i], lower[i])) z[i] = 0.0;
+      if (!above_bound(x[i], lower[i])) z[i] = 0.0;
     return z;
   };
 
   if (!gradient_is_current) {
-    project(x, lower);
+    project_onto_bounds(x, lower);
     g.resize(n);
     multiply(x, Ap);
     g = Ap - b;  // g = A x - b
@@ -94,7 +96,7 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
     // Split the gradient; chopped gradient beta and reduced free gradient phit.
     double beta_sq = 0, phit_phi = 0, phit_sq = 0, gp_sq = 0;
     for (Eigen::Index i = 0; i < n; ++i) {
-      const bool free = is_free(x[i], lower[i]);
+      const bool free = above_bound(x[i], lower[i]);
       beta[i] = free ? 0.0 : std::min(g[i], 0.0);
       const double phit =
           (!free || lower[i] == kUnbounded) ? phi[i] : std::min((x[i] - lower[i]) / abar, phi[i]);
@@ -112,6 +114,12 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
     if (counts.hessian >= settings.max_hessian) {
       result.status = SolveStatus::max_iterations;
       return result;
+    }
+    if (iteration == 0 && settings.settle_rounds > 0) {  // a start that passes the test is kept as is
+      settle_start(A, b, lower, settings.settle_rounds, settings.max_hessian, x, g, counts, preconditioner);
+      free_gradient(x, g, lower, phi);
+      p = precondition_in_face();
+      continue;
     }
 
     if (beta_sq <= settings.gamma * settings.gamma * phit_phi) {
@@ -149,7 +157,7 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
           const double f_x = 0.5 * x.dot(g - b);
           const double f_half = f_x - a_f * g.dot(p) + 0.5 * a_f * a_f * pAp;
           trial = x - a_cg * p;
-          project(trial, lower);
+          project_onto_bounds(trial, lower);
           x -= a_f * p;
           g -= a_f * Ap;
           free_gradient(x, g, lower, phi);
@@ -176,7 +184,7 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
         }
         if (!expanded) {
           x -= abar * phi;  // expansion: fixed-step projected gradient step
-          project(x, lower);
+          project_onto_bounds(x, lower);
           multiply(x, Ap);
           g = Ap - b;
         }
@@ -188,7 +196,7 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
           // every expansion is steepest descent where the contact zone's edge moves a band per
           // step (the large contact zone: 1.7 times the multiplications, docs/algorithms.md).
           for (Eigen::Index i = 0; i < n; ++i)
-            if (!is_free(x[i], lower[i])) p[i] = 0.0;
+            if (!above_bound(x[i], lower[i])) p[i] = 0.0;
           trial = direction - (direction.dot(Ap) / pAp) * p;  // Ap = A p of the last direction
           continued = trial.dot(g) > 0;                       // a descent direction, or restart
         }

@@ -22,6 +22,7 @@ struct MprgpSettings {
   double step_factor = 1.9;   ///< fixed step abar = step_factor / ||A||, in (0, 2]
   int max_hessian = 20000;    ///< limit on Hessian multiplications in this call
   MprgpExpansion expansion = MprgpExpansion::projected_cg;
+  int settle_rounds = 0;      ///< face solves settling the start first (settle_start); 0: none
 
   /// Throws std::invalid_argument naming the offending member.
   void validate() const;
@@ -37,11 +38,15 @@ struct MprgpResult {
 /// gP_i = g_i where x_i is free (unbounded or x_i > l_i), min(g_i, 0) where x_i = l_i.
 Vec projected_gradient(const Vec& x, const Vec& g, const Vec& lower);
 
+/// Sets the components of x below their bound to it; returns how many there were.
+int project_onto_bounds(Vec& x, const Vec& lower);
+
 /// Bounded components of x above their bound: for the FETI dual, the contact rows with a
 /// positive multiplier (the contact set).
 int off_bound_count(const Vec& x, const Vec& lower);
 
-/// Minimizes the QP from the start x (projected onto the bounds first). On return x is the
+/// Minimizes the QP from the start x (projected onto the bounds first; then, unless it
+/// passes the stop test, settled by `settings.settle_rounds` face solves). On return x is the
 /// last iterate and g = Ax - b at it. If `gradient_is_current` is true, g on entry must
 /// already equal Ax - b at the (feasible) x, saving one multiplication (warm restarts).
 /// `a_norm` is an upper estimate of ||A||_2. `stop` receives ||gP(x)||_2.

@@ -23,6 +23,7 @@ IterationCounts& IterationCounts::operator+=(const IterationCounts& other) {
   expansion += other.expansion;
   proportioning += other.proportioning;
   expansion_fallback += other.expansion_fallback;
+  settle += other.settle;
   penalty_increases += other.penalty_increases;
   preconditioner += other.preconditioner;
   return *this;

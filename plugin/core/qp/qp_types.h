@@ -30,6 +30,9 @@ enum class SolveStatus {
 
 std::string to_string(SolveStatus status);
 
+/// Component x of an iterate is off its lower bound l (always so where l = kUnbounded).
+inline bool above_bound(double x, double l) { return l == kUnbounded || x > l; }
+
 /// Machine-independent cost of one solve. Every application of the Hessian inside the
 /// solve is counted in `hessian`; the norm estimate's multiplications are kept apart.
 struct IterationCounts {
@@ -39,6 +42,7 @@ struct IterationCounts {
   int cg = 0;           ///< conjugate gradient steps (MPRGP CG steps or plain CG)
   int expansion = 0;    ///< MPRGP expansion steps
   int proportioning = 0;///< MPRGP proportioning steps
+  int settle = 0;       ///< conjugate gradient steps settling a given start (qp/start_settling.h)
   int expansion_fallback = 0;  ///< MPRGP projected-CG expansions rejected for the fixed step
   int penalty_increases = 0;  ///< SMALBE: times the penalty rho grew
   int preconditioner = 0;     ///< applications of a preconditioner (about the cost of one of F)

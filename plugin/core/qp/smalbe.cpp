@@ -91,6 +91,7 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
     }
     MprgpSettings inner = settings.inner;
     inner.max_hessian = settings.max_hessian - result.counts.hessian;
+    if (outer > 0) inner.settle_rounds = 0;  // a start is settled once, not every multiplier update
     const MprgpResult inner_result =
         mprgp(A, shifted_b, lower, std::max(problem.hessian_norm, rho), x, g,
               gradient_is_current, inner, inner_stop, {}, inner_preconditioner);
