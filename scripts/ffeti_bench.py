@@ -80,7 +80,7 @@ def save_page(name, lines):
         page.write("\n".join(lines))
 
 
-def plot_cost_over_unknowns(runs, title, name):
+def plot_cost_over_unknowns(runs, title, name, legend_columns=3):
     """Two log-log panels, Hessian multiplications and dual solve time against the unknowns,
     one line per case of `runs` ({label: [result, ...]}); rows without a multiplication (a
     scene with nothing to iterate) are left out. Saved as docs/results/<name>."""
@@ -100,7 +100,7 @@ def plot_cost_over_unknowns(runs, title, name):
         ax.grid(True, which="both", alpha=0.3)
     # Below the panels: inside, the legend hid the lowest lines (the glued cases).
     handles, labels = axes[0].get_legend_handles_labels()
-    fig.legend(handles, labels, loc="lower center", ncol=3, fontsize=7, frameon=False)
+    fig.legend(handles, labels, loc="lower center", ncol=legend_columns, fontsize=7, frameon=False)
     fig.suptitle(title)
     fig.tight_layout(rect=(0, 0.14, 1, 1))
     fig.savefig(os.path.join(OUT, name), dpi=110)
