@@ -116,7 +116,7 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
       return result;
     }
     if (iteration == 0 && settings.settle_rounds > 0) {  // a start that passes the test is kept as is
-      settle_start(A, b, lower, settings.settle_rounds, settings.max_hessian, x, g, counts, preconditioner);
+      settle_start(A, b, lower, settings.settle_rounds, settings.max_hessian, x, g, counts, preconditioner, monitor);
       free_gradient(x, g, lower, phi);
       p = precondition_in_face();
       continue;

@@ -59,7 +59,8 @@ void solve_on_face(const LinearOperator& A, const std::vector<char>& face, int m
 }  // namespace
 
 void settle_start(const LinearOperator& A, const Vec& b, const Vec& lower, int rounds, int max_hessian,
-                  Vec& x, Vec& g, IterationCounts& counts, const LinearOperator& preconditioner) {
+                  Vec& x, Vec& g, IterationCounts& counts, const LinearOperator& preconditioner,
+                  const Monitor& monitor) {
   const Eigen::Index n = x.size();
   std::vector<char> face(n);
   Vec y, gy, Ay;
@@ -77,6 +78,8 @@ void settle_start(const LinearOperator& A, const Vec& b, const Vec& lower, int r
     if (!(0.5 * y.dot(gy - b) < 0.5 * x.dot(g - b))) return;
     x.swap(y);
     g.swap(gy);
+    if (monitor)
+      monitor({"settle", round, projected_gradient(x, g, lower).norm(), 0.0, counts.hessian, off_bound_count(x, lower)});
     if (released == 0) return;
   }
 }

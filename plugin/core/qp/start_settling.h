@@ -13,7 +13,8 @@ namespace ffeti {
 /// bounds. A round is kept only if it lowers f(x) = 1/2 x'Ax - b'x; the rounds end at the
 /// first that projects nothing, is not kept, or would pass `max_hessian` multiplications.
 /// On return x is feasible and g = Ax - b at it. CG steps go to counts.settle, every
-/// multiplication to counts.hessian, M's applications to counts.preconditioner.
+/// multiplication to counts.hessian, M's applications to counts.preconditioner; the monitor
+/// gets a "settle" line after each kept round.
 ///
 /// Why: a start carried over from a coarser mesh or a nearby problem has nearly the right
 /// contact set but not the forces on it. MPRGP started there takes CG steps whose transient
@@ -22,6 +23,7 @@ namespace ffeti {
 /// Solving the start's face first makes the forces consistent with the set, so what
 /// projection releases is only where the start's set was wrong.
 void settle_start(const LinearOperator& A, const Vec& b, const Vec& lower, int rounds, int max_hessian,
-                  Vec& x, Vec& g, IterationCounts& counts, const LinearOperator& preconditioner = {});
+                  Vec& x, Vec& g, IterationCounts& counts, const LinearOperator& preconditioner = {},
+                  const Monitor& monitor = {});
 
 }  // namespace ffeti
