@@ -62,11 +62,12 @@ def scene(n, **options):
     return run("large-contact.edp", *arguments(n, options))["RESULT"][0]
 
 
-PROGRESS = re.compile(r"ffeti mprgp\s+\d+\s+hessian\s+(\d+)\s+\|\|gP\|\|\s+(\S+).*contact\s+(\d+)")
+PROGRESS = re.compile(r"ffeti (?:mprgp|settle)\s+\d+\s+hessian\s+(\d+)\s+\|\|gP\|\|\s+(\S+).*contact\s+(\d+)")
 
 
 def trace(n, **options):
-    """MPRGP's progress lines of the (finest) solve: [(Hessian mult., ||gP||, couples in contact)]."""
+    """Progress lines of the (finest) solve, MPRGP's and those settling its start:
+    [(Hessian mult., ||gP||, couples in contact)]."""
     output = run("large-contact.edp", *arguments(n, dict(options, reference=0)), "-v", 1)["output"]
     return [(int(h), float(g), int(c)) for h, g, c in PROGRESS.findall(output)]
 
@@ -210,7 +211,7 @@ def main():
         "![large contact zone](large-contact.png)",
         "",
         f"MPRGP's progress at n = {largest} (9 subdomains): couples in contact and the projected gradient",
-        "after each step, against the Hessian multiplications so far.",
+        "after each step (and each round settling a nested start), against the Hessian multiplications so far.",
         "",
         "![how the contact set is found](large-contact-trace.png)",
         "",
