@@ -18,6 +18,7 @@
 
 #include <chrono>
 #include <algorithm>
+#include <limits>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -319,7 +320,8 @@ class FetiSolve : public E_F0mps {
     settings.mprgp.expansion = expansion_from_name(optional_string(nargs[10], stack, option_defaults::expansion));
     settings.stopping = stop_from_name(optional_string(nargs[11], stack, option_defaults::stop));
     if (auto* start = optional_pointer<KN<double>>(nargs[13], stack)) settings.start = binding::to_vec(*start);
-    settings.settle = static_cast<int>(optional_int(nargs[14], stack, settings.settle));
+    const long settle = optional_int(nargs[14], stack, settings.settle);  // negative: refused by validate()
+    settings.settle = settle < 0 ? -1 : static_cast<int>(std::min<long>(settle, std::numeric_limits<int>::max()));
     settings.monitor = h.history.start(progress_monitor(verbosity, h.problem->communicator()));
     h.sensitivity.reset();
     h.result.reset();
