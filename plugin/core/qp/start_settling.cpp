@@ -20,7 +20,10 @@ void restrict_to_face(const std::vector<char>& face, Vec& v) {
 }
 
 /// One face solve from y (gradient gy) by conjugate gradients on `face`; it stops early on a
-/// direction of nonpositive curvature, y and gy consistent at every step.
+/// direction of nonpositive curvature, y and gy consistent at every step. Not
+/// conjugate_gradient(): it multiplies once to form the start's gradient (known here) and once
+/// more to verify the final one on the face, where the caller needs the whole gradient after
+/// projection; two of the 10 to 20 multiplications a round takes.
 void solve_on_face(const LinearOperator& A, const std::vector<char>& face, int max_hessian, Vec& y, Vec& gy,
                    IterationCounts& counts, const LinearOperator& preconditioner) {
   Vec r = gy, z, p, Ap;
