@@ -46,6 +46,25 @@ TEST(SettleStart, LowersTheCostAndKeepsTheIterateFeasibleAndItsGradientExact) {
   EXPECT_LT((qp.A * x - qp.b - g).norm(), 1e-10 * qp.b.norm());
 }
 
+TEST(SettleStart, KeepsTheStartWhenTheProjectedFaceSolutionCostsMore) {
+  // min 1/2 x'Ax - b'x, x_0 >= 0: the solution (0, 0.5) has x_0 strictly active (g_0 = 3.5).
+  // From (1e-3, 0.5) both components are free; the face solve reaches the unconstrained
+  // minimizer (-7/3, 5/3), whose projection (0, 5/3) costs 10/9 against -0.2465 at the start.
+  test::BoundQp qp;
+  qp.A = (Eigen::MatrixXd(2, 2) << 2, 1, 1, 2).finished();
+  qp.b = (Vec(2) << -3, 1).finished();
+  qp.lower = (Vec(2) << 0, kUnbounded).finished();
+  const Vec start = (Vec(2) << 1e-3, 0.5).finished();
+  Vec x = start, g = qp.A * x - qp.b;
+  const Vec g_start = g;
+  IterationCounts counts;
+  settle_start(test::dense_operator(qp.A), qp.b, qp.lower, 2, 100, x, g, counts);
+  EXPECT_EQ(counts.settle, 2);    // the face solve ran
+  EXPECT_EQ(counts.hessian, 3);  // two CG steps and the projected point's gradient
+  EXPECT_EQ(x, start);           // and was not kept
+  EXPECT_EQ(g, g_start);
+}
+
 TEST(SettleStart, StaysWithinTheMultiplicationBudget) {
   const test::BoundQp qp = test::manufactured_bound_qp(60, 1e4, 8, false);
   Vec x = nearly_right_start(qp, 2);
