@@ -4,6 +4,7 @@
 #include "ff++.hpp"
 
 #include "binding_convert.h"
+#include "feti/contact_pressure.h"
 #include "feti/contact_transfer.h"
 #include "feti/errors.h"
 #include "feti/feti_problem.h"
@@ -118,7 +119,7 @@ std::string optional_string(Expression e, Stack stack, const std::string& fallba
 class FetiSetup : public E_F0mps {
  public:
   typedef long Result;
-  static const int n_name_param = 14;
+  static const int n_name_param = 15;
   static basicAC_F0::name_and_type name_param[];
   Expression nargs[n_name_param];
   Expression K, F, X, Y, body;
@@ -144,7 +145,7 @@ class FetiSetup : public E_F0mps {
  private:
   // Named parameters by position in name_param.
   enum Named { kDirichlet, kDirichletValues, kSlave, kMaster, kGap, kComponent, kVariant, kFactor, kThreads,
-               kComm, kSegments, kObstacle, kRadius, kPreconditioner };
+               kComm, kSegments, kObstacle, kRadius, kPreconditioner, kContactGap };
 
   long setup(Stack stack) const {
     auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
@@ -229,7 +230,7 @@ class FetiSetup : public E_F0mps {
     }
   }
 
-  /// contactSlave=, contactMaster=, gap=, contactSegments=, obstacle=, contactRadius=.
+  /// contactSlave=, contactMaster=, gap=, contactSegments=, obstacle=, contactRadius=, contactGap=.
   ContactInput contact_input(Stack stack, long count, const std::vector<int>& ids, const std::vector<long>& dofs) const {
     ContactInput contact;
     contact.slave_dofs = binding::per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kSlave], stack), count, ids,
@@ -256,6 +257,12 @@ class FetiSetup : public E_F0mps {
       contact.obstacle_normal = {(*obstacle)[2], (*obstacle)[3]};
     }
     contact.search_distance = optional_real(nargs[kRadius], stack, contact.search_distance);
+    if (const auto* gaps = optional_pointer<KN<KN<double>>>(nargs[kContactGap], stack)) {
+      if (gaps->N() != count)
+        throw InputError("contactGap: has " + std::to_string(gaps->N()) + " entries for " + std::to_string(count) +
+                         " subdomains");
+      for (int s : ids) contact.gap_field.push_back(binding::to_std((*gaps)[s]));
+    }
     return contact;
   }
 
@@ -280,7 +287,8 @@ basicAC_F0::name_and_type FetiSetup::name_param[] = {
     {"variant", &typeid(std::string*)},          {"factor", &typeid(std::string*)},
     {"threads", &typeid(long)},                  {"comm", &typeid(pcommworld)},
     {"contactSegments", &typeid(KN<KN<long>>*)}, {"obstacle", &typeid(KN<double>*)},
-    {"contactRadius", &typeid(double)},          {"preconditioner", &typeid(std::string*)}};
+    {"contactRadius", &typeid(double)},          {"preconditioner", &typeid(std::string*)},
+    {"contactGap", &typeid(KN<KN<double>>*)}};
 
 // ---- int status = fetiSolve(P, U, lambda=..., tol=..., maxit=..., algorithm=..., verbosity=...)
 class FetiSolve : public E_F0mps {
@@ -372,11 +380,12 @@ SensitivityProblem& sensitivity_problem(Handle& h, double threshold) {
 double default_threshold(const Handle& h) { return std::min(1e-2, 10 * h.tolerance); }
 
 /// Design directions from the script: for k directions, entry j * S + s of dK, dF (empty
-/// entries: zero) and of the node velocities velocityX, velocityY (absent: the contact
-/// geometry does not move) belongs to direction j and subdomain s (S subdomains). Only this
-/// rank's subdomains are read.
+/// entries: zero), of the node velocities velocityX, velocityY (absent: the contact
+/// geometry does not move) and of the gap derivatives dGap (absent: the gaps do not change)
+/// belongs to direction j and subdomain s (S subdomains). Only this rank's subdomains are read.
 std::vector<DesignDerivative> design_directions(const FetiProblem& problem, KN<Matrice_Creuse<double>>* dK,
-                                                KN<KN<double>>* dF, KN<KN<double>>* vx, KN<KN<double>>* vy) {
+                                                KN<KN<double>>* dF, KN<KN<double>>* vx, KN<KN<double>>* vy,
+                                                KN<KN<double>>* dgap) {
   const long count = problem.subdomain_count();
   const long k = dK->N() / count;
   std::vector<DesignDerivative> directions(static_cast<size_t>(std::max(k, 0L)));
@@ -384,8 +393,10 @@ std::vector<DesignDerivative> design_directions(const FetiProblem& problem, KN<M
     if (k < 1 || dK->N() != k * count)
       throw InputError("dK: has " + std::to_string(dK->N()) + " entries: needs " + std::to_string(count) +
                        " per design direction (one per subdomain)");
-    const std::pair<const char*, long> sizes[] = {
-        {"dF", dF->N()}, {"velocityX", vx ? vx->N() : k * count}, {"velocityY", vy ? vy->N() : k * count}};
+    const std::pair<const char*, long> sizes[] = {{"dF", dF->N()},
+                                                  {"velocityX", vx ? vx->N() : k * count},
+                                                  {"velocityY", vy ? vy->N() : k * count},
+                                                  {"dGap", dgap ? dgap->N() : k * count}};
     for (const auto& [name, n] : sizes)
       if (n != k * count)
         throw InputError(std::string(name) + ": has " + std::to_string(n) + " entries, dK has " +
@@ -401,6 +412,7 @@ std::vector<DesignDerivative> design_directions(const FetiProblem& problem, KN<M
         d.df.push_back(binding::to_vec((*dF)[e]));
         if (vx) d.velocity_x.push_back(binding::to_std((*vx)[e]));
         if (vy) d.velocity_y.push_back(binding::to_std((*vy)[e]));
+        if (dgap) d.dgap.push_back(binding::to_std((*dgap)[e]));
       }
     }
   });
@@ -416,11 +428,13 @@ DualSolveSettings sensitivity_settings(const Handle& h, Expression tol, Expressi
   return settings;
 }
 
-// int status = fetiSensitivity(P, dK, dF, Z, velocityX=, velocityY=, tol=, maxit=, activeTol=, verbosity=)
+// int status = fetiSensitivity(P, dK, dF, Z, velocityX=, velocityY=, tol=, maxit=, activeTol=, verbosity=,
+//                              dGap=, dLambda=): dLambda[j] receives lambda' of direction j per contact row
+// (fetiContact's order; 0 on inactive rows), on every rank.
 class FetiSensitivity : public E_F0mps {
  public:
   typedef long Result;
-  static const int n_name_param = 6;
+  static const int n_name_param = 8;
   static basicAC_F0::name_and_type name_param[];
   Expression nargs[n_name_param];
   Expression id, dK, dF, Z;
@@ -444,9 +458,14 @@ class FetiSensitivity : public E_F0mps {
       SensitivityProblem& sens = sensitivity_problem(h, optional_real(nargs[4], stack, default_threshold(h)));
       const std::vector<DesignDerivative> directions = design_directions(
           *h.problem, GetAny<KN<Matrice_Creuse<double>>*>((*dK)(stack)), GetAny<KN<KN<double>>*>((*dF)(stack)),
-          optional_pointer<KN<KN<double>>>(nargs[0], stack), optional_pointer<KN<KN<double>>>(nargs[1], stack));
+          optional_pointer<KN<KN<double>>>(nargs[0], stack), optional_pointer<KN<KN<double>>>(nargs[1], stack),
+          optional_pointer<KN<KN<double>>>(nargs[6], stack));
       const std::vector<SensitivityResult> r =
           sens.direct(directions, sensitivity_settings(h, nargs[2], nargs[3], nargs[5], stack));
+      if (auto* dLambda = optional_pointer<KN<KN<double>>>(nargs[7], stack)) {
+        dLambda->resize(static_cast<long>(r.size()));
+        for (size_t j = 0; j < r.size(); ++j) binding::copy_to(r[j].contact_multipliers, (*dLambda)[static_cast<long>(j)]);
+      }
       auto& z = *GetAny<KN<KN<double>>*>((*Z)(stack));
       const std::vector<int>& ids = h.problem->global_ids();
       const long count = h.problem->subdomain_count();
@@ -464,15 +483,17 @@ class FetiSensitivity : public E_F0mps {
 
 basicAC_F0::name_and_type FetiSensitivity::name_param[] = {
     {"velocityX", &typeid(KN<KN<double>>*)}, {"velocityY", &typeid(KN<KN<double>>*)}, {"tol", &typeid(double)},
-    {"maxit", &typeid(long)}, {"activeTol", &typeid(double)}, {"verbosity", &typeid(long)}};
+    {"maxit", &typeid(long)}, {"activeTol", &typeid(double)}, {"verbosity", &typeid(long)},
+    {"dGap", &typeid(KN<KN<double>>*)}, {"dLambda", &typeid(KN<KN<double>>*)}};
 
-// int status = fetiAdjoint(P, dJdu, tol=, maxit=, activeTol=, verbosity=, w=): 6 (weakly_active)
-// when some contact row is weakly active: use fetiSensitivity then. w= receives the adjoint
-// displacement per subdomain (this rank's; the others empty), as fetiSolve's U.
+// int status = fetiAdjoint(P, dJdu, tol=, maxit=, activeTol=, verbosity=, w=, dJdlambda=): 6
+// (weakly_active) when some contact row is weakly active: use fetiSensitivity then. w=
+// receives the adjoint displacement per subdomain (this rank's; the others empty), as
+// fetiSolve's U. dJdlambda: the cost's derivative per contact row (fetiContact's order).
 class FetiAdjoint : public E_F0mps {
  public:
   typedef long Result;
-  static const int n_name_param = 5;
+  static const int n_name_param = 6;
   static basicAC_F0::name_and_type name_param[];
   Expression nargs[n_name_param];
   Expression id, dJdu;
@@ -497,7 +518,10 @@ class FetiAdjoint : public E_F0mps {
                            std::to_string(h.problem->subdomain_count()) + " subdomains");
         for (int s : h.problem->global_ids()) gradient.push_back(binding::to_vec(g[s]));
       });
-      const AdjointResult r = sens.adjoint(gradient, sensitivity_settings(h, nargs[0], nargs[1], nargs[3], stack));
+      const Vec dJdlambda =
+          nargs[5] ? binding::to_vec(*GetAny<KN<double>*>((*nargs[5])(stack))) : Vec();
+      const AdjointResult r =
+          sens.adjoint(gradient, sensitivity_settings(h, nargs[0], nargs[1], nargs[3], stack), dJdlambda);
       if (auto* w = optional_pointer<KN<KN<double>>>(nargs[4], stack)) {
         const std::vector<int>& ids = h.problem->global_ids();
         w->resize(h.problem->subdomain_count());
@@ -512,14 +536,14 @@ class FetiAdjoint : public E_F0mps {
 
 basicAC_F0::name_and_type FetiAdjoint::name_param[] = {
     {"tol", &typeid(double)}, {"maxit", &typeid(long)}, {"activeTol", &typeid(double)}, {"verbosity", &typeid(long)},
-    {"w", &typeid(KN<KN<double>>*)}};
+    {"w", &typeid(KN<KN<double>>*)}, {"dJdlambda", &typeid(KN<double>*)}};
 
-// real dJ = fetiAdjointGradient(P, dK, dF, velocityX=, velocityY=): w'fbar + mu'c~ for one
-// direction, after fetiAdjoint; no dual solve.
+// real dJ = fetiAdjointGradient(P, dK, dF, velocityX=, velocityY=, dGap=): w'fbar + mu'c~ for
+// one direction, after fetiAdjoint; no dual solve.
 class FetiAdjointGradient : public E_F0mps {
  public:
   typedef double Result;
-  static const int n_name_param = 2;
+  static const int n_name_param = 3;
   static basicAC_F0::name_and_type name_param[];
   Expression nargs[n_name_param];
   Expression id, dK, dF;
@@ -541,7 +565,8 @@ class FetiAdjointGradient : public E_F0mps {
       if (!h.sensitivity) throw InputError("P: no adjoint solution: call fetiAdjoint first");
       const std::vector<DesignDerivative> d = design_directions(
           *h.problem, GetAny<KN<Matrice_Creuse<double>>*>((*dK)(stack)), GetAny<KN<KN<double>>*>((*dF)(stack)),
-          optional_pointer<KN<KN<double>>>(nargs[0], stack), optional_pointer<KN<KN<double>>>(nargs[1], stack));
+          optional_pointer<KN<KN<double>>>(nargs[0], stack), optional_pointer<KN<KN<double>>>(nargs[1], stack),
+          optional_pointer<KN<KN<double>>>(nargs[2], stack));
       if (d.size() != 1)  // the same on every rank: the sizes were checked collectively
         throw InputError("dK: " + std::to_string(d.size()) + " design directions: fetiAdjointGradient takes one (" +
                          std::to_string(h.problem->subdomain_count()) + " entries)");
@@ -551,7 +576,8 @@ class FetiAdjointGradient : public E_F0mps {
 };
 
 basicAC_F0::name_and_type FetiAdjointGradient::name_param[] = {
-    {"velocityX", &typeid(KN<KN<double>>*)}, {"velocityY", &typeid(KN<KN<double>>*)}};
+    {"velocityX", &typeid(KN<KN<double>>*)}, {"velocityY", &typeid(KN<KN<double>>*)},
+    {"dGap", &typeid(KN<KN<double>>*)}};
 
 // ---- small functions -------------------------------------------------------------------
 // int rows = fetiHistory(P, key, values): one column of the last fetiSolve's convergence
@@ -643,6 +669,57 @@ class FetiContact : public E_F0mps {
     }));
   }
 };
+
+// ---- int rows = fetiContactPressure(P, Share, Pr, rows=pc, shares=wc) ----------------------
+/// The contact pressure of the last solve per dof into Pr (this rank's subdomains, others
+/// empty): each contact row's force over its node's share of the contact curve, Share[s]
+/// being each dof's share on subdomain s (int1d of the test functions over the contact
+/// boundary: a varf's vector). rows= and shares= receive the pressure and the share per
+/// contact row (fetiContact's order). Returns the number of contact rows.
+class FetiContactPressure : public E_F0mps {
+ public:
+  typedef long Result;
+  static const int n_name_param = 2;
+  static basicAC_F0::name_and_type name_param[];
+  Expression nargs[n_name_param];
+  Expression id, share_in, pressure_out;
+  explicit FetiContactPressure(const basicAC_F0& args) {
+    args.SetNameParam(n_name_param, name_param, nargs);
+    id = to<long>(args[0]);
+    share_in = to<KN<KN<double>>*>(args[1]);
+    pressure_out = to<KN<KN<double>>*>(args[2]);
+  }
+  static ArrayOfaType typeargs() {
+    return ArrayOfaType(atype<long>(), atype<KN<KN<double>>*>(), atype<KN<KN<double>>*>());
+  }
+  static E_F0* f(const basicAC_F0& args) { return new FetiContactPressure(args); }
+  AnyType operator()(Stack stack) const {
+    return SetAny<long>(guarded("fetiContactPressure", [&] {
+      const Handle& h = handle(GetAny<long>((*id)(stack)));
+      if (!h.result) throw InputError("P: no solution yet: call fetiSolve first");
+      const FetiProblem& problem = *h.problem;
+      const auto& shares = *GetAny<KN<KN<double>>*>((*share_in)(stack));
+      std::vector<Vec> share;
+      collectively(problem.communicator(), [&] {
+        if (shares.N() != problem.subdomain_count())
+          throw InputError("Share: has " + std::to_string(shares.N()) + " entries for " +
+                           std::to_string(problem.subdomain_count()) + " subdomains");
+        for (int s : problem.global_ids()) share.push_back(binding::to_vec(shares[s]));
+      });
+      const ContactPressure p = contact_pressure(problem, h.result->lambda, share);
+      auto& out = *GetAny<KN<KN<double>>*>((*pressure_out)(stack));
+      out.resize(problem.subdomain_count());
+      for (long s = 0; s < out.N(); ++s) out[s].resize(0);
+      for (size_t k = 0; k < p.per_dof.size(); ++k) binding::copy_to(p.per_dof[k], out[problem.global_ids()[k]]);
+      if (auto* rows = optional_pointer<KN<double>>(nargs[0], stack)) binding::copy_to(p.per_row, *rows);
+      if (auto* row_shares = optional_pointer<KN<double>>(nargs[1], stack)) binding::copy_to(p.share_per_row, *row_shares);
+      return static_cast<long>(p.per_row.size());
+    }));
+  }
+};
+
+basicAC_F0::name_and_type FetiContactPressure::name_param[] = {{"rows", &typeid(KN<double>*)},
+                                                               {"shares", &typeid(KN<double>*)}};
 
 // ---- int rows = fetiContactStart(P, Pfrom, start): a start from another problem's forces --
 /// Fills `start` with multipliers for P (fetiSolve's start): on P's contact rows the contact
@@ -871,6 +948,7 @@ static void Load_Init() {
   Global.Add("fetiAdjointGradient", "(", new OneOperatorCode<FetiAdjointGradient>());
   Global.Add("fetiContact", "(", new OneOperatorCode<FetiContact>());
   Global.Add("fetiContactStart", "(", new OneOperatorCode<FetiContactStart>());
+  Global.Add("fetiContactPressure", "(", new OneOperatorCode<FetiContactPressure>());
   Global.Add("fetiConstraints", "(", new OneOperatorCode<FetiConstraints>());
   Global.Add("fetiSum", "(", new OneOperator2_<double, long, double>(feti_sum));
   Global.Add("fetiMax", "(", new OneOperator2_<double, long, double>(feti_max));

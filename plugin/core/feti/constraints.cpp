@@ -96,9 +96,11 @@ void add_node_to_node_rows(const std::vector<DofRecord>& records, double gap, do
                        ", " + std::to_string(slave.record->y) +
                        ") has no master dof of another body at the same position "
                        "(node-to-node contact needs matching meshes)");
+    ContactRowGeometry geometry;
+    geometry.slave[0] = {slave.record->subdomain, slave.record->dof};
     rows.push_back({{{slave.record->subdomain, slave.record->dof, 1.0},
                      {master->record->subdomain, master->record->dof, -1.0}},
-                    gap, RowKind::contact, false});
+                    gap + slave.record->gap, RowKind::contact, false, geometry});
   }
 }
 
@@ -209,7 +211,7 @@ void add_node_to_segment_rows(const std::vector<DofRecord>& records, const std::
     for (size_t k = 0; k < 4; ++k) geometry.master[k] = {best->subdomain, best->dofs[k]};
     geometry.s = {sx, sy}, geometry.a = {best->ax, best->ay}, geometry.b = {best->bx, best->by};
     const LinearizedRow linear = node_to_segment_row(geometry.s, geometry.a, geometry.b);
-    Row row{{}, linear.gap, RowKind::contact, false, geometry};
+    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry};
     const std::array<int, 2> dofs[6] = {geometry.slave[0], geometry.slave[1], geometry.master[0],
                                         geometry.master[1], geometry.master[2], geometry.master[3]};
     for (size_t k = 0; k < 6; ++k)
@@ -230,7 +232,7 @@ void add_obstacle_rows(const std::vector<DofRecord>& records, const ContactInput
     geometry.s = {node.x_dof->x, node.x_dof->y};
     geometry.a = contact.obstacle_point, geometry.b = {nx, ny};
     const LinearizedRow linear = obstacle_row(geometry.s, geometry.a, geometry.b);
-    Row row{{}, linear.gap, RowKind::contact, false, geometry};
+    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry};
     for (size_t k = 0; k < 2; ++k)
       if (linear.coefficients[k] != 0) row.entries.push_back({geometry.slave[k][0], geometry.slave[k][1], linear.coefficients[k]});
     rows.push_back(std::move(row));
@@ -354,6 +356,8 @@ std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& 
     const size_t n = sub.x.size();
     std::vector<char> fixed(n, 0), slave(n, 0), master(n, 0);
     std::vector<double> value(n, 0.0);
+    const std::vector<double>* gap = local_contact.gap_field.empty() || local_contact.gap_field[k].empty()
+                                         ? nullptr : &local_contact.gap_field[k];
     for (size_t i = 0; i < sub.dirichlet_dofs.size(); ++i) {
       fixed[static_cast<size_t>(sub.dirichlet_dofs[i])] = 1;
       value[static_cast<size_t>(sub.dirichlet_dofs[i])] = sub.dirichlet_values.empty() ? 0.0 : sub.dirichlet_values[i];
@@ -369,7 +373,8 @@ std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& 
       });
       if (shared || fixed[i] || slave[i] || master[i])
         records.push_back({s, static_cast<int>(i), sub.body, sub.component.empty() ? 0 : sub.component[i],
-                           sub.x[i], sub.y[i], fixed[i] != 0, slave[i] != 0, master[i] != 0, value[i]});
+                           sub.x[i], sub.y[i], fixed[i] != 0, slave[i] != 0, master[i] != 0, value[i],
+                           gap ? (*gap)[i] : 0.0});
     }
   }
   return records;
@@ -377,22 +382,22 @@ std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& 
 
 std::vector<double> pack(const std::vector<DofRecord>& records) {
   std::vector<double> packed;
-  packed.reserve(records.size() * 8);
+  packed.reserve(records.size() * 9);
   for (const DofRecord& r : records) {
     const double flags = (r.fixed ? 1 : 0) + (r.slave ? 2 : 0) + (r.master ? 4 : 0);
     packed.insert(packed.end(), {double(r.subdomain), double(r.dof), double(r.body), double(r.component),
-                                 r.x, r.y, flags, r.value});
+                                 r.x, r.y, flags, r.value, r.gap});
   }
   return packed;
 }
 
 std::vector<DofRecord> unpack(const std::vector<double>& packed) {
   std::vector<DofRecord> records;
-  for (size_t k = 0; k + 8 <= packed.size(); k += 8) {
+  for (size_t k = 0; k + 9 <= packed.size(); k += 9) {
     const int flags = static_cast<int>(packed[k + 6]);
     records.push_back({static_cast<int>(packed[k]), static_cast<int>(packed[k + 1]), static_cast<int>(packed[k + 2]),
                        static_cast<int>(packed[k + 3]), packed[k + 4], packed[k + 5], (flags & 1) != 0,
-                       (flags & 2) != 0, (flags & 4) != 0, packed[k + 7]});
+                       (flags & 2) != 0, (flags & 4) != 0, packed[k + 7], packed[k + 8]});
   }
   return records;
 }

@@ -26,7 +26,8 @@ struct ContactRowGeometry {
   enum class Kind : std::uint8_t { node_to_node, node_to_segment, obstacle };
   Kind kind = Kind::node_to_node;
   /// Node to segment and obstacle: the slave node's x and y dofs (subdomain, dof); node to
-  /// segment: the segment's a_x, a_y, b_x, b_y. Unused entries are {-1, -1}.
+  /// node: the slave dof in slave[0]. Node to segment: the segment's a_x, a_y, b_x, b_y.
+  /// Unused entries are {-1, -1}. slave[0] is the dof that carries the row's gap_field.
   std::array<std::array<int, 2>, 2> slave{{{-1, -1}, {-1, -1}}};
   std::array<std::array<int, 2>, 4> master{{{-1, -1}, {-1, -1}, {-1, -1}, {-1, -1}}};
   Point s{}, a{}, b{};  ///< slave position, segment ends (obstacle: a = point, b = normal)
@@ -68,6 +69,7 @@ struct DofRecord {
   double x, y;
   bool fixed, slave, master;
   double value;  // Dirichlet value where fixed
+  double gap;    // ContactInput::gap_field's entry (0 without one)
 };
 
 /// A master segment of the node-to-segment contact: its dofs (a_x, a_y, b_x, b_y) and ends.

@@ -66,7 +66,7 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
     if (owner[s] < 0) ownership_error = "K[" + std::to_string(s) + "]: given by no rank";
   if (!ownership_error.empty()) throw InputError(ownership_error);  // the same on every rank
 
-  const double snap = snapping_length(boxes);
+  const double snap = snap_ = snapping_length(boxes);
   std::vector<DofRecord> records =
       unpack(comm.allgather(pack(constraint_candidates(inputs_, global_ids_, local_contact, boxes, bodies, snap))));
   const std::vector<SegmentRecord> segments =
@@ -75,13 +75,13 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   std::sort(records.begin(), records.end(), [](const DofRecord& a, const DofRecord& b) {
     return std::make_pair(a.subdomain, a.dof) < std::make_pair(b.subdomain, b.dof);
   });
-  for (int i = constraints.equality_rows; i < constraints.rows(); ++i) {
-    const ConstraintEntry& slave = constraints.entries[static_cast<size_t>(constraints.row_start[static_cast<size_t>(i)])];
-    const auto it = std::lower_bound(records.begin(), records.end(), std::make_pair(slave.subdomain, slave.dof),
+  for (const ContactRowGeometry& row : constraints.geometry) {
+    const auto it = std::lower_bound(records.begin(), records.end(), std::make_pair(row.slave[0][0], row.slave[0][1]),
                                      [](const DofRecord& r, const std::pair<int, int>& key) {
                                        return std::make_pair(r.subdomain, r.dof) < key;
                                      });
     contact_positions_.push_back({it->x, it->y});
+    contact_body_component_.push_back({it->body, it->component});
   }
   setup_times_.constraints = constraints_clock.seconds();
 

@@ -111,6 +111,11 @@ class FetiProblem {
   /// Position and multiplier of every contact row's slave dof (gathered: the same on all
   /// ranks; every contact row, in row order).
   const std::vector<std::array<double, 2>>& contact_positions() const { return contact_positions_; }
+  /// Body and field component of every contact row's slave dof (the dof that carries its
+  /// gap: node to segment and obstacle rows name the node by its component-0 dof).
+  const std::vector<std::array<int, 2>>& contact_body_component() const { return contact_body_component_; }
+  /// Coordinates closer than this are one node (snapping_length of all subdomain boxes).
+  double snap() const { return snap_; }
   const PhaseTimes& setup_times() const { return setup_times_; }
   const FetiSetupSettings& settings() const { return settings_; }
   FetiVariant variant() const { return settings_.variant; }
@@ -135,6 +140,8 @@ class FetiProblem {
   int global_count_ = 0;
   std::vector<int> owner_, bodies_;     // of every global subdomain
   std::vector<std::array<double, 2>> contact_positions_;
+  std::vector<std::array<int, 2>> contact_body_component_;
+  double snap_ = 0;
   SubdomainList subdomains_;
   std::unique_ptr<DualSystem> dual_;
   DualData data_;                       // the state problem's dual right-hand side

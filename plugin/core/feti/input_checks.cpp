@@ -102,6 +102,18 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
     throw InputError("contactMaster: node-to-node contact cannot be combined with contactSegments or "
                      "obstacle in one problem (the slave dofs would belong to both)");
   if (!std::isfinite(contact.gap)) throw InputError("gap: must be finite");
+  if (!contact.gap_field.empty() && contact.gap_field.size() != subdomains.size())
+    throw InputError("contactGap: has " + std::to_string(contact.gap_field.size()) + " entries for " +
+                     std::to_string(subdomains.size()) + " subdomains");
+  for (size_t k = 0; k < contact.gap_field.size(); ++k) {
+    const std::vector<double>& gap = contact.gap_field[k];
+    if (!gap.empty() && gap.size() != static_cast<size_t>(subdomains[k].K.rows()))
+      throw InputError(indexed("contactGap", ids[k]) + ": needs one value per dof (" +
+                       std::to_string(subdomains[k].K.rows()) + ") or none, got " + std::to_string(gap.size()));
+    for (size_t i = 0; i < gap.size(); ++i)
+      if (!std::isfinite(gap[i]))
+        throw InputError(indexed("contactGap", ids[k]) + ": entry " + std::to_string(i) + " is not finite");
+  }
   for (double v : {contact.obstacle_point[0], contact.obstacle_point[1], contact.obstacle_normal[0], contact.obstacle_normal[1]})
     if (contact.obstacle && !std::isfinite(v)) throw InputError("obstacle: the point and the normal must be finite");
 }

@@ -38,6 +38,11 @@ struct ContactInput {
   std::vector<std::vector<int>> master_dofs;  ///< per subdomain: node-to-node partners
   std::vector<std::vector<std::array<int, 4>>> master_segments;  ///< per subdomain: (a_x, a_y, b_x, b_y)
   double gap = 0;                             ///< node to node only
+  /// Per subdomain, one value per dof (empty: none): a clearance added to the right-hand
+  /// side of the contact row of each slave node, read at its slave dof (node to node) or
+  /// at its component-0 dof (node to segment, obstacle): a gap per contact row, e.g. the
+  /// profile of a contact surface described by its gap rather than by its mesh.
+  std::vector<std::vector<double>> gap_field;
   double search_distance = 1e300;             ///< node to segment: farther slaves get no row
   bool obstacle = false;
   std::array<double, 2> obstacle_point{0, 0}, obstacle_normal{0, 1};

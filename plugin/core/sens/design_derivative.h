@@ -15,11 +15,15 @@ namespace ffeti {
 /// - velocity_x, velocity_y: the derivative of each dof's node position, which moves the
 ///   contact geometry (normals, weights and gaps of node-to-segment and obstacle rows).
 ///   Empty on every subdomain: the contact geometry does not move.
-/// Prescribed Dirichlet values, gluing and node-to-node gaps are design independent.
+/// - dgap: the derivative of ContactInput::gap_field (one value per dof, read where the
+///   gap is read): a design that changes the gaps themselves, e.g. a contact profile
+///   described by its gap. Empty on every subdomain: the gaps do not change.
+/// Prescribed Dirichlet values, gluing and the scalar node-to-node gap are design independent.
 struct DesignDerivative {
   std::vector<SparseMatrix> dK;
   std::vector<Vec> df;
   std::vector<std::vector<double>> velocity_x, velocity_y;
+  std::vector<std::vector<double>> dgap;
 };
 
 }  // namespace ffeti

@@ -92,8 +92,8 @@ void SensitivityProblem::check(const DesignDerivative& d) const {
   collectively(problem_.communicator(), [&] {
     const auto count_ok = [&](size_t n) { return n == 0 || n == inputs.size(); };
     if (!count_ok(d.dK.size()) || !count_ok(d.df.size()) || !count_ok(d.velocity_x.size()) ||
-        !count_ok(d.velocity_y.size()))
-      throw InputError("dK, dF, velocityX, velocityY: need one entry per subdomain");
+        !count_ok(d.velocity_y.size()) || !count_ok(d.dgap.size()))
+      throw InputError("dK, dF, velocityX, velocityY, dGap: need one entry per subdomain");
     for (size_t k = 0; k < inputs.size(); ++k) {
       const Eigen::Index n = inputs[k].K.rows();
       const int s = ids[k];
@@ -106,12 +106,14 @@ void SensitivityProblem::check(const DesignDerivative& d) const {
       }
       if (!d.df.empty() && d.df[k].size() > 0)
         check_size(d.df[k].size() == n && d.df[k].allFinite(), "dF", s, "needs " + std::to_string(n) + " finite entries (or none)");
-      for (const auto* v : {&d.velocity_x, &d.velocity_y}) {
+      const std::pair<const std::vector<std::vector<double>>*, const char*> fields[] = {
+          {&d.velocity_x, "velocityX"}, {&d.velocity_y, "velocityY"}, {&d.dgap, "dGap"}};
+      for (const auto& [v, name] : fields) {
         if (v->empty() || (*v)[k].empty()) continue;
         bool finite = true;
         for (double x : (*v)[k]) finite = finite && std::isfinite(x);
-        check_size(static_cast<Eigen::Index>((*v)[k].size()) == n && finite, v == &d.velocity_x ? "velocityX" : "velocityY",
-                   s, "needs " + std::to_string(n) + " finite entries, one per dof (or none)");
+        check_size(static_cast<Eigen::Index>((*v)[k].size()) == n && finite, name, s,
+                   "needs " + std::to_string(n) + " finite entries, one per dof (or none)");
       }
     }
   });
@@ -142,13 +144,19 @@ SensitivityProblem::DirectionData SensitivityProblem::direction_data(const Desig
   }
 
   // c~ = c' - B'u on the kept contact rows (gluing and Dirichlet rows do not move): the
-  // products B'_ij u_j are gathered and summed in entry order, the same on every rank.
+  // products B'_ij u_j, and minus the gap's own change (entry -1), are gathered and summed
+  // in entry order, the same on every rank.
   std::vector<double> products;
   for (size_t j = static_cast<size_t>(full.equality_rows); j < kept_.size(); ++j) {
-    const auto& entries = rows[static_cast<size_t>(kept_[j] - full.equality_rows)].entries;
+    const size_t row = static_cast<size_t>(kept_[j] - full.equality_rows);
+    const auto& entries = rows[row].entries;
     for (size_t k = 0; k < entries.size(); ++k)
       if (const auto it = local_index.find(entries[k].subdomain); it != local_index.end())
         products.insert(products.end(), {double(j), double(k), entries[k].coefficient * u_[it->second][entries[k].dof]});
+    const auto& [gap_subdomain, gap_dof] = full.geometry[row].slave[0];
+    if (const auto it = local_index.find(gap_subdomain); it != local_index.end() && !d.dgap.empty() &&
+                                                          !d.dgap[it->second].empty())
+      products.insert(products.end(), {double(j), -1.0, -d.dgap[it->second][static_cast<size_t>(gap_dof)]});
   }
   const std::vector<double> all = problem_.communicator().allgather(products);
   std::vector<std::vector<std::pair<int, double>>> by_row(kept_.size());
@@ -192,6 +200,10 @@ std::vector<SensitivityResult> SensitivityProblem::direct(const std::vector<Desi
                                system_->constraints(), problem_.variant() == FetiVariant::feti1, s.u, s.lambda,
                                problem_.communicator());
     counters_.hessian += result.counts.hessian + result.counts.hessian_norm_estimate;
+    const Constraints& full = problem_.constraints();
+    result.contact_multipliers = Vec::Zero(full.inequality_rows());
+    for (size_t r = static_cast<size_t>(full.equality_rows); r < kept_.size(); ++r)
+      result.contact_multipliers[kept_[r] - full.equality_rows] = s.lambda[static_cast<Eigen::Index>(r)];
     result.z = std::move(s.u);
     result.multipliers = std::move(s.lambda);
   }
@@ -203,20 +215,27 @@ std::vector<SensitivityResult> SensitivityProblem::direct(const std::vector<Desi
     counters_.last = results.back();
     counters_.last.z.clear();
     counters_.last.multipliers.resize(0);
+    counters_.last.contact_multipliers.resize(0);
   }
   return results;
 }
 
-AdjointResult SensitivityProblem::adjoint(const std::vector<Vec>& dJdu, const DualSolveSettings& settings) {
+AdjointResult SensitivityProblem::adjoint(const std::vector<Vec>& dJdu, const DualSolveSettings& settings,
+                                          const Vec& dJdlambda) {
   Stopwatch clock;
   adjoint_.reset();
   AdjointResult result;
   const auto& inputs = problem_.inputs();
+  const Constraints& full = problem_.constraints();
   collectively(problem_.communicator(), [&] {
     if (dJdu.size() != inputs.size()) throw InputError("dJdu: needs one entry per subdomain");
     for (size_t k = 0; k < inputs.size(); ++k)
       check_size(dJdu[k].size() == inputs[k].K.rows() && dJdu[k].allFinite(), "dJdu", problem_.global_ids()[k],
                  "needs " + std::to_string(inputs[k].K.rows()) + " finite entries");
+    if (dJdlambda.size() != 0 && (dJdlambda.size() != full.inequality_rows() || !dJdlambda.allFinite()))
+      throw InputError("dJdlambda: needs " + std::to_string(full.inequality_rows()) +
+                       " finite entries, one per contact row (fetiContact's order), got " +
+                       std::to_string(dJdlambda.size()));
   });
   if (!classification_.weak.empty()) {
     result.status = SolveStatus::weakly_active;
@@ -224,14 +243,17 @@ AdjointResult SensitivityProblem::adjoint(const std::vector<Vec>& dJdu, const Du
     counters_.adjoint = result;
     return result;
   }
-  const Vec zero = Vec::Zero(system_->rows());
+  Vec rhs = Vec::Zero(system_->rows());  // B w = dJ/dlambda on the kept contact rows
+  if (dJdlambda.size() != 0)
+    for (size_t r = static_cast<size_t>(full.equality_rows); r < kept_.size(); ++r)
+      rhs[static_cast<Eigen::Index>(r)] = dJdlambda[kept_[r] - full.equality_rows];
   DualSolveSettings relative_to_data = settings;
   relative_to_data.stopping = StoppingTest::seed;
-  DualSolution s = system_->solve(system_->data(problem_.operator_loads(dJdu, true), zero), relative_to_data);
+  DualSolution s = system_->solve(system_->data(problem_.operator_loads(dJdu, true), rhs), relative_to_data);
   result.status = s.status;
   result.path = s.path;
   result.counts = s.counts;
-  result.kkt = kkt_residuals(inputs, dJdu, zero, true, system_->local(), system_->F(), system_->constraints(),
+  result.kkt = kkt_residuals(inputs, dJdu, rhs, true, system_->local(), system_->F(), system_->constraints(),
                              problem_.variant() == FetiVariant::feti1, s.u, s.lambda, problem_.communicator());
   if (s.status == SolveStatus::converged) adjoint_ = std::move(s);
   result.seconds = problem_.communicator().max(clock.seconds());

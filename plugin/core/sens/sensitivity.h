@@ -9,10 +9,12 @@
 // it runs on the state's factorizations: a DualSystem over the rows E, S, W, built once per
 // state solution and shared by every direction. No subdomain is factorized again.
 //
-// Adjoint mode: with W empty, beta -> z is linear, and for a cost J(u, alpha)
+// Adjoint mode: with W empty, beta -> (z, lambda') is linear, and for a cost J(u, lambda, alpha)
 //   dJ/dalpha(beta) = dJ/dalpha_explicit(beta) + w'fbar + mu'c~,
-// where (w, mu) solve the same equality-constrained problem with load dJ/du and zero
-// right-hand side (K w + B'mu = dJ/du, B w = 0): one dual solve for all design variables.
+// where (w, mu) solve the same equality-constrained problem with load dJ/du and right-hand
+// side dJ/dlambda on the kept contact rows (K w + B'mu = dJ/du, B w = dJ/dlambda; the
+// matrix [K B'; B 0] is symmetric, so (w, mu)'(fbar, c~) = dJ/du'z + dJ/dlambda'lambda'):
+// one dual solve for all design variables. Inactive rows have lambda' = 0.
 #pragma once
 
 #include "feti/feti_problem.h"
@@ -43,6 +45,7 @@ struct SensitivityResult {
   IterationCounts counts;
   std::vector<Vec> z;             ///< u'(alpha; beta) per subdomain of this rank
   Vec multipliers;                ///< lambda'(alpha; beta) on the rows E, S, W (in that row order)
+  Vec contact_multipliers;        ///< lambda' per contact row of the state, in its row order (0 where inactive)
   KktResiduals kkt;               ///< of the sensitivity QP, recomputed in primal form
   double seconds = 0;             ///< whole direction: derivatives, dual data, solve, recovery, KKT
 };
@@ -91,9 +94,11 @@ class SensitivityProblem {
                                         const DualSolveSettings& settings);
 
   /// Solves the adjoint problem for the cost gradient dJ/du (this rank's subdomains) and
-  /// keeps (w, mu). Status weakly_active, and nothing solved, when some row is weakly
-  /// active: then beta -> z is not linear and only direct() is right. Collective.
-  AdjointResult adjoint(const std::vector<Vec>& dJdu, const DualSolveSettings& settings);
+  /// dJ/dlambda (one entry per contact row, the same on every rank; empty: J does not
+  /// depend on lambda) and keeps (w, mu). Status weakly_active, and nothing solved, when
+  /// some row is weakly active: then beta -> z is not linear and only direct() is right.
+  /// Collective.
+  AdjointResult adjoint(const std::vector<Vec>& dJdu, const DualSolveSettings& settings, const Vec& dJdlambda = Vec());
 
   /// w per subdomain of this rank from the last converged adjoint(), or null: for scripts
   /// that form w'K'u themselves from the shape derivative of their bilinear form.
