@@ -370,6 +370,9 @@ basicAC_F0::name_and_type FetiSolve::name_param[] = {
 /// `threshold`, built on first use and kept for every later direction.
 SensitivityProblem& sensitivity_problem(Handle& h, double threshold) {
   if (!h.result) throw InputError("P: no solution yet: call fetiSolve first");
+  if (h.result->status != SolveStatus::converged)
+    throw InputError("P: the last fetiSolve did not converge (" + to_string(h.result->status) +
+                     "): its solution has no derivative worth the name; solve it to convergence first");
   if (!h.sensitivity || h.sensitivity->classification().threshold != threshold)
     h.sensitivity = std::make_unique<SensitivityProblem>(*h.problem, *h.result, threshold);
   return *h.sensitivity;
@@ -522,6 +525,14 @@ class FetiAdjoint : public E_F0mps {
           nargs[5] ? binding::to_vec(*GetAny<KN<double>*>((*nargs[5])(stack))) : Vec();
       const AdjointResult r =
           sens.adjoint(gradient, sensitivity_settings(h, nargs[0], nargs[1], nargs[3], stack), dJdlambda);
+      if (r.status == SolveStatus::weakly_active && h.problem->communicator().rank() == 0) {
+        // A script that ignores status 6 would lose the contact part of its gradient.
+        std::printf("ffeti: WARNING fetiAdjoint: %zu contact rows are weakly active (force and gap both about 0): "
+                    "the derivative is only directional there, so no adjoint was solved (status 6); use "
+                    "fetiSensitivity (the direct mode) for this design\n",
+                    sens.classification().weak.size());
+        std::fflush(stdout);
+      }
       if (auto* w = optional_pointer<KN<KN<double>>>(nargs[4], stack)) {
         const std::vector<int>& ids = h.problem->global_ids();
         w->resize(h.problem->subdomain_count());
