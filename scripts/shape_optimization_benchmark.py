@@ -15,6 +15,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
 from ffeti_bench import EDP, OUT, ROOT, f, machine, run, save_page  # noqa: E402
+import uniform_pressure_section  # noqa: E402
 
 MESHES = os.path.join(ROOT, "meshes")
 BUILD = os.environ.get("FFETI_BUILD", os.path.join(ROOT, "build"))
@@ -112,11 +113,12 @@ def main():
                    "-history", os.path.join(folder, "f.history"), "-out", os.path.join(folder, "spanner"))["RESULT"][0]
         fine_costs, _ = history(os.path.join(folder, "f.history"), 10)
         spanner_picture(folder, "shape-optimization-spanner-fine.png")
+        uniform = uniform_pressure_section.section(folder)
     history_plot([("membranes, h = 1/128", membrane_costs), ("spanner, lc = 1.9", spanner_costs),
                   ("spanner, lc = 0.4", fine_costs)], "shape-optimization-history.png")
     checks = [(label, gradient_check(script, args)) for label, script, args in GRADIENT_CHECKS]
     costs = [(label, run(script, *args, "-costs", 1, prefixes=("COSTS",))["COSTS"][0]) for label, script, args in COSTS]
-    write_page(membrane, spanner, fine, checks, costs, time.time() - started)
+    write_page(uniform, membrane, spanner, fine, checks, costs, time.time() - started)
 
 
 def loop_row(label, r, cost_key, max_key=None):
@@ -128,7 +130,7 @@ def loop_row(label, r, cost_key, max_key=None):
             f"{f(r, 'time_total'):.1f} | {r['ipopt_status']} | {r['status']} |")
 
 
-def write_page(membrane, spanner, fine, checks, costs, elapsed):
+def write_page(uniform, membrane, spanner, fine, checks, costs, elapsed):
     lines = [
         "# Contact shape optimization",
         "",
@@ -136,16 +138,22 @@ def write_page(membrane, spanner, fine, checks, costs, elapsed):
         f"{machine()}. Whole run: {elapsed:.0f} s.",
         "",
         "The seed's second half: semi-analytic sensitivities (seed eq. 12) on the state's",
-        "factorizations, and two design loops driven by IPOPT (FreeFEM's ff-Ipopt, L-BFGS) with",
+        "factorizations, and design loops driven by IPOPT (FreeFEM's ff-Ipopt, L-BFGS) with",
         "the plugin's adjoint gradients. One design step = one analysis (one factorization per",
-        "subdomain) + one gradient. `edp/membrane-shape.edp`: minimal compliance of the seed's",
+        "subdomain) + one gradient. First the loop whose optimum is known (a uniform contact",
+        "pressure), with the finite-difference peer beside it; then the seed's loops.",
+        "",
+        *uniform,
+        "## The seed's loops",
+        "",
+        "`edp/membrane-shape.edp`: minimal compliance of the seed's",
         "membranes, the bottom of membrane 1 a cubic B-spline curve (10 heights, |alpha| <= 0.3),",
         "area not above the initial one. `edp/spanner-opt.edp`: the spanner gripping a nut",
         "(`meshes/spanner.geo`, steel, plane stress), the p-norm (p = 24) of the von Mises stress",
         "away from the jaw faces minimized over the head's outer curves (2 x 5 B-spline bumps,",
         "|alpha| <= 1.5 mm), area not above the initial one.",
         "",
-        "## The loops",
+        "",
         "",
         "| loop | design steps | cost / cost0 | max von Mises [MPa] | area / area0 | factorizations |"
         " sensitivity solves | analysis [s/step] | gradient [s/step] | total [s] | IPOPT status | status |",
