@@ -15,12 +15,7 @@
 namespace ffeti {
 namespace {
 
-DualSolveSettings tight() {
-  DualSolveSettings settings;
-  settings.tolerance = 1e-12;
-  settings.max_hessian = 100000;
-  return settings;
-}
+using test::tight;
 
 /// The seed's membranes with a gap profile alpha * phi(y) on the slave dofs at x = 1,
 /// phi(y) = 0.02 (1 + cos(pi y)): a design that opens the contact towards y = 0.

@@ -8,6 +8,13 @@
 
 namespace ffeti::test {
 
+DualSolveSettings tight() {
+  DualSolveSettings settings;
+  settings.tolerance = 1e-12;
+  settings.max_hessian = 100000;
+  return settings;
+}
+
 SubdomainInput p1_rectangle(double x0, double y0, double w, double h, int nx, int ny,
                             double factor, const std::function<double(double, double)>& f,
                             int body, const std::function<double(double)>& x_map) {

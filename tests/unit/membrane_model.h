@@ -3,12 +3,16 @@
 // active set with a sparse direct solver) that shares no code with the FETI path.
 #pragma once
 
+#include "feti/dual_system.h"
 #include "feti/problem_input.h"
 
 #include <functional>
 #include <vector>
 
 namespace ffeti::test {
+
+/// Solve settings for comparisons with finite differences: tol 1e-12, room to converge.
+DualSolveSettings tight();
 
 /// P1 stiffness `factor` * int grad u . grad v and load int f v on [x0,x0+w] x [y0,y0+h]
 /// with nx x ny cells, each cut along the same diagonal as FreeFEM's square(); with

@@ -21,12 +21,7 @@ void PrintTo(FetiVariant variant, std::ostream* os) { *os << (variant == FetiVar
 
 namespace {
 
-DualSolveSettings tight() {
-  DualSolveSettings settings;
-  settings.tolerance = 1e-12;
-  settings.max_hessian = 100000;
-  return settings;
-}
+using test::tight;
 
 double norm(const std::vector<Vec>& u) {
   double sq = 0;
