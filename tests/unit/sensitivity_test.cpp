@@ -276,6 +276,27 @@ TEST_P(SegmentSensitivity, MovingMasterFaceMatchesFiniteDifferences) {
   EXPECT_NEAR(sensitivity.adjoint_gradient(d), dot(g, z.z), 1e-8 * std::abs(dot(g, z.z)));
 }
 
+TEST(Sensitivity, MovingRowWithoutTheVelocityOfOneOfItsSubdomainsIsRefused) {
+  // The master face moves, but the slave body's subdomain gets no velocity array: a script
+  // that forgot it would get a silently wrong gradient; zeros there are accepted.
+  const SegmentScene scene;
+  const FetiProblem problem(scene.at(0), scene.contact);
+  const FetiResult state = problem.solve(tight());
+  ASSERT_EQ(state.status, SolveStatus::converged);
+  SensitivityProblem sensitivity(problem, state, 1e-8);
+  DesignDerivative d;
+  d.velocity_x = scene.velocity(0), d.velocity_y = scene.velocity(1);
+  EXPECT_EQ(sensitivity.direct(d, tight()).status, SolveStatus::converged);  // zeros on body 1: fine
+  d.velocity_x[1].clear(), d.velocity_y[1].clear();
+  try {
+    sensitivity.direct(d, tight());
+    ADD_FAILURE() << "a moving row without its slave subdomain's velocity was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("velocityX, velocityY"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("subdomain 1"), std::string::npos) << e.what();
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Variants, SegmentSensitivity, ::testing::Values(FetiVariant::feti1, FetiVariant::tfeti),
                          [](const auto& info) { return info.param == FetiVariant::feti1 ? "feti1" : "tfeti"; });
 

@@ -1,5 +1,7 @@
 #include "sens/contact_derivative.h"
 
+#include "feti/errors.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -34,11 +36,13 @@ std::vector<RowDerivative> contact_row_derivatives(const Constraints& constraint
   for (const auto& v : velocity_y) moves_here = moves_here || !v.empty();
   if (comm.max(moves_here ? 1.0 : 0.0) == 0) return result;
 
-  // Each rank sends (row, node, vx, vy) for the nodes of its subdomains.
+  // Each rank sends (row, node, vx, vy, given) for the nodes of its subdomains; given: the
+  // subdomain has a velocity array at all (an empty one means "does not move").
   std::map<int, size_t> local_index;
   for (size_t k = 0; k < global_ids.size(); ++k) local_index[global_ids[k]] = k;
-  const auto component = [](const std::vector<std::vector<double>>& v, size_t k, int dof) {
-    return k < v.size() && !v[k].empty() ? v[k][static_cast<size_t>(dof)] : 0.0;
+  const auto has = [](const std::vector<std::vector<double>>& v, size_t k) { return k < v.size() && !v[k].empty(); };
+  const auto component = [&](const std::vector<std::vector<double>>& v, size_t k, int dof) {
+    return has(v, k) ? v[k][static_cast<size_t>(dof)] : 0.0;
   };
   std::vector<double> packed;
   for (size_t row = 0; row < result.size(); ++row) {
@@ -46,14 +50,34 @@ std::vector<RowDerivative> contact_row_derivatives(const Constraints& constraint
     for (size_t node = 0; node < nodes.size(); ++node) {
       const auto it = local_index.find(nodes[node][0]);
       if (it == local_index.end()) continue;
+      const bool given = has(velocity_x, it->second) || has(velocity_y, it->second);
       packed.insert(packed.end(), {double(row), double(node), component(velocity_x, it->second, nodes[node][1]),
-                                   component(velocity_y, it->second, nodes[node][1])});
+                                   component(velocity_y, it->second, nodes[node][1]), given ? 1.0 : 0.0});
     }
   }
   const std::vector<double> all = comm.allgather(packed);
   std::vector<std::array<Point, 3>> velocity(result.size(), {Point{0, 0}, Point{0, 0}, Point{0, 0}});
-  for (size_t p = 0; p + 4 <= all.size(); p += 4)
-    velocity[static_cast<size_t>(all[p])][static_cast<size_t>(all[p + 1])] = {all[p + 2], all[p + 3]};
+  std::vector<std::array<int, 3>> missing(result.size(), {-1, -1, -1});  // subdomain of a node without velocities
+  for (size_t p = 0; p + 5 <= all.size(); p += 5) {
+    const auto row = static_cast<size_t>(all[p]), node = static_cast<size_t>(all[p + 1]);
+    velocity[row][node] = {all[p + 2], all[p + 3]};
+    if (all[p + 4] == 0) missing[row][node] = moving_nodes(constraints.geometry[row])[node][0];
+  }
+  // A row some of whose nodes move while the subdomain of another gave no velocity at all:
+  // most likely a velocity the script forgot (its gradient would be silently wrong), so
+  // refuse; a subdomain that does not move passes zeros, or nothing on every row it touches.
+  for (size_t row = 0; row < result.size(); ++row) {
+    bool moving = false;
+    for (const Point& w : velocity[row]) moving = moving || w[0] != 0 || w[1] != 0;
+    for (int subdomain : missing[row])
+      if (moving && subdomain >= 0) {
+        const ContactRowGeometry& g = constraints.geometry[row];
+        throw InputError("velocityX, velocityY: the contact row of the slave node at (" + std::to_string(g.s[0]) +
+                         ", " + std::to_string(g.s[1]) + ") moves, but subdomain " + std::to_string(subdomain) +
+                         ", which holds one of its nodes, has no velocity: give velocities for every subdomain "
+                         "holding nodes of moving contact rows (zeros where they stand still)");
+      }
+  }
 
   for (size_t row = 0; row < result.size(); ++row) {
     const ContactRowGeometry& g = constraints.geometry[row];
