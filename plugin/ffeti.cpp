@@ -172,7 +172,9 @@ class FetiSetup : public E_F0mps {
       settings = setup_settings(stack);
     });
     if (settings.threads == 0) settings.threads = default_threads_per_rank(*comm);
-    const long id = handles().empty() ? 1 : handles().rbegin()->first + 1;
+    // Never reused: a script holding a freed handle must get an error, not another problem.
+    static long next_id = 1;
+    const long id = next_id++;
     auto problem = std::make_unique<FetiProblem>(std::move(subdomains), ids, static_cast<int>(count), contact,
                                                  settings, comm);
     handles()[id].problem = std::move(problem);
@@ -316,7 +318,7 @@ class FetiSolve : public E_F0mps {
     Handle& h = handle(GetAny<long>((*id)(stack)));
     DualSolveSettings settings;
     settings.tolerance = optional_real(nargs[1], stack, settings.tolerance);
-    settings.max_hessian = static_cast<int>(optional_int(nargs[2], stack, settings.max_hessian));
+    settings.max_hessian = checked_maxit(optional_int(nargs[2], stack, settings.max_hessian));
     settings.smalbe.variant = algorithm_from_name(optional_string(nargs[3], stack, option_defaults::algorithm));
     const long verbosity = optional_int(nargs[4], stack, 0);
     settings.smalbe.rho_factor = optional_real(nargs[5], stack, settings.smalbe.rho_factor);
@@ -426,7 +428,7 @@ DualSolveSettings sensitivity_settings(const Handle& h, Expression tol, Expressi
                                        Stack stack) {
   DualSolveSettings settings;
   settings.tolerance = optional_real(tol, stack, h.tolerance);
-  settings.max_hessian = static_cast<int>(optional_int(maxit, stack, settings.max_hessian));
+  settings.max_hessian = checked_maxit(optional_int(maxit, stack, settings.max_hessian));
   settings.monitor = progress_monitor(optional_int(verbosity, stack, 0), h.problem->communicator());
   return settings;
 }

@@ -2,6 +2,8 @@
 
 #include "feti/errors.h"
 
+#include <limits>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -75,8 +77,21 @@ double default_M_factor(SmalbeVariant algorithm, FetiVariant variant, CoarseCons
 }
 
 int checked_threads(long threads) {
+  // More threads than any node has cores only oversubscribe, and OpenMP fails to create
+  // tens of thousands (a segfault, or the process killed with exit status 1).
+  constexpr long kMaxThreads = 1024;
   if (threads < 0) throw InputError("threads: must be >= 0 (0: the default)");
+  if (threads > kMaxThreads)
+    throw InputError("threads: " + std::to_string(threads) + " is more than " + std::to_string(kMaxThreads) +
+                     " (give at most the cores of a node, or 0 for the default)");
   return static_cast<int>(threads);
+}
+
+int checked_maxit(long maxit) {
+  if (maxit < 1 || maxit > std::numeric_limits<int>::max())
+    throw InputError("maxit: must lie in 1.." + std::to_string(std::numeric_limits<int>::max()) + ", got " +
+                     std::to_string(maxit));
+  return static_cast<int>(maxit);
 }
 
 }  // namespace ffeti

@@ -42,7 +42,10 @@ const char* default_variant_name(bool vector_field);
 /// with 100; Total FETI 43, 46, 64 with 1 against 56, 63, 157).
 double default_M_factor(SmalbeVariant algorithm, FetiVariant variant, CoarseConstraints coarse);
 
-/// threads: >= 0 (0: OpenMP's default).
+/// threads: 0 (OpenMP's default) to 1024.
 int checked_threads(long threads);
+/// maxit (Hessian multiplications), checked before it is narrowed to int: a value computed
+/// in a script beyond int once wrapped to a small valid one.
+int checked_maxit(long maxit);
 
 }  // namespace ffeti
