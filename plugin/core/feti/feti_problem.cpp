@@ -8,6 +8,7 @@
 #include "parallel/process.h"
 
 #include <algorithm>
+#include <cmath>
 #include <exception>
 
 namespace ffeti {
@@ -231,6 +232,10 @@ FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
   result.kkt = kkt_residuals(inputs_, loads, Eigen::Map<const Vec>(c.rhs.data(), c.rows()), false, dual_->local(),
                              dual_->F(), c, eliminated, result.u, result.lambda, *comm_);
   result.energy = energy(inputs_, result.u, *comm_);
+  // Finite data can still overflow (a gap of -1e300, a point at 1e308): no answer with a
+  // non-finite energy, residual or multiplier is reported as anything but an overflow.
+  if (!std::isfinite(result.energy) || !result.kkt.finite() || !result.lambda.allFinite())
+    result.status = SolveStatus::overflow;
   for (int i = c.equality_rows; i < c.rows(); ++i)
     if (c.kind[static_cast<size_t>(i)] == RowKind::contact && result.lambda[i] > 0) ++result.active_contact;
   result.times.kkt = kkt_clock.seconds();

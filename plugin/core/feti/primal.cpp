@@ -61,6 +61,12 @@ double KktResiduals::max() const {
   return std::max({equilibrium, equality, inequality, dual_feasibility, complementarity});
 }
 
+bool KktResiduals::finite() const {
+  for (double r : {equilibrium, equality, inequality, dual_feasibility, complementarity})
+    if (!std::isfinite(r)) return false;
+  return true;
+}
+
 KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs, const std::vector<Vec>& f, const Vec& c,
                            bool homogeneous_dirichlet, const std::vector<LocalConstraints>& local, const DualOperator& F,
                            const Constraints& constraints, bool dirichlet_eliminated,

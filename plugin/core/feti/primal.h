@@ -29,6 +29,7 @@ std::vector<Vec> recover_primal(const DualOperator& F, const CoarseSpace* coarse
 struct KktResiduals {
   double equilibrium = 0, equality = 0, inequality = 0, dual_feasibility = 0, complementarity = 0;
   double max() const;
+  bool finite() const;  ///< every residual a number (an overflow of the data makes them nan or inf)
 };
 
 /// Collective over the ranks of `comm`; `inputs`, `local` and `u` are this rank's.

@@ -11,6 +11,7 @@ std::string to_string(SolveStatus status) {
     case SolveStatus::infeasible: return "infeasible";
     case SolveStatus::invalid_input: return "invalid_input";
     case SolveStatus::weakly_active: return "weakly_active";
+    case SolveStatus::overflow: return "overflow";
   }
   return "unknown";
 }

@@ -26,6 +26,7 @@ enum class SolveStatus {
   infeasible,          ///< equality and bound constraints cannot hold together
   invalid_input,
   weakly_active,       ///< sensitivity: weakly active contact rows, beta -> u' is not linear (no adjoint)
+  overflow,            ///< the answer has non-finite values: finite data whose products overflow (e.g. 1e308)
 };
 
 std::string to_string(SolveStatus status);

@@ -26,11 +26,13 @@ double ordered_sum(const std::vector<double>& local, size_t width, const Communi
   return sum;
 }
 
-/// A sensitivity or adjoint answer whose KKT residuals, recomputed in primal form, meet the
+/// An answer whose residuals are not numbers is an overflow. A sensitivity or adjoint answer
+/// whose KKT residuals, recomputed in primal form, meet the
 /// tolerance is right, whatever the dual stop test said: at a weakly active point the seed's
 /// test also asks ||G mu|| <= tol ||e||, which round-off can keep out of reach (a right answer
 /// once came back as not_positive_definite after 2866 multiplications).
 SolveStatus checked_status(SolveStatus dual_status, const KktResiduals& kkt, double tolerance) {
+  if (!kkt.finite()) return SolveStatus::overflow;
   if (dual_status == SolveStatus::max_iterations || dual_status == SolveStatus::stagnated ||
       dual_status == SolveStatus::not_positive_definite)
     return kkt.max() <= tolerance ? SolveStatus::converged : dual_status;
