@@ -129,5 +129,12 @@ TEST(ContactPressure, DividesEachForceByTheShareOfAllCopiesOfItsNode) {
       InputError);
 }
 
+TEST(Overflow, AGapOfMinus1e300IsReportedAsAnOverflowNotConverged) {
+  // Finite data whose products overflow: never "converged".
+  const GapDesign design;
+  const FetiResult state = design.at(-1e300, FetiVariant::tfeti).solve();
+  EXPECT_EQ(state.status, SolveStatus::overflow) << to_string(state.status);
+}
+
 }  // namespace
 }  // namespace ffeti
