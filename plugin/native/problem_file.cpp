@@ -173,6 +173,8 @@ DirichletSpec read_dirichlet(ObjectReader& r, int components) {
   d.dim = r.optional<int>("dim", 1);
   if (d.dim != 0 && d.dim != 1) r.fail(r.path("dim"), "must be 1 (a physical curve) or 0 (a physical point)");
   d.components = r.optional<std::vector<int>>("components", {});
+  if (r.has("components") && d.components.empty())
+    r.fail(r.path("components"), "is empty: it would fix no component; leave the key out to fix every component");
   for (int c : d.components)
     if (c < 0 || c >= components)
       r.fail(r.path("components"), "entry " + std::to_string(c) + " is not a component in [0, " +
@@ -266,11 +268,25 @@ ProblemFile read_problem_file(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the problem file");
   json root;
+  // JSON lets a key appear twice in one object and keeps the last: a problem file that says
+  // one thing twice most likely means neither, so it is refused.
+  std::vector<std::set<std::string>> keys;  // of each object being parsed
+  std::string duplicate;
+  const json::parser_callback_t find_duplicates = [&](int, json::parse_event_t event, json& parsed) {
+    if (event == json::parse_event_t::object_start) keys.emplace_back();
+    else if (event == json::parse_event_t::object_end) keys.pop_back();
+    else if (event == json::parse_event_t::key && !keys.back().insert(parsed.get<std::string>()).second &&
+             duplicate.empty())
+      duplicate = parsed.get<std::string>();
+    return true;
+  };
   try {
-    root = json::parse(in);
+    root = json::parse(in, find_duplicates);
   } catch (const json::parse_error& error) {
     throw InputError(path + ": not valid JSON (" + error.what() + ")");
   }
+  if (!duplicate.empty())
+    throw InputError(path + ": key \"" + duplicate + "\" appears twice in one object (the last would silently win)");
   ProblemFile problem;
   problem.path = path;
   const auto slash = path.find_last_of('/');

@@ -39,6 +39,9 @@ open('case.json', 'w').write(p if isinstance(p, str) else json.dumps(p))"
   || { echo "FAILED: missing problem file"; cat out.txt; failures=$((failures + 1)); }
 expect "malformed JSON" "case.json: not valid JSON" "p = '{\"mesh\": \"hertz.msh\",'"
 expect "unknown key" "case.json: solver.tolerance: unknown key" "p['solver']['tolerance'] = 1e-6"
+expect "a key given twice" "case.json: key \"mesh\" appears twice in one object" \
+  "p = open('hertz.json').read().replace('{', '{\"mesh\": \"other.msh\", ', 1)"
+expect "an empty component list" "dirichlet\[0\].components: is empty" "p['dirichlet'][0]['components'] = []"
 expect "mistyped value" "case.json: solver.tol: must be a number" "p['solver']['tol'] = 'small'"
 expect "bad option word" "case.json: solver.variant: \"feti2\" is not one of \"feti1\", \"tfeti\"" "p['solver']['variant'] = 'feti2'"
 expect "missing mesh file" "nowhere.msh: cannot open the mesh file" "p['mesh'] = 'nowhere.msh'"
