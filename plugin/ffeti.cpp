@@ -45,10 +45,11 @@ std::map<long, Handle>& handles() {
   return registry;
 }
 
-Handle& handle(long id) {
+/// The problem behind handle `id`, given as the argument `name` (for the error message).
+Handle& handle(long id, const char* name = "P") {
   const auto it = handles().find(id);
   if (it == handles().end())
-    throw InputError("P: no ffeti problem with handle " + std::to_string(id) +
+    throw InputError(std::string(name) + ": no ffeti problem with handle " + std::to_string(id) +
                      " (freed, or not returned by fetiSetup)");
   return it->second;
 }
@@ -755,7 +756,7 @@ class FetiContactStart : public E_F0mps {
   AnyType operator()(Stack stack) const {
     return SetAny<long>(guarded("fetiContactStart", [&] {
       const Handle& h = handle(GetAny<long>((*id)(stack)));
-      const Handle& from = handle(GetAny<long>((*from_id)(stack)));
+      const Handle& from = handle(GetAny<long>((*from_id)(stack)), "Pfrom");
       if (!from.result) throw InputError("Pfrom: no solution yet: call fetiSolve on it first");
       const auto forces = contact_multipliers(*from.problem, &*from.result);
       if (forces.empty()) throw InputError("Pfrom: has no contact rows, so no contact forces to start from");

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <set>
 
@@ -265,6 +266,7 @@ std::string resolve(const ProblemFile& problem, const std::string& path) {
 }
 
 ProblemFile read_problem_file(const std::string& path) {
+  if (std::filesystem::is_directory(path)) throw InputError(path + ": is a folder, not a problem file");
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the problem file");
   json root;

@@ -37,6 +37,9 @@ open('case.json', 'w').write(p if isinstance(p, str) else json.dumps(p))"
 "$ffeti_solve" nothing.json > out.txt 2>&1 && status=0 || status=$?
 { [ "$status" -eq 2 ] && grep -q "nothing.json: cannot open the problem file" out.txt && echo "ok: missing problem file"; } \
   || { echo "FAILED: missing problem file"; cat out.txt; failures=$((failures + 1)); }
+"$ffeti_solve" . > out.txt 2>&1 && status=0 || status=$?
+{ [ "$status" -eq 2 ] && grep -q "\.: is a folder, not a problem file" out.txt && echo "ok: a folder as the problem file"; } \
+  || { echo "FAILED: a folder as the problem file"; cat out.txt; failures=$((failures + 1)); }
 expect "malformed JSON" "case.json: not valid JSON" "p = '{\"mesh\": \"hertz.msh\",'"
 expect "unknown key" "case.json: solver.tolerance: unknown key" "p['solver']['tolerance'] = 1e-6"
 expect "a key given twice" "case.json: key \"mesh\" appears twice in one object" \

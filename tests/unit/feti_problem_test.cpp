@@ -467,8 +467,8 @@ TEST(FetiProblem, BadInputIsAnErrorNamingTheArgument) {
   wrong_start.start[0] = NAN;
   expect_input_error([&] { problem.solve(wrong_start); }, "start: has entries that are not finite");
   expect_input_error([&] { make([](auto& s) { s[2].K.coeffRef(0, 1) += 1.0; }); }, "K[2]: not symmetric");
-  expect_input_error([&] { make([](auto& s) { s[1].f.conservativeResize(3); }); }, "f[1]");
-  expect_input_error([&] { make([](auto& s) { s[3].f[0] = NAN; }); }, "f[3]");
+  expect_input_error([&] { make([](auto& s) { s[1].f.conservativeResize(3); }); }, "F[1]");
+  expect_input_error([&] { make([](auto& s) { s[3].f[0] = NAN; }); }, "F[3]");
   expect_input_error([&] { make([](auto& s) { s[0].K.coeffRef(0, 0) = INFINITY; }); }, "K[0]");
   expect_input_error([&] { make([](auto& s) { s[1].x.pop_back(); }); }, "X[1]");
   expect_input_error([&] { make([](auto& s) { s[0].dirichlet_dofs.push_back(100000); }); }, "dirichlet[0]");

@@ -164,11 +164,11 @@ void FetiProblem::gather_rank_statistics(double solve_seconds) const {
 void FetiProblem::set_loads(const std::vector<Vec>& loads) {
   collectively(*comm_, [&] {
     if (loads.size() != inputs_.size())
-      throw InputError("f: has " + std::to_string(loads.size()) + " entries for " +
+      throw InputError("F: has " + std::to_string(loads.size()) + " entries for " +
                        std::to_string(inputs_.size()) + " subdomains");
     for (size_t k = 0; k < loads.size(); ++k)
       if (loads[k].size() != inputs_[k].K.rows() || !loads[k].allFinite())
-        throw InputError("f[" + std::to_string(global_ids_[k]) + "]: needs " +
+        throw InputError("F[" + std::to_string(global_ids_[k]) + "]: needs " +
                          std::to_string(inputs_[k].K.rows()) + " finite entries");
   });
   for (size_t k = 0; k < loads.size(); ++k) inputs_[k].f = loads[k];

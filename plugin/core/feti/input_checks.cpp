@@ -62,9 +62,9 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
     check_stiffness(sub.K, s);
     const auto n = static_cast<size_t>(sub.K.rows());
     if (static_cast<size_t>(sub.f.size()) != n)
-      throw InputError(indexed("f", s) + ": has " + std::to_string(sub.f.size()) +
+      throw InputError(indexed("F", s) + ": has " + std::to_string(sub.f.size()) +
                        " entries, K" + "[" + std::to_string(s) + "] has " + std::to_string(n) + " rows");
-    if (!sub.f.allFinite()) throw InputError(indexed("f", s) + ": has a non-finite entry");
+    if (!sub.f.allFinite()) throw InputError(indexed("F", s) + ": has a non-finite entry");
     if (sub.x.size() != n || sub.y.size() != n)
       throw InputError(indexed("X", s) + ", " + indexed("Y", s) + ": need one coordinate per dof (" +
                        std::to_string(n) + "), got " + std::to_string(sub.x.size()) + " and " +
