@@ -24,7 +24,8 @@ scenes=("$root/edp/example.edp"
         "$root/tests/edp/bad-input.edp"
         "$root/tests/edp/sensitivity-membrane.edp"
         "$root/tests/edp/sensitivity-elastic.edp -scene 0"
-        "$root/tests/edp/sensitivity-elastic.edp -scene 1")
+        "$root/tests/edp/sensitivity-elastic.edp -scene 1"
+        "$root/edp/uniform-pressure.edp -m 8 -k 6 -gradcheck 1e-5 -cost pressure")
 label() { local script=${1%% *}; echo "$(basename "$script")${1#"$script"}"; }
 failures=0
 log=$(mktemp)
