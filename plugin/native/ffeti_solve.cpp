@@ -20,6 +20,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -35,13 +36,18 @@ const char* const kUsage =
     "  Solves the contact problem described by PROBLEM.json (docs/reference.md, \"ffeti-solve\").\n"
     "  Under mpirun -np P, subdomain s is solved on rank s mod P.\n";
 
-/// Every output file can be written: found out before the solve, not after.
+/// Every output file can be written: found out before the solve, not after. A file the
+/// check creates is removed again, so that a solve that writes nothing leaves nothing.
 void check_outputs_writable(const ProblemFile& problem) {
   const OutputSpec& out = problem.output;
   for (const auto& [key, path] : {std::pair{"views", out.views}, {"table", out.table}, {"stress_table", out.stress_table},
-                                  {"getdp_solution", out.getdp_solution}, {"history", out.history}})
-    if (!path.empty() && !std::ofstream(resolve(problem, path), std::ios::app))
-      throw InputError(problem.path + ": output." + key + ": cannot write " + resolve(problem, path));
+                                  {"getdp_solution", out.getdp_solution}, {"history", out.history}}) {
+    if (path.empty()) continue;
+    const std::string file = resolve(problem, path);
+    const bool existed = std::filesystem::exists(file);
+    if (!std::ofstream(file, std::ios::app)) throw InputError(problem.path + ": output." + key + ": cannot write " + file);
+    if (!existed) std::filesystem::remove(file);
+  }
 }
 
 int run(const std::string& problem_path, const std::shared_ptr<const Communicator>& comm) {
@@ -77,21 +83,27 @@ int run(const std::string& problem_path, const std::shared_ptr<const Communicato
 
   const GatheredSolution solution = gather_solution(result, input.layouts, count, *comm);
   const std::vector<ContactMultiplier> contact = contact_multipliers(feti, &result);
+  // An answer that did not converge (infeasible: pulling contact forces; overflow: not
+  // numbers) is not written as a result a post-processor would show as one; the history,
+  // which tells why, is.
+  const bool converged = result.status == SolveStatus::converged;
   collectively(*comm, [&] {
     if (comm->rank() != 0) return;
     const OutputSpec& out = problem.output;
+    if (!out.history.empty()) history.write_csv(resolve(problem, out.history));
+    if (!converged) return;
     const NodalResults nodal = nodal_results(problem, *mesh, solution, contact);
     if (!out.views.empty()) write_views(resolve(problem, out.views), problem, *mesh, nodal);
     if (!out.table.empty()) write_table(resolve(problem, out.table), *mesh, nodal);
     if (!out.stress_table.empty()) write_stress_table(resolve(problem, out.stress_table), nodal);
     if (!out.getdp_solution.empty()) write_getdp_solution(resolve(problem, out.getdp_solution), problem, solution);
-    if (!out.history.empty()) history.write_csv(resolve(problem, out.history));
   });
   const std::string rank_report = format_rank_report(feti);
   if (comm->rank() == 0) {
     std::cout << rank_report << "RESULT " << format_report(feti, &result) << std::endl;
-    if (result.status != SolveStatus::converged)
-      std::cerr << "ffeti-solve: not converged: " << to_string(result.status) << std::endl;
+    if (!converged)
+      std::cerr << "ffeti-solve: not converged: " << to_string(result.status)
+                << " (no views, tables or GetDP solution written; the history, if asked for, is)" << std::endl;
   }
   return result.status == SolveStatus::converged ? kConverged : kNotConverged;
 }

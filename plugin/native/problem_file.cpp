@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 
 namespace ffeti::native {
@@ -259,6 +260,45 @@ void check_getdp_solution(const ProblemFile& problem) {
   }
 }
 
+/// Each output file must have the extension of the format written to it (gmsh chooses its
+/// format by the extension, so a view named .txt was written as something else), and may
+/// not be one of the input files or another output (the first write would destroy it).
+void check_output_paths(const ProblemFile& problem) {
+  const OutputSpec& out = problem.output;
+  const std::vector<std::pair<const char*, const std::string*>> outputs = {
+      {"views", &out.views}, {"table", &out.table}, {"stress_table", &out.stress_table},
+      {"getdp_solution", &out.getdp_solution}, {"history", &out.history}};
+  const std::map<std::string, std::vector<std::string>> extensions = {
+      {"views", {".msh", ".pos"}}, {"table", {".csv"}}, {"stress_table", {".csv"}},
+      {"getdp_solution", {".res"}}, {"history", {".csv"}}};
+  std::map<std::string, std::string> taken;  // canonical path -> what it is
+  const auto canonical = [&](const std::string& path) {
+    return std::filesystem::weakly_canonical(resolve(problem, path)).string();
+  };
+  taken[std::filesystem::weakly_canonical(problem.path).string()] = "the problem file";
+  taken[canonical(problem.mesh)] = "the mesh file";
+  for (size_t s = 0; s < problem.subdomains.size(); ++s) {
+    const SubdomainSpec& sub = problem.subdomains[s];
+    const std::string where = "subdomains[" + std::to_string(s) + "]";
+    for (const auto& [path, what] : {std::pair{&sub.matrix, ".matrix"}, {&sub.rhs, ".rhs"},
+                                     {&sub.dofs.getdp_pre, ".dofs.getdp"}, {&sub.dofs.explicit_file, ".dofs.file"}})
+      if (!path->empty()) taken.emplace(canonical(*path), where + what);
+  }
+  for (const auto& [key, path] : outputs) {
+    if (path->empty()) continue;
+    const std::string where = problem.path + ": output." + key + ": ";
+    const std::string extension = std::filesystem::path(*path).extension().string();
+    const auto& allowed = extensions.at(key);
+    if (std::find(allowed.begin(), allowed.end(), extension) == allowed.end()) {
+      std::string list;
+      for (const std::string& e : allowed) list += (list.empty() ? "" : " or ") + e;
+      throw InputError(where + "\"" + *path + "\" needs the extension " + list + " (the format written)");
+    }
+    const auto [it, fresh] = taken.emplace(canonical(*path), std::string("output.") + key);
+    if (!fresh) throw InputError(where + "\"" + *path + "\" is " + it->second + ": writing it would destroy that file");
+  }
+}
+
 }  // namespace
 
 std::string resolve(const ProblemFile& problem, const std::string& path) {
@@ -331,6 +371,7 @@ ProblemFile read_problem_file(const std::string& path) {
   }
   r.finish();
   check_getdp_solution(problem);
+  check_output_paths(problem);
   return problem;
 }
 

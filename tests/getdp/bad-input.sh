@@ -44,6 +44,10 @@ expect "malformed JSON" "case.json: not valid JSON" "p = '{\"mesh\": \"hertz.msh
 expect "unknown key" "case.json: solver.tolerance: unknown key" "p['solver']['tolerance'] = 1e-6"
 expect "a key given twice" "case.json: key \"mesh\" appears twice in one object" \
   "p = open('hertz.json').read().replace('{', '{\"mesh\": \"other.msh\", ', 1)"
+expect "an output with another format's extension" "output.views: \"v.txt\" needs the extension .msh or .pos" \
+  "p['output']['views'] = 'v.txt'"
+expect "an output that is an input file" "output.views: \"hertz.msh\" is the mesh file" "p['output']['views'] = 'hertz.msh'"
+expect "two outputs in one file" "output.history: \"hertz-ffeti.csv\" is output.table" "p['output']['history'] = 'hertz-ffeti.csv'"
 expect "an empty component list" "dirichlet\[0\].components: is empty" "p['dirichlet'][0]['components'] = []"
 expect "mistyped value" "case.json: solver.tol: must be a number" "p['solver']['tol'] = 'small'"
 expect "bad option word" "case.json: solver.variant: \"feti2\" is not one of \"feti1\", \"tfeti\"" "p['solver']['variant'] = 'feti2'"
@@ -124,12 +128,14 @@ expect "pattern Matrix Market" "pattern.mtx: needs real values" "p = json.load(o
 # Not converged (one Hessian multiplication allowed): exit status 1 and a RESULT line.
 python3 -c "
 import json
-p = json.load(open('hertz.json')); p['solver']['maxit'] = 1; p['output'] = {}
+p = json.load(open('hertz.json')); p['solver']['maxit'] = 1
+p['output'] = {'views': 'unconverged.msh', 'table': 'unconverged.csv', 'history': 'unconverged-history.csv'}
 json.dump(p, open('maxit.json', 'w'))"
 status=0
 "$ffeti_solve" maxit.json > out.txt 2>&1 || status=$?
-if [ "$status" -eq 1 ] && grep -q "status_name=max_iterations" out.txt && grep -q "not converged: max_iterations" out.txt; then
-  echo "ok: not converged: exit status 1, status_name=max_iterations"
+if [ "$status" -eq 1 ] && grep -q "status_name=max_iterations" out.txt && grep -q "not converged: max_iterations" out.txt \
+   && [ ! -e unconverged.msh ] && [ ! -e unconverged.csv ] && [ -s unconverged-history.csv ]; then
+  echo "ok: not converged: exit status 1, status_name=max_iterations, no views or table written, the history written"
 else
   echo "FAILED: not converged: exit status $status"; cat out.txt; failures=$((failures + 1))
 fi
