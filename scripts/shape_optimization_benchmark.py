@@ -140,7 +140,7 @@ def main():
             costs, true_max = history(path)
             if name in SPANNER_PICTURES:
                 spanner_picture(folder, SPANNER_PICTURES[name])
-                curves.append((label, costs))
+                curves.append(("spanner, " + label, costs))
                 maxima.append((label, true_max))
         uniform = uniform_pressure_section.section(folder)
     history_plot(curves, maxima, "shape-optimization-history.png")
