@@ -134,6 +134,29 @@ void check_contact_bodies(const ProblemFile& problem, const GmshMesh& mesh, cons
   }
 }
 
+/// A P1 stiffness matrix couples two rows only where their nodes are one node or share a
+/// triangle. A dof map that contradicts this (two rows swapped, the map of another system)
+/// would solve a plausible but wrong problem: refused, naming the first such entry.
+void check_couplings(const SparseMatrix& K, const SubdomainLayout& layout, const std::string& where) {
+  std::set<std::pair<NodeTag, NodeTag>> edges;
+  for (const Triangle& t : layout.triangles)
+    for (int e = 0; e < 3; ++e) {
+      const NodeTag a = t.nodes[e], b = t.nodes[(e + 1) % 3];
+      edges.insert({std::min(a, b), std::max(a, b)});
+    }
+  for (Eigen::Index j = 0; j < K.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(K, j); it; ++it) {
+      if (it.value() == 0) continue;
+      const DofLocation& a = layout.dofs[static_cast<size_t>(it.row())];
+      const DofLocation& b = layout.dofs[static_cast<size_t>(j)];
+      if (a.node == b.node || edges.count({std::min(a.node, b.node), std::max(a.node, b.node)})) continue;
+      throw InputError(where + ": the matrix couples row " + std::to_string(it.row()) + " (node " +
+                       std::to_string(a.node) + ") and row " + std::to_string(j) + " (node " + std::to_string(b.node) +
+                       "), whose nodes share no triangle of the subdomain: the dof map does not fit the matrix "
+                       "(rows swapped, or the map of another system)");
+    }
+}
+
 /// Reads one subdomain's system and checks it against its mesh part.
 SubdomainInput read_subdomain(const ProblemFile& problem, const GmshMesh& mesh, int s, std::vector<Triangle> triangles,
                               const std::map<std::pair<NodeTag, int>, double>& fixed, SubdomainLayout& layout) {
@@ -166,6 +189,7 @@ SubdomainInput read_subdomain(const ProblemFile& problem, const GmshMesh& mesh, 
       if (!layout.rows.count({node, c}))
         throw InputError(map_file + ": " + entry(s) + ": node " + std::to_string(node) + " component " +
                          std::to_string(c) + " has no row: the mesh and the system do not match");
+  check_couplings(sub.K, layout, map_file + ": " + entry(s));
   for (size_t i = 0; i < layout.dofs.size(); ++i) {
     const DofLocation& dof = layout.dofs[i];
     const auto position = mesh.position(dof.node);

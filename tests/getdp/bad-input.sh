@@ -122,6 +122,13 @@ json.dump(problem_getdp, open("getdp.json", "w"), indent=2)
 PY
 "$ffeti_solve" getdp.json | grep -q "status_name=converged" || { echo "FAILED: GetDP files did not converge"; failures=$((failures + 1)); }
 "$ffeti_solve" market.json | grep -q "status_name=converged" || { echo "FAILED: Matrix Market files did not converge"; failures=$((failures + 1)); }
+# A dof map with two rows swapped (nodes far apart) contradicts the mesh's connectivity.
+python3 -c "
+rows = open('dofs0.txt').read().splitlines()
+rows[1], rows[-1] = rows[-1], rows[1]
+open('dofs0-swapped.txt', 'w').write('\\n'.join(rows) + '\\n')"
+expect "a dof map with two rows swapped" "dofs0-swapped.txt: subdomains\[0\]: the matrix couples row" \
+  "p = json.load(open('market.json')); p['subdomains'][0]['dofs'] = {'file': 'dofs0-swapped.txt'}; p['output'] = {}"
 # A pattern Matrix Market file (no values) is refused.
 sed '1s/real/pattern/; 3,$s/ [^ ]*$//' K0.mtx > pattern.mtx
 expect "pattern Matrix Market" "pattern.mtx: needs real values" "p = json.load(open('market.json')); p['subdomains'][0]['matrix'] = 'pattern.mtx'"
