@@ -24,6 +24,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
 
 namespace ffeti::native {
@@ -98,9 +99,19 @@ int run(const std::string& problem_path, const std::shared_ptr<const Communicato
     if (!out.stress_table.empty()) write_stress_table(resolve(problem, out.stress_table), nodal);
     if (!out.getdp_solution.empty()) write_getdp_solution(resolve(problem, out.getdp_solution), problem, solution);
   });
+  // The applied load per component, summed over every subdomain's right-hand side: a load
+  // term assembled over a whole curve in each subdomain that touches it shows up here as
+  // a multiple of the intended total (GetDP cannot tell, and neither can the solver).
+  std::vector<double> load(static_cast<size_t>(problem.components), 0.0);
+  for (const SubdomainInput& in : feti.inputs())
+    for (Eigen::Index i = 0; i < in.f.size(); ++i)
+      load[in.component.empty() ? 0 : static_cast<size_t>(in.component[static_cast<size_t>(i)])] += in.f[i];
+  std::ostringstream load_report;
+  load_report.precision(10);
+  for (size_t c = 0; c < load.size(); ++c) load_report << " load_" << (c == 0 ? "x" : "y") << "=" << comm->sum(load[c]);
   const std::string rank_report = format_rank_report(feti);
   if (comm->rank() == 0) {
-    std::cout << rank_report << "RESULT " << format_report(feti, &result) << std::endl;
+    std::cout << rank_report << "RESULT " << format_report(feti, &result) << load_report.str() << std::endl;
     if (!converged)
       std::cerr << "ffeti-solve: not converged: " << to_string(result.status)
                 << " (no views, tables or GetDP solution written; the history, if asked for, is)" << std::endl;
