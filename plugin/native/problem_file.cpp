@@ -313,19 +313,23 @@ ProblemFile read_problem_file(const std::string& path) {
   // JSON lets a key appear twice in one object and keeps the last: a problem file that says
   // one thing twice most likely means neither, so it is refused.
   std::vector<std::set<std::string>> keys;  // of each object being parsed
-  std::string duplicate;
+  std::string duplicate, last_key;  // last_key: where a number that overflows stands
   const json::parser_callback_t find_duplicates = [&](int, json::parse_event_t event, json& parsed) {
     if (event == json::parse_event_t::object_start) keys.emplace_back();
     else if (event == json::parse_event_t::object_end) keys.pop_back();
-    else if (event == json::parse_event_t::key && !keys.back().insert(parsed.get<std::string>()).second &&
-             duplicate.empty())
-      duplicate = parsed.get<std::string>();
+    else if (event == json::parse_event_t::key) {
+      last_key = parsed.get<std::string>();
+      if (!keys.back().insert(last_key).second && duplicate.empty()) duplicate = last_key;
+    }
     return true;
   };
   try {
     root = json::parse(in, find_duplicates);
   } catch (const json::parse_error& error) {
     throw InputError(path + ": not valid JSON (" + error.what() + ")");
+  } catch (const json::out_of_range& error) {  // a number beyond double, e.g. 1e999
+    throw InputError(path + ": the value of key \"" + last_key + "\" is a number beyond what a double holds (" +
+                     error.what() + ")");
   }
   if (!duplicate.empty())
     throw InputError(path + ": key \"" + duplicate + "\" appears twice in one object (the last would silently win)");

@@ -48,6 +48,8 @@ expect "an output with another format's extension" "output.views: \"v.txt\" need
   "p['output']['views'] = 'v.txt'"
 expect "an output that is an input file" "output.views: \"hertz.msh\" is the mesh file" "p['output']['views'] = 'hertz.msh'"
 expect "two outputs in one file" "output.history: \"hertz-ffeti.csv\" is output.table" "p['output']['history'] = 'hertz-ffeti.csv'"
+expect "a number beyond double" "case.json: the value of key \"tol\" is a number beyond what a double holds" \
+  "p = open('hertz.json').read().replace('\"tol\": 1e-08', '\"tol\": 1e999')"
 expect "an empty component list" "dirichlet\[0\].components: is empty" "p['dirichlet'][0]['components'] = []"
 expect "mistyped value" "case.json: solver.tol: must be a number" "p['solver']['tol'] = 'small'"
 expect "bad option word" "case.json: solver.variant: \"feti2\" is not one of \"feti1\", \"tfeti\"" "p['solver']['variant'] = 'feti2'"
