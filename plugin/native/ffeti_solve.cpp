@@ -55,12 +55,10 @@ int run(const std::string& problem_path, const std::shared_ptr<const Communicato
   ProblemFile problem;
   std::unique_ptr<GmshMesh> mesh;
   NativeInput input;
-  std::vector<int> ids;  // subdomain s on rank s mod ranks
   collectively(*comm, [&] {
     problem = read_problem_file(problem_path);
     mesh = std::make_unique<GmshMesh>(resolve(problem, problem.mesh));
-    for (int s = comm->rank(); s < static_cast<int>(problem.subdomains.size()); s += comm->size()) ids.push_back(s);
-    input = build_input(problem, *mesh, ids);
+    input = build_input(problem, *mesh, comm->rank(), comm->size());
     if (comm->rank() == 0) check_outputs_writable(problem);
   });
   const long missing = input.master_segments_total - static_cast<long>(comm->sum(input.master_segments_here));
@@ -73,7 +71,7 @@ int run(const std::string& problem_path, const std::shared_ptr<const Communicato
   const int count = static_cast<int>(problem.subdomains.size());
   std::unique_ptr<FetiProblem> built;
   try {  // the core's checks name K[s], F[s]: the system of subdomains[s]
-    built = std::make_unique<FetiProblem>(std::move(input.subdomains), ids, count, input.contact, input.setup, comm);
+    built = std::make_unique<FetiProblem>(std::move(input.subdomains), input.ids, count, input.contact, input.setup, comm);
   } catch (const InputError& error) {
     throw InputError(problem.path + ": " + error.what() + " (K[s], F[s]: the system of subdomains[s])");
   }

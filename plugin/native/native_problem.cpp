@@ -350,7 +350,27 @@ DualSolveSettings solve_settings(const SolverSpec& s, FetiVariant variant) {
 
 }  // namespace
 
-NativeInput build_input(const ProblemFile& problem, const GmshMesh& mesh, const std::vector<int>& ids) {
+std::vector<int> balanced_subdomains(const std::vector<std::vector<Triangle>>& triangles, int rank, int ranks) {
+  // Largest first to the rank with the fewest triangles so far (ties: the lower index and
+  // rank), the same on every rank: round robin by index once put 7,020 of 7,748 unknowns
+  // on one of two ranks.
+  std::vector<int> order(triangles.size());
+  for (size_t s = 0; s < order.size(); ++s) order[s] = static_cast<int>(s);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return triangles[static_cast<size_t>(a)].size() > triangles[static_cast<size_t>(b)].size();
+  });
+  std::vector<size_t> load(static_cast<size_t>(ranks), 0);
+  std::vector<int> mine;
+  for (int s : order) {
+    const auto lightest = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+    load[static_cast<size_t>(lightest)] += triangles[static_cast<size_t>(s)].size();
+    if (lightest == rank) mine.push_back(s);
+  }
+  std::sort(mine.begin(), mine.end());
+  return mine;
+}
+
+NativeInput build_input(const ProblemFile& problem, const GmshMesh& mesh, int rank, int ranks) {
   NativeInput input;
   try {  // the core's messages name the option; say where it was written
     input.setup = setup_settings(problem.solver, problem.components > 1);
@@ -361,7 +381,8 @@ NativeInput build_input(const ProblemFile& problem, const GmshMesh& mesh, const 
   MeshSplit split = split_mesh(problem, mesh);
   const auto fixed = dirichlet_values(problem, mesh, split);
   check_contact_bodies(problem, mesh, split);
-  for (int s : ids) {
+  input.ids = balanced_subdomains(split.triangles, rank, ranks);
+  for (int s : input.ids) {
     input.layouts.emplace_back();
     input.subdomains.push_back(
         read_subdomain(problem, mesh, s, std::move(split.triangles[static_cast<size_t>(s)]), fixed, input.layouts.back()));

@@ -28,16 +28,21 @@ struct NativeInput {
   /// Master segments on this rank's subdomains, and on the master curves in all: every
   /// segment must lie on some rank's subdomain (checked by the caller over the ranks).
   long master_segments_here = 0, master_segments_total = 0;
+  std::vector<int> ids;                    ///< the subdomains of this rank, ascending
   FetiSetupSettings setup;
   DualSolveSettings solve;
 };
 
-/// Builds the input of the subdomains `ids` (ascending). InputError naming the problem
+/// The subdomains of `rank` among `ranks` (ascending), balanced by triangles: the largest
+/// first to the rank with the fewest so far.
+std::vector<int> balanced_subdomains(const std::vector<std::vector<Triangle>>& triangles, int rank, int ranks);
+
+/// Builds the input of this rank's subdomains (`ids`, balanced_subdomains). InputError naming the problem
 /// file entry and the data file for sizes that disagree (matrix, right-hand side, dof
 /// map), dofs at nodes outside the subdomain's triangles, triangle nodes without dofs,
 /// physical groups that do not exist, bad options, and (checked on every rank alike, from
 /// the whole mesh) a triangle in two subdomains, a node in two bodies, a Dirichlet group
 /// without a node in the subdomains or fixing a dof to two values, a contact pair on one body.
-NativeInput build_input(const ProblemFile& problem, const GmshMesh& mesh, const std::vector<int>& ids);
+NativeInput build_input(const ProblemFile& problem, const GmshMesh& mesh, int rank, int ranks);
 
 }  // namespace ffeti::native

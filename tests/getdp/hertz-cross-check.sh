@@ -81,8 +81,8 @@ for name, error, bound in checks:
 sys.exit(0 if all(e <= b for _, e, b in checks) else 1)
 PY
 
-# The same problem file under mpirun on 1, 2, 3 and 7 ranks (6 subdomains: 3-3 on 2 ranks,
-# 2-2-2 on 3, one rank without a subdomain on 7).
+# The same problem file under mpirun on 1, 2, 3 and 7 ranks (6 subdomains, spread by size:
+# 3-3 on 2 ranks, 2-2-2 on 3, one rank without a subdomain on 7).
 failures=0
 for ranks in 1 2 3 7; do
   python3 - "$ranks" <<'PY'
@@ -91,8 +91,18 @@ problem = json.load(open("hertz-tight.json"))
 problem["output"] = {"table": f"ranks{sys.argv[1]}.csv"}
 json.dump(problem, open(f"ranks{sys.argv[1]}.json", "w"), indent=2)
 PY
-  mpirun --oversubscribe -np "$ranks" "$ffeti_solve" "ranks$ranks.json" | grep '^RESULT' | grep -q 'status_name=converged' \
+  mpirun --oversubscribe -np "$ranks" "$ffeti_solve" "ranks$ranks.json" > "ranks$ranks.out"
+  grep '^RESULT' "ranks$ranks.out" | grep -q 'status_name=converged' \
     || { echo "FAILED: $ranks ranks did not converge"; failures=$((failures + 1)); continue; }
+  if [ "$ranks" -eq 2 ]; then  # subdomains spread by size: neither rank holds 60 % of the unknowns
+    python3 - <<'PY' || failures=$((failures + 1))
+import re
+primal = [int(v) for v in re.findall(r"^RANK rank=\d+ subdomains=\d+ primal=(\d+)", open("ranks2.out").read(), re.M)]
+ok = len(primal) == 2 and max(primal) <= 0.6 * sum(primal)
+print(f"{'ok' if ok else 'FAILED'}: 2 ranks hold {primal} unknowns")
+raise SystemExit(0 if ok else 1)
+PY
+  fi
   python3 - "$ranks" <<'PY' || failures=$((failures + 1))
 import csv, sys
 serial = {r["node"]: r for r in csv.DictReader(open("hertz-ffeti.csv"))}
