@@ -1,0 +1,245 @@
+#!/usr/bin/env python3
+"""Bad inputs, generated, against both front ends: random mutations of a valid problem.
+
+ffeti-solve: a valid GetDP problem file (getdp/hertz.json on GetDP's assembly) with one
+value replaced (by null, a wrong type, 0, -1, a huge or tiny number, an integer beyond
+int, an empty list or object), a key deleted or an unknown key added. The plugin: a
+valid two-membrane script with one argument of fetiSetup, fetiSolve, fetiSensitivity or
+fetiContactPressure replaced by a bad value.
+
+Every case must end as one of: a clear refusal (ffeti-solve: exit status 2 and a message
+naming the problem file or a data file; FreeFEM: an "Exec error" naming the plugin
+function and an argument), or a run that completes (exit 0 or 1, with a RESULT line).
+Never a signal (crash), a hang (time limit), an uncaught exception or exit 3. A found
+class of bad input gets its own test in tests/edp/bad-input.edp or tests/getdp/bad-input.sh.
+
+Usage: bad_inputs.py SOURCE_DIR FFETI_SOLVE [--cases N] [--seed S] [--report FILE]
+(run where freefem++.pref points at the build; N cases per front end, default 40;
+--report writes the run's counts and failures as a Markdown page)."""
+import argparse
+import collections
+import copy
+import json
+import os
+import random
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+LIMIT = 120  # seconds per case: a hang is a failure
+
+BAD_VALUES = [None, "text", True, [], {}, 0, -1, 1.5, 1e308, -1e308, 1e-320, 2 ** 31, 2 ** 63 - 1, -(2 ** 31) - 1,
+              [1e308], [-1], ["x"], [2 ** 40]]
+
+
+def paths(node, prefix=()):
+    """Every (path, value) inside a JSON tree, objects by key and lists by index."""
+    yield prefix, node
+    if isinstance(node, dict):
+        for key, value in node.items():
+            yield from paths(value, prefix + (key,))
+    elif isinstance(node, list):
+        for index, value in enumerate(node):
+            yield from paths(value, prefix + (index,))
+
+
+def mutate(problem, rng):
+    """One mutation of a copy of `problem`: (description, mutated problem)."""
+    p = copy.deepcopy(problem)
+    candidates = [path for path, _ in paths(p) if path]
+    path = rng.choice(candidates)
+    parent = p
+    for step in path[:-1]:
+        parent = parent[step]
+    last = path[-1]
+    kind = rng.random()
+    if kind < 0.15 and isinstance(parent, dict):
+        del parent[last]
+        return f"delete {'.'.join(map(str, path))}", p
+    if kind < 0.25 and isinstance(parent, dict):
+        parent["no_such_key"] = 1
+        return f"unknown key beside {'.'.join(map(str, path))}", p
+    value = rng.choice(BAD_VALUES)
+    parent[last] = value
+    return f"{'.'.join(map(str, path))} = {json.dumps(value)}", p
+
+
+def solver_cases(source, ffeti_solve, count, rng, work, verdicts):
+    """ffeti-solve on `count` mutated problem files; returns the failures."""
+    if not shutil.which("getdp"):
+        print("ffeti-solve: skipped (getdp is not installed)")
+        return []
+    for name in ("hertz.pro", "hertz.json"):
+        shutil.copy(os.path.join(source, "getdp", name), work)
+    subprocess.run(["gmsh", "-2", "-format", "msh22", "-v", "0", os.path.join(source, "meshes", "hertz-pair.geo"),
+                    "-o", "hertz.msh"], cwd=work, check=True)
+    subprocess.run(["getdp", "hertz.pro", "-msh", "hertz.msh", "-solve", "Assemble", "-v", "0"], cwd=work, check=True,
+                   capture_output=True)
+    problem = json.load(open(os.path.join(work, "hertz.json")))
+    problem["output"] = {"table": "out.csv"}
+    failures = []
+    for case in range(count):
+        what, mutated = mutate(problem, rng)
+        with open(os.path.join(work, "case.json"), "w") as file:
+            json.dump(mutated, file)
+        try:
+            run = subprocess.run([ffeti_solve, "case.json"], cwd=work, capture_output=True, text=True, timeout=LIMIT)
+        except subprocess.TimeoutExpired:
+            failures.append(f"ffeti-solve case {case} ({what}): no answer within {LIMIT} s")
+            continue
+        message = (run.stdout + run.stderr).strip().splitlines()
+        last = message[-1] if message else ""
+        if run.returncode == 2 and re.search(r"ffeti-solve: \S+: ", last):
+            verdict = "refused"
+        elif run.returncode in (0, 1) and "RESULT " in run.stdout:
+            verdict = "ran" if run.returncode == 0 else "not converged"
+        else:
+            failures.append(f"ffeti-solve case {case} ({what}): exit status {run.returncode}: {last[:300]}")
+            continue
+        verdicts["ffeti-solve", verdict] += 1
+        print(f"ok: ffeti-solve {what}: {verdict}: {last[:160]}")
+    return failures
+
+
+SCRIPT = r"""
+include "ffeti.idp"
+int N = 1, m = 8, S = 2;
+mesh[int] Th(S);
+ffetiGrid(Th, 0, 0., 0., 1., 1., N, N, m)
+ffetiGrid(Th, 1, 1., 0., 1., 1., N, N, m)
+matrix[int] K(S), dK(S);
+real[int][int] F(S), X(S), Y(S), U(S), Z(S), dF(S), Share(S), Pr(S);
+int[int] body(S);
+int[int][int] fixed(S), slave(S), master(S);
+for (int s = 0; s < S; ++s) {
+  fespace Vh(Th[s], P1);
+  varf vK(u, v) = int2d(Th[s])(dx(u) * dx(v) + dy(u) * dy(v));
+  varf vF(u, v) = int2d(Th[s])(-1. * v);
+  varf vS(u, v) = int1d(Th[s], 2, 4)(v);
+  ffetiAssemble(Vh, s, vK, vF, K, F)
+  ffetiCoordinates(Vh, X[s], Y[s])
+  body[s] = s;
+  Share[s].resize(Vh.ndof);
+  Share[s] = vS(0, Vh);
+  dF[s].resize(Vh.ndof);
+  dF[s] = 0;
+  ffetiDofsWhere(Vh, s == 0 && x < 1e-10, fixed[s])
+  ffetiDofsWhere(Vh, s == 0 && abs(x - 1) < 1e-10, slave[s])
+  ffetiDofsWhere(Vh, s == 1 && abs(x - 1) < 1e-10, master[s])
+}
+real[int] zeroNormal = [0., 0., 0., 0.];
+@MUTATION@
+int P = fetiSetup(K, F, X, Y, body, dirichlet = fixed, contactSlave = slave, contactMaster = master@SETUP@);
+int status = fetiSolve(P, U@SOLVE@);
+cout << "RESULT status=" << status << endl;
+if (status == 0) {
+  int rows = fetiContactPressure(P, Share, Pr);
+  int st = fetiSensitivity(P, dK, dF, Z@SENS@);
+  cout << "RESULT sensitivity=" << st << " rows=" << rows << endl;
+}
+"""
+
+# (where, text): a named argument added to a call, or a statement that spoils the data.
+SCRIPT_MUTATIONS = [
+    ("SOLVE", ", tol = 0"), ("SOLVE", ", tol = -1"), ("SOLVE", ", tol = 1e308"), ("SOLVE", ", tol = sqrt(-1.)"),
+    ("SOLVE", ", maxit = 0"), ("SOLVE", ", maxit = -7"), ("SOLVE", ", maxit = 65536 * 65536"),
+    ("SOLVE", ", rho = 1e308 * 10"), ("SOLVE", ", rho = -1"), ("SOLVE", ", M = 0"), ("SOLVE", ", eta = -1"),
+    ("SOLVE", ", gamma = 0"), ("SOLVE", ", algorithm = \"fast\""), ("SOLVE", ", stop = \"\""),
+    ("SOLVE", ", settle = -3"), ("SOLVE", ", coarse = \"none\""), ("SOLVE", ", expansion = \"x\""),
+    ("SOLVE", ", history = \"/no/such/folder/h.csv\""), ("SETUP", ", threads = 100000"), ("SETUP", ", threads = -2"),
+    ("SETUP", ", variant = \"feti3\""), ("SETUP", ", factor = \"lu\""), ("SETUP", ", preconditioner = \"\""),
+    ("SETUP", ", gap = 1e308 * 10"), ("SETUP", ", gap = -1e300"), ("SETUP", ", contactRadius = -1"),
+    ("SETUP", ", obstacle = zeroNormal"), ("SENS", ", activeTol = 2"), ("SENS", ", activeTol = 0"),
+    ("SENS", ", maxit = 0"), ("SENS", ", tol = -1"),
+    ("MUTATION", "F[1][3] = sqrt(-1.);"), ("MUTATION", "F[0] = 1e308; F[0] *= 10;"), ("MUTATION", "X[1][2] = sqrt(-1.);"),
+    ("MUTATION", "F[1].resize(3);"), ("MUTATION", "body[1] = -1;"), ("MUTATION", "body[1] = 0;"),
+    ("MUTATION", "fixed[0].resize(1); fixed[0][0] = 100000;"), ("MUTATION", "slave[0].resize(1); slave[0][0] = -5;"),
+    ("MUTATION", "Share[1].resize(2);"), ("MUTATION", "dF[1].resize(1);"), ("MUTATION", "dF[0][0] = 1e308 * 10;"),
+    ("MUTATION", "Y[0] = X[0];"), ("MUTATION", "K[1] = 0 * K[1];"), ("MUTATION", "K[0] = -1 * K[0];"),
+    ("MUTATION", "master[1].resize(0);"), ("MUTATION", "fixed[0].resize(0);"),
+]
+
+
+def script_cases(count, rng, work, verdicts):
+    """FreeFEM scripts with one or two bad arguments; returns the failures."""
+    failures = []
+    for case in range(count):
+        chosen = rng.sample(SCRIPT_MUTATIONS, rng.choice([1, 1, 2]))
+        names = [re.match(r", (\w+) =", insert) for _, insert in chosen]
+        if len(chosen) == 2 and names[0] and names[1] and names[0].group(1) == names[1].group(1):
+            chosen = chosen[:1]  # one named argument given twice does not compile
+        text = SCRIPT
+        for where, insert in chosen:
+            text = text.replace(f"@{where}@", insert + f"@{where}@")
+        text = re.sub(r"@[A-Z]+@", "", text)
+        what = " + ".join(insert for _, insert in chosen)
+        path = os.path.join(work, f"case{case}.edp")
+        with open(path, "w") as file:
+            file.write(text)
+        try:
+            run = subprocess.run(["FreeFem++-nw", "-v", "0", path], cwd=work, capture_output=True, text=True,
+                                 timeout=LIMIT)
+        except subprocess.TimeoutExpired:
+            failures.append(f"plugin case {case} ({what}): no answer within {LIMIT} s")
+            continue
+        output = run.stdout + run.stderr
+        error = re.search(r"Exec error : (feti\w+: \w+[\[\]0-9, \w]*: .*)", output)
+        if error:
+            verdicts["plugin", "refused"] += 1
+            print(f"ok: plugin {what}: refused: {error.group(1)[:160]}")
+        elif run.returncode == 0 and "RESULT status=" in output:
+            verdicts["plugin", "ran"] += 1
+            print(f"ok: plugin {what}: ran: {' '.join(re.findall(r'RESULT (.*)', output))}")
+        else:
+            tail = " | ".join(output.strip().splitlines()[-3:])
+            failures.append(f"plugin case {case} ({what}): exit status {run.returncode}: {tail[:300]}")
+    return failures
+
+
+def write_report(args, verdicts, failures):
+    lines = ["# Generated bad inputs", "",
+             f"Generated by `tests/fuzz/bad_inputs.py --cases {args.cases} --seed {args.seed} --report ...` (do not",
+             "edit by hand): random mutations of a valid problem against both front ends (the",
+             "generator's docstring says which). Every case must be refused with a message naming",
+             "the argument (or file and key), or run to a RESULT line; a crash, a hang, an",
+             "uncaught exception or an unclear refusal is a failure. The default test command runs",
+             "40 cases per front end (`ctest -R fuzz`).", "",
+             "| front end | refused clearly | ran to a RESULT line (exit 0) | ran, not converged (exit 1) | failures |",
+             "|---|---|---|---|---|"]
+    for front in ("plugin", "ffeti-solve"):
+        failed = sum(1 for f in failures if f.startswith(front))
+        lines.append(f"| {front} | {verdicts[front, 'refused']} | {verdicts[front, 'ran']} | "
+                     f"{verdicts[front, 'not converged']} | {failed} |")
+    lines += ["", "Failures:" if failures else "No failures.", ""] + [f"- {f}" for f in failures] + [""]
+    with open(args.report, "w") as page:
+        page.write("\n".join(lines))
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("source")
+    parser.add_argument("ffeti_solve")
+    parser.add_argument("--cases", type=int, default=40)
+    parser.add_argument("--seed", type=int, default=20261125)
+    parser.add_argument("--report", default="")
+    args = parser.parse_args()
+    rng = random.Random(args.seed)
+    verdicts = collections.Counter()
+    with tempfile.TemporaryDirectory() as work:
+        if os.path.exists("freefem++.pref"):
+            shutil.copy("freefem++.pref", work)
+        failures = script_cases(args.cases, rng, work, verdicts) + solver_cases(
+            args.source, args.ffeti_solve, args.cases, rng, work, verdicts)
+    for failure in failures:
+        print("FAILED: " + failure)
+    if args.report:
+        write_report(args, verdicts, failures)
+    print(f"{len(failures)} failure(s) in {2 * args.cases} generated cases" if failures else
+          f"all {2 * args.cases} generated cases refused clearly or ran")
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()
