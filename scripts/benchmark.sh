@@ -13,6 +13,7 @@
 #                                          against an active set reference (~4 min)
 #   ./scripts/benchmark.sh hard-cases      the hard-case suite as a table (~1 min)
 #   ./scripts/benchmark.sh accuracy        what accuracy costs in time, every scene, tol 1e-2 .. 1e-10 (~3 min)
+#   ./scripts/benchmark.sh busy-machine    scenes idle and beside busy neighbour processes, threads (~2 min)
 #   ./scripts/benchmark.sh                 all
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -27,6 +28,7 @@ case "${1:-all}" in
   hertz) /usr/bin/python3 "$root/scripts/hertz_benchmark.py" ;;
   multibody) /usr/bin/python3 "$root/scripts/multibody_picture.py" ;;
   shape-optimization) /usr/bin/python3 "$root/scripts/shape_optimization_benchmark.py" ;;
+  busy-machine) /usr/bin/python3 "$root/scripts/busy_machine_benchmark.py" ;;
   scalability) /usr/bin/python3 "$root/scripts/scalability_benchmark.py" ;;
   large-contact) /usr/bin/python3 "$root/scripts/large_contact_benchmark.py" ;;
   hard-cases) /usr/bin/python3 "$root/scripts/hard_cases_table.py" ;;
@@ -39,6 +41,7 @@ case "${1:-all}" in
        /usr/bin/python3 "$root/scripts/scalability_benchmark.py"
        /usr/bin/python3 "$root/scripts/large_contact_benchmark.py"
        /usr/bin/python3 "$root/scripts/hard_cases_table.py"
-       /usr/bin/python3 "$root/scripts/accuracy_benchmark.py" ;;
-  *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization|scalability|large-contact|hard-cases|accuracy]" >&2; exit 2 ;;
+       /usr/bin/python3 "$root/scripts/accuracy_benchmark.py"
+       /usr/bin/python3 "$root/scripts/busy_machine_benchmark.py" ;;
+  *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization|scalability|large-contact|hard-cases|accuracy|busy-machine]" >&2; exit 2 ;;
 esac

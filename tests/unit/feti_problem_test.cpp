@@ -4,12 +4,14 @@
 #include "feti/feti_problem.h"
 #include "feti/kernel.h"
 #include "feti/option_names.h"
+#include "parallel/process.h"
 #include "membrane_model.h"
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <numeric>
 
 namespace ffeti {
@@ -514,4 +516,18 @@ TEST(FetiProblem, BadInputIsAnErrorNamingTheArgument) {
 }
 
 }  // namespace
+TEST(Threads, TheDefaultLeavesBusyCoresToOthersAndAnExplicitCountAlone) {
+  // Between 1 and the cores asked for, whatever the machine's load now.
+  const int adapted = threads_for_load(4);
+  EXPECT_GE(adapted, 1);
+  EXPECT_LE(adapted, 4);
+  // OMP_NUM_THREADS set by the user: the count stands.
+  const char* before = std::getenv("OMP_NUM_THREADS");
+  const std::string saved = before ? before : "";
+  setenv("OMP_NUM_THREADS", "3", 1);
+  EXPECT_EQ(threads_for_load(64), 64);
+  if (before) setenv("OMP_NUM_THREADS", saved.c_str(), 1);
+  else unsetenv("OMP_NUM_THREADS");
+}
+
 }  // namespace ffeti

@@ -1,5 +1,7 @@
 #include "parallel/mpi_communicator.h"
 
+#include "parallel/process.h"
+
 #include "feti/dual_operator.h"
 
 #include <algorithm>
@@ -67,7 +69,7 @@ std::string MpiCommunicator::first_error(const std::string& local_error) const {
 int default_threads_per_rank(const Communicator& comm) {
   int initialized = 0;
   MPI_Initialized(&initialized);
-  if (!initialized || comm.size() == 1) return 0;
+  if (!initialized || comm.size() == 1) return threads_for_load(resolve_thread_count(0));
   MPI_Comm node;
   int node_ranks = 1;
   MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);

@@ -29,8 +29,8 @@ class MpiCommunicator final : public Communicator {
 };
 
 /// Default OpenMP threads per rank: the node's cores shared by the ranks on the node, so
-/// that ranks and threads do not fight for the same cores (0, OpenMP's default, in one
-/// process or without MPI).
+/// that ranks and threads do not fight for the same cores; in one process or without MPI,
+/// OpenMP's default less the cores other processes keep busy now (threads_for_load).
 int default_threads_per_rank(const Communicator& comm);
 
 }  // namespace ffeti

@@ -1,5 +1,7 @@
 #include "parallel/process.h"
 
+#include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 
@@ -17,6 +19,17 @@ double peak_memory_mb() {
     status.ignore(4096, '\n');
   }
   return 0.0;
+}
+
+int threads_for_load(int threads) {
+  if (std::getenv("OMP_NUM_THREADS")) return threads;
+  std::ifstream loadavg("/proc/loadavg");
+  double one, five, fifteen;
+  int running = 0, total = 0;
+  char slash = 0;
+  if (!(loadavg >> one >> five >> fifteen >> running >> slash >> total) || slash != '/') return threads;
+  const int others = std::max(0, running - 1);  // the task reading is this process's own
+  return std::max(1, std::min(threads, threads - others));
 }
 
 }  // namespace ffeti

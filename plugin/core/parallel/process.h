@@ -6,4 +6,12 @@ namespace ffeti {
 /// Peak resident memory of this process in MiB (VmHWM of /proc/self/status; 0 if unknown).
 double peak_memory_mb();
 
+/// Threads for this process out of `threads` (the cores by default) when other processes
+/// keep cores busy: `threads` less the tasks running now besides this one (/proc/loadavg),
+/// at least 1. OpenMP threads spin while they wait, so on a loaded machine a thread beyond
+/// the free cores costs far more than it brings (a lesson took 7.6 s with two busy
+/// neighbours against 0.26 s with passive waiting: docs/results/busy-machine.md).
+/// `threads` unchanged when the user set OMP_NUM_THREADS or /proc cannot be read.
+int threads_for_load(int threads);
+
 }  // namespace ffeti
