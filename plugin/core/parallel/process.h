@@ -9,8 +9,8 @@ double peak_memory_mb();
 /// Threads for this process out of `threads` (the cores by default) when other processes
 /// keep cores busy: `threads` less the tasks running now besides this one (/proc/loadavg),
 /// at least 1. OpenMP threads spin while they wait, so on a loaded machine a thread beyond
-/// the free cores costs far more than it brings (a lesson took 7.6 s with two busy
-/// neighbours against 0.26 s with passive waiting: docs/results/busy-machine.md).
+/// the free cores costs far more than it brings (beside two busy neighbours a lesson took
+/// 3.98 s on two fixed threads, 0.25 s with this default: docs/results/busy-machine.md).
 /// `threads` unchanged when the user set OMP_NUM_THREADS or /proc cannot be read.
 int threads_for_load(int threads);
 
