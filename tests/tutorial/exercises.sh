@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# The lessons' exercises as their pages write them: each command runs to its LESSON line.
+# Exercise 2 of lesson 5 (a copy of multibody.idp with block 1 ten times softer beside the
+# lesson) once stopped with "triangles was reverse" when drawing the deformed blocks.
+# Usage: exercises.sh SOURCE_DIR   (run where the tests' freefem++.pref is)
+set -euo pipefail
+source_dir=$1
+lessons="$source_dir/edp/tutorial"
+pref=$PWD/freefem++.pref
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+cp "$pref" .
+echo 'includepath += "'"$lessons"'"' >> freefem++.pref
+failures=0
+exercise() {  # exercise NAME LESSON ARGS...
+  local name=$1 lesson=$2
+  shift 2
+  if FreeFem++-nw -v 0 "$lesson" "$@" > out.txt 2>&1 && grep -q '^LESSON' out.txt; then
+    echo "ok: $name"
+  else
+    echo "FAILED: $name"; tail -n 4 out.txt; failures=$((failures + 1))
+  fi
+}
+exercise "lesson 1: -pressure 2.5" "$lessons/01-obstacle.edp" -pressure 2.5
+exercise "lesson 1: -m 64" "$lessons/01-obstacle.edp" -m 64
+for args in "-N 4 -m 8" "-N 4 -m 16" "-N 8 -m 16"; do
+  # shellcheck disable=SC2086
+  exercise "lesson 2: $args" "$lessons/02-two-membranes.edp" $args
+done
+exercise "lesson 3: -n 256" "$lessons/03-accuracy.edp" -n 256
+exercise "lesson 5: -parts 4" "$lessons/05-several-bodies.edp" -parts 4
+sed 's/^real\[int\] E = \[210e3, 70e3, 110e3\];/real[int] E = [210e3, 7e3, 110e3];/' "$source_dir/edp/multibody.idp" > multibody.idp
+grep -q '7e3, 110e3' multibody.idp || { echo "FAILED: lesson 5, exercise 2: multibody.idp's E line changed"; exit 1; }
+cp "$lessons/05-several-bodies.edp" .
+exercise "lesson 5: block 1 ten times softer (a copy of multibody.idp beside the lesson)" 05-several-bodies.edp
+rm multibody.idp 05-several-bodies.edp
+exercise "lesson 6: -k 6" "$lessons/06-sensitivity.edp" -k 6
+exercise "lesson 7: -start 0.1" "$lessons/07-shape-optimization.edp" -start 0.1
+exercise "lesson 7: -amax 0.02" "$lessons/07-shape-optimization.edp" -amax 0.02
+[ "$failures" -eq 0 ] && echo "all checks passed" || { echo "$failures exercise(s) failed"; exit 1; }
