@@ -34,6 +34,47 @@ bool real_banner(const std::string& path) {
   return field == "real" || field == "integer";
 }
 
+/// Where a Matrix Market file CHOLMOD could not read goes wrong: the first line that is not
+/// what the format asks for (the banner, the size line, an entry with its indices in
+/// range and a number), as "line N: what"; empty if every line looks right.
+std::string first_bad_line(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  long number = 0, rows = -1, columns = -1, entries = -1, seen = 0;
+  bool coordinate = false;
+  const auto where = [&](const std::string& what) { return "line " + std::to_string(number) + ": " + what; };
+  while (std::getline(in, line)) {
+    ++number;
+    if (number == 1) {
+      if (line.rfind("%%MatrixMarket", 0) != 0) return where("the banner %%MatrixMarket ... is missing");
+      coordinate = line.find("coordinate") != std::string::npos;
+      continue;
+    }
+    if (line.empty() || line[0] == '%') continue;
+    std::istringstream fields(line);
+    if (rows < 0) {
+      if (!(fields >> rows >> columns) || (coordinate && !(fields >> entries)) || rows < 0 || columns < 0)
+        return where("the size line needs " + std::string(coordinate ? "rows, columns and entries" : "rows and columns") +
+                     ", got \"" + line + "\"");
+      continue;
+    }
+    long i = 0, j = 0;
+    double value = 0;
+    if (coordinate && !(fields >> i >> j >> value))
+      return where("an entry needs a row, a column and a value, got \"" + line + "\"");
+    if (!coordinate && !(fields >> value)) return where("a value is not a number: \"" + line + "\"");
+    if (coordinate && (i < 1 || i > rows || j < 1 || j > columns))
+      return where("the entry (" + std::to_string(i) + ", " + std::to_string(j) + ") lies outside the " +
+                   std::to_string(rows) + " x " + std::to_string(columns) + " matrix");
+    ++seen;
+  }
+  if (rows < 0) return where("the size line is missing");
+  const long expected = coordinate ? entries : rows * columns;
+  if (seen != expected)
+    return "the size line announces " + std::to_string(expected) + " entries, the file has " + std::to_string(seen);
+  return "";
+}
+
 /// A Matrix Market file read by CHOLMOD: sparse with both triangles, or dense.
 class MarketFile {
  public:
@@ -48,7 +89,9 @@ class MarketFile {
     data_ = cholmod_read_matrix(file.get(), 1, &type_, &common_);
     if (!data_) {
       cholmod_finish(&common_);
-      throw InputError(path + ": not a valid Matrix Market file (CHOLMOD could not read it)");
+      const std::string bad = first_bad_line(path);
+      throw InputError(path + ": not a valid Matrix Market file (CHOLMOD could not read it" +
+                       (bad.empty() ? std::string(")") : "; " + bad + ")"));
     }
     const int xtype = type_ == CHOLMOD_SPARSE ? static_cast<cholmod_sparse*>(data_)->xtype
                                               : static_cast<cholmod_dense*>(data_)->xtype;

@@ -131,6 +131,10 @@ rows[1], rows[-1] = rows[-1], rows[1]
 open('dofs0-swapped.txt', 'w').write('\\n'.join(rows) + '\\n')"
 expect "a dof map with two rows swapped" "dofs0-swapped.txt: subdomains\[0\]: the matrix couples row" \
   "p = json.load(open('market.json')); p['subdomains'][0]['dofs'] = {'file': 'dofs0-swapped.txt'}; p['output'] = {}"
+# A Matrix Market entry that is not one: the message names its line.
+sed '4s/.*/3 x 1.0/' K0.mtx > broken.mtx
+expect "a broken Matrix Market entry" "broken.mtx: not a valid Matrix Market file (CHOLMOD could not read it; line 4: an entry needs a row, a column and a value" \
+  "p = json.load(open('market.json')); p['subdomains'][0]['matrix'] = 'broken.mtx'; p['output'] = {}"
 # A pattern Matrix Market file (no values) is refused.
 sed '1s/real/pattern/; 3,$s/ [^ ]*$//' K0.mtx > pattern.mtx
 expect "pattern Matrix Market" "pattern.mtx: needs real values" "p = json.load(open('market.json')); p['subdomains'][0]['matrix'] = 'pattern.mtx'"
