@@ -51,6 +51,16 @@ void check_outputs_writable(const ProblemFile& problem) {
   }
 }
 
+/// The likeliest cause of a plane stiffness singular beyond its rigid modes here (refused,
+/// or slipping through as an inaccurate answer): the rows' components taken in the other
+/// order (a .pro whose FunctionSpace declares the y displacement first), which leaves the
+/// rotation no rigid mode of the matrix. Empty for scalar problems.
+std::string component_order_hint(const ProblemFile& problem) {
+  return problem.components == 2 ? "; ffeti-solve takes component 0 (x) from a node's first basis function and 1 (y) "
+                                   "from its second: a .pro declaring y before x swaps them"
+                                 : "";
+}
+
 int run(const std::string& problem_path, const std::shared_ptr<const Communicator>& comm) {
   ProblemFile problem;
   std::unique_ptr<GmshMesh> mesh;
@@ -73,7 +83,9 @@ int run(const std::string& problem_path, const std::shared_ptr<const Communicato
   try {  // the core's checks name K[s], F[s]: the system of subdomains[s]
     built = std::make_unique<FetiProblem>(std::move(input.subdomains), input.ids, count, input.contact, input.setup, comm);
   } catch (const InputError& error) {
-    throw InputError(problem.path + ": " + error.what() + " (K[s], F[s]: the system of subdomains[s])");
+    const bool kernel = std::string(error.what()).find("outside its kernel") != std::string::npos;
+    throw InputError(problem.path + ": " + error.what() + " (K[s], F[s]: the system of subdomains[s])" +
+                     (kernel ? component_order_hint(problem) : std::string()));
   }
   const FetiProblem& feti = *built;
   ConvergenceHistory history;
@@ -112,7 +124,9 @@ int run(const std::string& problem_path, const std::shared_ptr<const Communicato
     std::cout << rank_report << "RESULT " << format_report(feti, &result) << load_report.str() << std::endl;
     if (!converged)
       std::cerr << "ffeti-solve: not converged: " << to_string(result.status)
-                << " (no views, tables or GetDP solution written; the history, if asked for, is)" << std::endl;
+                << " (no views, tables or GetDP solution written; the history, if asked for, is)"
+                << (result.status == SolveStatus::inaccurate ? component_order_hint(problem) : std::string())
+                << std::endl;
   }
   return result.status == SolveStatus::converged ? kConverged : kNotConverged;
 }

@@ -12,6 +12,7 @@ std::string to_string(SolveStatus status) {
     case SolveStatus::invalid_input: return "invalid_input";
     case SolveStatus::weakly_active: return "weakly_active";
     case SolveStatus::overflow: return "overflow";
+    case SolveStatus::inaccurate: return "inaccurate";
   }
   return "unknown";
 }

@@ -27,6 +27,7 @@ enum class SolveStatus {
   invalid_input,
   weakly_active,       ///< sensitivity: weakly active contact rows, beta -> u' is not linear (no adjoint)
   overflow,            ///< the answer has non-finite values: finite data whose products overflow (e.g. 1e308)
+  inaccurate,          ///< the dual test held but the primal equilibrium residual is far above tol (a wrong K^+)
 };
 
 std::string to_string(SolveStatus status);
