@@ -51,10 +51,10 @@ void check_outputs_writable(const ProblemFile& problem) {
   }
 }
 
-/// The likeliest cause of a plane stiffness singular beyond its rigid modes here (refused,
-/// or slipping through as an inaccurate answer): the rows' components taken in the other
-/// order (a .pro whose FunctionSpace declares the y displacement first), which leaves the
-/// rotation no rigid mode of the matrix. Empty for scalar problems.
+/// The likeliest cause here of an inaccurate answer (a plane stiffness singular beyond the
+/// rigid modes its kernel check found): the rows' components taken in the other order (a
+/// .pro whose FunctionSpace declares the y displacement first), which leaves the rotation
+/// no rigid mode of the matrix. Empty for scalar problems.
 std::string component_order_hint(const ProblemFile& problem) {
   return problem.components == 2 ? "; ffeti-solve takes component 0 (x) from a node's first basis function and 1 (y) "
                                    "from its second: a .pro declaring y before x swaps them"
@@ -83,9 +83,7 @@ int run(const std::string& problem_path, const std::shared_ptr<const Communicato
   try {  // the core's checks name K[s], F[s]: the system of subdomains[s]
     built = std::make_unique<FetiProblem>(std::move(input.subdomains), input.ids, count, input.contact, input.setup, comm);
   } catch (const InputError& error) {
-    const bool kernel = std::string(error.what()).find("outside its kernel") != std::string::npos;
-    throw InputError(problem.path + ": " + error.what() + " (K[s], F[s]: the system of subdomains[s])" +
-                     (kernel ? component_order_hint(problem) : std::string()));
+    throw InputError(problem.path + ": " + error.what() + " (K[s], F[s]: the system of subdomains[s])");
   }
   const FetiProblem& feti = *built;
   ConvergenceHistory history;

@@ -33,15 +33,20 @@ ContactPressure contact_pressure(const FetiProblem& problem, const Vec& lambda, 
     const auto& [x, y] = problem.contact_positions()[static_cast<size_t>(i)];
     row_at.emplace(node_key(problem.contact_body_component()[static_cast<size_t>(i)][0], x, y, problem.snap()), i);
   }
-  // (row, share) of the copies held here, summed in rank order: the same on every rank.
+  // The contact row at each local dof's node (-1: none), then (row, share) of the copies
+  // held here, summed in rank order: the same on every rank.
+  std::vector<std::vector<int>> row_of_dof;
   std::vector<double> local;
   for (size_t k = 0; k < inputs.size(); ++k) {
     const SubdomainInput& in = inputs[k];
-    for (Eigen::Index d = 0; d < share[k].size(); ++d) {
-      const auto it = row_at.find(node_key(in.body, in.x[static_cast<size_t>(d)], in.y[static_cast<size_t>(d)], problem.snap()));
-      const int component = in.component.empty() ? 0 : in.component[static_cast<size_t>(d)];
-      if (it != row_at.end() && component == problem.contact_body_component()[static_cast<size_t>(it->second)][1])
-        local.insert(local.end(), {double(it->second), share[k][d]});
+    std::vector<int>& rows_here = row_of_dof.emplace_back(static_cast<size_t>(in.K.rows()), -1);
+    for (size_t d = 0; d < rows_here.size(); ++d) {
+      const auto it = row_at.find(node_key(in.body, in.x[d], in.y[d], problem.snap()));
+      if (it == row_at.end()) continue;
+      rows_here[d] = it->second;
+      const int component = in.component.empty() ? 0 : in.component[d];
+      if (share[k].size() && component == problem.contact_body_component()[static_cast<size_t>(it->second)][1])
+        local.insert(local.end(), {double(it->second), share[k][static_cast<Eigen::Index>(d)]});
     }
   }
   const std::vector<double> all = problem.communicator().allgather(local);
@@ -61,13 +66,10 @@ ContactPressure contact_pressure(const FetiProblem& problem, const Vec& lambda, 
     }
   }
   if (!missing.empty()) throw InputError(missing);  // the same on every rank: built from gathered data
-  for (size_t k = 0; k < inputs.size(); ++k) {
-    const SubdomainInput& in = inputs[k];
-    Vec pressure = Vec::Zero(in.K.rows());
-    for (Eigen::Index d = 0; d < pressure.size(); ++d) {
-      const auto it = row_at.find(node_key(in.body, in.x[static_cast<size_t>(d)], in.y[static_cast<size_t>(d)], problem.snap()));
-      if (it != row_at.end()) pressure[d] = result.per_row[it->second];
-    }
+  for (const std::vector<int>& rows_here : row_of_dof) {
+    Vec pressure = Vec::Zero(static_cast<Eigen::Index>(rows_here.size()));
+    for (size_t d = 0; d < rows_here.size(); ++d)
+      if (rows_here[d] >= 0) pressure[static_cast<Eigen::Index>(d)] = result.per_row[rows_here[d]];
     result.per_dof.push_back(std::move(pressure));
   }
   return result;
