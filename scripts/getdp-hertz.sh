@@ -13,12 +13,12 @@ command -v xvfb-run >/dev/null || "${as_root[@]}" apt-get install -y -qq xvfb >/
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
-cp "$root/getdp/hertz.pro" "$root/getdp/hertz.json" "$root/getdp/render-views.geo" .
+cp "$root/getdp/hertz.pro" "$root/getdp/hertz.json" .
 gmsh -2 -format msh22 -v 0 "$root/meshes/hertz-pair.geo" -o hertz.msh
 getdp hertz.pro -msh hertz.msh -setstring solver "$solver" -solve Hertz -v 1 | grep '^RESULT'
 render() {  # OUT SCALE TX TY
   xvfb-run -a gmsh -setstring out "$1" -setnumber scale "$2" -setnumber tx "$3" -setnumber ty "$4" \
-    render-views.geo >/dev/null 2>&1
+    "$root/getdp/render-views.geo" >/dev/null 2>&1
   cp "$1" "$root/docs/"
   echo "wrote docs/$1"
 }
