@@ -8,7 +8,7 @@
 #include "feti/contact_transfer.h"
 #include "feti/errors.h"
 #include "feti/feti_problem.h"
-#include "feti/option_names.h"
+#include "feti/options.h"
 #include "feti/statistics.h"
 #include "parallel/mpi_communicator.h"
 #include "feti/convergence_history.h"
@@ -116,17 +116,44 @@ std::string optional_string(Expression e, Stack stack, const std::string& fallba
   return e ? *GetAny<std::string*>((*e)(stack)) : fallback;
 }
 
+/// A function's named parameters: its own (`extras`), then the registry's options of `scope`
+/// (feti/options.h), whose values the script gives as FreeFEM reals, integers or strings.
+std::vector<basicAC_F0::name_and_type> named_parameters(std::vector<basicAC_F0::name_and_type> extras,
+                                                        OptionScope scope) {
+  for (const Option& o : options())
+    if (o.scope == scope)
+      extras.push_back({o.name, o.kind == OptionKind::word      ? &typeid(std::string*)
+                                : o.kind == OptionKind::integer ? &typeid(long)
+                                                                : &typeid(double)});
+  return extras;
+}
+
+/// The options of `scope` the script gave: `options` points at the first of them in nargs
+/// (named_parameters' order). Each is checked as it is read, before any narrowing.
+GivenOptions given_options(OptionScope scope, const Expression* options_nargs, Stack stack) {
+  GivenOptions given;
+  size_t k = 0;
+  for (const Option& o : options()) {
+    if (o.scope != scope) continue;
+    const Expression e = options_nargs[k++];
+    if (!e) continue;
+    if (o.kind == OptionKind::word) given.set(o.name, *GetAny<std::string*>((*e)(stack)));
+    else if (o.kind == OptionKind::integer) given.set(o.name, GetAny<long>((*e)(stack)));
+    else given.set(o.name, GetAny<double>((*e)(stack)));
+  }
+  return given;
+}
+
 // ---- int P = fetiSetup(K, F, X, Y, body, dirichlet=..., contactSlave=..., ...) ----------
 class FetiSetup : public E_F0mps {
  public:
   typedef long Result;
-  static const int n_name_param = 15;
-  static basicAC_F0::name_and_type name_param[];
-  Expression nargs[n_name_param];
+  static std::vector<basicAC_F0::name_and_type> name_param;
+  std::vector<Expression> nargs;
   Expression K, F, X, Y, body;
 
-  explicit FetiSetup(const basicAC_F0& args) {
-    args.SetNameParam(n_name_param, name_param, nargs);
+  explicit FetiSetup(const basicAC_F0& args) : nargs(name_param.size()) {
+    args.SetNameParam(static_cast<int>(name_param.size()), name_param.data(), nargs.data());
     K = to<KN<Matrice_Creuse<double>>*>(args[0]);
     F = to<KN<KN<double>>*>(args[1]);
     X = to<KN<KN<double>>*>(args[2]);
@@ -144,9 +171,9 @@ class FetiSetup : public E_F0mps {
   }
 
  private:
-  // Named parameters by position in name_param.
-  enum Named { kDirichlet, kDirichletValues, kSlave, kMaster, kGap, kComponent, kVariant, kFactor, kThreads,
-               kComm, kSegments, kObstacle, kRadius, kPreconditioner, kContactGap };
+  // Named parameters by position in name_param: these, then the set-up options.
+  enum Named { kDirichlet, kDirichletValues, kSlave, kMaster, kGap, kComponent, kComm, kSegments, kObstacle,
+               kRadius, kContactGap, kOptions };
 
   long setup(Stack stack) const {
     auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
@@ -269,41 +296,32 @@ class FetiSetup : public E_F0mps {
     return contact;
   }
 
-  /// variant=, factor=, threads=, preconditioner=. Default variant: FETI-1 for scalar fields (the seed's),
-  /// Total FETI for vector fields, whose partially constrained subdomains it avoids.
+  /// The set-up options (variant=, factor=, threads=, preconditioner=); a vector field is
+  /// one with component= given.
   FetiSetupSettings setup_settings(Stack stack) const {
-    FetiSetupSettings settings;
-    const bool vector_field = nargs[kComponent] != nullptr;
-    settings.variant = variant_from_name(optional_string(nargs[kVariant], stack, default_variant_name(vector_field)));
-    settings.factor = factor_from_name(optional_string(nargs[kFactor], stack, option_defaults::factor));
-    settings.threads = checked_threads(optional_int(nargs[kThreads], stack, 0));
-    settings.preconditioner =
-        preconditioner_from_name(optional_string(nargs[kPreconditioner], stack, option_defaults::preconditioner));
-    return settings;
+    return given_options(OptionScope::setup, &nargs[kOptions], stack).setup(nargs[kComponent] != nullptr);
   }
 };
 
-basicAC_F0::name_and_type FetiSetup::name_param[] = {
-    {"dirichlet", &typeid(KN<KN<long>>*)},       {"dirichletValues", &typeid(KN<KN<double>>*)},
-    {"contactSlave", &typeid(KN<KN<long>>*)},    {"contactMaster", &typeid(KN<KN<long>>*)},
-    {"gap", &typeid(double)},                    {"component", &typeid(KN<KN<long>>*)},
-    {"variant", &typeid(std::string*)},          {"factor", &typeid(std::string*)},
-    {"threads", &typeid(long)},                  {"comm", &typeid(pcommworld)},
-    {"contactSegments", &typeid(KN<KN<long>>*)}, {"obstacle", &typeid(KN<double>*)},
-    {"contactRadius", &typeid(double)},          {"preconditioner", &typeid(std::string*)},
-    {"contactGap", &typeid(KN<KN<double>>*)}};
+std::vector<basicAC_F0::name_and_type> FetiSetup::name_param = named_parameters(
+    {{"dirichlet", &typeid(KN<KN<long>>*)},       {"dirichletValues", &typeid(KN<KN<double>>*)},
+     {"contactSlave", &typeid(KN<KN<long>>*)},    {"contactMaster", &typeid(KN<KN<long>>*)},
+     {"gap", &typeid(double)},                    {"component", &typeid(KN<KN<long>>*)},
+     {"comm", &typeid(pcommworld)},               {"contactSegments", &typeid(KN<KN<long>>*)},
+     {"obstacle", &typeid(KN<double>*)},          {"contactRadius", &typeid(double)},
+     {"contactGap", &typeid(KN<KN<double>>*)}},
+    OptionScope::setup);
 
 // ---- int status = fetiSolve(P, U, lambda=..., tol=..., maxit=..., algorithm=..., verbosity=...)
 class FetiSolve : public E_F0mps {
  public:
   typedef long Result;
-  static const int n_name_param = 15;
-  static basicAC_F0::name_and_type name_param[];
-  Expression nargs[n_name_param];
+  static std::vector<basicAC_F0::name_and_type> name_param;
+  std::vector<Expression> nargs;
   Expression id, U;
 
-  explicit FetiSolve(const basicAC_F0& args) {
-    args.SetNameParam(n_name_param, name_param, nargs);
+  explicit FetiSolve(const basicAC_F0& args) : nargs(name_param.size()) {
+    args.SetNameParam(static_cast<int>(name_param.size()), name_param.data(), nargs.data());
     id = to<long>(args[0]);
     U = to<KN<KN<double>>*>(args[1]);
   }
@@ -315,40 +333,31 @@ class FetiSolve : public E_F0mps {
   }
 
  private:
+  // Named parameters by position in name_param: these, then the solve options.
+  enum Named { kLambda, kHistory, kStart, kOptions };
+
   long solve(Stack stack) const {
     Handle& h = handle(GetAny<long>((*id)(stack)));
-    DualSolveSettings settings;
-    settings.tolerance = optional_real(nargs[1], stack, settings.tolerance);
-    settings.max_hessian = checked_maxit(optional_int(nargs[2], stack, settings.max_hessian));
-    settings.smalbe.variant = algorithm_from_name(optional_string(nargs[3], stack, option_defaults::algorithm));
-    const long verbosity = optional_int(nargs[4], stack, 0);
-    settings.smalbe.rho_factor = optional_real(nargs[5], stack, settings.smalbe.rho_factor);
-    settings.coarse_constraints = coarse_from_name(optional_string(nargs[12], stack, option_defaults::coarse));
-    settings.smalbe.M_factor = optional_real(
-        nargs[6], stack, default_M_factor(settings.smalbe.variant, h.problem->variant(), settings.coarse_constraints));
-    settings.smalbe.eta_factor = optional_real(nargs[7], stack, settings.smalbe.eta_factor);
-    settings.mprgp.gamma = optional_real(nargs[8], stack, settings.mprgp.gamma);
-    settings.mprgp.expansion = expansion_from_name(optional_string(nargs[10], stack, option_defaults::expansion));
-    settings.stopping = stop_from_name(optional_string(nargs[11], stack, option_defaults::stop));
-    if (auto* start = optional_pointer<KN<double>>(nargs[13], stack)) settings.start = binding::to_vec(*start);
-    const long settle = optional_int(nargs[14], stack, settings.settle);  // negative: refused by validate()
-    settings.settle = settle < 0 ? -1 : static_cast<int>(std::min<long>(settle, std::numeric_limits<int>::max()));
+    const SolverSettings solver = given_options(OptionScope::solve, &nargs[kOptions], stack).solve(h.problem->variant());
+    DualSolveSettings settings = solver.solve;
+    const int verbosity = solver.verbosity;
+    if (auto* start = optional_pointer<KN<double>>(nargs[kStart], stack)) settings.start = binding::to_vec(*start);
     settings.monitor = h.history.start(progress_monitor(verbosity, h.problem->communicator()));
     h.sensitivity.reset();
     h.result.reset();
     h.tolerance = settings.tolerance;
     h.result = h.problem->solve(settings);
     const FetiResult& r = *h.result;
-    if (nargs[9])  // written by rank 0; a failure raised on every rank alike
+    if (nargs[kHistory])  // written by rank 0; a failure raised on every rank alike
       collectively(h.problem->communicator(), [&] {
-        if (h.problem->communicator().rank() == 0) h.history.write_csv(optional_string(nargs[9], stack, ""));
+        if (h.problem->communicator().rank() == 0) h.history.write_csv(optional_string(nargs[kHistory], stack, ""));
       });
     auto& u = *GetAny<KN<KN<double>>*>((*U)(stack));
     const std::vector<int>& ids = h.problem->global_ids();
     u.resize(h.problem->subdomain_count());
     for (long s = 0; s < u.N(); ++s) u[s].resize(0);  // subdomains of other ranks stay empty
     for (size_t k = 0; k < r.u.size(); ++k) binding::copy_to(r.u[k], u[ids[k]]);
-    if (auto* lambda = optional_pointer<KN<double>>(nargs[0], stack)) binding::copy_to(r.lambda, *lambda);
+    if (auto* lambda = optional_pointer<KN<double>>(nargs[kLambda], stack)) binding::copy_to(r.lambda, *lambda);
     if (verbosity >= 1 && h.problem->communicator().rank() == 0)
       std::printf("ffeti: %s after %d Hessian multiplications (%d outer), path %s, ||gP||/||b|| %.2e, "
                   "KKT check %.2e\n",
@@ -359,13 +368,9 @@ class FetiSolve : public E_F0mps {
   }
 };
 
-basicAC_F0::name_and_type FetiSolve::name_param[] = {
-    {"lambda", &typeid(KN<double>*)}, {"tol", &typeid(double)},       {"maxit", &typeid(long)},
-    {"algorithm", &typeid(std::string*)}, {"verbosity", &typeid(long)}, {"rho", &typeid(double)},
-    {"M", &typeid(double)},           {"eta", &typeid(double)},       {"gamma", &typeid(double)},
-    {"history", &typeid(std::string*)}, {"expansion", &typeid(std::string*)},
-    {"stop", &typeid(std::string*)},  {"coarse", &typeid(std::string*)}, {"start", &typeid(KN<double>*)},
-    {"settle", &typeid(long)}};
+std::vector<basicAC_F0::name_and_type> FetiSolve::name_param = named_parameters(
+    {{"lambda", &typeid(KN<double>*)}, {"history", &typeid(std::string*)}, {"start", &typeid(KN<double>*)}},
+    OptionScope::solve);
 
 // ---- sensitivities (seed eq. 12) -------------------------------------------------------
 
@@ -427,10 +432,15 @@ std::vector<DesignDerivative> design_directions(const FetiProblem& problem, KN<M
 
 DualSolveSettings sensitivity_settings(const Handle& h, Expression tol, Expression maxit, Expression verbosity,
                                        Stack stack) {
-  DualSolveSettings settings;
-  settings.tolerance = optional_real(tol, stack, h.tolerance);
-  settings.max_hessian = checked_maxit(optional_int(maxit, stack, settings.max_hessian));
-  settings.monitor = progress_monitor(optional_int(verbosity, stack, 0), h.problem->communicator());
+  GivenOptions given;  // checked as fetiSolve's; the default tol is the state's
+  given.set("tol", optional_real(tol, stack, h.tolerance));
+  if (maxit) given.set("maxit", GetAny<long>((*maxit)(stack)));
+  if (verbosity) given.set("verbosity", GetAny<long>((*verbosity)(stack)));
+  const SolverSettings solver = given.solve(h.problem->variant());
+  DualSolveSettings settings;  // the sensitivity's own path and test: only these three from the script
+  settings.tolerance = solver.solve.tolerance;
+  settings.max_hessian = solver.solve.max_hessian;
+  settings.monitor = progress_monitor(solver.verbosity, h.problem->communicator());
   return settings;
 }
 

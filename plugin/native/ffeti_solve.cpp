@@ -7,6 +7,7 @@
 // input (the message names the file and what is wrong), 3 another failure (out of memory).
 #include "feti/convergence_history.h"
 #include "feti/errors.h"
+#include "feti/options.h"
 #include "feti/feti_problem.h"
 #include "feti/progress_monitor.h"
 #include "feti/statistics.h"
@@ -34,8 +35,10 @@ constexpr int kConverged = 0, kNotConverged = 1, kBadInput = 2, kFailure = 3;
 
 const char* const kUsage =
     "usage: ffeti-solve PROBLEM.json\n"
+    "       ffeti-solve --options setup|solve\n"
     "  Solves the contact problem described by PROBLEM.json (docs/reference.md, \"ffeti-solve\").\n"
-    "  Under mpirun -np P, subdomain s is solved on rank s mod P.\n";
+    "  Under mpirun -np P, the subdomains are spread over the ranks by size.\n"
+    "  --options: prints the reference's table of the solver options (the \"solver\" object).\n";
 
 /// Every output file can be written: found out before the solve, not after. A file the
 /// check creates is removed again, so that a solve that writes nothing leaves nothing.
@@ -87,7 +90,7 @@ int run(const std::string& problem_path, const std::shared_ptr<const Communicato
   }
   const FetiProblem& feti = *built;
   ConvergenceHistory history;
-  input.solve.monitor = history.start(progress_monitor(problem.solver.verbosity.value_or(0), *comm));
+  input.solve.monitor = history.start(progress_monitor(input.verbosity, *comm));
   const FetiResult result = feti.solve(input.solve);
 
   const GatheredSolution solution = gather_solution(result, input.layouts, count, *comm);
@@ -137,7 +140,13 @@ int main(int argc, char** argv) {
   int status = ffeti::native::kBadInput;
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  if (argc != 2 || std::strcmp(argv[1], "-h") == 0 || std::strcmp(argv[1], "--help") == 0) {
+  if (argc == 3 && std::strcmp(argv[1], "--options") == 0 &&
+      (std::strcmp(argv[2], "setup") == 0 || std::strcmp(argv[2], "solve") == 0)) {
+    if (rank == 0)
+      std::fputs(ffeti::option_table(argv[2][1] == 'e' ? ffeti::OptionScope::setup : ffeti::OptionScope::solve).c_str(),
+                 stdout);
+    status = 0;
+  } else if (argc != 2 || std::strcmp(argv[1], "-h") == 0 || std::strcmp(argv[1], "--help") == 0) {
     if (rank == 0) std::fputs(ffeti::native::kUsage, argc == 2 ? stdout : stderr);
     status = argc == 2 ? 0 : ffeti::native::kBadInput;
   } else {

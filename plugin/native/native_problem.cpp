@@ -1,7 +1,7 @@
 #include "native/native_problem.h"
 
 #include "feti/errors.h"
-#include "feti/option_names.h"
+#include "feti/options.h"
 
 #include <algorithm>
 #include <cmath>
@@ -322,32 +322,6 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
   return contact;
 }
 
-FetiSetupSettings setup_settings(const SolverSpec& s, bool vector_field) {
-  FetiSetupSettings settings;
-  settings.variant = variant_from_name(s.variant.value_or(default_variant_name(vector_field)));
-  settings.factor = factor_from_name(s.factor.value_or(option_defaults::factor));
-  settings.threads = checked_threads(s.threads.value_or(0));
-  settings.preconditioner =
-      preconditioner_from_name(s.preconditioner.value_or(option_defaults::preconditioner));
-  return settings;
-}
-
-DualSolveSettings solve_settings(const SolverSpec& s, FetiVariant variant) {
-  DualSolveSettings settings;
-  settings.tolerance = s.tol.value_or(settings.tolerance);
-  settings.max_hessian = static_cast<int>(std::min<long>(s.maxit.value_or(settings.max_hessian), 1L << 30));
-  settings.smalbe.variant = algorithm_from_name(s.algorithm.value_or(option_defaults::algorithm));
-  settings.mprgp.expansion = expansion_from_name(s.expansion.value_or(option_defaults::expansion));
-  settings.stopping = stop_from_name(s.stop.value_or(option_defaults::stop));
-  settings.smalbe.rho_factor = s.rho.value_or(settings.smalbe.rho_factor);
-  settings.coarse_constraints = coarse_from_name(s.coarse.value_or(option_defaults::coarse));
-  settings.smalbe.M_factor = s.M.value_or(default_M_factor(settings.smalbe.variant, variant, settings.coarse_constraints));
-  settings.smalbe.eta_factor = s.eta.value_or(settings.smalbe.eta_factor);
-  settings.mprgp.gamma = s.gamma.value_or(settings.mprgp.gamma);
-  settings.validate();
-  return settings;
-}
-
 }  // namespace
 
 std::vector<int> balanced_subdomains(const std::vector<std::vector<Triangle>>& triangles, int rank, int ranks) {
@@ -373,8 +347,10 @@ std::vector<int> balanced_subdomains(const std::vector<std::vector<Triangle>>& t
 NativeInput build_input(const ProblemFile& problem, const GmshMesh& mesh, int rank, int ranks) {
   NativeInput input;
   try {  // the core's messages name the option; say where it was written
-    input.setup = setup_settings(problem.solver, problem.components > 1);
-    input.solve = solve_settings(problem.solver, input.setup.variant);
+    input.setup = problem.solver.setup(problem.components > 1);
+    const SolverSettings solver = problem.solver.solve(input.setup.variant);
+    input.solve = solver.solve;
+    input.verbosity = solver.verbosity;
   } catch (const InputError& error) {
     throw InputError(problem.path + ": solver." + error.what());
   }

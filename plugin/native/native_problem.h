@@ -31,6 +31,7 @@ struct NativeInput {
   std::vector<int> ids;                    ///< the subdomains of this rank, ascending
   FetiSetupSettings setup;
   DualSolveSettings solve;
+  int verbosity = 0;                       ///< progress lines (solver.verbosity)
 };
 
 /// The subdomains of `rank` among `ranks` (ascending), balanced by triangles: the largest

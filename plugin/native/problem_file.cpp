@@ -220,17 +220,25 @@ ContactSpec read_contact(ObjectReader& r, int components) {
   return c;
 }
 
-SolverSpec read_solver(ObjectReader& r) {
-  SolverSpec s;
-  for (auto [key, slot] : {std::pair{"variant", &s.variant}, {"factor", &s.factor}, {"preconditioner", &s.preconditioner},
-                           {"algorithm", &s.algorithm}, {"expansion", &s.expansion}, {"stop", &s.stop},
-                           {"coarse", &s.coarse}})
-    if (r.has(key)) *slot = r.required<std::string>(key);
-  for (auto [key, slot] : {std::pair{"threads", &s.threads}, {"maxit", &s.maxit}, {"verbosity", &s.verbosity}})
-    if (r.has(key)) *slot = r.required<long>(key);
-  for (auto [key, slot] : {std::pair{"tol", &s.tol}, {"rho", &s.rho}, {"M", &s.M}, {"eta", &s.eta}, {"gamma", &s.gamma}})
-    if (r.has(key)) *slot = r.required<double>(key);
-  return s;
+/// Every key of "solver" is an option of the registry (feti/options.h), read as its kind
+/// asks and checked there.
+GivenOptions read_solver(ObjectReader& r, const json& object) {
+  GivenOptions given;
+  for (const auto& [key, value] : object.items()) {
+    const Option* option = find_option(key);
+    if (!option || !r.has(key)) continue;  // finish() refuses it as an unknown key
+    try {
+      if (option->kind == OptionKind::word) given.set(key, r.required<std::string>(key));
+      else if (option->kind == OptionKind::integer) given.set(key, r.required<long>(key));
+      else given.set(key, r.required<double>(key));
+    } catch (const InputError& error) {
+      const std::string what = error.what();
+      // The registry's messages begin with the option's name; the reader's name file and key.
+      if (what.rfind(key + ": ", 0) == 0) r.fail(r.path(key), what.substr(key.size() + 2));
+      throw;
+    }
+  }
+  return given;
 }
 
 OutputSpec read_output(ObjectReader& r) {
@@ -365,7 +373,7 @@ ProblemFile read_problem_file(const std::string& path) {
                                                              " is already the slave of contact[" + std::to_string(j) + "]");
   if (r.has("solver")) {
     ObjectReader s(r.child("solver"), path, "solver");
-    problem.solver = read_solver(s);
+    problem.solver = read_solver(s, r.child("solver"));
     s.finish();
   }
   if (r.has("output")) {

@@ -3,6 +3,8 @@
 // The format is documented in docs/reference.md ("ffeti-solve").
 #pragma once
 
+#include "feti/options.h"
+
 #include <array>
 #include <optional>
 #include <string>
@@ -53,12 +55,6 @@ struct ContactSpec {
   int obstacle_curve = 0;  ///< > 0: a straight physical curve, its normal towards the slave
 };
 
-/// What the file's "solver" sets; absent entries take fetiSetup's and fetiSolve's defaults.
-struct SolverSpec {
-  std::optional<std::string> variant, factor, preconditioner, algorithm, expansion, stop, coarse;
-  std::optional<long> threads, maxit, verbosity;
-  std::optional<double> tol, rho, M, eta, gamma;
-};
 
 struct OutputSpec {  ///< files to write; empty: not written
   std::string views;           ///< gmsh views (.msh or .pos)
@@ -77,7 +73,7 @@ struct ProblemFile {
   std::vector<SubdomainSpec> subdomains;
   std::vector<DirichletSpec> dirichlet;
   std::vector<ContactSpec> contact;
-  SolverSpec solver;
+  GivenOptions solver;  ///< the "solver" object: the options of fetiSetup and fetiSolve
   OutputSpec output;
 };
 

@@ -24,7 +24,7 @@ struct FetiSetupSettings {
   /// Preconditioner of the dual problem (docs/algorithms.md): Dirichlet (iterations bounded
   /// in h and in the number of subdomains, one more factorization per subdomain) or lumped
   /// (no factorization); projected CG directly, MPRGP in face (docs/results/scalability.md).
-  DualPreconditioner preconditioner = DualPreconditioner::none;
+  DualPreconditioner preconditioner = DualPreconditioner::lumped;
 };
 
 struct PhaseTimes {  ///< wall-clock seconds; over several ranks, the slowest rank's

@@ -1,6 +1,6 @@
 #include "feti/statistics.h"
 
-#include "feti/option_names.h"
+#include "feti/options.h"
 
 #include <sstream>
 

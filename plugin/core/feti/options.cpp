@@ -1,0 +1,273 @@
+#include "feti/options.h"
+
+#include "feti/errors.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace ffeti {
+namespace {
+
+constexpr double kIntMax = std::numeric_limits<int>::max();
+// More threads than any node has cores only oversubscribe, and OpenMP fails to create tens
+// of thousands (a segfault, or the process killed with exit status 1).
+constexpr double kMaxThreads = 1024;
+
+double number(const OptionValue& v) {
+  return std::holds_alternative<long>(v) ? static_cast<double>(std::get<long>(v)) : std::get<double>(v);
+}
+int integer(const OptionValue& v) { return static_cast<int>(std::get<long>(v)); }  // range checked before
+const std::string& word(const OptionValue& v) { return std::get<std::string>(v); }
+
+/// The value of enum type T the word `w` names, by the option's list of words in `choices` order.
+template <class T>
+T pick(const OptionValue& v, std::initializer_list<T> choices, const char* const* words) {
+  size_t i = 0;
+  for (T choice : choices) {
+    if (word(v) == words[i]) return choice;
+    ++i;
+  }
+  throw InputError("internal: unmapped word " + word(v));  // the registry checked the word
+}
+
+// The settings' defaults (DualSolveSettings, SmalbeSettings, MprgpSettings, FetiSetupSettings)
+// are the user defaults; default_text repeats them for the reference, and a unit test
+// checks that each default_text parses to the settings' value.
+const char* const kVariants[] = {"feti1", "tfeti"};
+const char* const kFactors[] = {"simplicial", "supernodal"};
+const char* const kPreconditioners[] = {"lumped", "dirichlet", "none"};
+const char* const kAlgorithms[] = {"smalbe-m", "seed"};
+const char* const kExpansions[] = {"projected-cg", "projected-cg-restart", "fixed"};
+const char* const kStops[] = {"kkt", "seed"};
+const char* const kCoarse[] = {"free-rows", "penalty"};
+
+std::vector<Option> make_options() {
+  using S = OptionScope;
+  using K = OptionKind;
+  return {
+      {"variant", S::setup, K::word, {kVariants[0], kVariants[1]}, 0, 0, false, false,
+       "`\"feti1\"` for scalar fields, `\"tfeti\"` for vector fields (`component` given)",
+       "`\"feti1\"`: Dirichlet dofs eliminated inside K_s (the seed); `\"tfeti\"`: Total FETI, Dirichlet conditions as "
+       "constraint rows, every subdomain floats",
+       [](SolverSettings& s, const OptionValue& v) {
+         s.setup.variant = pick(v, {FetiVariant::feti1, FetiVariant::tfeti}, kVariants);
+       }},
+      {"factor", S::setup, K::word, {kFactors[0], kFactors[1]}, 0, 0, false, false, "`\"simplicial\"`",
+       "CHOLMOD factor kind; `\"supernodal\"` is slower for 2D subdomains (see the benchmark) and runs on one thread",
+       [](SolverSettings& s, const OptionValue& v) {
+         s.setup.factor = pick(v, {FactorKind::simplicial, FactorKind::supernodal}, kFactors);
+       }},
+      {"preconditioner", S::setup, K::word, {kPreconditioners[0], kPreconditioners[1], kPreconditioners[2]}, 0, 0,
+       false, false, "`\"lumped\"`",
+       "the preconditioner of the dual problem on every path (CG and projected CG directly; MPRGP in face, also inside "
+       "SMALBE-M): `\"lumped\"` M = A (Σ_s B_s K_s B_s') A, A = (BB')⁻¹, no factorization, a sparse product per "
+       "application; `\"dirichlet\"`: K_s replaced by its Schur complement on the constrained dofs, one more "
+       "factorization per subdomain (without contact: iterations bounded in h); `\"none\"`. Measured in "
+       "[scalability](results/scalability.md), [large contact](results/large-contact.md) and on [every "
+       "scene](results/accuracy-and-time.md); [algorithms](algorithms.md). Sensitivity and adjoint solves stay "
+       "unpreconditioned",
+       [](SolverSettings& s, const OptionValue& v) {
+         s.setup.preconditioner =
+             pick(v, {DualPreconditioner::lumped, DualPreconditioner::dirichlet, DualPreconditioner::none},
+                  kPreconditioners);
+       }},
+      {"threads", S::setup, K::integer, {}, 0, kMaxThreads, false, false, "0",
+       "OpenMP threads over subdomains (more than 1024 is refused: no node has the cores, and OpenMP fails to create "
+       "tens of thousands); 0: in one process `OMP_NUM_THREADS` if set, else all cores less those other processes "
+       "keep busy at set-up (OpenMP threads spin while they wait: [busy machine](results/busy-machine.md)); under "
+       "MPI the node's cores divided by its ranks",
+       [](SolverSettings& s, const OptionValue& v) { s.setup.threads = integer(v); }},
+      {"tol", S::solve, K::real, {}, 0, 1, true, true, "1e-4",
+       "relative accuracy, the same on every scene: the solve stops when the returned solution violates no "
+       "constraint (gluing jump, Dirichlet misfit, penetration) and no complementarity condition (a contact force on "
+       "an open gap) by more than `tol ‖u‖∞` and its equilibrium residual `‖Ku − f + B'λ‖` is at most `tol max(‖f‖, "
+       "‖B'λ‖)`, both checked on the recovered solution: the relative KKT residuals `fetiInfo` reports are then at "
+       "most `tol` ([algorithms](algorithms.md#stopping-test-stopping_testcpp), [every "
+       "scene](results/accuracy-and-time.md)); the seed's value",
+       [](SolverSettings& s, const OptionValue& v) { s.solve.tolerance = number(v); }},
+      {"stop", S::solve, K::word, {kStops[0], kStops[1]}, 0, 0, false, false, "`\"kkt\"`",
+       "`\"kkt\"`: the test of `tol`; `\"seed\"`: the seed's `‖gP‖₂ ≤ tol ‖b‖₂` (b the dual right-hand side), whose "
+       "accuracy for a given tol depends on the scene (looser with many contact couples) — for comparisons with the "
+       "seed",
+       [](SolverSettings& s, const OptionValue& v) {
+         s.solve.stopping = pick(v, {StoppingTest::relative_kkt, StoppingTest::seed}, kStops);
+       }},
+      {"maxit", S::solve, K::integer, {}, 1, kIntMax, false, false, "10000",
+       "limit on Hessian multiplications (dual operator applications), checked before narrowing: a larger value is "
+       "an error, not wrapped",
+       [](SolverSettings& s, const OptionValue& v) { s.solve.max_hessian = integer(v); }},
+      {"algorithm", S::solve, K::word, {kAlgorithms[0], kAlgorithms[1]}, 0, 0, false, false, "`\"smalbe-m\"`",
+       "`\"smalbe-m\"` (fixed penalty, adaptive M) or `\"seed\"` (the seed's Algorithm 3.1, growing penalty)",
+       [](SolverSettings& s, const OptionValue& v) {
+         s.solve.smalbe.variant = pick(v, {SmalbeVariant::smalbe_m, SmalbeVariant::seed_alg31}, kAlgorithms);
+       }},
+      {"coarse", S::solve, K::word, {kCoarse[0], kCoarse[1]}, 0, 0, false, false, "`\"free-rows\"`",
+       "how the balance of floating subdomains (Gλ = e) is kept where there is contact: `\"free-rows\"` moves gluing "
+       "and Dirichlet multipliers so that every subdomain stays balanced and leaves to SMALBE-M only the balance of "
+       "whole floating bodies (none: MPRGP alone); `\"penalty\"`: all of Gλ = e by SMALBE-M's augmented Lagrangian, "
+       "the seed's formulation ([algorithms](algorithms.md#dual-problem-and-coarse-space-dual_operatorcpp-coarse_"
+       "spacecpp), [scalability](results/scalability.md))",
+       [](SolverSettings& s, const OptionValue& v) {
+         s.solve.coarse_constraints = pick(v, {CoarseConstraints::free_rows, CoarseConstraints::penalty}, kCoarse);
+       }},
+      {"expansion", S::solve, K::word, {kExpansions[0], kExpansions[1], kExpansions[2]}, 0, 0, false, false,
+       "`\"projected-cg\"`",
+       "MPRGP's expansion step: `\"projected-cg\"` takes the whole CG step projected onto the bounds when it "
+       "decreases the cost at least as much as the fixed step is guaranteed to, else the fixed step, and then goes "
+       "on with the CG recurrence in the new face (each such step checked against the same guaranteed decrease); "
+       "`\"projected-cg-restart\"`: the same step, CG restarted from the free gradient after it; `\"fixed\"`: the "
+       "fixed step ᾱ = 1.9/‖A‖ along the free gradient (ALGORITHMS.md). Measured in [large "
+       "contact](results/large-contact.md) and [scalability](results/scalability.md)",
+       [](SolverSettings& s, const OptionValue& v) {
+         s.solve.mprgp.expansion = pick(
+             v, {MprgpExpansion::projected_cg, MprgpExpansion::projected_cg_restart, MprgpExpansion::fixed_step},
+             kExpansions);
+       }},
+      {"settle", S::solve, K::integer, {}, 0, kIntMax, false, false, "2",
+       "with a start (fetiSolve's `start`): face solves that settle it before MPRGP (conjugate gradients on the "
+       "start's contact set with the bounds ignored, then projected onto them, each kept if it lowers the cost; "
+       "[algorithms](algorithms.md), measured in [large contact](results/large-contact.md)); 0: MPRGP from the "
+       "start as given. Ignored without a start",
+       [](SolverSettings& s, const OptionValue& v) { s.solve.settle = integer(v); }},
+      {"verbosity", S::solve, K::integer, {}, 0, kIntMax, false, false, "0",
+       "1: a line per outer iteration (Hessian multiplications so far, `‖gP‖`, `‖Qμ‖` — the part of the iterate "
+       "outside the kernel of the constraints left to SMALBE-M, zero iff Gλ = e — and the contact rows with a "
+       "positive multiplier) and a summary; 2: also every inner step",
+       [](SolverSettings& s, const OptionValue& v) { s.verbosity = integer(v); }},
+      {"rho", S::solve, K::real, {}, 0, HUGE_VAL, true, true, "1.1",
+       "penalty as a multiple of the estimated norm of the Hessian (`‖T'PFPT‖`, with `coarse=\"penalty\"` `‖PFP‖`)",
+       [](SolverSettings& s, const OptionValue& v) { s.solve.smalbe.rho_factor = number(v); }},
+      {"M", S::solve, K::real, {}, 0, HUGE_VAL, true, true,
+       "1 (`coarse=\"penalty\"`: 100; `algorithm=\"seed\"`: 10 with FETI-1, 1 with Total FETI)",
+       "initial M as a multiple of the inner Hessian's norm `‖H + ρQ‖` (fixed in the seed's algorithm)",
+       [](SolverSettings& s, const OptionValue& v) { s.solve.smalbe.M_factor = number(v); }},
+      {"eta", S::solve, K::real, {}, 0, HUGE_VAL, true, true, "0.1", "η as a multiple of `‖b‖`",
+       [](SolverSettings& s, const OptionValue& v) { s.solve.smalbe.eta_factor = number(v); }},
+      {"gamma", S::solve, K::real, {}, 0, HUGE_VAL, true, true, "1", "MPRGP proportioning threshold Γ",
+       [](SolverSettings& s, const OptionValue& v) { s.solve.mprgp.gamma = number(v); }},
+  };
+}
+
+std::string format_number(double x) {
+  if (x == kIntMax) return "2^31 − 1";
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
+
+/// The accepted values of a number option: "1 .. 2^31 − 1", "> 0", "(0, 1)".
+std::string accepted_range(const Option& o) {
+  if (o.kind == OptionKind::integer) return format_number(o.lowest) + " .. " + format_number(o.highest);
+  if (std::isinf(o.highest)) return std::string(o.open_below ? "> " : ">= ") + format_number(o.lowest);
+  return std::string(o.open_below ? "(" : "[") + format_number(o.lowest) + ", " + format_number(o.highest) +
+         (o.open_above ? ")" : "]");
+}
+
+/// "must lie in 1 .. 2^31 − 1", "must be > 0", "must lie in (0, 1)".
+std::string range_text(const Option& o) {
+  const bool bound = o.kind == OptionKind::real && std::isinf(o.highest);
+  return (bound ? "must be " : "must lie in ") + accepted_range(o);
+}
+
+/// `value` checked against option `o`: InputError naming the option otherwise.
+void check(const Option& o, const OptionValue& value) {
+  const std::string name = o.name;
+  if (o.kind == OptionKind::word) {
+    if (!std::holds_alternative<std::string>(value)) throw InputError(name + ": must be a word");
+    std::string list;
+    for (const char* w : o.words) {
+      if (word(value) == w) return;
+      list += (list.empty() ? "\"" : ", \"") + std::string(w) + "\"";
+    }
+    throw InputError(name + ": \"" + word(value) + "\" is not one of " + list);
+  }
+  if (std::holds_alternative<std::string>(value)) throw InputError(name + ": must be a number");
+  if (o.kind == OptionKind::integer && !std::holds_alternative<long>(value))
+    throw InputError(name + ": must be an integer");
+  const double x = number(value);
+  const bool below = o.open_below ? !(x > o.lowest) : !(x >= o.lowest);
+  const bool above = o.open_above ? !(x < o.highest) : !(x <= o.highest);
+  if (below || above) {
+    std::ostringstream got;
+    got << (std::holds_alternative<long>(value) ? std::to_string(std::get<long>(value)) : format_number(x));
+    throw InputError(name + ": " + range_text(o) + ", got " + got.str());
+  }
+}
+
+}  // namespace
+
+const std::vector<Option>& options() {
+  static const std::vector<Option> registry = make_options();
+  return registry;
+}
+
+const Option* find_option(const std::string& name) {
+  for (const Option& o : options())
+    if (name == o.name) return &o;
+  return nullptr;
+}
+
+void GivenOptions::set(const std::string& name, OptionValue value) {
+  const Option* o = find_option(name);
+  if (!o) throw InputError(name + ": not a solver option");
+  check(*o, value);
+  given_[name] = std::move(value);
+}
+
+FetiSetupSettings GivenOptions::setup(bool vector_field) const {
+  SolverSettings s;
+  s.setup.variant = vector_field ? FetiVariant::tfeti : FetiVariant::feti1;
+  for (const Option& o : options())
+    if (o.scope == OptionScope::setup && has(o.name)) o.apply(s, given_.at(o.name));
+  return s.setup;
+}
+
+SolverSettings GivenOptions::solve(FetiVariant variant) const {
+  SolverSettings s;
+  for (const Option& o : options())
+    if (o.scope == OptionScope::solve && has(o.name)) o.apply(s, given_.at(o.name));
+  if (!has("M")) {
+    // SMALBE-M: 1 where only the floating bodies' modes are left to it (coarse "free-rows"),
+    // 100 where it penalizes all of G ("penalty"; docs/algorithms.md has the measurements).
+    // The seed's Algorithm 3.1, whose M stays fixed: 10 with FETI-1 and 1 with Total FETI
+    // (Hessian multiplications on the model problem with "penalty", n = 128, 256, 512:
+    // FETI-1 44, 50, 77 with 10 against 56, 56, 144 with 100; Total FETI 43, 46, 64 with 1
+    // against 56, 63, 157).
+    const bool seed = s.solve.smalbe.variant == SmalbeVariant::seed_alg31;
+    const bool penalty = s.solve.coarse_constraints == CoarseConstraints::penalty;
+    s.solve.smalbe.M_factor = seed ? (variant == FetiVariant::feti1 ? 10.0 : 1.0) : (penalty ? 100.0 : 1.0);
+  }
+  s.solve.validate();
+  return s;
+}
+
+std::string option_table(OptionScope scope) {
+  std::string rows;
+  for (const Option& o : options()) {
+    if (o.scope != scope) continue;
+    const char* type = o.kind == OptionKind::word ? "string" : o.kind == OptionKind::integer ? "int" : "real";
+    // | `name` | type | default | accepted | meaning |
+    std::string accepted;
+    if (o.kind == OptionKind::word) {
+      for (const char* w : o.words) accepted += (accepted.empty() ? "one of `\"" : "`, `\"") + std::string(w) + "\"";
+      accepted += "`";
+    } else {
+      accepted = accepted_range(o);
+    }
+    rows += "| `" + std::string(o.name) + "` | `" + type + "` | " + o.default_text + " | " + accepted + " | " +
+            o.meaning + " |\n";
+  }
+  return rows;
+}
+
+std::string preconditioner_name(DualPreconditioner kind) {
+  switch (kind) {
+    case DualPreconditioner::lumped: return "lumped";
+    case DualPreconditioner::dirichlet: return "dirichlet";
+    case DualPreconditioner::none: break;
+  }
+  return "none";
+}
+
+}  // namespace ffeti

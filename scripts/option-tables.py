@@ -1,0 +1,40 @@
+#!/usr/bin/env python3
+"""The option tables of docs/reference.md, printed from the option registry
+(plugin/core/feti/options.cpp) by `ffeti-solve --options setup|solve`: rewrites the blocks
+between <!-- options:SCOPE begin --> and <!-- options:SCOPE end -->. With --check, changes
+nothing and fails when the page differs from the registry (ctest docs_option_tables).
+Usage: option-tables.py [--check] FFETI_SOLVE [REFERENCE_MD]"""
+import argparse
+import pathlib
+import re
+import subprocess
+import sys
+
+HEADER = "| option | type | default | accepted values | meaning |\n|---|---|---|---|---|\n"
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--check", action="store_true")
+parser.add_argument("ffeti_solve")
+parser.add_argument("reference", nargs="?",
+                    default=str(pathlib.Path(__file__).resolve().parent.parent / "docs" / "reference.md"))
+args = parser.parse_args()
+
+page = pathlib.Path(args.reference)
+text = page.read_text()
+updated = text
+for scope in ("setup", "solve"):
+    rows = subprocess.run([args.ffeti_solve, "--options", scope], check=True, capture_output=True, text=True).stdout
+    block = re.compile(rf"(<!-- options:{scope} begin -->\n).*?(<!-- options:{scope} end -->)", re.S)
+    if not block.search(updated):
+        sys.exit(f"{page}: no <!-- options:{scope} begin --> ... end block")
+    updated = block.sub(lambda m: m.group(1) + HEADER + rows + m.group(2), updated)
+
+if updated == text:
+    print(f"ok: the option tables of {page} are the registry's")
+elif args.check:
+    print(f"FAILED: the option tables of {page} differ from the registry; run\n"
+          f"  scripts/option-tables.py {args.ffeti_solve}")
+    sys.exit(1)
+else:
+    page.write_text(updated)
+    print(f"rewrote the option tables of {page}")
