@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The lessons' exercises as their pages write them: each command runs to its LESSON line.
-# Exercise 2 of lesson 5 (a copy of multibody.idp with block 1 ten times softer beside the
-# lesson) once stopped with "triangles was reverse" when drawing the deformed blocks.
+# Exercise 2 of lesson 5 (a copy of multibody.idp with block 1 ten times softer in scenes/
+# beside the lesson) once stopped with "triangles was reverse" when drawing the deformed blocks.
 # Usage: exercises.sh SOURCE_DIR   (run where the tests' freefem++.pref is)
 set -euo pipefail
 source_dir=$1
@@ -30,11 +30,12 @@ for args in "-N 4 -m 8" "-N 4 -m 16" "-N 8 -m 16"; do
 done
 exercise "lesson 3: -n 256" "$lessons/03-accuracy.edp" -n 256
 exercise "lesson 5: -parts 4" "$lessons/05-several-bodies.edp" -parts 4
-sed 's/^real\[int\] E = \[210e3, 70e3, 110e3\];/real[int] E = [210e3, 7e3, 110e3];/' "$source_dir/edp/multibody.idp" > multibody.idp
-grep -q '7e3, 110e3' multibody.idp || { echo "FAILED: lesson 5, exercise 2: multibody.idp's E line changed"; exit 1; }
+mkdir scenes
+sed 's/^real\[int\] E = \[210e3, 70e3, 110e3\];/real[int] E = [210e3, 7e3, 110e3];/' "$source_dir/edp/scenes/multibody.idp" > scenes/multibody.idp
+grep -q '7e3, 110e3' scenes/multibody.idp || { echo "FAILED: lesson 5, exercise 2: multibody.idp's E line changed"; exit 1; }
 cp "$lessons/05-several-bodies.edp" .
-exercise "lesson 5: block 1 ten times softer (a copy of multibody.idp beside the lesson)" 05-several-bodies.edp
-rm multibody.idp 05-several-bodies.edp
+exercise "lesson 5: block 1 ten times softer (a copy of multibody.idp in scenes/ beside the lesson)" 05-several-bodies.edp
+rm -r scenes 05-several-bodies.edp
 exercise "lesson 6: -k 6" "$lessons/06-sensitivity.edp" -k 6
 exercise "lesson 7: -start 0.1" "$lessons/07-shape-optimization.edp" -start 0.1
 exercise "lesson 7: -amax 0.02" "$lessons/07-shape-optimization.edp" -amax 0.02
