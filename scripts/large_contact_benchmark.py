@@ -163,7 +163,7 @@ def main():
         "  restarted from the free gradient (`expansion=\"projected-cg-restart\"`).",
         "- *nested*: the scene first solved on n/2 (or n/4, then n/2) cells per side, each solve",
         "  started (`fetiSolve(..., start=)`) from the contact pressure of the one before, sampled",
-        "  at the finer couples (`largeContactStart` in `edp/large-contact.idp`), or with the",
+        "  at the finer couples (`largeContactStart` in `edp/scenes/large-contact.idp`), or with the",
         "  plugin's transfer for any scene (`fetiContactStart`: each couple the force of the",
         "  nearest coarser couple, shared among the couples nearest to it). Each start is settled",
         "  first (`fetiSolve(..., settle=2)`, the default): up to two face solves, conjugate",
