@@ -10,6 +10,6 @@ shift
 cd "${FFETI_BUILD:-$root/build}"
 ctest -V -j "$(nproc)" -E fuzz "$@" 2>&1 \
   | grep -E '^[0-9]+: .*(RESULT|LESSON|hessian=|outer=)' \
-  | sed -E 's/ (time_[a-z_]*|seconds|wall|t)=[^ ]*//g; s/ tmp\.[A-Za-z0-9]+//g' \
+  | sed -E 's/ [a-z_]*(time|seconds|wall)[a-z_]*=[^ ]*//g; s/ tmp\.[A-Za-z0-9]+//g' \
   | sed -E 's/^[0-9]+: //' | sort > "$out"
 echo "$(wc -l < "$out") lines of counts in $out"

@@ -6,7 +6,7 @@
 // Exit status: 0 converged, 1 not converged (the RESULT line names the status), 2 bad
 // input (the message names the file and what is wrong), 3 another failure (out of memory).
 #include "feti/convergence_history.h"
-#include "feti/errors.h"
+#include "base/errors.h"
 #include "feti/options.h"
 #include "feti/feti_problem.h"
 #include "feti/progress_monitor.h"

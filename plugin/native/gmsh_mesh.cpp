@@ -1,6 +1,6 @@
 #include "native/gmsh_mesh.h"
 
-#include "feti/errors.h"
+#include "base/errors.h"
 
 #include <gmsh.h>
 

@@ -1,6 +1,6 @@
 #include "native/native_problem.h"
 
-#include "feti/errors.h"
+#include "base/errors.h"
 #include "feti/options.h"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "native/problem_file.h"
 
-#include "feti/errors.h"
+#include "base/errors.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,6 +1,6 @@
 #include "native/result_files.h"
 
-#include "feti/errors.h"
+#include "base/errors.h"
 
 #include <gmsh.h>
 

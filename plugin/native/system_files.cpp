@@ -1,6 +1,6 @@
 #include "native/system_files.h"
 
-#include "feti/errors.h"
+#include "base/errors.h"
 
 #include <cholmod.h>
 

@@ -1,6 +1,6 @@
 #include "feti/coarse_space.h"
 
-#include "feti/errors.h"
+#include "base/errors.h"
 #include "qp/mprgp.h"
 #include "qp/norm_estimate.h"
 

@@ -1,6 +1,6 @@
 #include "feti/constraints.h"
 
-#include "feti/errors.h"
+#include "base/errors.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "feti/contact_pressure.h"
 
-#include "feti/errors.h"
+#include "base/errors.h"
 
 #include <cmath>
 #include <map>

@@ -1,6 +1,6 @@
 #include "feti/convergence_history.h"
 
-#include "feti/errors.h"
+#include "base/errors.h"
 
 #include <fstream>
 

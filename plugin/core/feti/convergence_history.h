@@ -4,7 +4,7 @@
 // multiplications from a single solve.
 #pragma once
 
-#include "feti/stopwatch.h"
+#include "base/stopwatch.h"
 #include "qp/qp_types.h"
 
 #include <string>

@@ -1,8 +1,8 @@
 #include "feti/dirichlet_preconditioner.h"
 
 #include "feti/dual_operator.h"
-#include "feti/errors.h"
-#include "feti/stopwatch.h"
+#include "base/errors.h"
+#include "base/stopwatch.h"
 
 #include <map>
 #include <string>

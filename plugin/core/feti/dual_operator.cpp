@@ -1,21 +1,8 @@
 #include "feti/dual_operator.h"
 
-#include "feti/stopwatch.h"
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
+#include "base/stopwatch.h"
 
 namespace ffeti {
-
-int resolve_thread_count(int requested) {
-#ifdef _OPENMP
-  return requested > 0 ? requested : omp_get_max_threads();
-#else
-  (void)requested;
-  return 1;
-#endif
-}
 
 DualOperator::DualOperator(const SubdomainList& subdomains, const std::vector<LocalConstraints>& local,
                            const SubdomainSum& sum, int rows, int threads)

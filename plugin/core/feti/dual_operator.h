@@ -1,6 +1,8 @@
 // The FETI dual operator F = B K^+ B' = sum_s B_s K_s^+ B_s', applied implicitly.
 #pragma once
 
+#include "parallel/process.h"
+
 #include "feti/constraints.h"
 #include "feti/subdomain.h"
 #include "parallel/subdomain_sum.h"
@@ -60,8 +62,5 @@ class DualOperator {
   mutable double application_seconds_ = 0;
   mutable std::vector<double> flat_;
 };
-
-/// OpenMP thread count to use: `requested` if > 0, else the runtime default.
-int resolve_thread_count(int requested);
 
 }  // namespace ffeti

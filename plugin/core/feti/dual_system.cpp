@@ -1,8 +1,8 @@
 #include "feti/dual_system.h"
 
-#include "feti/errors.h"
+#include "base/errors.h"
 #include "feti/primal.h"
-#include "feti/stopwatch.h"
+#include "base/stopwatch.h"
 #include "qp/conjugate_gradient.h"
 #include "qp/norm_estimate.h"
 

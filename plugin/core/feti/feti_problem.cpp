@@ -1,10 +1,10 @@
 #include "feti/feti_problem.h"
 
 #include "feti/dirichlet.h"
-#include "feti/errors.h"
+#include "base/errors.h"
 #include "feti/input_checks.h"
 #include "feti/kernel.h"
-#include "feti/stopwatch.h"
+#include "base/stopwatch.h"
 #include "parallel/process.h"
 
 #include <algorithm>

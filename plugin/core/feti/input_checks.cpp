@@ -1,6 +1,6 @@
 #include "feti/input_checks.h"
 
-#include "feti/errors.h"
+#include "base/errors.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "feti/options.h"
 
-#include "feti/errors.h"
+#include "base/errors.h"
 
 #include <cmath>
 #include <limits>

@@ -1,6 +1,6 @@
 #include "feti/subdomain.h"
 
-#include "feti/errors.h"
+#include "base/errors.h"
 #include "feti/kernel.h"
 
 #include <random>

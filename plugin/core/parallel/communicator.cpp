@@ -1,6 +1,6 @@
 #include "parallel/communicator.h"
 
-#include "feti/errors.h"
+#include "base/errors.h"
 
 namespace ffeti {
 

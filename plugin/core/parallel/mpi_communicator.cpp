@@ -2,8 +2,6 @@
 
 #include "parallel/process.h"
 
-#include "feti/dual_operator.h"
-
 #include <algorithm>
 
 namespace ffeti {

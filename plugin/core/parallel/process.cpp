@@ -5,7 +5,20 @@
 #include <fstream>
 #include <string>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace ffeti {
+
+int resolve_thread_count(int requested) {
+#ifdef _OPENMP
+  return requested > 0 ? requested : omp_get_max_threads();
+#else
+  (void)requested;
+  return 1;
+#endif
+}
 
 double peak_memory_mb() {
   std::ifstream status("/proc/self/status");

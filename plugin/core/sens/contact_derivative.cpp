@@ -1,6 +1,6 @@
 #include "sens/contact_derivative.h"
 
-#include "feti/errors.h"
+#include "base/errors.h"
 
 #include <algorithm>
 #include <cmath>

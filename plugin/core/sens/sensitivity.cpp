@@ -1,7 +1,7 @@
 #include "sens/sensitivity.h"
 
-#include "feti/errors.h"
-#include "feti/stopwatch.h"
+#include "base/errors.h"
+#include "base/stopwatch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -44,6 +44,8 @@ void check_size(bool ok, const std::string& name, int subdomain, const std::stri
 }
 
 }  // namespace
+
+double default_classification_threshold(double state_tolerance) { return std::min(1e-2, 10 * state_tolerance); }
 
 ContactClassification classify_contact(const FetiProblem& problem, const FetiResult& state, double threshold) {
   if (!(threshold > 0 && threshold < 1)) throw InputError("activeTol: must lie in (0, 1)");

@@ -39,6 +39,10 @@ struct ContactClassification {
 
 ContactClassification classify_contact(const FetiProblem& problem, const FetiResult& state, double threshold);
 
+/// The default threshold for a state solved to `state_tolerance`: ten times it, the
+/// accuracy to which its multipliers are known, at most 1e-2.
+double default_classification_threshold(double state_tolerance);
+
 struct SensitivityResult {
   SolveStatus status = SolveStatus::invalid_input;
   std::string path;               ///< the sensitivity QP's: cholesky, cg, projected_cg, mprgp, smalbe

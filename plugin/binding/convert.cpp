@@ -1,6 +1,6 @@
-#include "binding_convert.h"
+#include "binding/convert.h"
 
-#include "feti/errors.h"
+#include "base/errors.h"
 
 namespace ffeti::binding {
 
@@ -61,6 +61,16 @@ std::vector<std::vector<int>> per_subdomain(const KN<KN<long>>* lists, long coun
 void copy_to(const Vec& from, KN<double>& to) {
   to.resize(from.size());
   for (Eigen::Index k = 0; k < from.size(); ++k) to[k] = from[k];
+}
+
+void copy_to(const std::vector<double>& from, KN<double>& to) {
+  to.resize(static_cast<long>(from.size()));
+  for (size_t k = 0; k < from.size(); ++k) to[static_cast<long>(k)] = from[k];
+}
+
+void copy_to(const std::vector<long>& from, KN<long>& to) {
+  to.resize(static_cast<long>(from.size()));
+  for (size_t k = 0; k < from.size(); ++k) to[static_cast<long>(k)] = from[k];
 }
 
 }  // namespace ffeti::binding

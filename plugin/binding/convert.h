@@ -24,6 +24,9 @@ std::vector<int> to_indices(const KN<long>& values, long bound, const std::strin
 std::vector<std::vector<int>> per_subdomain(const KN<KN<long>>* lists, long count, const std::vector<int>& ids,
                                             const std::vector<long>& bounds, const std::string& name);
 
+/// `to` resized to `from`'s size and filled with it.
 void copy_to(const Vec& from, KN<double>& to);
+void copy_to(const std::vector<double>& from, KN<double>& to);
+void copy_to(const std::vector<long>& from, KN<long>& to);
 
 }  // namespace ffeti::binding

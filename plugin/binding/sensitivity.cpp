@@ -1,0 +1,246 @@
+// The design sensitivities of a solved state (seed eq. 12): fetiSensitivity (direct, one
+// solve per design direction), fetiAdjoint and fetiAdjointGradient (one solve per cost).
+#include "binding/arguments.h"
+#include "binding/convert.h"
+#include "binding/functions.h"
+#include "binding/handles.h"
+
+#include "base/errors.h"
+#include "feti/progress_monitor.h"
+#include "feti/statistics.h"
+
+#include <cstdio>
+
+namespace ffeti::binding {
+namespace {
+
+// ---- sensitivities (seed eq. 12) -------------------------------------------------------
+
+/// The sensitivity problem of the handle's last solution with classification threshold
+/// `threshold`, built on first use and kept for every later direction.
+SensitivityProblem& sensitivity_problem(Handle& h, double threshold) {
+  if (!h.result) throw InputError("P: no solution yet: call fetiSolve first");
+  if (h.result->status != SolveStatus::converged)
+    throw InputError("P: the last fetiSolve did not converge (" + to_string(h.result->status) +
+                     "): its solution has no derivative worth the name; solve it to convergence first");
+  if (!h.sensitivity || h.sensitivity->classification().threshold != threshold)
+    h.sensitivity = std::make_unique<SensitivityProblem>(*h.problem, *h.result, threshold);
+  return *h.sensitivity;
+}
+
+/// Default threshold below which a multiplier counts as zero, relative to max lambda.
+double default_threshold(const Handle& h) { return default_classification_threshold(h.tolerance); }
+
+/// Design directions from the script: for k directions, entry j * S + s of dK, dF (empty
+/// entries: zero), of the node velocities velocityX, velocityY (absent: the contact
+/// geometry does not move) and of the gap derivatives dGap (absent: the gaps do not change)
+/// belongs to direction j and subdomain s (S subdomains). Only this rank's subdomains are read.
+std::vector<DesignDerivative> design_directions(const FetiProblem& problem, KN<Matrice_Creuse<double>>* dK,
+                                                KN<KN<double>>* dF, KN<KN<double>>* vx, KN<KN<double>>* vy,
+                                                KN<KN<double>>* dgap) {
+  const long count = problem.subdomain_count();
+  const long k = dK->N() / count;
+  std::vector<DesignDerivative> directions(static_cast<size_t>(std::max(k, 0L)));
+  collectively(problem.communicator(), [&] {
+    if (k < 1 || dK->N() != k * count)
+      throw InputError("dK: has " + std::to_string(dK->N()) + " entries: needs " + std::to_string(count) +
+                       " per design direction (one per subdomain)");
+    const std::pair<const char*, long> sizes[] = {{"dF", dF->N()},
+                                                  {"velocityX", vx ? vx->N() : k * count},
+                                                  {"velocityY", vy ? vy->N() : k * count},
+                                                  {"dGap", dgap ? dgap->N() : k * count}};
+    for (const auto& [name, n] : sizes)
+      if (n != k * count)
+        throw InputError(std::string(name) + ": has " + std::to_string(n) + " entries, dK has " +
+                         std::to_string(k * count) + " (" + std::to_string(k) + " directions of " +
+                         std::to_string(count) + " subdomains)");
+    for (long j = 0; j < k; ++j) {
+      DesignDerivative& d = directions[static_cast<size_t>(j)];
+      for (int s : problem.global_ids()) {
+        const long e = j * count + s;
+        Matrice_Creuse<double>& matrix = (*dK)[e];
+        const bool empty = !matrix.pHM() || matrix.pHM()->n == 0;
+        d.dK.push_back(empty ? SparseMatrix() : to_sparse(matrix, "dK[" + std::to_string(e) + "]"));
+        d.df.push_back(to_vec((*dF)[e]));
+        if (vx) d.velocity_x.push_back(to_std((*vx)[e]));
+        if (vy) d.velocity_y.push_back(to_std((*vy)[e]));
+        if (dgap) d.dgap.push_back(to_std((*dgap)[e]));
+      }
+    }
+  });
+  return directions;
+}
+
+DualSolveSettings sensitivity_settings(const Handle& h, Expression tol, Expression maxit, Expression verbosity,
+                                       Stack stack) {
+  GivenOptions given;  // checked as fetiSolve's; the default tol is the state's
+  given.set("tol", optional_real(tol, stack, h.tolerance));
+  if (maxit) given.set("maxit", GetAny<long>((*maxit)(stack)));
+  if (verbosity) given.set("verbosity", GetAny<long>((*verbosity)(stack)));
+  const SolverSettings solver = given.solve(h.problem->variant());
+  DualSolveSettings settings;  // the sensitivity's own path and test: only these three from the script
+  settings.tolerance = solver.solve.tolerance;
+  settings.max_hessian = solver.solve.max_hessian;
+  settings.monitor = progress_monitor(solver.verbosity, h.problem->communicator());
+  return settings;
+}
+
+// int status = fetiSensitivity(P, dK, dF, Z, velocityX=, velocityY=, tol=, maxit=, activeTol=, verbosity=,
+//                              dGap=, dLambda=): dLambda[j] receives lambda' of direction j per contact row
+// (fetiContact's order; 0 on inactive rows), on every rank.
+class FetiSensitivity : public WithNamedArguments {
+ public:
+  typedef long Result;
+  static NamedParameters name_param;
+  Expression id, dK, dF, Z;
+
+  explicit FetiSensitivity(const basicAC_F0& args) : WithNamedArguments(args, name_param) {
+    id = to<long>(args[0]);
+    dK = to<KN<Matrice_Creuse<double>>*>(args[1]);
+    dF = to<KN<KN<double>>*>(args[2]);
+    Z = to<KN<KN<double>>*>(args[3]);
+  }
+  static ArrayOfaType typeargs() {
+    return ArrayOfaType(atype<long>(), atype<KN<Matrice_Creuse<double>>*>(), atype<KN<KN<double>>*>(),
+                        atype<KN<KN<double>>*>());
+  }
+  static E_F0* f(const basicAC_F0& args) { return new FetiSensitivity(args); }
+
+  AnyType operator()(Stack stack) const {
+    return SetAny<long>(guarded("fetiSensitivity", [&] {
+      Handle& h = handle(GetAny<long>((*id)(stack)));
+      SensitivityProblem& sens = sensitivity_problem(h, optional_real(nargs[4], stack, default_threshold(h)));
+      const std::vector<DesignDerivative> directions = design_directions(
+          *h.problem, GetAny<KN<Matrice_Creuse<double>>*>((*dK)(stack)), GetAny<KN<KN<double>>*>((*dF)(stack)),
+          optional_pointer<KN<KN<double>>>(nargs[0], stack), optional_pointer<KN<KN<double>>>(nargs[1], stack),
+          optional_pointer<KN<KN<double>>>(nargs[6], stack));
+      const std::vector<SensitivityResult> r =
+          sens.direct(directions, sensitivity_settings(h, nargs[2], nargs[3], nargs[5], stack));
+      if (auto* dLambda = optional_pointer<KN<KN<double>>>(nargs[7], stack)) {
+        dLambda->resize(static_cast<long>(r.size()));
+        for (size_t j = 0; j < r.size(); ++j) copy_to(r[j].contact_multipliers, (*dLambda)[static_cast<long>(j)]);
+      }
+      auto& z = *GetAny<KN<KN<double>>*>((*Z)(stack));
+      const std::vector<int>& ids = h.problem->global_ids();
+      const long count = h.problem->subdomain_count();
+      z.resize(count * static_cast<long>(r.size()));
+      for (long e = 0; e < z.N(); ++e) z[e].resize(0);  // subdomains of other ranks stay empty
+      SolveStatus worst = SolveStatus::converged;
+      for (size_t j = 0; j < r.size(); ++j) {
+        for (size_t k = 0; k < r[j].z.size(); ++k) copy_to(r[j].z[k], z[static_cast<long>(j) * count + ids[k]]);
+        if (worst == SolveStatus::converged) worst = r[j].status;
+      }
+      return static_cast<long>(status_code(worst));
+    }));
+  }
+};
+
+NamedParameters FetiSensitivity::name_param = {
+    {"velocityX", &typeid(KN<KN<double>>*)}, {"velocityY", &typeid(KN<KN<double>>*)}, {"tol", &typeid(double)},
+    {"maxit", &typeid(long)}, {"activeTol", &typeid(double)}, {"verbosity", &typeid(long)},
+    {"dGap", &typeid(KN<KN<double>>*)}, {"dLambda", &typeid(KN<KN<double>>*)}};
+
+// int status = fetiAdjoint(P, dJdu, tol=, maxit=, activeTol=, verbosity=, w=, dJdlambda=): 6
+// (weakly_active) when some contact row is weakly active: use fetiSensitivity then. w=
+// receives the adjoint displacement per subdomain (this rank's; the others empty), as
+// fetiSolve's U. dJdlambda: the cost's derivative per contact row (fetiContact's order).
+class FetiAdjoint : public WithNamedArguments {
+ public:
+  typedef long Result;
+  static NamedParameters name_param;
+  Expression id, dJdu;
+
+  explicit FetiAdjoint(const basicAC_F0& args) : WithNamedArguments(args, name_param) {
+    id = to<long>(args[0]);
+    dJdu = to<KN<KN<double>>*>(args[1]);
+  }
+  static ArrayOfaType typeargs() { return ArrayOfaType(atype<long>(), atype<KN<KN<double>>*>()); }
+  static E_F0* f(const basicAC_F0& args) { return new FetiAdjoint(args); }
+
+  AnyType operator()(Stack stack) const {
+    return SetAny<long>(guarded("fetiAdjoint", [&] {
+      Handle& h = handle(GetAny<long>((*id)(stack)));
+      SensitivityProblem& sens = sensitivity_problem(h, optional_real(nargs[2], stack, default_threshold(h)));
+      const auto& g = *GetAny<KN<KN<double>>*>((*dJdu)(stack));
+      std::vector<Vec> gradient;
+      collectively(h.problem->communicator(), [&] {
+        if (g.N() != h.problem->subdomain_count())
+          throw InputError("dJdu: has " + std::to_string(g.N()) + " entries for " +
+                           std::to_string(h.problem->subdomain_count()) + " subdomains");
+        for (int s : h.problem->global_ids()) gradient.push_back(to_vec(g[s]));
+      });
+      const Vec dJdlambda =
+          nargs[5] ? to_vec(*GetAny<KN<double>*>((*nargs[5])(stack))) : Vec();
+      const AdjointResult r =
+          sens.adjoint(gradient, sensitivity_settings(h, nargs[0], nargs[1], nargs[3], stack), dJdlambda);
+      if (r.status == SolveStatus::weakly_active && h.problem->communicator().rank() == 0) {
+        // A script that ignores status 6 would lose the contact part of its gradient.
+        std::printf("ffeti: WARNING fetiAdjoint: %zu contact rows are weakly active (force and gap both about 0): "
+                    "the derivative is only directional there, so no adjoint was solved (status 6); use "
+                    "fetiSensitivity (the direct mode) for this design\n",
+                    sens.classification().weak.size());
+        std::fflush(stdout);
+      }
+      if (auto* w = optional_pointer<KN<KN<double>>>(nargs[4], stack)) {
+        const std::vector<int>& ids = h.problem->global_ids();
+        w->resize(h.problem->subdomain_count());
+        for (long s = 0; s < w->N(); ++s) (*w)[s].resize(0);
+        if (const std::vector<Vec>* solution = sens.adjoint_displacement())
+          for (size_t k = 0; k < solution->size(); ++k) copy_to((*solution)[k], (*w)[ids[k]]);
+      }
+      return static_cast<long>(status_code(r.status));
+    }));
+  }
+};
+
+NamedParameters FetiAdjoint::name_param = {
+    {"tol", &typeid(double)}, {"maxit", &typeid(long)}, {"activeTol", &typeid(double)}, {"verbosity", &typeid(long)},
+    {"w", &typeid(KN<KN<double>>*)}, {"dJdlambda", &typeid(KN<double>*)}};
+
+// real dJ = fetiAdjointGradient(P, dK, dF, velocityX=, velocityY=, dGap=): w'fbar + mu'c~ for
+// one direction, after fetiAdjoint; no dual solve.
+class FetiAdjointGradient : public WithNamedArguments {
+ public:
+  typedef double Result;
+  static NamedParameters name_param;
+  Expression id, dK, dF;
+
+  explicit FetiAdjointGradient(const basicAC_F0& args) : WithNamedArguments(args, name_param) {
+    id = to<long>(args[0]);
+    dK = to<KN<Matrice_Creuse<double>>*>(args[1]);
+    dF = to<KN<KN<double>>*>(args[2]);
+  }
+  static ArrayOfaType typeargs() {
+    return ArrayOfaType(atype<long>(), atype<KN<Matrice_Creuse<double>>*>(), atype<KN<KN<double>>*>());
+  }
+  static E_F0* f(const basicAC_F0& args) { return new FetiAdjointGradient(args); }
+
+  AnyType operator()(Stack stack) const {
+    return SetAny<double>(guarded("fetiAdjointGradient", [&] {
+      Handle& h = handle(GetAny<long>((*id)(stack)));
+      if (!h.sensitivity) throw InputError("P: no adjoint solution: call fetiAdjoint first");
+      const std::vector<DesignDerivative> d = design_directions(
+          *h.problem, GetAny<KN<Matrice_Creuse<double>>*>((*dK)(stack)), GetAny<KN<KN<double>>*>((*dF)(stack)),
+          optional_pointer<KN<KN<double>>>(nargs[0], stack), optional_pointer<KN<KN<double>>>(nargs[1], stack),
+          optional_pointer<KN<KN<double>>>(nargs[2], stack));
+      if (d.size() != 1)  // the same on every rank: the sizes were checked collectively
+        throw InputError("dK: " + std::to_string(d.size()) + " design directions: fetiAdjointGradient takes one (" +
+                         std::to_string(h.problem->subdomain_count()) + " entries)");
+      return h.sensitivity->adjoint_gradient(d.front());
+    }));
+  }
+};
+
+NamedParameters FetiAdjointGradient::name_param = {
+    {"velocityX", &typeid(KN<KN<double>>*)}, {"velocityY", &typeid(KN<KN<double>>*)},
+    {"dGap", &typeid(KN<KN<double>>*)}};
+
+}  // namespace
+
+void add_sensitivity_functions() {
+  Global.Add("fetiSensitivity", "(", new OneOperatorCode<FetiSensitivity>());
+  Global.Add("fetiAdjoint", "(", new OneOperatorCode<FetiAdjoint>());
+  Global.Add("fetiAdjointGradient", "(", new OneOperatorCode<FetiAdjointGradient>());
+}
+
+}  // namespace ffeti::binding

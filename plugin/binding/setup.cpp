@@ -1,0 +1,204 @@
+// fetiSetup (the problem's data into the core, which checks it, builds the constraints and
+// factorizes), fetiSetLoads (new loads on the same factorizations) and fetiFree.
+#include "binding/arguments.h"
+#include "binding/convert.h"
+#include "binding/functions.h"
+#include "binding/handles.h"
+
+#include "base/errors.h"
+#include "parallel/mpi_communicator.h"
+#include "parallel/ownership.h"
+
+namespace ffeti::binding {
+namespace {
+
+// ---- int P = fetiSetup(K, F, X, Y, body, dirichlet=..., contactSlave=..., ...) ----------
+class FetiSetup : public WithNamedArguments {
+ public:
+  typedef long Result;
+  static NamedParameters name_param;
+  Expression K, F, X, Y, body;
+
+  explicit FetiSetup(const basicAC_F0& args) : WithNamedArguments(args, name_param) {
+    K = to<KN<Matrice_Creuse<double>>*>(args[0]);
+    F = to<KN<KN<double>>*>(args[1]);
+    X = to<KN<KN<double>>*>(args[2]);
+    Y = to<KN<KN<double>>*>(args[3]);
+    body = to<KN<long>*>(args[4]);
+  }
+  static ArrayOfaType typeargs() {
+    return ArrayOfaType(atype<KN<Matrice_Creuse<double>>*>(), atype<KN<KN<double>>*>(),
+                        atype<KN<KN<double>>*>(), atype<KN<KN<double>>*>(), atype<KN<long>*>());
+  }
+  static E_F0* f(const basicAC_F0& args) { return new FetiSetup(args); }
+
+  AnyType operator()(Stack stack) const {
+    return SetAny<long>(guarded("fetiSetup", [&] { return setup(stack); }));
+  }
+
+ private:
+  // Named parameters by position in name_param: these, then the set-up options.
+  enum Named { kDirichlet, kDirichletValues, kSlave, kMaster, kGap, kComponent, kComm, kSegments, kObstacle,
+               kRadius, kContactGap, kOptions };
+
+  long setup(Stack stack) const {
+    auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
+    const std::shared_ptr<const Communicator> comm =
+        communicator(nargs[kComm] ? GetAny<pcommworld>((*nargs[kComm])(stack)) : nullptr);
+    const long count = Ks.N();
+    std::vector<long long> assembled(static_cast<size_t>(count), 0);
+    for (long s = 0; s < count; ++s) assembled[static_cast<size_t>(s)] = Ks[s].pHM() && Ks[s].pHM()->n > 0;
+    // Conversion errors are raised on every rank together, or the others would wait.
+    collectively(*comm, [&] { check_array_sizes(stack, count); });
+    const std::vector<int> owner = subdomain_owners(assembled, *comm);
+    std::vector<int> ids;
+    for (long s = 0; s < count; ++s)
+      if (owner[static_cast<size_t>(s)] == comm->rank()) ids.push_back(static_cast<int>(s));
+    std::vector<SubdomainInput> subdomains;
+    ContactInput contact;
+    FetiSetupSettings settings;
+    collectively(*comm, [&] {
+      subdomains = subdomain_inputs(stack, ids);
+      std::vector<long> dofs;
+      for (const SubdomainInput& sub : subdomains) dofs.push_back(sub.K.rows());
+      add_dirichlet_and_components(stack, count, ids, dofs, subdomains);
+      contact = contact_input(stack, count, ids, dofs);
+      settings = setup_settings(stack);
+    });
+    if (settings.threads == 0) settings.threads = default_threads_per_rank(*comm);
+    return add_handle(std::make_unique<FetiProblem>(std::move(subdomains), ids, static_cast<int>(count), contact,
+                                                    settings, comm));
+  }
+
+  /// F, X, Y and body need one entry per subdomain, as K has.
+  void check_array_sizes(Stack stack, long count) const {
+    const std::pair<const char*, long> sizes[] = {{"F", GetAny<KN<KN<double>>*>((*F)(stack))->N()},
+                                                  {"X", GetAny<KN<KN<double>>*>((*X)(stack))->N()},
+                                                  {"Y", GetAny<KN<KN<double>>*>((*Y)(stack))->N()},
+                                                  {"body", GetAny<KN<long>*>((*body)(stack))->N()}};
+    for (const auto& [name, n] : sizes)
+      if (n != count)
+        throw InputError(std::string(name) + ": has " + std::to_string(n) + " entries, K has " +
+                         std::to_string(count) + " subdomains");
+  }
+
+  /// K, F, coordinates and body of the subdomains `ids` this rank holds.
+  std::vector<SubdomainInput> subdomain_inputs(Stack stack, const std::vector<int>& ids) const {
+    auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
+    auto& Fs = *GetAny<KN<KN<double>>*>((*F)(stack));
+    auto& Xs = *GetAny<KN<KN<double>>*>((*X)(stack));
+    auto& Ys = *GetAny<KN<KN<double>>*>((*Y)(stack));
+    auto& bodies = *GetAny<KN<long>*>((*body)(stack));
+    std::vector<SubdomainInput> subdomains;
+    for (int s : ids) {
+      SubdomainInput sub;
+      sub.K = to_sparse(Ks[s], "K[" + std::to_string(s) + "]");
+      sub.f = to_vec(Fs[s]);
+      sub.x = to_std(Xs[s]);
+      sub.y = to_std(Ys[s]);
+      sub.body = static_cast<int>(bodies[s]);
+      subdomains.push_back(std::move(sub));
+    }
+    return subdomains;
+  }
+
+  /// dirichlet=, dirichletValues= and component= into the subdomains.
+  void add_dirichlet_and_components(Stack stack, long count, const std::vector<int>& ids, const std::vector<long>& dofs,
+                                    std::vector<SubdomainInput>& subdomains) const {
+    const auto dirichlet = per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kDirichlet], stack), count, ids,
+                                                  dofs, "dirichlet");
+    const auto components = per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kComponent], stack), count,
+                                                   ids, dofs, "component");
+    const auto* values = optional_pointer<KN<KN<double>>>(nargs[kDirichletValues], stack);
+    if (values && values->N() != count)
+      throw InputError("dirichletValues: has " + std::to_string(values->N()) + " entries for " +
+                       std::to_string(count) + " subdomains");
+    for (size_t k = 0; k < ids.size(); ++k) {
+      SubdomainInput& sub = subdomains[k];
+      if (!dirichlet.empty()) sub.dirichlet_dofs = dirichlet[k];
+      if (values) sub.dirichlet_values = to_std((*values)[ids[k]]);
+      if (!components.empty()) sub.component = components[k];
+    }
+  }
+
+  /// contactSlave=, contactMaster=, gap=, contactSegments=, obstacle=, contactRadius=, contactGap=.
+  ContactInput contact_input(Stack stack, long count, const std::vector<int>& ids, const std::vector<long>& dofs) const {
+    ContactInput contact;
+    contact.slave_dofs = per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kSlave], stack), count, ids,
+                                                dofs, "contactSlave");
+    contact.master_dofs = per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kMaster], stack), count, ids,
+                                                 dofs, "contactMaster");
+    contact.gap = optional_real(nargs[kGap], stack, 0.0);
+    const auto segment_dofs = per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kSegments], stack), count,
+                                                     ids, dofs, "contactSegments");
+    for (size_t k = 0; k < segment_dofs.size(); ++k) {
+      if (segment_dofs[k].size() % 4 != 0)
+        throw InputError("contactSegments[" + std::to_string(ids[k]) + "]: needs 4 dofs per segment (a_x, a_y, b_x, b_y)");
+      contact.master_segments.emplace_back();
+      for (size_t i = 0; i < segment_dofs[k].size(); i += 4)
+        contact.master_segments.back().push_back({segment_dofs[k][i], segment_dofs[k][i + 1],
+                                                  segment_dofs[k][i + 2], segment_dofs[k][i + 3]});
+    }
+    if (const auto* obstacle = optional_pointer<KN<double>>(nargs[kObstacle], stack)) {
+      if (obstacle->N() != 4)
+        throw InputError("obstacle: needs [point x, point y, normal x, normal y], got " +
+                         std::to_string(obstacle->N()) + " entries");
+      contact.obstacle = true;
+      contact.obstacle_point = {(*obstacle)[0], (*obstacle)[1]};
+      contact.obstacle_normal = {(*obstacle)[2], (*obstacle)[3]};
+    }
+    contact.search_distance = optional_real(nargs[kRadius], stack, contact.search_distance);
+    if (const auto* gaps = optional_pointer<KN<KN<double>>>(nargs[kContactGap], stack)) {
+      if (gaps->N() != count)
+        throw InputError("contactGap: has " + std::to_string(gaps->N()) + " entries for " + std::to_string(count) +
+                         " subdomains");
+      for (int s : ids) contact.gap_field.push_back(to_std((*gaps)[s]));
+    }
+    return contact;
+  }
+
+  /// The set-up options (variant=, factor=, threads=, preconditioner=); a vector field is
+  /// one with component= given.
+  FetiSetupSettings setup_settings(Stack stack) const {
+    return given_options(OptionScope::setup, &nargs[kOptions], stack).setup(nargs[kComponent] != nullptr);
+  }
+};
+
+NamedParameters FetiSetup::name_param = named_parameters(
+    {{"dirichlet", &typeid(KN<KN<long>>*)},       {"dirichletValues", &typeid(KN<KN<double>>*)},
+     {"contactSlave", &typeid(KN<KN<long>>*)},    {"contactMaster", &typeid(KN<KN<long>>*)},
+     {"gap", &typeid(double)},                    {"component", &typeid(KN<KN<long>>*)},
+     {"comm", &typeid(pcommworld)},               {"contactSegments", &typeid(KN<KN<long>>*)},
+     {"obstacle", &typeid(KN<double>*)},          {"contactRadius", &typeid(double)},
+     {"contactGap", &typeid(KN<KN<double>>*)}},
+    OptionScope::setup);
+
+long feti_set_loads(const long& id, KN<KN<double>>* const& loads) {
+  return guarded("fetiSetLoads", [&] {
+    Handle& h = handle(id);
+    std::vector<Vec> f;
+    for (long s = 0; s < loads->N(); ++s) f.push_back(to_vec((*loads)[s]));
+    h.problem->set_loads(f);
+    h.sensitivity.reset();
+    h.result.reset();
+    return 0L;
+  });
+}
+
+/// Frees the problem behind `id`; the handle stays invalid for the life of the process.
+long feti_free(const long& id) {
+  return guarded("fetiFree", [&] {
+    free_handle(id);
+    return 0L;
+  });
+}
+
+}  // namespace
+
+void add_setup_functions() {
+  Global.Add("fetiSetup", "(", new OneOperatorCode<FetiSetup>());
+  Global.Add("fetiSetLoads", "(", new OneOperator2_<long, long, KN<KN<double>>*>(feti_set_loads));
+  Global.Add("fetiFree", "(", new OneOperator1_<long, long>(feti_free));
+}
+
+}  // namespace ffeti::binding

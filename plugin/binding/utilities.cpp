@@ -1,0 +1,107 @@
+// Small functions scripts use around the solver: dof selection, connected partitions, the
+// ranks, sums and maxima over them, the factorization count and a wall clock.
+#include "binding/convert.h"
+#include "binding/functions.h"
+#include "binding/handles.h"
+
+#include "feti/cholmod_factor.h"
+#include "feti/statistics.h"
+#include "mesh/connect_parts.h"
+
+#include <mpi.h>
+
+#include <array>
+#include <chrono>
+
+namespace ffeti::binding {
+namespace {
+
+/// Fills `indices` with the positions where `mask` exceeds 1/2 and returns their number: the
+/// selection loop of ffetiDofsWhere, which FreeFEM's interpreter runs 100 times slower.
+long feti_indices(KN<double>* const& mask, KN<long>* const& indices) {
+  long count = 0;
+  for (long k = 0; k < mask->N(); ++k) count += (*mask)[k] > 0.5;
+  indices->resize(count);
+  for (long k = 0, next = 0; k < mask->N(); ++k)
+    if ((*mask)[k] > 0.5) (*indices)[next++] = k;
+  return count;
+}
+
+/// Makes every part of a mesh partition (`part`: one entry per triangle of Th) connected
+/// through element edges: each edge-connected piece of a part other than its largest goes
+/// to the neighbouring part it shares most edges with, until no piece is left (METIS may
+/// give a part two pieces, e.g. both jaws of a spanner, and a disconnected subdomain has
+/// rigid modes no kernel candidate covers). Returns the number of triangles moved.
+long feti_connect_parts(pmesh const& mesh, KN<long>* const& part) {
+  return guarded("fetiConnectParts", [&] {
+    const Mesh& Th = *mesh;
+    std::vector<std::array<int, 3>> neighbours(static_cast<size_t>(Th.nt));
+    for (int k = 0; k < Th.nt; ++k)
+      for (int e = 0; e < 3; ++e) {
+        int edge = e;  // ElementAdj changes it to the edge's number in the neighbour
+        neighbours[static_cast<size_t>(k)][static_cast<size_t>(e)] = Th.ElementAdj(k, edge);
+      }
+    std::vector<long> parts(static_cast<size_t>(part->N()));
+    for (long k = 0; k < part->N(); ++k) parts[static_cast<size_t>(k)] = (*part)[k];
+    const long moved = connect_parts(neighbours, parts);
+    copy_to(parts, *part);
+    return moved;
+  });
+}
+
+/// Rank and size of MPI's world communicator; 0 and 1 when MPI is not initialized, so that
+/// one script runs under FreeFem++ and FreeFem++-mpi (FreeFEM's mpirank exists only there).
+long feti_rank() {
+  int initialized = 0, rank = 0;
+  MPI_Initialized(&initialized);
+  if (initialized) MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  return rank;
+}
+long feti_ranks() {
+  int initialized = 0, size = 1;
+  MPI_Initialized(&initialized);
+  if (initialized) MPI_Comm_size(MPI_COMM_WORLD, &size);
+  return size;
+}
+
+/// Sum of `value` over the ranks of the problem's communicator (itself in one process).
+double feti_sum(const long& id, const double& value) {
+  return guarded("fetiSum", [&] { return handle(id).problem->communicator().sum(value); });
+}
+
+/// Largest `value` over the ranks of the problem's communicator.
+double feti_max(const long& id, const double& value) {
+  return guarded("fetiMax", [&] { return handle(id).problem->communicator().max(value); });
+}
+
+std::string* feti_rank_report(Stack stack, const long& id) {
+  const std::string text = guarded("fetiRankReport", [&] { return format_rank_report(*handle(id).problem); });
+  return Add2StackOfPtr2Free(stack, new std::string(text));
+}
+
+/// Numeric factorizations of subdomain matrices this process has run so far: a design
+/// step that factorizes each subdomain once, whatever the number of design variables,
+/// raises it by the number of subdomains this rank holds.
+long feti_factorizations() { return CholmodFactor::factorizations_in_process(); }
+
+/// Wall-clock seconds since an arbitrary origin: FreeFEM's clock() is CPU time, which
+/// overstates the time of threaded phases.
+double feti_wall_time() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+void add_utility_functions() {
+  Global.Add("fetiSum", "(", new OneOperator2_<double, long, double>(feti_sum));
+  Global.Add("fetiMax", "(", new OneOperator2_<double, long, double>(feti_max));
+  Global.Add("fetiRank", "(", new OneOperator0<long>(feti_rank));
+  Global.Add("fetiIndices", "(", new OneOperator2_<long, KN<double>*, KN<long>*>(feti_indices));
+  Global.Add("fetiRanks", "(", new OneOperator0<long>(feti_ranks));
+  Global.Add("fetiRankReport", "(", new OneOperator1s_<std::string*, long>(feti_rank_report));
+  Global.Add("fetiWallTime", "(", new OneOperator0<double>(feti_wall_time));
+  Global.Add("fetiFactorizations", "(", new OneOperator0<long>(feti_factorizations));
+  Global.Add("fetiConnectParts", "(", new OneOperator2_<long, pmesh, KN<long>*>(feti_connect_parts));
+}
+
+}  // namespace ffeti::binding
