@@ -33,11 +33,6 @@ cmake --build "$build" -j "$(nproc)"
 # block below adds the real ones (Debian's plugins and .idp files) and ours.
 if [ -w "$prefix" ] || [ "$(id -u)" -eq 0 ]; then
   cmake --install "$build" >/dev/null
-  # Scene fragments installed beside the library before they moved to edp/scenes/ (now in
-  # share/ffeti/idp/scenes/): stale copies, removed so that no script reads them.
-  for scene in active-set-reference hertz-pressure large-contact membrane-shape model-problem multibody spanner; do
-    rm -f "$prefix/share/ffeti/idp/$scene.idp"
-  done
   pref=/etc/freefem++.pref
   [ -w "$pref" ] || pref="$HOME/.freefem++.pref"
   touch "$pref"
