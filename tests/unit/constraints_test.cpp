@@ -1,5 +1,5 @@
 #include "feti/constraints.h"
-#include "feti/errors.h"
+#include "base/errors.h"
 #include "membrane_model.h"
 
 #include <Eigen/Dense>

@@ -1,9 +1,9 @@
 #include "feti/coarse_space.h"
 #include "feti/dual_operator.h"
-#include "feti/errors.h"
+#include "base/errors.h"
 #include "feti/feti_problem.h"
 #include "feti/kernel.h"
-#include "feti/option_names.h"
+#include "feti/options.h"
 #include "parallel/process.h"
 #include "membrane_model.h"
 

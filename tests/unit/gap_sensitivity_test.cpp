@@ -3,7 +3,7 @@
 // differences of re-solves, the adjoint of a cost of (u, lambda) matches the direct mode,
 // and the contact pressure divides each force by the share of all copies of its node.
 #include "feti/contact_pressure.h"
-#include "feti/errors.h"
+#include "base/errors.h"
 #include "feti/feti_problem.h"
 #include "membrane_model.h"
 #include "sens/sensitivity.h"

@@ -1,5 +1,5 @@
 #include "feti/dirichlet.h"
-#include "feti/errors.h"
+#include "base/errors.h"
 #include "feti/kernel.h"
 #include "feti/subdomain.h"
 #include "membrane_model.h"

@@ -1,6 +1,6 @@
 // The option registry (feti/options.h): what both front ends accept and refuse, and that
 // the defaults the reference states are the settings' own.
-#include "feti/errors.h"
+#include "base/errors.h"
 #include "feti/options.h"
 
 #include <gtest/gtest.h>

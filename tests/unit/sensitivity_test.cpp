@@ -1,7 +1,7 @@
 // Sensitivities checked against central finite differences of full re-solves, the adjoint
 // against the direct mode, weakly active rows against one-sided differences, and the
 // promise that no sensitivity solve factorizes anything.
-#include "feti/errors.h"
+#include "base/errors.h"
 #include "feti/feti_problem.h"
 #include "membrane_model.h"
 #include "sens/sensitivity.h"

@@ -8,68 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ffeti {
-namespace {
-
-/// The relative distance min ||G lambda - e|| / ||e|| over lambda_I >= 0 below which a scene
-/// counts as feasible whatever tol: MPRGP on G'G resolves it only to about 1e-11 (a feasible
-/// spanner gave 1.3e-11, depending on the expansion steps), so a smaller tol must not turn
-/// that round-off into "infeasible"; infeasible scenes are off by far more (docs/algorithms.md).
-constexpr double kFeasibilityResolution = 1e-8;
-
-/// Multipliers exactly at their bound are exactly zero in lambda (not round-off).
-Vec lambda_from_shifted(const Vec& mu, const Vec& lower, const Vec& lambda_tilde) {
-  Vec lambda = mu + lambda_tilde;
-  for (Eigen::Index i = 0; i < mu.size(); ++i)
-    if (lower[i] != kUnbounded && mu[i] <= lower[i]) lambda[i] = 0.0;
-  return lambda;
-}
-
-/// ||gP||_inf without forming gP: the stopping tests call this every iteration.
-double projected_gradient_max(const Vec& x, const Vec& g, const Vec& lower) {
-  double largest = 0;
-  for (Eigen::Index i = 0; i < x.size(); ++i) {
-    const bool at_bound = lower[i] != kUnbounded && x[i] <= lower[i];
-    largest = std::max(largest, std::abs(at_bound ? std::min(g[i], 0.0) : g[i]));
-  }
-  return largest;
-}
-
-/// The inner solvers' settings, limited by the whole solve's multiplications.
-MprgpSettings mprgp_within(const DualSolveSettings& settings) {
-  MprgpSettings mprgp = settings.mprgp;
-  mprgp.max_hessian = settings.max_hessian;
-  mprgp.settle_rounds = settings.start.size() > 0 ? settings.settle : 0;  // nothing to settle from zero
-  return mprgp;
-}
-
-SmalbeSettings smalbe_within(const DualSolveSettings& settings) {
-  SmalbeSettings smalbe = settings.smalbe;
-  smalbe.max_hessian = settings.max_hessian;
-  smalbe.inner = mprgp_within(settings);  // its first inner solve settles the start
-  return smalbe;
-}
-
-/// A solver's outcome into the solution, keeping the norm estimate's count.
-void record(DualSolution& result, const IterationCounts& counts, SolveStatus status, double gradient_norm) {
-  const int estimate = result.counts.hessian_norm_estimate;
-  result.counts = counts;
-  result.counts.hessian_norm_estimate = estimate;
-  result.status = status;
-  result.gradient_norm = gradient_norm;
-}
-
-/// The solvers' first iterate mu = lambda - lambda~ from settings.start (zero without one).
-Vec shifted_start(const DualSolveSettings& settings, const DualData& data, Eigen::Index rows) {
-  if (settings.start.size() == 0) return Vec::Zero(rows);
-  if (settings.start.size() != rows)
-    throw InputError("start: has " + std::to_string(settings.start.size()) + " values, the problem has " +
-                     std::to_string(rows) + " multipliers (fetiInfo(P, \"dual\"))");
-  return settings.start - data.lambda_tilde;
-}
-
-}  // namespace
 
 void DualSolveSettings::validate() const {
   if (!(tolerance > 0 && tolerance < 1)) throw InputError("tol: must lie in (0, 1)");
@@ -120,12 +61,12 @@ LinearOperator DualSystem::preconditioner_operator() const {
   return [this](const Vec& x, Vec& y) { preconditioner_->apply(x, y); };
 }
 
-std::string DualSystem::path() const {
+DualPath DualSystem::path() const {
   const bool inequalities = constraints_.inequality_rows() > 0;
   const bool floating = coarse_ != nullptr;
-  if (constraints_.rows() == 0) return "cholesky";
-  if (!inequalities) return floating ? "projected_cg" : "cg";
-  return floating ? "smalbe" : "mprgp";
+  if (constraints_.rows() == 0) return DualPath::cholesky;
+  if (!inequalities) return floating ? DualPath::projected_cg : DualPath::cg;
+  return floating ? DualPath::smalbe : DualPath::mprgp;
 }
 
 DualData DualSystem::data(std::vector<Vec> loads, const Vec& c) const {
@@ -151,26 +92,20 @@ DualData DualSystem::data(std::vector<Vec> loads, const Vec& c) const {
   return data;
 }
 
-double DualSystem::operator_norm(bool projected, const NormEstimateSettings& settings, DualSolution& result) const {
-  std::optional<double>& cached = projected ? norm_PFP_ : norm_F_;
-  int& cost = projected ? norm_PFP_cost_ : norm_F_cost_;
-  if (!cached) {
+double DualSystem::estimated_norm(CachedNorm& cache, const LinearOperator& H,
+                                  const std::function<void(Vec&)>& start_filter, const NormEstimateSettings& settings,
+                                  DualSolution& result) const {
+  if (!cache.norm) {
     Stopwatch clock;
     const double operator_start = F_->application_seconds();
-    NormEstimate estimate;
-    if (projected) {
-      estimate = estimate_norm([&](const Vec& x, Vec& y) { apply_PFP(x, y); }, rows(), settings,
-                               [&](Vec& v) { coarse_->project(Vec(v), v); });
-    } else {
-      estimate = estimate_norm([&](const Vec& x, Vec& y) { F_->apply(x, y); }, rows(), settings);
-    }
-    cached = estimate.norm;
-    cost = estimate.multiplications;
+    const NormEstimate estimate = estimate_norm(H, rows(), settings, start_filter);
+    cache.norm = estimate.norm;
+    cache.cost = estimate.multiplications;
     result.norm_estimate_seconds = clock.seconds();
     result.operator_seconds -= F_->application_seconds() - operator_start;  // the estimate's, not the solve's
   }
-  result.counts.hessian_norm_estimate += cost;
-  return *cached;
+  result.counts.hessian_norm_estimate += cache.cost;
+  return *cache.norm;
 }
 
 void DualSystem::apply_PFP(const Vec& x, Vec& y) const {
@@ -195,7 +130,7 @@ void DualSystem::apply_PFP(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
 
 DualSolution DualSystem::prepared(const DualData& data, const DualSolveSettings& settings) const {
   DualSolution result;
-  result.path = path();
+  result.path = path_name(path());
   result.gradient_reference = std::max(data.b.norm(), settings.reference_includes_data ? data.data_norm : 0.0);
   if (!(result.gradient_reference > 0)) result.gradient_reference = 1.0;
   result.equality_reference = data.e.norm() > 0 ? data.e.norm() : 0.0;
@@ -247,7 +182,8 @@ std::vector<DualSolution> DualSystem::solve(const std::vector<DualData>& data,
   std::vector<DualSolution> results;
   // Lockstep runs share the seed's test (a reference per run known in advance); the
   // relative_kkt test needs u of each run, so those solve one after the other.
-  if (data.size() < 2 || settings.stopping != StoppingTest::seed || (path() != "cg" && path() != "projected_cg")) {
+  if (data.size() < 2 || settings.stopping != StoppingTest::seed ||
+      (path() != DualPath::cg && path() != DualPath::projected_cg)) {
     for (const DualData& d : data) results.push_back(solve(d, settings));
     return results;
   }
@@ -288,210 +224,10 @@ const FreeRowProjector& DualSystem::free_rows() const {
   return *free_rows_;
 }
 
-void DualSystem::solve_by_free_rows(const DualData& data, const DualSolveSettings& settings, const Vec& lower_bounds,
-                                    RelativeKktStop& kkt_stop, DualSolution& result, Vec& lambda) const {
-  // mu = T nu: every iterate meets G mu = 0 but for the rows of C (docs/algorithms.md).
-  Stopwatch projector_clock;
-  const FreeRowProjector& T = free_rows();  // built at the first solve: its time is reported apart
-  result.projector_seconds = projector_clock.seconds();
-  const int m = rows();
-  Vec Tx(m), PFPTx(m), kernel_free(m);
-  const LinearOperator reduced = [&](const Vec& x, Vec& y) {  // T' P F P T
-    T.apply(x, Tx);
-    apply_PFP(Tx, PFPTx);
-    T.apply_transpose(PFPTx, y);
-  };
-  // T'PFPT vanishes on Ker T (free multipliers only, orthogonal to b, to the bounds and to
-  // C), which the iterates never enter in exact arithmetic; in floating point they drift
-  // into it unseen, and T x then cancels large components: at tol = 1e-12 the model problem
-  // at n = 512 diverged (KKT 2e-3 after 10,000 multiplications). Adding ||H|| (I - Pi) on
-  // Ker T changes nothing on the problem's own subspace and keeps that drift at round-off.
-  const LinearOperator hessian = [&](const Vec& x, Vec& y) {
-    reduced(x, y);
-    T.project_out_kernel(x, kernel_free);
-    y += *norm_reduced_ * (x - kernel_free);
-  };
-  if (!norm_reduced_) {
-    Stopwatch clock;
-    const double operator_start = F_->application_seconds();
-    const NormEstimate estimate = estimate_norm(reduced, m, settings.norm_estimate);
-    norm_reduced_ = estimate.norm;
-    norm_reduced_cost_ = estimate.multiplications;
-    result.norm_estimate_seconds = clock.seconds();
-    result.operator_seconds -= F_->application_seconds() - operator_start;  // the estimate's, not the solve's
-  }
-  result.counts.hessian_norm_estimate += norm_reduced_cost_;
-  const double norm = *norm_reduced_;
-  Vec b;
-  T.apply_transpose(data.b, b);
-  // The seed's test measures the gradient against its value at the start: here T'b.
-  result.gradient_reference = std::max(b.norm(), settings.reference_includes_data ? data.data_norm : 0.0);
-  if (!(result.gradient_reference > 0)) result.gradient_reference = 1.0;
-  const double b_tol = settings.tolerance * result.gradient_reference;
-  const double eq_reference =
-      result.equality_reference > 0 ? result.equality_reference : result.gradient_reference / norm;
-  result.equality_reference = eq_reference;
-  Vec mu(m);
-  const auto converged = [&](const Vec& x, double gp_inf, double gp_norm) {
-    T.apply(x, mu);
-    result.equality_norm = (coarse_->G() * mu).norm();  // G lambda - e = G mu
-    if (settings.stopping == StoppingTest::relative_kkt)
-      return kkt_stop(mu, gp_inf, result.equality_norm / eq_reference);
-    return result.equality_norm <= settings.tolerance * eq_reference && gp_norm <= b_tol;
-  };
-  LinearOperator preconditioner;  // approximates (T'PFPT)^+ from M^{-1} ~ (PFP)^+
-  if (preconditioner_)
-    preconditioner = [&](const Vec& v, Vec& y) {
-      T.project_out_kernel(v, Tx);
-      coarse_->project(Tx, projected_);
-      preconditioner_->apply(projected_, applied_);
-      coarse_->project(applied_, Tx);
-      T.project_out_kernel(Tx, y);
-    };
-  Vec x(m);  // without its part in Ker T, which T'PFPT does not see (free rows only: bounds kept)
-  T.project_out_kernel(shifted_start(settings, data, m), x);
-  if (T.remaining() == 0) {  // nothing floats as a whole: bounds only
-    Vec g;
-    const MprgpResult r = mprgp(hessian, b, lower_bounds, norm, x, g, false, mprgp_within(settings),
-        [&](const Vec& xi, const Vec& gi, double norm_gp) {
-          return converged(xi, projected_gradient_max(xi, gi, lower_bounds), norm_gp);
-        },
-        settings.monitor, preconditioner);
-    record(result, r.counts, r.status, r.projected_gradient_norm);
-  } else {
-    SmalbeProblem problem;
-    problem.hessian = hessian;
-    problem.range_projector = [&](const Vec& v, Vec& y) { T.project_remaining_range(v, y); };
-    problem.b = &b;
-    problem.lower = &lower_bounds;
-    problem.hessian_norm = norm;
-    problem.preconditioner = preconditioner;
-    const SmalbeResult r = smalbe(problem, x, smalbe_within(settings),
-        [&](const Vec& xi, const Vec& gP, const Vec&) {
-          return converged(xi, gP.lpNorm<Eigen::Infinity>(), gP.norm());
-        },
-        settings.monitor);
-    record(result, r.counts, r.status, r.projected_gradient_norm);
-  }
-  T.apply(x, mu);
-  result.equality_norm = (coarse_->G() * mu).norm();
-  lambda = lambda_from_shifted(mu, lower_bounds, data.lambda_tilde);
-}
-
-DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& settings) const {
-  settings.validate();
-  DualSolution result = prepared(data, settings);
-  const int m = rows();
-  const double tolerance = settings.tolerance;
-  Stopwatch solve_clock;
-  const double operator_start = F_->application_seconds();
-  const double preconditioner_start = preconditioner_ ? preconditioner_->application_seconds() : 0.0;
-  const double check_start = check_seconds_;
-
-  if (result.path == "cholesky") {
-    result.status = SolveStatus::converged;
-    result.lambda = Vec::Zero(0);
-    result.u.resize(subdomains_.size());
-    for (size_t s = 0; s < subdomains_.size(); ++s) subdomains_[s]->apply_pseudo_inverse(data.loads[s], result.u[s]);
-    result.solve_seconds = solve_clock.seconds();
-    return result;
-  }
-
-  Vec lambda;
-  const Vec lower_bounds = [&] {
-    Vec lower = Vec::Constant(m, kUnbounded);
-    for (int i = constraints_.equality_rows; i < m; ++i) lower[i] = -data.lambda_tilde[i];  // lambda_I >= 0
-    return lower;
-  }();
-  const double b_tol = tolerance * result.gradient_reference;
-  // The gradient part of the stopping test at the solver's iterate x (lambda = x + lambda~,
-  // multipliers at their bound exactly 0) with projected gradient gP of 2-norm gp_norm.
-  RelativeKktStop kkt_stop(tolerance, [&](const Vec& x) {
-    return primal_check(data, lambda_from_shifted(x, lower_bounds, data.lambda_tilde));
-  });
-  // gp_inf: ||gP||_inf, gp_norm: ||gP||_2.
-  const auto gradient_converged = [&](const Vec& x, double gp_inf, double gp_norm) {
-    return settings.stopping == StoppingTest::seed ? gp_norm <= b_tol : kkt_stop(x, gp_inf);
-  };
-
-  if (result.path == "cg" || result.path == "projected_cg") {
-    const LinearOperator A = [&](const Vec& x, Vec& y) {
-      if (coarse_) apply_PFP(x, y);
-      else F_->apply(x, y);
-    };
-    LinearOperator M = preconditioner_operator();  // with a coarse space: P M^{-1} P on Ker G
-    if (M && coarse_)
-      M = [&](const Vec& x, Vec& y) {
-        coarse_->project(x, projected_);
-        preconditioner_->apply(projected_, applied_);
-        coarse_->project(applied_, y);
-      };
-    CgSettings cg;
-    cg.max_hessian = settings.max_hessian;
-    Vec mu = shifted_start(settings, data, m), g;
-    if (coarse_ && settings.start.size() > 0) coarse_->project(Vec(mu), mu);  // G mu = 0
-    const CgResult cg_result = conjugate_gradient(
-        A, data.b, mu, g, cg, [&](const Vec& x, const Vec& gx, double norm) {
-          return gradient_converged(x, gx.lpNorm<Eigen::Infinity>(), norm);
-        },
-        settings.monitor, M);
-    record(result, cg_result.counts, cg_result.status, cg_result.gradient_norm);
-    lambda = mu + data.lambda_tilde;
-  } else if (result.path == "mprgp") {
-    const double norm = operator_norm(false, settings.norm_estimate, result);
-    Vec x = shifted_start(settings, data, m), g;
-    const LinearOperator M = preconditioner_operator();
-    const MprgpResult r = mprgp(
-        [&](const Vec& v, Vec& y) { F_->apply(v, y); }, data.b, lower_bounds, norm, x, g, false, mprgp_within(settings),
-        [&](const Vec& xi, const Vec& gi, double norm_gp) {
-          return gradient_converged(xi, projected_gradient_max(xi, gi, lower_bounds), norm_gp);
-        },
-        settings.monitor, M);
-    record(result, r.counts, r.status, r.projected_gradient_norm);
-    lambda = lambda_from_shifted(x, lower_bounds, data.lambda_tilde);
-  } else if (const double resolution = std::max(tolerance, kFeasibilityResolution),
-             distance = coarse_->feasibility_residual(data.e, constraints_.equality_rows, resolution);
-             distance > resolution) {
-    // No multipliers of the right signs balance the loads on the floating bodies (Farkas):
-    // no equilibrium, and SMALBE could only iterate until maxit. The least-norm lambda~
-    // (G lambda~ = e, some contact multipliers negative) gives the field the recovery shows.
-    result.status = SolveStatus::infeasible;
-    result.equality_norm = distance * result.equality_reference;
-    lambda = data.lambda_tilde;
-  } else if (settings.coarse_constraints == CoarseConstraints::free_rows) {
-    solve_by_free_rows(data, settings, lower_bounds, kkt_stop, result, lambda);
-  } else {  // smalbe
-    const double norm = operator_norm(true, settings.norm_estimate, result);
-    const double eq_reference =
-        result.equality_reference > 0 ? result.equality_reference : result.gradient_reference / norm;
-    result.equality_reference = eq_reference;
-    SmalbeProblem problem;
-    problem.hessian = [&](const Vec& x, Vec& y) { apply_PFP(x, y); };
-    problem.range_projector = [&](const Vec& x, Vec& y) { coarse_->project_range(x, y); };
-    problem.b = &data.b;
-    problem.lower = &lower_bounds;
-    problem.hessian_norm = norm;
-    problem.preconditioner = preconditioner_operator();
-    Vec mu = shifted_start(settings, data, m);
-    const SmalbeResult r = smalbe(problem, mu, smalbe_within(settings),
-        [&](const Vec& x, const Vec& gP, const Vec&) {
-          result.equality_norm = (coarse_->G() * x).norm();  // G lambda - e = G mu
-          if (settings.stopping == StoppingTest::relative_kkt) return kkt_stop(x, gP.lpNorm<Eigen::Infinity>(), result.equality_norm / eq_reference);
-          return result.equality_norm <= tolerance * eq_reference && gP.norm() <= b_tol;
-        },
-        settings.monitor);
-    record(result, r.counts, r.status, r.projected_gradient_norm);
-    result.equality_norm = (coarse_->G() * mu).norm();
-    lambda = lambda_from_shifted(mu, lower_bounds, data.lambda_tilde);
-  }
-  result.violation = kkt_stop.measure();
-  result.scale_evaluations = kkt_stop.evaluations();
-  result.solve_seconds = solve_clock.seconds() - result.norm_estimate_seconds - result.projector_seconds;
-  result.operator_seconds += F_->application_seconds() - operator_start;
-  if (preconditioner_) result.preconditioner_seconds = preconditioner_->application_seconds() - preconditioner_start;
-  result.check_seconds = check_seconds_ - check_start;
-  recover(data, std::move(lambda), result);
-  return result;
+Vec DualSystem::lower_bounds(const DualData& data) const {
+  Vec lower = Vec::Constant(rows(), kUnbounded);
+  for (int i = constraints_.equality_rows; i < rows(); ++i) lower[i] = -data.lambda_tilde[i];  // lambda_I >= 0
+  return lower;
 }
 
 }  // namespace ffeti

@@ -2,13 +2,16 @@
 // the dual operator F, the coarse space where something floats, and the solve on the path
 // the constraints call for (ALGORITHMS.md section 6). The state problem has one; the
 // sensitivity problem of a design step (seed eq. 12: a subset of the rows) has another
-// over the same factorizations.
+// over the same factorizations. Its parts: dual_system.cpp (the operators, the right-hand
+// side, the primal check and recovery), dual_formulations.cpp (one DualQp per formulation),
+// dual_solve.cpp (the dispatcher onto qp/).
 #pragma once
 
 #include "feti/coarse_space.h"
 #include "feti/constraints.h"
 #include "feti/dirichlet_preconditioner.h"
 #include "feti/dual_operator.h"
+#include "feti/dual_qp.h"
 #include "feti/free_row_projector.h"
 #include "feti/stopping_test.h"
 #include "parallel/subdomain_sum.h"
@@ -70,7 +73,7 @@ struct DualData {
 
 struct DualSolution {
   SolveStatus status = SolveStatus::invalid_input;
-  std::string path;              ///< cholesky, cg, projected_cg, mprgp or smalbe
+  std::string path;              ///< path_name of the path taken
   IterationCounts counts;
   double gradient_norm = 0;      ///< final ||gP|| (absolute) and its reference ||b||
   double gradient_reference = 0;
@@ -103,7 +106,7 @@ class DualSystem {
   const CoarseSpace* coarse() const { return coarse_.get(); }
   int rows() const { return constraints_.rows(); }
   /// The solver path the constraints call for (ALGORITHMS.md section 6).
-  std::string path() const;
+  DualPath path() const;
 
   /// Preconditions every path with the Dirichlet (or lumped) preconditioner built from
   /// `operator_matrices` (this rank's K as the dual operator sees them): CG and projected CG
@@ -129,16 +132,33 @@ class DualSystem {
   std::vector<DualSolution> solve(const std::vector<DualData>& data, const DualSolveSettings& settings) const;
 
  private:
-  double operator_norm(bool projected, const NormEstimateSettings& settings, DualSolution& result) const;
+  struct CachedNorm {  // an estimate of ||H||: the same H for every load case
+    std::optional<double> norm;
+    int cost = 0;
+  };
+  double estimated_norm(CachedNorm& cache, const LinearOperator& H, const std::function<void(Vec&)>& start_filter,
+                        const NormEstimateSettings& settings, DualSolution& result) const;
   void apply_PFP(const Vec& x, Vec& y) const;  // the projected dual operator, on reused buffers
   void apply_PFP(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const;
   DualSolution prepared(const DualData& data, const DualSolveSettings& settings) const;  // path, references
   LinearOperator preconditioner_operator() const;  // M^{-1}, or empty without a preconditioner
   void recover(const DualData& data, Vec lambda, DualSolution& result) const;
   const FreeRowProjector& free_rows() const;  // built at first use
-  void solve_by_free_rows(const DualData& data, const DualSolveSettings& settings, const Vec& lower_bounds,
-                          RelativeKktStop& kkt_stop, DualSolution& result, Vec& lambda) const;
   PrimalCheck primal_check(const DualData& data, const Vec& lambda) const;  // of the recovered u(lambda)
+  Vec lower_bounds(const DualData& data) const;  // of mu = lambda - lambda~: lambda_I >= 0
+
+  // The formulations (dual_formulations.cpp), each the QP of one path.
+  DualQp plain_qp(const DualData& data, const DualSolveSettings& settings, DualSolution& result,
+                  bool bounded) const;  // F: CG, or MPRGP (bounded: with the norm estimate)
+  DualQp projected_qp(const DualData& data, const DualSolveSettings& settings) const;  // P F P: projected CG
+  DualQp penalty_qp(const DualData& data, const DualSolveSettings& settings, DualSolution& result) const;
+  DualQp free_rows_qp(const DualData& data, const DualSolveSettings& settings, DualSolution& result) const;
+  void set_equality_reference(DualSolution& result, double hessian_norm) const;
+
+  // The dispatcher's pieces (dual_solve.cpp).
+  Vec run(const DualQp& qp, const Vec* lower, const DualStop& stop, const DualSolveSettings& settings,
+          DualSolution& result) const;  // CG, MPRGP or SMALBE on qp; returns mu
+  DualSolution solved_by_subdomains(const DualData& data, DualSolution result) const;  // the cholesky path
 
   const SubdomainList& subdomains_;
   const Communicator& comm_;
@@ -151,11 +171,8 @@ class DualSystem {
   DualPreconditioner preconditioner_kind_ = DualPreconditioner::none;
   mutable Vec projected_, applied_;                   // buffers of apply_PFP and the preconditioner
   mutable Eigen::MatrixXd block_projected_, block_applied_;  // of the block apply_PFP
-  mutable std::optional<double> norm_F_, norm_PFP_;  // cached: the same F for every load case
-  mutable int norm_F_cost_ = 0, norm_PFP_cost_ = 0;
+  mutable CachedNorm norm_F_, norm_PFP_, norm_reduced_;  // ||F||, ||PFP||, ||T'PFPT||
   mutable std::unique_ptr<FreeRowProjector> free_rows_;
-  mutable std::optional<double> norm_reduced_;  // of T'PFPT
-  mutable int norm_reduced_cost_ = 0;
   mutable double check_seconds_ = 0;  // spent in primal_check so far
 };
 

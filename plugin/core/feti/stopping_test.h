@@ -71,4 +71,29 @@ class RelativeKktStop {
   double measure_ = -1;
 };
 
+/// The stopping test of one dual solve at an iterate's shifted multipliers mu, given its
+/// projected gradient gP (inf- and 2-norm) and, where the formulation leaves the balance of
+/// floating bodies to the solver, ||G mu|| and its reference: relative_kkt asks `kkt`,
+/// the seed's test compares ||gP||_2 with tol ||b||_2 (and ||G mu|| with tol times its
+/// reference). One object for every path, so each path stops by the same rule.
+class DualStop {
+ public:
+  DualStop(StoppingTest kind, double tolerance, double gradient_reference, RelativeKktStop& kkt)
+      : kind_(kind), tolerance_(tolerance), gradient_tolerance_(tolerance * gradient_reference), kkt_(kkt) {}
+
+  bool operator()(const Vec& mu, double gradient_inf, double gradient_norm) const {
+    return kind_ == StoppingTest::seed ? gradient_norm <= gradient_tolerance_ : kkt_(mu, gradient_inf);
+  }
+  bool operator()(const Vec& mu, double gradient_inf, double gradient_norm, double equality_norm,
+                  double equality_reference) const {
+    if (kind_ == StoppingTest::relative_kkt) return kkt_(mu, gradient_inf, equality_norm / equality_reference);
+    return equality_norm <= tolerance_ * equality_reference && gradient_norm <= gradient_tolerance_;
+  }
+
+ private:
+  StoppingTest kind_;
+  double tolerance_, gradient_tolerance_;
+  RelativeKktStop& kkt_;
+};
+
 }  // namespace ffeti

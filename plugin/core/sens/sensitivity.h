@@ -85,7 +85,7 @@ class SensitivityProblem {
 
   const ContactClassification& classification() const { return classification_; }
   const SensitivityCounters& counters() const { return counters_; }
-  std::string path() const { return system_->path(); }
+  std::string path() const { return path_name(system_->path()); }
   int dual_dimension() const { return system_->rows(); }
 
   /// z = u'(alpha; beta) for one direction. Never throws for non-convergence. Collective.

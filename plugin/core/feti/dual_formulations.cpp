@@ -1,0 +1,123 @@
+// The dual QP of each formulation (docs/algorithms.md): what the solver minimizes, its
+// preconditioner and, where something floats, how the balance G lambda = e is kept.
+#include "feti/dual_system.h"
+
+#include "base/errors.h"
+#include "base/stopwatch.h"
+
+#include <algorithm>
+#include <array>
+#include <memory>
+
+namespace ffeti {
+namespace {
+
+/// The solvers' first iterate mu = lambda - lambda~ from settings.start (zero without one).
+Vec shifted_start(const DualSolveSettings& settings, const DualData& data, Eigen::Index rows) {
+  if (settings.start.size() == 0) return Vec::Zero(rows);
+  if (settings.start.size() != rows)
+    throw InputError("start: has " + std::to_string(settings.start.size()) + " values, the problem has " +
+                     std::to_string(rows) + " multipliers (fetiInfo(P, \"dual\"))");
+  return settings.start - data.lambda_tilde;
+}
+
+}  // namespace
+
+DualQp DualSystem::plain_qp(const DualData& data, const DualSolveSettings& settings, DualSolution& result,
+                            bool bounded) const {
+  DualQp qp;
+  qp.hessian = [this](const Vec& x, Vec& y) { F_->apply(x, y); };
+  qp.b = data.b;
+  if (bounded) qp.hessian_norm = estimated_norm(norm_F_, qp.hessian, {}, settings.norm_estimate, result);
+  qp.preconditioner = preconditioner_operator();
+  qp.start = shifted_start(settings, data, rows());
+  return qp;
+}
+
+DualQp DualSystem::projected_qp(const DualData& data, const DualSolveSettings& settings) const {
+  // CG on P F P: every iterate stays in Ker G, where the balance holds (docs/algorithms.md).
+  DualQp qp;
+  qp.hessian = [this](const Vec& x, Vec& y) { apply_PFP(x, y); };
+  qp.b = data.b;
+  if (preconditioner_)  // P M^{-1} P on Ker G
+    qp.preconditioner = [this](const Vec& x, Vec& y) {
+      coarse_->project(x, projected_);
+      preconditioner_->apply(projected_, applied_);
+      coarse_->project(applied_, y);
+    };
+  qp.start = shifted_start(settings, data, rows());
+  if (settings.start.size() > 0) coarse_->project(Vec(qp.start), qp.start);  // G mu = 0
+  return qp;
+}
+
+void DualSystem::set_equality_reference(DualSolution& result, double hessian_norm) const {
+  // ||e||, or where nothing loads the floating bodies (e = 0) the size G lambda - e would
+  // have for a multiplier of the gradient's size.
+  if (!(result.equality_reference > 0)) result.equality_reference = result.gradient_reference / hessian_norm;
+}
+
+DualQp DualSystem::penalty_qp(const DualData& data, const DualSolveSettings& settings, DualSolution& result) const {
+  // The seed's formulation: SMALBE keeps all of G lambda = e by its augmented Lagrangian.
+  DualQp qp;
+  qp.hessian = [this](const Vec& x, Vec& y) { apply_PFP(x, y); };
+  qp.hessian_norm = estimated_norm(norm_PFP_, qp.hessian, [this](Vec& v) { coarse_->project(Vec(v), v); },
+                                   settings.norm_estimate, result);
+  set_equality_reference(result, qp.hessian_norm);
+  qp.range_projector = [this](const Vec& x, Vec& y) { coarse_->project_range(x, y); };
+  qp.b = data.b;
+  qp.preconditioner = preconditioner_operator();
+  qp.equality_norm = [this](const Vec& mu) { return (coarse_->G() * mu).norm(); };  // G lambda - e = G mu
+  qp.start = shifted_start(settings, data, rows());
+  return qp;
+}
+
+DualQp DualSystem::free_rows_qp(const DualData& data, const DualSolveSettings& settings, DualSolution& result) const {
+  // mu = T nu: every iterate meets G mu = 0 but for the rows of C (docs/algorithms.md).
+  Stopwatch projector_clock;
+  const FreeRowProjector& T = free_rows();  // built at the first solve: its time is reported apart
+  result.projector_seconds = projector_clock.seconds();
+  const int m = rows();
+  auto work = std::make_shared<std::array<Vec, 3>>();  // T x, P F P T x, x without its Ker T part
+  for (Vec& v : *work) v.resize(m);
+  const LinearOperator reduced = [this, &T, work](const Vec& x, Vec& y) {  // T' P F P T
+    T.apply(x, (*work)[0]);
+    apply_PFP((*work)[0], (*work)[1]);
+    T.apply_transpose((*work)[1], y);
+  };
+  const double norm = estimated_norm(norm_reduced_, reduced, {}, settings.norm_estimate, result);
+  DualQp qp;
+  // T'PFPT vanishes on Ker T (free multipliers only, orthogonal to b, to the bounds and to
+  // C), which the iterates never enter in exact arithmetic; in floating point they drift
+  // into it unseen, and T x then cancels large components: at tol = 1e-12 the model problem
+  // at n = 512 diverged (KKT 2e-3 after 10,000 multiplications). Adding ||H|| (I - Pi) on
+  // Ker T changes nothing on the problem's own subspace and keeps that drift at round-off.
+  qp.hessian = [reduced, &T, work, norm](const Vec& x, Vec& y) {
+    reduced(x, y);
+    T.project_out_kernel(x, (*work)[2]);
+    y += norm * (x - (*work)[2]);
+  };
+  qp.hessian_norm = norm;
+  T.apply_transpose(data.b, qp.b);
+  // The seed's test measures the gradient against its value at the start: here T'b.
+  result.gradient_reference = std::max(qp.b.norm(), settings.reference_includes_data ? data.data_norm : 0.0);
+  if (!(result.gradient_reference > 0)) result.gradient_reference = 1.0;
+  set_equality_reference(result, norm);
+  if (preconditioner_)  // approximates (T'PFPT)^+ from M^{-1} ~ (PFP)^+
+    qp.preconditioner = [this, &T, work](const Vec& v, Vec& y) {
+      T.project_out_kernel(v, (*work)[0]);
+      coarse_->project((*work)[0], projected_);
+      preconditioner_->apply(projected_, applied_);
+      coarse_->project(applied_, (*work)[0]);
+      T.project_out_kernel((*work)[0], y);
+    };
+  if (T.remaining() > 0)  // bodies float as a whole: their balance is left to SMALBE
+    qp.range_projector = [&T](const Vec& v, Vec& y) { T.project_remaining_range(v, y); };
+  qp.to_multipliers = [&T](const Vec& x, Vec& mu) { T.apply(x, mu); };
+  qp.equality_norm = [this](const Vec& mu) { return (coarse_->G() * mu).norm(); };  // G lambda - e = G mu
+  // The start without its part in Ker T, which T'PFPT does not see (free rows only: bounds kept).
+  qp.start.resize(m);
+  T.project_out_kernel(shifted_start(settings, data, m), qp.start);
+  return qp;
+}
+
+}  // namespace ffeti

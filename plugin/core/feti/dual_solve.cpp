@@ -1,0 +1,177 @@
+// The dual solve: the path the constraints call for, its formulation's QP, the solver of
+// qp/ that fits it, one stopping test for all, and the primal solution recovered.
+#include "feti/dual_system.h"
+
+#include "base/stopwatch.h"
+#include "qp/conjugate_gradient.h"
+#include "qp/mprgp.h"
+
+#include <algorithm>
+
+namespace ffeti {
+namespace {
+
+/// The relative distance min ||G lambda - e|| / ||e|| over lambda_I >= 0 below which a scene
+/// counts as feasible whatever tol: MPRGP on G'G resolves it only to about 1e-11 (a feasible
+/// spanner gave 1.3e-11, depending on the expansion steps), so a smaller tol must not turn
+/// that round-off into "infeasible"; infeasible scenes are off by far more (docs/algorithms.md).
+constexpr double kFeasibilityResolution = 1e-8;
+
+/// Multipliers exactly at their bound are exactly zero in lambda (not round-off).
+Vec lambda_from_shifted(const Vec& mu, const Vec& lower, const Vec& lambda_tilde) {
+  Vec lambda = mu + lambda_tilde;
+  for (Eigen::Index i = 0; i < mu.size(); ++i)
+    if (lower[i] != kUnbounded && mu[i] <= lower[i]) lambda[i] = 0.0;
+  return lambda;
+}
+
+/// The inner solvers' settings, limited by the whole solve's multiplications.
+MprgpSettings mprgp_within(const DualSolveSettings& settings) {
+  MprgpSettings mprgp = settings.mprgp;
+  mprgp.max_hessian = settings.max_hessian;
+  mprgp.settle_rounds = settings.start.size() > 0 ? settings.settle : 0;  // nothing to settle from zero
+  return mprgp;
+}
+
+SmalbeSettings smalbe_within(const DualSolveSettings& settings) {
+  SmalbeSettings smalbe = settings.smalbe;
+  smalbe.max_hessian = settings.max_hessian;
+  smalbe.inner = mprgp_within(settings);  // its first inner solve settles the start
+  return smalbe;
+}
+
+/// A solver's outcome into the solution, keeping the norm estimate's count.
+void record(DualSolution& result, const IterationCounts& counts, SolveStatus status, double gradient_norm) {
+  const int estimate = result.counts.hessian_norm_estimate;
+  result.counts = counts;
+  result.counts.hessian_norm_estimate = estimate;
+  result.status = status;
+  result.gradient_norm = gradient_norm;
+}
+
+}  // namespace
+
+const char* path_name(DualPath path) {
+  switch (path) {
+    case DualPath::cholesky: return "cholesky";
+    case DualPath::cg: return "cg";
+    case DualPath::projected_cg: return "projected_cg";
+    case DualPath::mprgp: return "mprgp";
+    case DualPath::smalbe: break;
+  }
+  return "smalbe";
+}
+
+Vec DualSystem::run(const DualQp& qp, const Vec* lower, const DualStop& stop, const DualSolveSettings& settings,
+                    DualSolution& result) const {
+  Vec mu_of_x;
+  const auto multipliers = [&](const Vec& x) -> const Vec& {
+    if (!qp.to_multipliers) return x;
+    qp.to_multipliers(x, mu_of_x);
+    return mu_of_x;
+  };
+  // The stopping test at the solver's iterate x with projected gradient gP (inf- and 2-norm).
+  const auto converged = [&](const Vec& x, double gradient_inf, double gradient_norm) {
+    const Vec& mu = multipliers(x);
+    if (!qp.equality_norm) return stop(mu, gradient_inf, gradient_norm);
+    result.equality_norm = qp.equality_norm(mu);
+    return stop(mu, gradient_inf, gradient_norm, result.equality_norm, result.equality_reference);
+  };
+  Vec x = qp.start, g;
+  if (!lower) {  // equality rows only: CG
+    CgSettings cg;
+    cg.max_hessian = settings.max_hessian;
+    const CgResult r = conjugate_gradient(
+        qp.hessian, qp.b, x, g, cg,
+        [&](const Vec& xi, const Vec& gi, double norm) { return converged(xi, gi.lpNorm<Eigen::Infinity>(), norm); },
+        settings.monitor, qp.preconditioner);
+    record(result, r.counts, r.status, r.gradient_norm);
+  } else if (!qp.range_projector) {  // bounds only: MPRGP
+    const MprgpResult r = mprgp(
+        qp.hessian, qp.b, *lower, qp.hessian_norm, x, g, false, mprgp_within(settings),
+        [&](const Vec& xi, const Vec& gi, double norm) {
+          return converged(xi, projected_gradient(xi, gi, *lower).lpNorm<Eigen::Infinity>(), norm);
+        },
+        settings.monitor, qp.preconditioner);
+    record(result, r.counts, r.status, r.projected_gradient_norm);
+  } else {  // bounds and an equality part: SMALBE
+    SmalbeProblem problem;
+    problem.hessian = qp.hessian;
+    problem.range_projector = qp.range_projector;
+    problem.b = &qp.b;
+    problem.lower = lower;
+    problem.hessian_norm = qp.hessian_norm;
+    problem.preconditioner = qp.preconditioner;
+    const SmalbeResult r = smalbe(
+        problem, x, smalbe_within(settings),
+        [&](const Vec& xi, const Vec& gP, const Vec&) { return converged(xi, gP.lpNorm<Eigen::Infinity>(), gP.norm()); },
+        settings.monitor);
+    record(result, r.counts, r.status, r.projected_gradient_norm);
+  }
+  Vec mu = multipliers(x);
+  if (qp.equality_norm) result.equality_norm = qp.equality_norm(mu);
+  return mu;
+}
+
+DualSolution DualSystem::solved_by_subdomains(const DualData& data, DualSolution result) const {
+  Stopwatch clock;
+  result.status = SolveStatus::converged;
+  result.lambda = Vec::Zero(0);
+  result.u.resize(subdomains_.size());
+  for (size_t s = 0; s < subdomains_.size(); ++s) subdomains_[s]->apply_pseudo_inverse(data.loads[s], result.u[s]);
+  result.solve_seconds = clock.seconds();
+  return result;
+}
+
+DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& settings) const {
+  settings.validate();
+  DualSolution result = prepared(data, settings);
+  const DualPath route = path();
+  if (route == DualPath::cholesky) return solved_by_subdomains(data, std::move(result));
+  Stopwatch solve_clock;
+  const double operator_start = F_->application_seconds();
+  const double preconditioner_start = preconditioner_ ? preconditioner_->application_seconds() : 0.0;
+  const double check_start = check_seconds_;
+  const Vec lower = lower_bounds(data);
+  // The primal check of the stopping test at shifted multipliers mu (lambda = mu + lambda~,
+  // multipliers at their bound exactly 0).
+  RelativeKktStop kkt_stop(settings.tolerance, [&](const Vec& mu) {
+    return primal_check(data, lambda_from_shifted(mu, lower, data.lambda_tilde));
+  });
+  const auto stop_for = [&](const DualSolution& r) {  // built once the formulation has set the references
+    return DualStop(settings.stopping, settings.tolerance, r.gradient_reference, kkt_stop);
+  };
+
+  Vec lambda;
+  if (route == DualPath::cg || route == DualPath::projected_cg) {
+    const DualQp qp = route == DualPath::cg ? plain_qp(data, settings, result, false) : projected_qp(data, settings);
+    lambda = run(qp, nullptr, stop_for(result), settings, result) + data.lambda_tilde;
+  } else if (route == DualPath::mprgp) {
+    const DualQp qp = plain_qp(data, settings, result, true);
+    lambda = lambda_from_shifted(run(qp, &lower, stop_for(result), settings, result), lower, data.lambda_tilde);
+  } else if (const double resolution = std::max(settings.tolerance, kFeasibilityResolution),
+             distance = coarse_->feasibility_residual(data.e, constraints_.equality_rows, resolution);
+             distance > resolution) {
+    // No multipliers of the right signs balance the loads on the floating bodies (Farkas):
+    // no equilibrium, and SMALBE could only iterate until maxit. The least-norm lambda~
+    // (G lambda~ = e, some contact multipliers negative) gives the field the recovery shows.
+    result.status = SolveStatus::infeasible;
+    result.equality_norm = distance * result.equality_reference;
+    lambda = data.lambda_tilde;
+  } else {
+    const DualQp qp = settings.coarse_constraints == CoarseConstraints::free_rows
+                          ? free_rows_qp(data, settings, result)
+                          : penalty_qp(data, settings, result);
+    lambda = lambda_from_shifted(run(qp, &lower, stop_for(result), settings, result), lower, data.lambda_tilde);
+  }
+  result.violation = kkt_stop.measure();
+  result.scale_evaluations = kkt_stop.evaluations();
+  result.solve_seconds = solve_clock.seconds() - result.norm_estimate_seconds - result.projector_seconds;
+  result.operator_seconds += F_->application_seconds() - operator_start;
+  if (preconditioner_) result.preconditioner_seconds = preconditioner_->application_seconds() - preconditioner_start;
+  result.check_seconds = check_seconds_ - check_start;
+  recover(data, std::move(lambda), result);
+  return result;
+}
+
+}  // namespace ffeti
