@@ -1,0 +1,159 @@
+#include "feti/constraint_records.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ffeti {
+namespace {
+
+/// Subdomains whose inflated boxes overlap each cell of a uniform grid over all boxes:
+/// finds the boxes containing a point without testing all of them.
+class BoxGrid {
+ public:
+  BoxGrid(const std::vector<BoundingBox>& boxes, double margin) : boxes_(boxes), margin_(margin) {
+    lo_x_ = lo_y_ = INFINITY;
+    double hi_x = -INFINITY, hi_y = -INFINITY;
+    for (const BoundingBox& b : boxes) {
+      lo_x_ = std::min(lo_x_, b.x0), lo_y_ = std::min(lo_y_, b.y0);
+      hi_x = std::max(hi_x, b.x1), hi_y = std::max(hi_y, b.y1);
+    }
+    cells_ = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(boxes.size())))));
+    cell_x_ = std::max((hi_x - lo_x_) / cells_, margin), cell_y_ = std::max((hi_y - lo_y_) / cells_, margin);
+    members_.resize(static_cast<size_t>(cells_ * cells_));
+    for (int s = 0; s < static_cast<int>(boxes.size()); ++s) {
+      const BoundingBox& b = boxes[static_cast<size_t>(s)];
+      for (int j = cell(b.y0 - margin, lo_y_, cell_y_); j <= cell(b.y1 + margin, lo_y_, cell_y_); ++j)
+        for (int i = cell(b.x0 - margin, lo_x_, cell_x_); i <= cell(b.x1 + margin, lo_x_, cell_x_); ++i)
+          members_[static_cast<size_t>(j * cells_ + i)].push_back(s);
+    }
+  }
+  template <class F>
+  void for_each_containing(double x, double y, F&& visit) const {
+    const int i = cell(x, lo_x_, cell_x_), j = cell(y, lo_y_, cell_y_);
+    for (int s : members_[static_cast<size_t>(j * cells_ + i)]) {
+      const BoundingBox& b = boxes_[static_cast<size_t>(s)];
+      if (x >= b.x0 - margin_ && x <= b.x1 + margin_ && y >= b.y0 - margin_ && y <= b.y1 + margin_) visit(s);
+    }
+  }
+
+ private:
+  int cell(double v, double lo, double width) const {
+    return std::clamp(static_cast<int>(std::floor((v - lo) / width)), 0, cells_ - 1);
+  }
+  const std::vector<BoundingBox>& boxes_;
+  double margin_, lo_x_, lo_y_, cell_x_, cell_y_;
+  int cells_;
+  std::vector<std::vector<int>> members_;
+};
+
+}  // namespace
+
+BoundingBox bounding_box(const SubdomainInput& subdomain) {
+  BoundingBox b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+  for (size_t i = 0; i < subdomain.x.size(); ++i) {
+    b.x0 = std::min(b.x0, subdomain.x[i]), b.x1 = std::max(b.x1, subdomain.x[i]);
+    b.y0 = std::min(b.y0, subdomain.y[i]), b.y1 = std::max(b.y1, subdomain.y[i]);
+  }
+  return b;
+}
+
+double snapping_length(const std::vector<BoundingBox>& boxes) {
+  double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
+  for (const BoundingBox& b : boxes) {
+    lo_x = std::min(lo_x, b.x0), hi_x = std::max(hi_x, b.x1);
+    lo_y = std::min(lo_y, b.y0), hi_y = std::max(hi_y, b.y1);
+  }
+  const double diagonal = std::hypot(hi_x - lo_x, hi_y - lo_y);
+  return 1e-9 * (diagonal > 0 && std::isfinite(diagonal) ? diagonal : 1.0);
+}
+
+std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& local,
+                                             const std::vector<int>& global_ids,
+                                             const ContactInput& local_contact,
+                                             const std::vector<BoundingBox>& boxes,
+                                             const std::vector<int>& bodies, double snap) {
+  const BoxGrid grid(boxes, 4 * snap);
+  std::vector<DofRecord> records;
+  for (size_t k = 0; k < local.size(); ++k) {
+    const SubdomainInput& sub = local[k];
+    const int s = global_ids[k];
+    const size_t n = sub.x.size();
+    std::vector<char> fixed(n, 0), slave(n, 0), master(n, 0);
+    std::vector<double> value(n, 0.0);
+    const std::vector<double>* gap = local_contact.gap_field.empty() || local_contact.gap_field[k].empty()
+                                         ? nullptr : &local_contact.gap_field[k];
+    for (size_t i = 0; i < sub.dirichlet_dofs.size(); ++i) {
+      fixed[static_cast<size_t>(sub.dirichlet_dofs[i])] = 1;
+      value[static_cast<size_t>(sub.dirichlet_dofs[i])] = sub.dirichlet_values.empty() ? 0.0 : sub.dirichlet_values[i];
+    }
+    if (!local_contact.slave_dofs.empty())
+      for (int dof : local_contact.slave_dofs[k]) slave[static_cast<size_t>(dof)] = 1;
+    if (!local_contact.master_dofs.empty())
+      for (int dof : local_contact.master_dofs[k]) master[static_cast<size_t>(dof)] = 1;
+    for (size_t i = 0; i < n; ++i) {
+      bool shared = false;
+      grid.for_each_containing(sub.x[i], sub.y[i], [&](int other) {
+        shared = shared || (other != s && bodies[static_cast<size_t>(other)] == sub.body);
+      });
+      if (shared || fixed[i] || slave[i] || master[i])
+        records.push_back({s, static_cast<int>(i), sub.body, sub.component.empty() ? 0 : sub.component[i],
+                           sub.x[i], sub.y[i], fixed[i] != 0, slave[i] != 0, master[i] != 0, value[i],
+                           gap ? (*gap)[i] : 0.0});
+    }
+  }
+  return records;
+}
+
+std::vector<double> pack(const std::vector<DofRecord>& records) {
+  std::vector<double> packed;
+  packed.reserve(records.size() * 9);
+  for (const DofRecord& r : records) {
+    const double flags = (r.fixed ? 1 : 0) + (r.slave ? 2 : 0) + (r.master ? 4 : 0);
+    packed.insert(packed.end(), {double(r.subdomain), double(r.dof), double(r.body), double(r.component),
+                                 r.x, r.y, flags, r.value, r.gap});
+  }
+  return packed;
+}
+
+std::vector<DofRecord> unpack(const std::vector<double>& packed) {
+  std::vector<DofRecord> records;
+  for (size_t k = 0; k + 9 <= packed.size(); k += 9) {
+    const int flags = static_cast<int>(packed[k + 6]);
+    records.push_back({static_cast<int>(packed[k]), static_cast<int>(packed[k + 1]), static_cast<int>(packed[k + 2]),
+                       static_cast<int>(packed[k + 3]), packed[k + 4], packed[k + 5], (flags & 1) != 0,
+                       (flags & 2) != 0, (flags & 4) != 0, packed[k + 7], packed[k + 8]});
+  }
+  return records;
+}
+
+std::vector<SegmentRecord> segment_records(const std::vector<SubdomainInput>& local,
+                                           const std::vector<int>& global_ids, const ContactInput& local_contact) {
+  std::vector<SegmentRecord> segments;
+  for (size_t k = 0; k < local_contact.master_segments.size(); ++k)
+    for (const auto& dofs : local_contact.master_segments[k]) {
+      const SubdomainInput& sub = local[k];
+      const auto a = static_cast<size_t>(dofs[0]), b = static_cast<size_t>(dofs[2]);
+      segments.push_back({global_ids[k], sub.body, dofs, sub.x[a], sub.y[a], sub.x[b], sub.y[b]});
+    }
+  return segments;
+}
+
+std::vector<double> pack(const std::vector<SegmentRecord>& segments) {
+  std::vector<double> packed;
+  for (const SegmentRecord& s : segments)
+    packed.insert(packed.end(), {double(s.subdomain), double(s.body), double(s.dofs[0]), double(s.dofs[1]),
+                                 double(s.dofs[2]), double(s.dofs[3]), s.ax, s.ay, s.bx, s.by});
+  return packed;
+}
+
+std::vector<SegmentRecord> unpack_segments(const std::vector<double>& packed) {
+  std::vector<SegmentRecord> segments;
+  for (size_t k = 0; k + 10 <= packed.size(); k += 10)
+    segments.push_back({static_cast<int>(packed[k]), static_cast<int>(packed[k + 1]),
+                        {static_cast<int>(packed[k + 2]), static_cast<int>(packed[k + 3]),
+                         static_cast<int>(packed[k + 4]), static_cast<int>(packed[k + 5])},
+                        packed[k + 6], packed[k + 7], packed[k + 8], packed[k + 9]});
+  return segments;
+}
+
+}  // namespace ffeti

@@ -1,0 +1,61 @@
+// What the constraint builder needs to know of each subdomain: records of the dofs that may
+// take part in a constraint and of the master segments, gathered from all ranks through a
+// flat encoding; the boxes of the subdomains and the snapping length that make positions
+// comparable.
+#pragma once
+
+#include "feti/problem_input.h"
+
+#include <array>
+#include <vector>
+
+namespace ffeti {
+
+/// A dof that may take part in a constraint: an interface candidate, a Dirichlet dof or a
+/// contact dof. Records of all ranks together are all the builder needs, so no rank ever
+/// holds the whole primal problem.
+struct DofRecord {
+  int subdomain, dof, body, component;  // subdomain: global index
+  double x, y;
+  bool fixed, slave, master;
+  double value;  // Dirichlet value where fixed
+  double gap;    // ContactInput::gap_field's entry (0 without one)
+};
+
+/// A master segment of the node-to-segment contact: its dofs (a_x, a_y, b_x, b_y) and ends.
+struct SegmentRecord {
+  int subdomain, body;
+  std::array<int, 4> dofs;
+  double ax, ay, bx, by;
+};
+
+/// The master segments of the local subdomains (global subdomain indices).
+std::vector<SegmentRecord> segment_records(const std::vector<SubdomainInput>& local,
+                                           const std::vector<int>& global_ids, const ContactInput& local_contact);
+std::vector<double> pack(const std::vector<SegmentRecord>& segments);
+std::vector<SegmentRecord> unpack_segments(const std::vector<double>& packed);
+
+struct BoundingBox {
+  double x0, y0, x1, y1;
+};
+
+BoundingBox bounding_box(const SubdomainInput& subdomain);
+
+/// Coordinates closer than this are the same node: 1e-9 of the diagonal of all boxes.
+double snapping_length(const std::vector<BoundingBox>& boxes);
+
+/// The records of the local subdomains: every Dirichlet and contact dof, and every dof
+/// inside the (slightly inflated) box of another subdomain of the same body, the only dofs
+/// that can be copies of another subdomain's. `boxes` and `bodies` cover all subdomains
+/// (global numbering); `global_ids[k]` is the global index of local subdomain k.
+std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& local,
+                                             const std::vector<int>& global_ids,
+                                             const ContactInput& local_contact,
+                                             const std::vector<BoundingBox>& boxes,
+                                             const std::vector<int>& bodies, double snap);
+
+/// Flat encodings of records for collective exchange (exact for indices below 2^53).
+std::vector<double> pack(const std::vector<DofRecord>& records);
+std::vector<DofRecord> unpack(const std::vector<double>& packed);
+
+}  // namespace ffeti

@@ -1,0 +1,147 @@
+#include "feti/constraint_rows.h"
+
+#include "base/errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <tuple>
+
+namespace ffeti {
+namespace {
+
+/// A record with its node snapped to a grid of the snapping length.
+struct Located {
+  const DofRecord* record;
+  long long ix, iy;
+  auto key() const { return std::tie(record->body, record->component, ix, iy); }
+  auto position() const { return std::tie(record->component, ix, iy); }
+};
+
+std::vector<Located> locate(const std::vector<DofRecord>& records, double snap,
+                            bool (*select)(const DofRecord&)) {
+  std::vector<Located> located;
+  for (const DofRecord& r : records)
+    if (select(r)) located.push_back({&r, std::llround(r.x / snap), std::llround(r.y / snap)});
+  std::stable_sort(located.begin(), located.end(), [](const Located& a, const Located& b) {
+    return std::tie(a.record->body, a.record->component, a.ix, a.iy, a.record->subdomain, a.record->dof) <
+           std::tie(b.record->body, b.record->component, b.ix, b.iy, b.record->subdomain, b.record->dof);
+  });
+  return located;
+}
+
+/// The slave dofs, one copy per physical dof: other copies are glued to it.
+std::vector<Located> unique_slaves(const std::vector<DofRecord>& records, double snap) {
+  std::vector<Located> slaves = locate(records, snap, [](const DofRecord& r) { return r.slave; });
+  slaves.erase(std::unique(slaves.begin(), slaves.end(),
+                           [](const Located& a, const Located& b) { return a.key() == b.key(); }),
+               slaves.end());
+  return slaves;
+}
+
+}  // namespace
+
+void add_gluing_rows(const std::vector<DofRecord>& records, double snap, std::vector<Row>& rows) {
+  const std::vector<Located> dofs = locate(records, snap, [](const DofRecord&) { return true; });
+  for (size_t first = 0; first < dofs.size();) {
+    size_t last = first + 1;
+    while (last < dofs.size() && dofs[last].key() == dofs[first].key()) ++last;
+    std::vector<const DofRecord*> free_copies, fixed_copies;
+    for (size_t k = first; k < last; ++k) {
+      const DofRecord& r = *dofs[k].record;
+      if (k > first && r.subdomain == dofs[k - 1].record->subdomain) {
+        if (r.dof == dofs[k - 1].record->dof) continue;  // the same dof, recorded twice
+        throw InputError("X[" + std::to_string(r.subdomain) + "], Y[" + std::to_string(r.subdomain) +
+                         "]: dofs " + std::to_string(dofs[k - 1].record->dof) + " and " +
+                         std::to_string(r.dof) + " of one subdomain share a position and component");
+      }
+      (r.fixed ? fixed_copies : free_copies).push_back(&r);
+    }
+    // Chain the free copies and tie the chain to one fixed copy: with a Dirichlet row on
+    // every fixed copy (Total FETI) or the fixed copies eliminated (FETI-1), B keeps full
+    // row rank; a node with k free copies gets k-1 rows.
+    if (!fixed_copies.empty() && !free_copies.empty()) free_copies.push_back(fixed_copies.front());
+    for (size_t k = 1; k < free_copies.size(); ++k)
+      rows.push_back({{{free_copies[k - 1]->subdomain, free_copies[k - 1]->dof, 1.0},
+                       {free_copies[k]->subdomain, free_copies[k]->dof, -1.0}},
+                      0.0, RowKind::gluing, true});
+    first = last;
+  }
+}
+
+void add_dirichlet_rows(const std::vector<DofRecord>& records, std::vector<Row>& rows) {
+  for (const DofRecord& r : records)  // records are sorted by (subdomain, dof)
+    if (r.fixed) rows.push_back({{{r.subdomain, r.dof, 1.0}}, r.value, RowKind::dirichlet, true});
+}
+
+void add_node_to_node_rows(const std::vector<DofRecord>& records, double gap, double snap, std::vector<Row>& rows) {
+  const std::vector<Located> slaves = unique_slaves(records, snap);
+  std::vector<Located> masters = locate(records, snap, [](const DofRecord& r) { return r.master; });
+  std::stable_sort(masters.begin(), masters.end(),
+                   [](const Located& a, const Located& b) { return a.position() < b.position(); });
+  const auto by_position = [](const Located& a, const Located& b) { return a.position() < b.position(); };
+  for (const Located& slave : slaves) {
+    auto range = std::equal_range(masters.begin(), masters.end(), slave, by_position);
+    auto master = std::find_if(range.first, range.second,
+                               [&](const Located& m) { return m.record->body != slave.record->body; });
+    if (master == range.second)
+      throw InputError("contactSlave[" + std::to_string(slave.record->subdomain) + "]: dof " +
+                       std::to_string(slave.record->dof) + " at (" + std::to_string(slave.record->x) +
+                       ", " + std::to_string(slave.record->y) +
+                       ") has no master dof of another body at the same position "
+                       "(node-to-node contact needs matching meshes)");
+    ContactRowGeometry geometry;
+    geometry.slave[0] = {slave.record->subdomain, slave.record->dof};
+    rows.push_back({{{slave.record->subdomain, slave.record->dof, 1.0},
+                     {master->record->subdomain, master->record->dof, -1.0}},
+                    gap + slave.record->gap, RowKind::contact, false, geometry});
+  }
+}
+
+std::vector<SlaveNode> slave_nodes(const std::vector<DofRecord>& records, double snap) {
+  const std::vector<Located> slaves = unique_slaves(records, snap);  // sorted by key(): component 0 first
+  std::vector<SlaveNode> nodes;
+  for (const Located& s : slaves) {
+    if (s.record->component != 0) continue;
+    const auto wanted = std::make_tuple(s.record->body, 1, s.ix, s.iy);  // the y dof of the same node
+    const auto partner = std::lower_bound(slaves.begin(), slaves.end(), wanted,
+                                          [](const Located& o, const auto& key) { return o.key() < key; });
+    if (partner == slaves.end() || partner->key() != wanted)
+      throw InputError("contactSlave[" + std::to_string(s.record->subdomain) + "]: dof " +
+                       std::to_string(s.record->dof) + " has no dof of component 1 at its node: list both "
+                       "components of each slave node for node-to-segment or obstacle contact");
+    nodes.push_back({s.record, partner->record});
+  }
+  return nodes;
+}
+
+void substitute_dirichlet(const std::vector<DofRecord>& records, std::vector<Row>& rows) {
+  const auto find = [&](int s, int dof) {
+    auto it = std::lower_bound(records.begin(), records.end(), std::make_pair(s, dof),
+                               [](const DofRecord& r, const std::pair<int, int>& key) {
+                                 return std::make_pair(r.subdomain, r.dof) < key;
+                               });
+    return it != records.end() && it->subdomain == s && it->dof == dof && it->fixed ? &*it : nullptr;
+  };
+  std::vector<Row> kept;
+  for (Row& row : rows) {
+    std::vector<ConstraintEntry> free_entries;
+    for (const ConstraintEntry& e : row.entries) {
+      if (const DofRecord* fixed = find(e.subdomain, e.dof))
+        row.rhs -= e.coefficient * fixed->value;
+      else
+        free_entries.push_back(e);
+    }
+    if (!free_entries.empty()) {
+      row.entries = std::move(free_entries);
+      kept.push_back(std::move(row));
+    } else if ((row.equality && std::abs(row.rhs) > 1e-12) || (!row.equality && row.rhs < 0)) {
+      throw InputError("dirichlet: the prescribed values violate a " +
+                       std::string(row.kind == RowKind::contact ? "contact" : "gluing") +
+                       " condition between fixed dofs (residual " + std::to_string(row.rhs) + ")");
+    }
+  }
+  rows = std::move(kept);
+}
+
+}  // namespace ffeti

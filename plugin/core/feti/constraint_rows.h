@@ -1,0 +1,40 @@
+// Inside build_constraints (not for other users): the rows of B in the making and the
+// functions that add each kind. constraint_rows.cpp defines those that match dofs by their
+// snapped position (gluing, Dirichlet, node to node, the slave nodes); contact_rows.cpp
+// those of the slave nodes (node to segment, obstacle).
+#pragma once
+
+#include "feti/constraints.h"
+
+#include <vector>
+
+namespace ffeti {
+
+/// A row of B in the making; `geometry` only for a contact row.
+struct Row {
+  std::vector<ConstraintEntry> entries;
+  double rhs = 0;
+  RowKind kind = RowKind::gluing;
+  bool equality = true;
+  ContactRowGeometry geometry{};
+};
+
+/// A slave node of the node-to-segment or obstacle contact: its two dofs and position.
+struct SlaveNode {
+  const DofRecord* x_dof;
+  const DofRecord* y_dof;
+};
+
+// In all of these `records` are sorted by (subdomain, dof).
+std::vector<SlaveNode> slave_nodes(const std::vector<DofRecord>& records, double snap);
+void add_gluing_rows(const std::vector<DofRecord>& records, double snap, std::vector<Row>& rows);
+void add_dirichlet_rows(const std::vector<DofRecord>& records, std::vector<Row>& rows);
+void add_node_to_node_rows(const std::vector<DofRecord>& records, double gap, double snap, std::vector<Row>& rows);
+void add_node_to_segment_rows(const std::vector<DofRecord>& records, const std::vector<SegmentRecord>& segments,
+                              const ContactInput& contact, double snap, std::vector<Row>& rows);
+void add_obstacle_rows(const std::vector<DofRecord>& records, const ContactInput& contact, double snap,
+                       std::vector<Row>& rows);
+/// FETI-1: known Dirichlet values move to the right-hand side.
+void substitute_dirichlet(const std::vector<DofRecord>& records, std::vector<Row>& rows);
+
+}  // namespace ffeti

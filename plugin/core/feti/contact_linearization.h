@@ -1,0 +1,23 @@
+// A contact row's linear condition in closed form (node to segment, rigid obstacle): the
+// set-up builds its rows from it and the sensitivity analysis differentiates it.
+#pragma once
+
+#include <array>
+
+namespace ffeti {
+
+using Point = std::array<double, 2>;
+
+/// Node to segment: slave s projected on segment a-b (the body of the segment on its left),
+/// p = (1 - xi) a + xi b, n the outward normal; n.(u_p - u_s) <= n.(s - p).
+/// `clamp_xi` keeps p on the segment (the set-up); the derivative of a row keeps its pairing
+/// and differentiates the unclamped formula.
+struct LinearizedRow {
+  std::array<double, 6> coefficients;  ///< of (s_x, s_y, a_x, a_y, b_x, b_y); obstacle: (s_x, s_y)
+  double gap;
+};
+LinearizedRow node_to_segment_row(const Point& s, const Point& a, const Point& b, bool clamp_xi = true);
+/// Rigid obstacle through `point` with outward unit normal n: -n.u_s <= n.(s - point).
+LinearizedRow obstacle_row(const Point& s, const Point& point, const Point& normal);
+
+}  // namespace ffeti
