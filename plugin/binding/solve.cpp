@@ -86,8 +86,17 @@ long feti_history(const long& id, std::string* const& key, KN<double>* const& va
   });
 }
 
-double feti_info(const long& id, std::string* const& key) {
+double feti_info(const long& id, std::string* const& key_given) {
   return guarded("fetiInfo", [&] {
+    // "settle" counted CG steps while fetiSolve's settle= counts rounds: renamed, old name kept.
+    static bool settle_deprecation_said = false;
+    const std::string* key = key_given;
+    const std::string renamed = "settle_steps";
+    if (*key_given == "settle") {
+      if (!settle_deprecation_said) std::printf("ffeti: fetiInfo(P, \"settle\") is deprecated; use \"settle_steps\"\n");
+      settle_deprecation_said = true;
+      key = &renamed;
+    }
     const Handle& h = handle(id);
     const FetiResult* result = h.result ? &*h.result : nullptr;
     std::string known;

@@ -86,7 +86,7 @@ TEST(Mprgp, ReportsTheIterationLimitInsteadOfHiding) {
                                    settings, [](const Vec&, const Vec&, double gp) { return gp <= 0; });
   EXPECT_EQ(result.status, SolveStatus::max_iterations);
   EXPECT_LE(result.counts.hessian, 5 + 2);  // a step in progress may finish (<= 2 products)
-  EXPECT_GT(result.projected_gradient_norm, 0);
+  EXPECT_GT(result.gradient_norm, 0);
 }
 
 TEST(Mprgp, DetectsAnIndefiniteOperator) {

@@ -75,7 +75,7 @@ DualQp DualSystem::free_rows_qp(const DualData& data, const DualSolveSettings& s
   // mu = T nu: every iterate meets G mu = 0 but for the rows of C (docs/algorithms.md).
   Stopwatch projector_clock;
   const FreeRowProjector& T = free_rows();  // built at the first solve: its time is reported apart
-  result.projector_seconds = projector_clock.seconds();
+  result.times.free_rows = projector_clock.seconds();
   const int m = rows();
   auto work = std::make_shared<std::array<Vec, 3>>();  // T x, P F P T x, x without its Ker T part
   for (Vec& v : *work) v.resize(m);

@@ -41,12 +41,12 @@ SmalbeSettings smalbe_within(const DualSolveSettings& settings) {
 }
 
 /// A solver's outcome into the solution, keeping the norm estimate's count.
-void record(DualSolution& result, const IterationCounts& counts, SolveStatus status, double gradient_norm) {
+void record(DualSolution& result, const QpResult& solved) {
   const int estimate = result.counts.hessian_norm_estimate;
-  result.counts = counts;
+  result.counts = solved.counts;
   result.counts.hessian_norm_estimate = estimate;
-  result.status = status;
-  result.gradient_norm = gradient_norm;
+  result.status = solved.status;
+  result.gradient_norm = solved.gradient_norm;
 }
 
 }  // namespace
@@ -85,7 +85,7 @@ Vec DualSystem::run(const DualQp& qp, const Vec* lower, const DualStop& stop, co
         qp.hessian, qp.b, x, g, cg,
         [&](const Vec& xi, const Vec& gi, double norm) { return converged(xi, gi.lpNorm<Eigen::Infinity>(), norm); },
         settings.monitor, qp.preconditioner);
-    record(result, r.counts, r.status, r.gradient_norm);
+    record(result, r);
   } else if (!qp.range_projector) {  // bounds only: MPRGP
     const MprgpResult r = mprgp(
         qp.hessian, qp.b, *lower, qp.hessian_norm, x, g, false, mprgp_within(settings),
@@ -93,7 +93,7 @@ Vec DualSystem::run(const DualQp& qp, const Vec* lower, const DualStop& stop, co
           return converged(xi, projected_gradient(xi, gi, *lower).lpNorm<Eigen::Infinity>(), norm);
         },
         settings.monitor, qp.preconditioner);
-    record(result, r.counts, r.status, r.projected_gradient_norm);
+    record(result, r);
   } else {  // bounds and an equality part: SMALBE
     SmalbeProblem problem;
     problem.hessian = qp.hessian;
@@ -106,7 +106,7 @@ Vec DualSystem::run(const DualQp& qp, const Vec* lower, const DualStop& stop, co
         problem, x, smalbe_within(settings),
         [&](const Vec& xi, const Vec& gP, const Vec&) { return converged(xi, gP.lpNorm<Eigen::Infinity>(), gP.norm()); },
         settings.monitor);
-    record(result, r.counts, r.status, r.projected_gradient_norm);
+    record(result, r);
   }
   Vec mu = multipliers(x);
   if (qp.equality_norm) result.equality_norm = qp.equality_norm(mu);
@@ -119,7 +119,7 @@ DualSolution DualSystem::solved_by_subdomains(const DualData& data, DualSolution
   result.lambda = Vec::Zero(0);
   result.u.resize(subdomains_.size());
   for (size_t s = 0; s < subdomains_.size(); ++s) subdomains_[s]->apply_pseudo_inverse(data.loads[s], result.u[s]);
-  result.solve_seconds = clock.seconds();
+  result.times.solve = clock.seconds();
   return result;
 }
 
@@ -166,10 +166,10 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
   }
   result.violation = kkt_stop.measure();
   result.scale_evaluations = kkt_stop.evaluations();
-  result.solve_seconds = solve_clock.seconds() - result.norm_estimate_seconds - result.projector_seconds;
-  result.operator_seconds += F_->application_seconds() - operator_start;
-  if (preconditioner_) result.preconditioner_seconds = preconditioner_->application_seconds() - preconditioner_start;
-  result.check_seconds = check_seconds_ - check_start;
+  result.times.solve = solve_clock.seconds() - result.times.norm_estimate - result.times.free_rows;
+  result.times.dual_operator += F_->application_seconds() - operator_start;
+  if (preconditioner_) result.times.preconditioner = preconditioner_->application_seconds() - preconditioner_start;
+  result.times.primal_checks = check_seconds_ - check_start;
   recover(data, std::move(lambda), result);
   return result;
 }

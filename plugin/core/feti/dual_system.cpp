@@ -101,8 +101,8 @@ double DualSystem::estimated_norm(CachedNorm& cache, const LinearOperator& H,
     const NormEstimate estimate = estimate_norm(H, rows(), settings, start_filter);
     cache.norm = estimate.norm;
     cache.cost = estimate.multiplications;
-    result.norm_estimate_seconds = clock.seconds();
-    result.operator_seconds -= F_->application_seconds() - operator_start;  // the estimate's, not the solve's
+    result.times.norm_estimate = clock.seconds();
+    result.times.dual_operator -= F_->application_seconds() - operator_start;  // the estimate's, not the solve's
   }
   result.counts.hessian_norm_estimate += cache.cost;
   return *cache.norm;
@@ -174,7 +174,7 @@ void DualSystem::recover(const DualData& data, Vec lambda, DualSolution& result)
   Stopwatch recovery_clock;
   result.u = recover_primal(*F_, coarse_.get(), constraints_, data.loads, data.c, lambda);
   result.lambda = std::move(lambda);
-  result.recovery_seconds = recovery_clock.seconds();
+  result.times.recovery = recovery_clock.seconds();
 }
 
 std::vector<DualSolution> DualSystem::solve(const std::vector<DualData>& data,
@@ -209,11 +209,11 @@ std::vector<DualSolution> DualSystem::solve(const std::vector<DualData>& data,
   const double seconds = solve_clock.seconds() / static_cast<double>(data.size());
   const double operator_seconds = (F_->application_seconds() - operator_start) / static_cast<double>(data.size());
   for (size_t j = 0; j < data.size(); ++j) {
-    results[j].operator_seconds = operator_seconds;
+    results[j].times.dual_operator = operator_seconds;
     results[j].status = cg_results[j].status;
     results[j].counts = cg_results[j].counts;
     results[j].gradient_norm = cg_results[j].gradient_norm;
-    results[j].solve_seconds = seconds;
+    results[j].times.solve = seconds;
     recover(data[j], mu[j] + data[j].lambda_tilde, results[j]);
   }
   return results;

@@ -13,6 +13,7 @@
 #include "feti/dual_operator.h"
 #include "feti/dual_qp.h"
 #include "feti/free_row_projector.h"
+#include "feti/phase_times.h"
 #include "feti/stopping_test.h"
 #include "parallel/subdomain_sum.h"
 #include "qp/norm_estimate.h"
@@ -83,11 +84,7 @@ struct DualSolution {
   int scale_evaluations = 0;     ///< relative_kkt: primal checks (a K^+ application each)
   Vec lambda;                    ///< multipliers, rows ordered as constraints()
   std::vector<Vec> u;            ///< primal solution per subdomain of this rank
-  double norm_estimate_seconds = 0, solve_seconds = 0, recovery_seconds = 0;  ///< this rank's
-  double projector_seconds = 0;  ///< building T of coarse "free-rows" (first solve of a system only)
-  double operator_seconds = 0;   ///< the part of solve_seconds spent applying F (this rank's)
-  double preconditioner_seconds = 0;  ///< the part spent applying the preconditioner
-  double check_seconds = 0;      ///< the part spent in the stopping test's primal checks
+  PhaseTimes times;              ///< this rank's: norm_estimate, free_rows, solve (and its parts), recovery
 };
 
 class DualSystem {
@@ -127,7 +124,7 @@ class DualSystem {
 
   /// Solves the dual problems of several right-hand sides. On the CG paths their CG runs go
   /// in lockstep and share each application of F (a block of vectors, one pass over each
-  /// factor); each one's iterations and counts are those of solve() alone, its solve_seconds
+  /// factor); each one's iterations and counts are those of solve() alone, its solve time
   /// the block's time divided by the count. Other paths solve one after the other. Collective.
   std::vector<DualSolution> solve(const std::vector<DualData>& data, const DualSolveSettings& settings) const;
 

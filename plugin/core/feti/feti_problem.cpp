@@ -197,26 +197,8 @@ void FetiProblem::compute_dual_data() {
 }
 
 FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
-  DualSolution dual = dual_->solve(data_, settings);
   FetiResult result;
-  result.status = dual.status;
-  result.path = dual.path;
-  result.counts = dual.counts;
-  result.gradient_norm = dual.gradient_norm;
-  result.gradient_reference = dual.gradient_reference;
-  result.equality_norm = dual.equality_norm;
-  result.equality_reference = dual.equality_reference;
-  result.violation = dual.violation;
-  result.scale_evaluations = dual.scale_evaluations;
-  result.u = std::move(dual.u);
-  result.lambda = std::move(dual.lambda);
-  result.times.norm_estimate = dual.norm_estimate_seconds;
-  result.times.free_rows = dual.projector_seconds;
-  result.times.solve = dual.solve_seconds;
-  result.times.dual_operator = dual.operator_seconds;
-  result.times.preconditioner = dual.preconditioner_seconds;
-  result.times.primal_checks = dual.check_seconds;
-  result.times.recovery = dual.recovery_seconds;
+  static_cast<DualSolution&>(result) = dual_->solve(data_, settings);
   result.phases = "constraints,factorization";
   if (dual_->coarse()) result.phases += ",coarse_space";
   if (result.path != "cholesky") result.phases += ",dual_data";

@@ -27,31 +27,13 @@ struct FetiSetupSettings {
   DualPreconditioner preconditioner = DualPreconditioner::lumped;
 };
 
-struct PhaseTimes {  ///< wall-clock seconds; over several ranks, the slowest rank's
-  double constraints = 0, factorization = 0, coarse_space = 0, dual_data = 0;
-  double norm_estimate = 0, free_rows = 0, solve = 0, recovery = 0, kkt = 0;
-  double dual_operator = 0;  ///< the part of solve spent applying F
-  double preconditioner = 0;  ///< the part of solve spent applying the preconditioner
-  double primal_checks = 0;   ///< the part of solve spent in the stopping test's primal checks
-};
-
-struct FetiResult {
-  SolveStatus status = SolveStatus::invalid_input;
-  std::string path;              ///< cholesky, cg, projected_cg, mprgp or smalbe
+/// A solve of the problem: the dual solve's outcome (its times the slowest rank's), and
+/// what the problem adds to it.
+struct FetiResult : DualSolution {
   std::string phases;            ///< the phases this solve ran, comma separated
-  IterationCounts counts;
-  double gradient_norm = 0;      ///< final ||gP|| (absolute) and its reference ||b||
-  double gradient_reference = 0;
-  double equality_norm = 0;      ///< final ||G lambda - e|| and its reference ||e||
-  double equality_reference = 0;
-  double violation = -1;       ///< relative_kkt stop: the last check's measure (-1: no check ran)
-  int scale_evaluations = 0;   ///< relative_kkt stop: ||u(lambda)||_inf computed
-  std::vector<Vec> u;            ///< primal solution per subdomain of this rank
-  Vec lambda;                    ///< multipliers, rows ordered as constraints()
   double energy = 0;             ///< 1/2 u'Ku - f'u
   KktResiduals kkt;
   int active_contact = 0;        ///< contact rows with lambda > 0
-  PhaseTimes times;              ///< norm_estimate, free_rows (building T), solve, recovery, kkt of this call
 };
 
 /// What one rank holds and spent, for load-balance reports.

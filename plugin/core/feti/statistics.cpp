@@ -41,7 +41,7 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
       {"expansion", result->counts.expansion},
       {"proportioning", result->counts.proportioning},
       {"expansion_fallback", result->counts.expansion_fallback},
-      {"settle", result->counts.settle},
+      {"settle_steps", result->counts.settle},
       {"penalty_increases", result->counts.penalty_increases},
       {"preconditioner_applications", result->counts.preconditioner},
       {"energy", result->energy},

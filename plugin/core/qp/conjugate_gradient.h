@@ -17,11 +17,7 @@ struct CgSettings {
   void validate() const;
 };
 
-struct CgResult {
-  SolveStatus status = SolveStatus::max_iterations;
-  IterationCounts counts;
-  double gradient_norm = 0;  ///< ||A x - b||_2 at exit
-};
+using CgResult = QpResult;
 
 /// Minimizes 1/2 x'Ax - b'x from the start x (updated in place); g = Ax - b on return.
 /// `stop` receives ||g||_2. Convergence is declared only on the true gradient A x - b

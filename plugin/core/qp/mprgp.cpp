@@ -13,6 +13,24 @@ void free_gradient(const Vec& x, const Vec& g, const Vec& lower, Vec& phi) {
   for (Eigen::Index i = 0; i < x.size(); ++i) phi[i] = above_bound(x[i], lower[i]) ? g[i] : 0.0;
 }
 
+/// phi'phit and ||phit||^2 of the reduced free gradient phit_i = min((x_i - l_i) / abar, phi_i)
+/// on the bounded free components (phi_i where unbounded, 0 on the active set).
+struct ReducedFreeGradient {
+  double dot_phi = 0, squared_norm = 0;
+};
+
+ReducedFreeGradient reduced_free_gradient(const Vec& x, const Vec& phi, const Vec& lower, double abar) {
+  ReducedFreeGradient r;
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
+    const double phit = (!above_bound(x[i], lower[i]) || lower[i] == kUnbounded)
+                            ? phi[i]
+                            : std::min((x[i] - lower[i]) / abar, phi[i]);
+    r.dot_phi += phit * phi[i];
+    r.squared_norm += phit * phit;
+  }
+  return r;
+}
+
 /// Largest step a >= 0 with x - a p >= l on the bounded components.
 double feasible_step(const Vec& x, const Vec& p, const Vec& lower) {
   double step = std::numeric_limits<double>::infinity();
@@ -93,21 +111,18 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
   // gradient is guaranteed to; a step that does not restarts CG from the free gradient.
   bool continued = false;
   for (int iteration = 0;; ++iteration) {
-    // Split the gradient; chopped gradient beta and reduced free gradient phit.
-    double beta_sq = 0, phit_phi = 0, phit_sq = 0, gp_sq = 0;
+    // Split the gradient: chopped gradient beta, and the reduced free gradient's products.
+    double beta_sq = 0, gp_sq = 0;
     for (Eigen::Index i = 0; i < n; ++i) {
-      const bool free = above_bound(x[i], lower[i]);
-      beta[i] = free ? 0.0 : std::min(g[i], 0.0);
-      const double phit =
-          (!free || lower[i] == kUnbounded) ? phi[i] : std::min((x[i] - lower[i]) / abar, phi[i]);
+      beta[i] = above_bound(x[i], lower[i]) ? 0.0 : std::min(g[i], 0.0);
       beta_sq += beta[i] * beta[i];
-      phit_phi += phit * phi[i];
-      phit_sq += phit * phit;
       gp_sq += phi[i] * phi[i] + beta[i] * beta[i];
     }
-    result.projected_gradient_norm = std::sqrt(gp_sq);
-    if (monitor) monitor({"mprgp", iteration, result.projected_gradient_norm, 0.0, counts.hessian, off_bound_count(x, lower)});
-    if (stop(x, g, result.projected_gradient_norm)) {
+    const ReducedFreeGradient reduced = reduced_free_gradient(x, phi, lower, abar);
+    const double phit_phi = reduced.dot_phi, phit_sq = reduced.squared_norm;
+    result.gradient_norm = std::sqrt(gp_sq);
+    if (monitor) monitor({"mprgp", iteration, result.gradient_norm, 0.0, counts.hessian, off_bound_count(x, lower)});
+    if (stop(x, g, result.gradient_norm)) {
       result.status = SolveStatus::converged;
       return result;
     }
@@ -124,6 +139,8 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
 
     if (beta_sq <= settings.gamma * settings.gamma * phit_phi) {
       // x is proportional: conjugate gradient step, or expansion if it would leave the set.
+      // Not conjugate_gradient(): each step chooses among CG, expansion and proportioning on a
+      // face that changes, and conjugacy is kept only within a face.
       multiply(p, Ap);
       const double pAp = p.dot(Ap);
       if (!(pAp > 0)) {
@@ -161,13 +178,9 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
           x -= a_f * p;
           g -= a_f * Ap;
           free_gradient(x, g, lower, phi);
-          double phi_reduced = 0, reduced_sq = 0;  // phi'phit and ||phit||^2 at x - a_f p
-          for (Eigen::Index i = 0; i < n; ++i) {
-            const double phit = lower[i] == kUnbounded ? phi[i] : std::min((x[i] - lower[i]) / abar, phi[i]);
-            phi_reduced += phi[i] * phit;
-            reduced_sq += phit * phit;
-          }
-          const double guaranteed = f_half - abar * phi_reduced + 0.5 * a_norm * abar * abar * reduced_sq;
+          const ReducedFreeGradient at_half = reduced_free_gradient(x, phi, lower, abar);  // at x - a_f p
+          const double guaranteed =
+              f_half - abar * at_half.dot_phi + 0.5 * a_norm * abar * abar * at_half.squared_norm;
           multiply(trial, A_trial);
           trial_gradient = A_trial - b;
           if (0.5 * trial.dot(trial_gradient - b) <= guaranteed) {

@@ -28,11 +28,7 @@ struct MprgpSettings {
   void validate() const;
 };
 
-struct MprgpResult {
-  SolveStatus status = SolveStatus::max_iterations;
-  IterationCounts counts;
-  double projected_gradient_norm = 0;  ///< ||gP(x)||_2 at exit
-};
+using MprgpResult = QpResult;
 
 /// Projected gradient gP = phi + beta of ALGORITHMS.md section 4:
 /// gP_i = g_i where x_i is free (unbounded or x_i > l_i), min(g_i, 0) where x_i = l_i.

@@ -52,6 +52,13 @@ struct IterationCounts {
   IterationCounts& operator+=(const IterationCounts& other);
 };
 
+/// The outcome of one QP solve (CG, MPRGP; SMALBE adds its own).
+struct QpResult {
+  SolveStatus status = SolveStatus::max_iterations;
+  IterationCounts counts;
+  double gradient_norm = 0;  ///< at exit: ||gP(x)||_2 (CG: ||Ax - b||_2; SMALBE: of the Lagrangian without penalty)
+};
+
 /// One progress line: iteration number (SMALBE: the outer one), projected gradient norm,
 /// equality residual norm (0 where there is none), Hessian multiplications of the solve so
 /// far, and the number of bounded components above their bound (for the FETI dual: contact

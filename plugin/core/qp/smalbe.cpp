@@ -73,10 +73,10 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
       const double q_norm = Qx.norm();
       // Projected gradient of L(x, nu, 0): the gradient without its penalty part rho Q x.
       const Vec gp0 = projected_gradient(xi, gi - rho * Qx, lower);
-      result.projected_gradient_norm = gp0.norm();
+      result.gradient_norm = gp0.norm();
       result.equality_norm = q_norm;
       if (monitor)
-        monitor({"smalbe", outer, result.projected_gradient_norm, q_norm, applications, off_bound_count(xi, lower)});
+        monitor({"smalbe", outer, result.gradient_norm, q_norm, applications, off_bound_count(xi, lower)});
       if (stop(xi, gp0, Qx)) return globally_done = true;
       // At least one inner step per outer iteration: a multiplier update that the inner
       // solver does not answer only grows nu, and can stall the outer loop for many rounds.

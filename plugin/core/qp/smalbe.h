@@ -30,10 +30,7 @@ struct SmalbeSettings {
   void validate() const;
 };
 
-struct SmalbeResult {
-  SolveStatus status = SolveStatus::max_iterations;
-  IterationCounts counts;
-  double projected_gradient_norm = 0;  ///< ||gP(x, nu, rho = 0)||_2 at exit
+struct SmalbeResult : QpResult {
   double equality_norm = 0;            ///< ||Q x||_2 at exit
   double rho = 0;                      ///< final penalty
 };

@@ -43,24 +43,23 @@ ContactClassification classify_contact(const FetiProblem& problem, const FetiRes
 /// accuracy to which its multipliers are known, at most 1e-2.
 double default_classification_threshold(double state_tolerance);
 
-struct SensitivityResult {
-  SolveStatus status = SolveStatus::invalid_input;
-  std::string path;               ///< the sensitivity QP's: cholesky, cg, projected_cg, mprgp, smalbe
+/// One solve of the sensitivity QP (a design direction or an adjoint).
+struct DerivativeSolve {
+  SolveStatus status = SolveStatus::invalid_input;  ///< adjoint: weakly_active when not solved
+  std::string path;               ///< the sensitivity QP's path_name
   IterationCounts counts;
+  KktResiduals kkt;               ///< of the sensitivity QP, recomputed in primal form
+  double seconds = 0;             ///< the whole call: derivatives, dual data, solve, recovery, KKT
+};
+
+/// A direction's solve and the derivatives it gives.
+struct SensitivityResult : DerivativeSolve {
   std::vector<Vec> z;             ///< u'(alpha; beta) per subdomain of this rank
   Vec multipliers;                ///< lambda'(alpha; beta) on the rows E, S, W (in that row order)
   Vec contact_multipliers;        ///< lambda' per contact row of the state, in its row order (0 where inactive)
-  KktResiduals kkt;               ///< of the sensitivity QP, recomputed in primal form
-  double seconds = 0;             ///< whole direction: derivatives, dual data, solve, recovery, KKT
 };
 
-struct AdjointResult {
-  SolveStatus status = SolveStatus::invalid_input;  ///< weakly_active: not solved
-  std::string path;
-  IterationCounts counts;
-  KktResiduals kkt;
-  double seconds = 0;
-};
+using AdjointResult = DerivativeSolve;
 
 /// What the sensitivity solves of one state solution cost so far (over all ranks).
 struct SensitivityCounters {
