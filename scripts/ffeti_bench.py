@@ -1,14 +1,30 @@
 """Shared helpers of the benchmark drivers: run FreeFEM scripts, parse their result lines,
-describe the machine."""
+describe the machine, and keep each measured table as raw data.
+
+Every measured table of a results page goes through one path: its rows (dicts, one per
+measurement, the values as the run printed them or as a driver computed them, full
+precision) are written to docs/results/<page>-<table>.csv by write_csv, and the page's
+Markdown table and plots are drawn from the rows read back from that file (markdown_table;
+read_csv re-reads them, so a driver can re-render its page from the CSVs alone). Neither
+pandas nor tabulate is installed from Debian here: markdown_table is the one small
+formatter all drivers share. The run itself (machine, load, duration) is one more table,
+<page>-run.csv (begin_run / end_run, machine_line).
+
+FFETI_RESULTS overrides the output folder (to try a driver without touching docs/results)."""
+import csv
+import datetime
 import os
 import platform
 import re
 import subprocess
 import tempfile
+import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EDP = os.path.join(ROOT, "edp")
-OUT = os.path.join(ROOT, "docs", "results")
+# The readings (hand-written, docs/results/*-reading.md) stay in the repository's folder.
+READINGS = os.path.join(ROOT, "docs", "results")
+OUT = os.environ.get("FFETI_RESULTS", READINGS)
 MPI_ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 
 
@@ -28,13 +44,13 @@ def run(script, *args, ranks=0, prefixes=("RESULT", "DIRECT", "RANK")):
         text = output.read()
     if process.returncode != 0:
         raise subprocess.CalledProcessError(process.returncode, command, text)
-    peak_mb = usage.ru_maxrss / 1024  # kB on Linux
+    peak_mb = usage.ru_maxrss / 1024  # kB on Linux: MB, unrounded
     lines = {prefix: [] for prefix in prefixes}
     for line in text.splitlines():
         words = line.split()
         if words and words[0] in lines:
             fields = dict(kv.split("=", 1) for kv in words[1:] if "=" in kv)
-            fields["process_peak_mb"] = f"{peak_mb:.0f}"
+            fields["process_peak_mb"] = repr(peak_mb)
             lines[words[0]].append(fields)
     if not any(lines.values()):
         raise RuntimeError(f"no result line from {' '.join(command)}:\n{text[-2000:]}")
@@ -58,6 +74,7 @@ def f(row, key):
 
 
 def machine():
+    """CPU, cores, memory and system of this machine, as one row (dict)."""
     cpu = "unknown CPU"
     try:
         with open("/proc/cpuinfo") as info:
@@ -67,14 +84,113 @@ def machine():
     memory = ""
     try:
         with open("/proc/meminfo") as info:
-            memory = f", {int(info.readline().split()[1]) / 2**20:.0f} GiB"
+            memory = repr(int(info.readline().split()[1]) / 2**20)
     except (OSError, ValueError, IndexError):
         pass
-    return f"{cpu}, {os.cpu_count()} cores{memory}, {platform.system()} {platform.release()}"
+    return {"cpu": cpu, "cores": os.cpu_count(), "memory_gib": memory,
+            "system": f"{platform.system()} {platform.release()}"}
+
+
+def load_average():
+    """The 1-minute load average (/proc/loadavg), or '' where there is none."""
+    try:
+        with open("/proc/loadavg") as file:
+            return file.read().split()[0]
+    except (OSError, IndexError):
+        return ""
+
+
+def begin_run():
+    """What a driver notes as its run starts: the time and the machine's load (other work)."""
+    return {"started": time.time(), "load_at_start": load_average()}
+
+
+def end_run(page, begun):
+    """Writes the run's own row, docs/results/<page>-run.csv: the machine, the date, the whole
+    run in seconds and the load average at its start and end; returns it read back."""
+    row = dict(machine(), date=datetime.datetime.now().isoformat(timespec="seconds"),
+               elapsed_s=repr(time.time() - begun["started"]), load_at_start=begun["load_at_start"],
+               load_at_end=load_average())
+    return write_csv(page, "run", [row])[0]
+
+
+def machine_line(run_row):
+    """The page's machine line, from its run row: the machine, the whole run and the load
+    it ran under (the 1-minute load average; on a shared machine other work slows times)."""
+    memory = f", {float(run_row['memory_gib']):.0f} GiB" if run_row.get("memory_gib") else ""
+    line = f"{run_row['cpu']}, {run_row['cores']} cores{memory}, {run_row['system']}."
+    if run_row.get("elapsed_s"):
+        line += f" Whole run: {float(run_row['elapsed_s']):.0f} s."
+    if run_row.get("load_at_start"):
+        line += (f" Load average (1 min) {float(run_row['load_at_start']):.1f} as the run started, "
+                 f"{float(run_row['load_at_end']):.1f} as it ended, on {run_row['cores']} cores")
+        line += (": other work shared the machine, so times are those of a loaded machine."
+                 if float(run_row["load_at_start"]) >= 0.5 else ".")
+    return line
+
+
+def csv_path(page, table):
+    return os.path.join(OUT, f"{page}-{table}.csv")
+
+
+def write_csv(page, table, rows):
+    """Writes one measured table to docs/results/<page>-<table>.csv: one line per row (dict),
+    the columns the union of the rows' keys in first-seen order (empty where a row has no
+    such key), values as given (the run's printed text, or a driver's float written by repr:
+    full precision); list and dict values (per-rank details) are not written. Returns the
+    rows read back from the file, to render and plot from."""
+    os.makedirs(OUT, exist_ok=True)
+    columns = []
+    for row in rows:
+        columns += [key for key, value in row.items() if key not in columns and not isinstance(value, (list, dict))]
+    with open(csv_path(page, table), "w", newline="") as file:
+        writer = csv.DictWriter(file, fieldnames=columns, restval="", extrasaction="ignore")
+        writer.writeheader()
+        for row in rows:
+            writer.writerow({key: repr(value) if isinstance(value, float) else value for key, value in row.items()})
+    return read_csv(page, table)
+
+
+def read_csv(page, table):
+    """The rows of docs/results/<page>-<table>.csv as dicts of strings ('' where empty)."""
+    with open(csv_path(page, table), newline="") as file:
+        return list(csv.DictReader(file))
+
+
+def cell(row, spec):
+    """One table cell of a row: spec a key (its text as written; '-' when empty), a (key,
+    format spec) pair (the number formatted, e.g. ".3f", ".1e", ".1%"; '-' when empty) or a
+    function of the row returning the cell's text."""
+    if callable(spec):
+        return str(spec(row))
+    key, number_format = spec if isinstance(spec, tuple) else (spec, None)
+    text = row.get(key, "")
+    if text == "":
+        return "-"
+    return format(float(text), number_format) if number_format else text
+
+
+def markdown_table(rows, columns):
+    """The Markdown lines of a table: columns a list of (header, cell spec) (see cell), one
+    line per row (rows as read back by write_csv / read_csv)."""
+    lines = ["| " + " | ".join(header for header, _ in columns) + " |", "|" + "---|" * len(columns)]
+    lines += ["| " + " | ".join(cell(row, spec) for _, spec in columns) + " |" for row in rows]
+    return lines
+
+
+def span(values, number_format="", unit=""):
+    """'a to b' (or 'a' when all equal) of the smallest and largest of values, formatted."""
+    low, high = format(min(values), number_format), format(max(values), number_format)
+    return f"{low}{unit}" if low == high else f"{low} to {high}{unit}"
+
+
+def listing(values, number_format=""):
+    """'a, b, c' of values, formatted."""
+    return ", ".join(format(v, number_format) for v in values)
 
 
 def save_page(name, lines):
-    """Writes a generated page docs/results/<name>."""
+    """Writes a generated page docs/results/<name> (rendered from its CSVs)."""
     os.makedirs(OUT, exist_ok=True)
     with open(os.path.join(OUT, name), "w") as page:
         page.write("\n".join(lines))
@@ -82,8 +198,9 @@ def save_page(name, lines):
 
 def plot_cost_over_unknowns(runs, title, name, legend_columns=3):
     """Two log-log panels, Hessian multiplications and dual solve time against the unknowns,
-    one line per case of `runs` ({label: [result, ...]}); rows without a multiplication (a
-    scene with nothing to iterate) are left out. Saved as docs/results/<name>."""
+    one line per case of `runs` ({label: [row, ...]}, rows as read back from a CSV); rows
+    without a multiplication (a scene with nothing to iterate) are left out. Saved as
+    docs/results/<name>."""
     import matplotlib.pyplot as plt  # the drivers choose the backend first
 
     fig, axes = plt.subplots(1, 2, figsize=(11, 5.4))
