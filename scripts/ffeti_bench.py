@@ -120,7 +120,8 @@ def machine_line(run_row):
     memory = f", {float(run_row['memory_gib']):.0f} GiB" if run_row.get("memory_gib") else ""
     line = f"{run_row['cpu']}, {run_row['cores']} cores{memory}, {run_row['system']}."
     if run_row.get("elapsed_s"):
-        line += f" Whole run: {float(run_row['elapsed_s']):.0f} s."
+        elapsed = float(run_row["elapsed_s"])
+        line += f" Whole run: {elapsed:.{0 if elapsed >= 10 else 1}f} s."
     if run_row.get("load_at_start"):
         line += (f" Load average (1 min) {float(run_row['load_at_start']):.1f} as the run started, "
                  f"{float(run_row['load_at_end']):.1f} as it ended, on {run_row['cores']} cores")
