@@ -2,41 +2,67 @@
 """Hertz validation under mesh refinement (edp/hertz.edp): contact half-width a, peak
 pressure p0 and the L2 error of the pressure profile against the analytic solution. Writes
 docs/results/hertz.md and docs/results/hertz.png from one run on this machine."""
+import argparse
 import math
 import os
-import time
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from ffeti_bench import OUT, f, machine, run, save_page  # noqa: E402
+from ffeti_bench import (OUT, begin_run, end_run, f, listing, machine_line, markdown_table, read_csv,  # noqa: E402
+                         run, save_page, span, write_csv)
 
 SIZES = [2.0, 1.0, 0.5, 0.25]
 
 
+PAGE = "hertz"
+REFINEMENT = [("h [mm]", "h"), ("unknowns", "unknowns"), ("subdomains", "subdomains"), ("a [mm]", ("a", ".3f")),
+              ("error a", ("a_relerr", ".1%")), ("p0 [MPa]", ("p0", ".0f")), ("error p0", ("p0_relerr", ".1%")),
+              ("L2 error of p", ("pressure_l2_relerr", ".2%")), ("Hessian mult.", "hessian"),
+              ("solve [s]", ("time_solve", ".3f")), ("status", "status")]
+PEERS = [("h [mm]", "h"), ("unknowns", "unknowns"), ("ffeti [s]", ("time_ffeti", ".3f")), ("IPOPT [s]", ("time_ipopt", ".3f")),
+         ("PDAS [s] (iterations)", lambda p: f"{f(p, 'time_pdas'):.3f} ({p['pdas_iterations']})"),
+         ("floor [s]", ("time_last_solve", ".3f")), ("IPOPT / ffeti", lambda p: f"{f(p, 'time_ipopt') / f(p, 'time_ffeti'):.1f}"),
+         ("energy ffeti / IPOPT / PDAS", lambda p: f"{p['energy_ffeti']} / {p['energy_ipopt']} / {p['energy_pdas']}"),
+         ("IPOPT violation", ("ipopt_violation", ".1e")),
+         ("peak MB: ffeti / peers", lambda p: f"{f(p, 'peak_mb_ffeti'):.0f} / {f(p, 'process_peak_mb'):.0f}")]
+
+
 def main():
-    started = time.time()
-    runs = []
-    for h in SIZES:
-        lines = run("hertz.edp", "-h", h, prefixes=("RESULT", "PRESSURE"))
-        runs.append((h, lines["RESULT"][0], [(float(p["x"]), float(p["p"])) for p in lines["PRESSURE"]]))
-    # Peers on the undivided problem (each body one subdomain), the same discrete problem.
-    peers = [run("hertz.edp", "-h", h, "-parts", 1, "-peers", 1, prefixes=("RESULT", "PEERS"))["PEERS"][0] for h in SIZES]
-    os.makedirs(OUT, exist_ok=True)
-    write_plot(runs)
-    write_page(runs, peers, time.time() - started)
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--render", action="store_true", help="re-render the page from its CSVs, no run")
+    if not parser.parse_args().render:
+        begun = begin_run()
+        refinement, pressure, peers = [], [], []
+        for h in SIZES:
+            lines = run("hertz.edp", "-h", h, prefixes=("RESULT", "PRESSURE"))
+            result = lines["RESULT"][0]  # h as the scene prints it, in every table
+            refinement.append(result)
+            pressure += [dict(h=result["h"], **point) for point in lines["PRESSURE"]]
+        # Peers on the undivided problem (each body one subdomain), the same discrete problem,
+        # beside the ffeti run of the same mesh (its whole time and peak memory).
+        for h, r in zip(SIZES, refinement):
+            p = run("hertz.edp", "-h", h, "-parts", 1, "-peers", 1, prefixes=("RESULT", "PEERS"))["PEERS"][0]
+            peers.append(dict(p, time_ffeti=r["time_total"], peak_mb_ffeti=r["process_peak_mb"]))
+        write_csv(PAGE, "refinement", refinement)
+        write_csv(PAGE, "pressure", [{k: v for k, v in p.items() if k != "process_peak_mb"} for p in pressure])
+        write_csv(PAGE, "peers", peers)
+        end_run(PAGE, begun)
+    render()
 
 
-def write_plot(runs):
-    first = runs[0][1]
+def write_plot(refinement, pressure):
+    first = refinement[0]
     a, p0 = f(first, "a_exact"), f(first, "p0_exact")
     xs = [a * i / 200 for i in range(201)]
     fig, ax = plt.subplots(figsize=(6.5, 4.2))
     ax.plot(xs + [1.5 * a], [p0 * math.sqrt(max(0.0, 1 - (x / a) ** 2)) for x in xs] + [0], "k-", label="Hertz")
-    for (h, _, profile), marker in zip(runs[1::2], ["s", "o"]):
-        ax.plot([x for x, _ in profile], [p for _, p in profile], marker, ms=4, label=f"ffeti, h = {h} mm at the contact")
+    for r, marker in zip(refinement[1::2], ["s", "o"]):
+        profile = [p for p in pressure if p["h"] == r["h"]]
+        ax.plot([f(p, "x") for p in profile], [f(p, "p") for p in profile], marker, ms=4,
+                label=f"ffeti, h = {r['h']} mm at the contact")
     ax.set_xlim(0, 1.5 * a)
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("contact pressure [MPa]")
@@ -47,31 +73,31 @@ def write_plot(runs):
     plt.close(fig)
 
 
-def write_page(runs, peers, elapsed):
-    first = runs[0][1]
+def render():
+    refinement, pressure, peers = (read_csv(PAGE, table) for table in ("refinement", "pressure", "peers"))
+    run_row = read_csv(PAGE, "run")[0]
+    write_plot(refinement, pressure)
+    first = refinement[0]
+    energy_gap = max(abs(f(p, key) / f(p, "energy_ffeti") - 1) for p in peers for key in ("energy_ipopt", "energy_pdas"))
+    ipopt_ratio = [f(p, "time_ipopt") / f(p, "time_ffeti") for p in peers]
     lines = [
         "# Hertz: cylinder on a block",
         "",
         "Generated by `scripts/benchmark.sh hertz` (do not edit by hand) on:",
-        f"{machine()}. Whole run: {elapsed:.0f} s.",
+        machine_line(run_row),
         "",
         "`edp/hertz.edp`: plane strain, cylinder R = 50 mm, E = 70 GPa, on a block 2 x 100 by",
         "100 mm, E = 210 GPa, nu = 0.3 for both, F = 35 kN per mm of thickness; half model with",
         "symmetry conditions, gmsh meshes (`meshes/*.geo`) of size h within 10 mm of the contact,",
         "4 METIS subdomains per body, Total FETI, linearized node-to-segment contact (slaves on",
         "the cylinder), tol = 1e-8. Pressure at a slave node = its multiplier / its tributary",
-        "length; a = midpoint between the last closed and the first open node.",
+        "length; a = midpoint between the last closed and the first open node. Raw data:",
+        f"[{PAGE}-refinement.csv]({PAGE}-refinement.csv), [{PAGE}-pressure.csv]({PAGE}-pressure.csv) (the",
+        f"pressure per slave node), [{PAGE}-peers.csv]({PAGE}-peers.csv).",
         "",
         f"Analytic: a = {f(first, 'a_exact'):.3f} mm, p0 = {f(first, 'p0_exact'):.0f} MPa.",
         "",
-        "| h [mm] | unknowns | subdomains | a [mm] | error a | p0 [MPa] | error p0 | L2 error of p | Hessian mult. | solve [s] | status |",
-        "|---|---|---|---|---|---|---|---|---|---|---|",
-    ]
-    for h, r, _ in runs:
-        lines.append(f"| {h} | {r['unknowns']} | {r['subdomains']} | {f(r, 'a'):.3f} | {100 * f(r, 'a_relerr'):.1f}% | "
-                     f"{f(r, 'p0'):.0f} | {100 * f(r, 'p0_relerr'):.1f}% | {100 * f(r, 'pressure_l2_relerr'):.2f}% | "
-                     f"{r['hessian']} | {f(r, 'time_solve'):.3f} | {r['status']} |")
-    lines += [
+        *markdown_table(refinement, REFINEMENT),
         "",
         "## Peers on the same meshes",
         "",
@@ -84,33 +110,28 @@ def write_page(runs, peers, elapsed):
         "holds the undivided ffeti set-up that exports the rows: at these sizes both are mostly",
         "FreeFEM's own footprint.",
         "",
-        "| h [mm] | unknowns | ffeti [s] | IPOPT [s] | PDAS [s] (iterations) | floor [s] | IPOPT / ffeti | energy ffeti / IPOPT / PDAS | IPOPT violation | peak MB: ffeti / peers |",
-        "|---|---|---|---|---|---|---|---|---|---|",
-    ]
-    for (h, r, _), p in zip(runs, peers):
-        lines.append(f"| {h} | {p['unknowns']} | {f(r, 'time_total'):.3f} | {f(p, 'time_ipopt'):.3f} | "
-                     f"{f(p, 'time_pdas'):.3f} ({p['pdas_iterations']}) | {f(p, 'time_last_solve'):.3f} | "
-                     f"{f(p, 'time_ipopt') / f(r, 'time_total'):.1f} | {p['energy_ffeti']} / {p['energy_ipopt']} / "
-                     f"{p['energy_pdas']} | {f(p, 'ipopt_violation'):.1e} | {r['process_peak_mb']} / {p['process_peak_mb']} |")
-    lines += [
+        *markdown_table(peers, PEERS),
         "",
         "![pressure](hertz.png)",
         "",
-        "Reading: the pressure profile converges to Hertz's ellipse (its L2 error falls with h).",
+        "Reading: the pressure profile approaches Hertz's ellipse: its L2 error is",
+        f"{listing([f(r, 'pressure_l2_relerr') for r in refinement], '.2%')} for h = "
+        f"{listing([f(r, 'h') for r in refinement], 'g')} mm.",
         "The half-width a is read off the mesh, so its error is bounded by about half the node",
         "spacing over a; p0 carries the error of a one-node pressure estimate at the symmetry",
         "line. The test suite runs the h = 1 case and requires a and p0 within 10%.",
         "",
-        "The peers agree with ffeti in energy to the printed digits. On these small 2D problems",
-        "(under 10,000 unknowns) IPOPT takes 4 to 8 times ffeti's time (set-up, solve and",
-        "recovery) and the active set method half to all of IPOPT's, while the floor, one sparse",
-        "factorization and solve with the final contact set, takes 0.4 to 1 times ffeti's: here a",
-        "direct solve is cheap, and FETI's gain over the peers grows with the problem (the model",
-        "problem at 526,338 unknowns: IPOPT 77 times ffeti's default solve,",
-        "[model problem](model-problem.md)).",
+        f"The peers agree with ffeti in energy to {energy_gap:.1e} relative (the largest difference",
+        f"over the meshes). On these small 2D problems (up to {max(int(p['unknowns']) for p in peers):,} unknowns)",
+        f"IPOPT takes {span(ipopt_ratio, '.1f')} times ffeti's time (set-up, solve and recovery) and the",
+        f"active set method {span([f(p, 'time_pdas') / f(p, 'time_ipopt') for p in peers], '.1f')} times IPOPT's, while",
+        "the floor, one sparse factorization and solve with the final contact set, takes",
+        f"{span([f(p, 'time_last_solve') / f(p, 'time_ffeti') for p in peers], '.1f')} times ffeti's: here a direct",
+        f"solve is cheap. IPOPT's time over ffeti's is {ipopt_ratio[0]:.1f} on the coarsest mesh and",
+        f"{ipopt_ratio[-1]:.1f} on the finest; larger problems: [model problem](model-problem.md).",
         "",
     ]
-    save_page("hertz.md", lines)
+    save_page(f"{PAGE}.md", lines)
 
 
 if __name__ == "__main__":
