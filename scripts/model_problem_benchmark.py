@@ -1,36 +1,51 @@
 #!/usr/bin/env python3
-"""Runs the model problem scripts under FreeFEM, parses their RESULT/DIRECT lines and writes
-docs/results/model-problem.md with tables and plots. Every figure in that page comes from
-this one run on this machine."""
+"""Runs the model problem scripts under FreeFEM, parses their RESULT/DIRECT/IPOPT lines,
+writes them as raw data (docs/results/model-problem-<table>.csv, one per table) and renders
+docs/results/model-problem.md with tables and plots from those files (--render: again from
+the CSVs, no run). Every figure in that page comes from this one run on this machine; the
+reading (model-problem-reading.md, written by hand) is appended."""
 import argparse
 import os
-import time
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from ffeti_bench import OUT, ROOT, f, machine, model_problem, run, save_page  # noqa: E402
+from ffeti_bench import (OUT, READINGS, begin_run, end_run, f, machine_line, markdown_table,  # noqa: E402
+                         model_problem, read_csv, run, save_page, write_csv)
 
 SIZES = [64, 128, 256, 512]
+PAGE = "model-problem"
+# The seed paper's published figures (inputs to compare with, not measured here): primal
+# dimensions at n = 64 and 512; dual dimension, couples and active couples at n = 512; CG
+# iterations at the smallest and largest size and the most at any size.
+SEED = {"primal": {64: 8450, 512: 540800}, "dual": {512: 14975}, "couples": {512: 520}, "active": {512: "~350"},
+        "cg": {64: 27, 512: 54}, "cg_range": (27, 65)}
+KKT = ("kkt_equilibrium", "kkt_equality", "kkt_inequality", "kkt_complementarity")
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--quick", action="store_true", help="sizes up to 256, fewer tolerances")
+    parser.add_argument("--render", action="store_true", help="re-render the page from its CSVs, no run")
     options = parser.parse_args()
-    sizes = SIZES[:3] if options.quick else SIZES
-    largest = sizes[-1]
-    started = time.time()
+    if not options.render:
+        measure(SIZES[:3] if options.quick else SIZES, options.quick)
+    render()
 
+
+def measure(sizes, quick):
+    begun = begin_run()
+    largest = sizes[-1]
     default = [model_problem(n) for n in sizes]
-    direct = [run("model-problem-direct.edp", "-n", n)["DIRECT"][0] for n in sizes]
-    ipopt = [run("model-problem-ipopt.edp", "-n", n, prefixes=("IPOPT",))["IPOPT"][0] for n in sizes]
-    tight = [model_problem(n, tol="1e-8") for n in sizes]  # about IPOPT's accuracy
-    reference_energy = {n: f(model_problem(n, tol="1e-10"), "energy") for n in sizes[-2:]}
-    tolerances = ["1e-2", "1e-3", "1e-4", "1e-6", "1e-8"] if not options.quick else ["1e-2", "1e-4", "1e-6"]
-    accuracy = {n: [model_problem(n, tol=t) for t in tolerances] for n in sizes[-2:]}
+    write_csv(PAGE, "default", default)
+    write_csv(PAGE, "direct", [run("model-problem-direct.edp", "-n", n)["DIRECT"][0] for n in sizes])
+    write_csv(PAGE, "ipopt", [run("model-problem-ipopt.edp", "-n", n, prefixes=("IPOPT",))["IPOPT"][0] for n in sizes])
+    write_csv(PAGE, "tight", [model_problem(n, tol="1e-8") for n in sizes])  # about IPOPT's accuracy
+    write_csv(PAGE, "accuracy-reference", [model_problem(n, tol="1e-10") for n in sizes[-2:]])
+    tolerances = ["1e-2", "1e-3", "1e-4", "1e-6", "1e-8"] if not quick else ["1e-2", "1e-4", "1e-6"]
+    write_csv(PAGE, "accuracy", [model_problem(n, tol=t) for n in sizes[-2:] for t in tolerances])
     variants = [
         ("FETI-1, SMALBE-M (default)", default[-1]),
         ("Total FETI, SMALBE-M", model_problem(largest, variant="tfeti")),
@@ -40,24 +55,34 @@ def main():
         ("FETI-1, supernodal CHOLMOD (1 thread)", model_problem(largest, factor="supernodal")),
         ("FETI-1, 1 OpenMP thread", model_problem(largest, threads=1)),
     ]
-    os.makedirs(OUT, exist_ok=True)
-    write_plots(sizes, default, direct, ipopt, accuracy, reference_energy)
-    write_page(sizes, default, direct, ipopt, tight, accuracy, reference_energy, variants, time.time() - started)
+    write_csv(PAGE, "variants", [dict(case=name, **r) for name, r in variants])
+    end_run(PAGE, begun)
 
 
-def write_plots(sizes, default, direct, ipopt, accuracy, reference_energy):
+def total(r):
+    """ffeti's set-up, solve and recovery, in seconds."""
+    return f(r, "time_factor") + f(r, "time_solve") + f(r, "time_recovery")
+
+
+def kkt(r):
+    return max(f(r, k) for k in KKT)
+
+
+def write_plots(default, direct, ipopt, accuracy, reference_energy):
+    sizes = [int(r["n"]) for r in default]
     fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2))
     left.plot(sizes, [f(r, "hessian") for r in default], "o-", label="ffeti: Hessian multiplications")
     left.plot(sizes, [f(r, "cg") for r in default], "s--", label="ffeti: CG steps")
-    left.plot([64, 512], [27, 54], "k^", label="seed: CG iterations (smallest, largest)")
-    left.axhline(65, color="gray", lw=0.8, ls=":", label="seed: most CG iterations (65)")
+    seed_sizes = sorted(SEED["cg"])
+    left.plot(seed_sizes, [SEED["cg"][n] for n in seed_sizes], "k^", label="seed: CG iterations (smallest, largest)")
+    left.axhline(SEED["cg_range"][1], color="gray", lw=0.8, ls=":",
+                 label=f"seed: most CG iterations ({SEED['cg_range'][1]})")
     left.set_xscale("log", base=2)
     left.set_xlabel("n (h = 1/n), H/h = 64")
     left.set_ylabel("count")
     left.set_title("Numerical scalability")
     left.legend(fontsize=8)
-    solve_time = [f(r, "time_factor") + f(r, "time_solve") + f(r, "time_recovery") for r in default]
-    right.loglog(sizes, solve_time, "o-", label="ffeti: factorization + dual solve + recovery")
+    right.loglog(sizes, [total(r) for r in default], "o-", label="ffeti: factorization + dual solve + recovery")
     right.loglog(sizes, [f(r, "time_assembly") for r in default], "s--", label="FreeFEM assembly of the subdomain data")
     right.loglog(sizes, [f(r, "time_last_solve") for r in direct], "d-.", label="UMFPACK, final contact set fixed")
     right.loglog(sizes, [f(r, "time_pdas") for r in direct], "x:", label="primal-dual active set + UMFPACK")
@@ -72,7 +97,8 @@ def write_plots(sizes, default, direct, ipopt, accuracy, reference_energy):
     plt.close(fig)
 
     fig, ax = plt.subplots(figsize=(6, 4.2))
-    for n, rows in accuracy.items():
+    for n in reference_energy:
+        rows = [r for r in accuracy if r["n"] == n]
         # Energies are printed with 12 digits: smaller differences are not resolved.
         errors = [max(abs(f(r, "energy") - reference_energy[n]) / abs(reference_energy[n]), 1e-12) for r in rows]
         times = [f(r, "time_solve") for r in rows]
@@ -88,34 +114,55 @@ def write_plots(sizes, default, direct, ipopt, accuracy, reference_energy):
     plt.close(fig)
 
 
-def write_page(sizes, default, direct, ipopt, tight, accuracy, reference_energy, variants, elapsed):
-    seed_primal = {64: 8450, 512: 540800}
+def seed(kind, r):
+    n = int(r["n"])
+    return f"{r[kind]} ({SEED[kind].get(n, '-')})"
+
+
+def render():
+    default, direct, ipopt, tight, accuracy, references, variants = (
+        read_csv(PAGE, table) for table in ("default", "direct", "ipopt", "tight", "accuracy", "accuracy-reference",
+                                            "variants"))
+    run_row = read_csv(PAGE, "run")[0]
+    reference_energy = {r["n"]: f(r, "energy") for r in references}
+    write_plots(default, direct, ipopt, accuracy, reference_energy)
+    by_n = {r["n"]: r for r in direct}
+    for rows in (default, tight, ipopt):  # the energy error against PDAS, per solve
+        for r in rows:
+            d = by_n[r["n"]]
+            r["energy_error"] = abs(f(r, "energy") - f(d, "energy")) / abs(f(d, "energy"))
+    for r in accuracy:
+        error = abs(f(r, "energy") - reference_energy[r["n"]]) / abs(reference_energy[r["n"]])
+        r["energy_error"] = f"{error:.1e}" if error >= 1e-12 else "< 1e-12"
+    peers = [dict(n=r["n"], unknowns=by_n[r["n"]]["unknowns"], default=r, tight=t, direct=by_n[r["n"]], ipopt=p)
+             for r, t, p in zip(default, tight, ipopt)]
+    norm_estimate = sorted({r["hessian_norm_estimate"] for r in default + tight + accuracy + variants})
+    seed_cg = f"{SEED['cg_range'][0]}..{SEED['cg_range'][1]}"
     lines = [
         "# The seed's model problem: reproduced",
         "",
         "Generated by `scripts/benchmark.sh model-problem` (do not edit by hand) on:",
-        f"{machine()}. Whole run: {elapsed:.0f} s. Every number below comes from that one run.",
+        f"{machine_line(run_row)} Every number below comes from that one run.",
         "",
         "Problem: the two membranes of the seed paper (`edp/model-problem.edp`), P1 on regular",
         "grids, h = 1/n, H/h = 64, FETI-1 (Dirichlet eliminated inside K_s, as the seed),",
         "SMALBE-M with MPRGP inside, tol = 1e-4 (the seed's value) with the default stopping test",
         "(every relative KKT residual of the returned solution at most tol; the seed's own test,",
-        "||gP|| <= tol ||b||, is among the variants), no options passed. Times are wall-clock seconds; `hessian` counts every application of the dual",
-        "operator inside the solve (the 15 of the norm estimate are reported apart).",
+        "||gP|| <= tol ||b||, is among the variants), no options passed. Times are wall-clock",
+        "seconds; `hessian` counts every application of the dual operator inside the solve (the",
+        f"{' or '.join(norm_estimate)} of the norm estimate are reported apart). Raw data: one CSV per table,",
+        f"[{PAGE}-default.csv]({PAGE}-default.csv) (default options), [{PAGE}-direct.csv]({PAGE}-direct.csv)",
+        f"(UMFPACK and PDAS), [{PAGE}-ipopt.csv]({PAGE}-ipopt.csv), [{PAGE}-tight.csv]({PAGE}-tight.csv)",
+        f"(tol = 1e-8), [{PAGE}-accuracy.csv]({PAGE}-accuracy.csv) with its tol = 1e-10 references",
+        f"[{PAGE}-accuracy-reference.csv]({PAGE}-accuracy-reference.csv), [{PAGE}-variants.csv]({PAGE}-variants.csv).",
         "",
         "## Numerical scalability, beside the seed's figures",
         "",
-        "| n | subdomains | primal (seed) | dual (seed) | couples (seed) | active (seed) | outer | Hessian mult. | CG steps | seed CG iterations |",
-        "|---|---|---|---|---|---|---|---|---|---|",
-    ]
-    for r in default:
-        n = int(r["n"])
-        seed_cg = {64: "27", 512: "54"}.get(n, "27..65")
-        lines.append(
-            f"| {n} | {r['subdomains']} | {r['primal']} ({seed_primal.get(n, '-')}) | {r['dual']} "
-            f"({'14975' if n == 512 else '-'}) | {r['couples']} ({'520' if n == 512 else '-'}) | "
-            f"{r['active']} ({'~350' if n == 512 else '-'}) | {r['outer']} | {r['hessian']} | {r['cg']} | {seed_cg} |")
-    lines += [
+        *markdown_table(default, [
+            ("n", "n"), ("subdomains", "subdomains"), ("primal (seed)", lambda r: seed("primal", r)),
+            ("dual (seed)", lambda r: seed("dual", r)), ("couples (seed)", lambda r: seed("couples", r)),
+            ("active (seed)", lambda r: seed("active", r)), ("outer", "outer"), ("Hessian mult.", "hessian"),
+            ("CG steps", "cg"), ("seed CG iterations", lambda r: SEED["cg"].get(int(r["n"]), seed_cg))]),
         "",
         "![scaling](model-problem-scaling.png)",
         "",
@@ -127,17 +174,18 @@ def write_page(sizes, default, direct, ipopt, tight, accuracy, reference_energy,
         "of the unsplit glued problem with the final contact set fixed (what any contact solver",
         "pays at least); `PDAS`: the whole primal-dual active set method with UMFPACK.",
         "",
-        "| n | unknowns (unsplit) | assembly | setup | solve | recovery | ffeti total (setup+solve+recovery) | UMFPACK floor | ratio to floor | PDAS (iterations) | energy ffeti | energy PDAS |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|",
-    ]
-    for r, d in zip(default, direct):
-        total = f(r, "time_factor") + f(r, "time_solve") + f(r, "time_recovery")
-        lines.append(
-            f"| {r['n']} | {d['unknowns']} | {f(r, 'time_assembly'):.3f} | {f(r, 'time_factor'):.3f} | "
-            f"{f(r, 'time_solve'):.3f} | {f(r, 'time_recovery'):.3f} | {total:.3f} | {f(d, 'time_last_solve'):.3f} | "
-            f"{total / f(d, 'time_last_solve'):.2f} | {f(d, 'time_pdas'):.2f} ({d['pdas_iterations']}) | "
-            f"{f(r, 'energy'):.8f} | {f(d, 'energy'):.8f} |")
-    lines += [
+        *markdown_table(peers, [
+            ("n", "n"), ("unknowns (unsplit)", "unknowns"),
+            ("assembly", lambda p: f"{f(p['default'], 'time_assembly'):.3f}"),
+            ("setup", lambda p: f"{f(p['default'], 'time_factor'):.3f}"),
+            ("solve", lambda p: f"{f(p['default'], 'time_solve'):.3f}"),
+            ("recovery", lambda p: f"{f(p['default'], 'time_recovery'):.3f}"),
+            ("ffeti total (setup+solve+recovery)", lambda p: f"{total(p['default']):.3f}"),
+            ("UMFPACK floor", lambda p: f"{f(p['direct'], 'time_last_solve'):.3f}"),
+            ("ratio to floor", lambda p: f"{total(p['default']) / f(p['direct'], 'time_last_solve'):.2f}"),
+            ("PDAS (iterations)", lambda p: f"{f(p['direct'], 'time_pdas'):.2f} ({p['direct']['pdas_iterations']})"),
+            ("energy ffeti", lambda p: f"{f(p['default'], 'energy'):.8f}"),
+            ("energy PDAS", lambda p: f"{f(p['direct'], 'energy'):.8f}")]),
         "",
         "## Peers on the same meshes",
         "",
@@ -150,57 +198,43 @@ def write_page(sizes, default, direct, ipopt, tight, accuracy, reference_energy,
         "against PDAS; violation: the largest penetration relative to max|u| (ffeti: the largest",
         "relative KKT residual).",
         "",
-        "| n | unknowns | ffeti tol 1e-4 [s] | ffeti tol 1e-8 [s] | IPOPT [s] | PDAS [s] | floor [s] | IPOPT / ffeti 1e-8 |"
-        " peak MB: ffeti / IPOPT / PDAS | energy error: ffeti 1e-4 / ffeti 1e-8 / IPOPT | violation: ffeti 1e-4 / 1e-8 / IPOPT |",
-        "|---|---|---|---|---|---|---|---|---|---|---|",
-    ]
-    for r, t, d, p in zip(default, tight, direct, ipopt):
-        def total(x):
-            return f(x, "time_factor") + f(x, "time_solve") + f(x, "time_recovery")
-
-        def error(x):
-            return abs(f(x, "energy") - f(d, "energy")) / abs(f(d, "energy"))
-
-        def kkt(x):
-            return max(f(x, k) for k in ("kkt_equilibrium", "kkt_equality", "kkt_inequality", "kkt_complementarity"))
-        lines.append(
-            f"| {r['n']} | {d['unknowns']} | {total(r):.3f} | {total(t):.3f} | {f(p, 'time'):.3f} | "
-            f"{f(d, 'time_pdas'):.2f} | {f(d, 'time_last_solve'):.3f} | {f(p, 'time') / total(t):.1f} | "
-            f"{r['process_peak_mb']} / {p['process_peak_mb']} / {d['process_peak_mb']} | "
-            f"{error(r):.1e} / {error(t):.1e} / {error(p):.1e} | {kkt(r):.1e} / {kkt(t):.1e} / {f(p, 'violation'):.1e} |")
-    lines += [
+        *markdown_table(peers, [
+            ("n", "n"), ("unknowns", "unknowns"), ("ffeti tol 1e-4 [s]", lambda p: f"{total(p['default']):.3f}"),
+            ("ffeti tol 1e-8 [s]", lambda p: f"{total(p['tight']):.3f}"),
+            ("IPOPT [s]", lambda p: f"{f(p['ipopt'], 'time'):.3f}"),
+            ("PDAS [s]", lambda p: f"{f(p['direct'], 'time_pdas'):.2f}"),
+            ("floor [s]", lambda p: f"{f(p['direct'], 'time_last_solve'):.3f}"),
+            ("IPOPT / ffeti 1e-8", lambda p: f"{f(p['ipopt'], 'time') / total(p['tight']):.1f}"),
+            ("peak MB: ffeti / IPOPT / PDAS", lambda p: " / ".join(
+                f"{f(p[k], 'process_peak_mb'):.0f}" for k in ("default", "ipopt", "direct"))),
+            ("energy error: ffeti 1e-4 / ffeti 1e-8 / IPOPT", lambda p: " / ".join(
+                f"{p[k]['energy_error']:.1e}" for k in ("default", "tight", "ipopt"))),
+            ("violation: ffeti 1e-4 / 1e-8 / IPOPT",
+             lambda p: f"{kkt(p['default']):.1e} / {kkt(p['tight']):.1e} / {f(p['ipopt'], 'violation'):.1e}")]),
         "",
         "## What accuracy costs",
         "",
         "Relative energy error against a solve at tol = 1e-10 of the same discrete problem",
         "(energies are printed with 12 significant digits).",
         "",
-        "| n | tol | outer | Hessian mult. | solve [s] | relative energy error | KKT equilibrium | KKT non-penetration |",
-        "|---|---|---|---|---|---|---|---|",
-    ]
-    for n, rows in accuracy.items():
-        for r in rows:
-            error = abs(f(r, "energy") - reference_energy[n]) / abs(reference_energy[n])
-            shown = f"{error:.1e}" if error >= 1e-12 else "< 1e-12"
-            lines.append(
-                f"| {n} | {r['tol']} | {r['outer']} | {r['hessian']} | {f(r, 'time_solve'):.3f} | {shown} | "
-                f"{f(r, 'kkt_equilibrium'):.1e} | {f(r, 'kkt_inequality'):.1e} |")
-    lines += [
+        *markdown_table(accuracy, [
+            ("n", "n"), ("tol", "tol"), ("outer", "outer"), ("Hessian mult.", "hessian"),
+            ("solve [s]", ("time_solve", ".3f")), ("relative energy error", "energy_error"),
+            ("KKT equilibrium", ("kkt_equilibrium", ".1e")), ("KKT non-penetration", ("kkt_inequality", ".1e"))]),
         "",
         "![accuracy](model-problem-accuracy.png)",
         "",
-        f"## Variants at n = {sizes[-1]}",
+        f"## Variants at n = {variants[0]['n']}",
         "",
-        "| variant | dual | outer | Hessian mult. | setup [s] | solve [s] | energy | status |",
-        "|---|---|---|---|---|---|---|---|",
+        *markdown_table(variants, [
+            ("variant", "case"), ("dual", "dual"), ("outer", "outer"), ("Hessian mult.", "hessian"),
+            ("setup [s]", ("time_factor", ".3f")), ("solve [s]", ("time_solve", ".3f")),
+            ("energy", ("energy", ".8f")), ("status", "status")]),
+        "",
     ]
-    for name, r in variants:
-        lines.append(
-            f"| {name} | {r['dual']} | {r['outer']} | {r['hessian']} | {f(r, 'time_factor'):.3f} | "
-            f"{f(r, 'time_solve'):.3f} | {f(r, 'energy'):.8f} | {r['status']} |")
-    lines.append("")
-    lines.append(open(os.path.join(ROOT, "docs", "results", "model-problem-reading.md")).read())
-    save_page("model-problem.md", lines)
+    with open(os.path.join(READINGS, "model-problem-reading.md")) as reading:
+        lines.append(reading.read())
+    save_page(f"{PAGE}.md", lines)
 
 
 if __name__ == "__main__":
