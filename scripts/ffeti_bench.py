@@ -168,7 +168,7 @@ def cell(row, spec):
     text = row.get(key, "")
     if text == "":
         return "-"
-    return format(float(text), number_format) if number_format else text
+    return format(float(text), number_format) if number_format else str(text)
 
 
 def markdown_table(rows, columns):

@@ -1,17 +1,20 @@
 #!/usr/bin/env python3
 """Parallel runs of the seed's model problem: strong scaling at h = 1/512, weak scaling at
-fixed H/h with about the same number of subdomains per rank, and h = 1/1024. Writes
-docs/results/parallel.md and docs/results/parallel.png from one run on this machine."""
+fixed H/h with about the same number of subdomains per rank, and h = 1/1024. Writes the raw
+data of one run on this machine (docs/results/parallel-strong.csv, parallel-weak.csv,
+parallel-large.csv, parallel-ranks.csv) and renders docs/results/parallel.md and
+parallel.png from it (--render: again from the CSVs, no run); the reading
+(parallel-reading.md, written by hand) is appended."""
 import argparse
 import os
-import time
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from ffeti_bench import OUT, f, machine, model_problem, save_page  # noqa: E402
+from ffeti_bench import (OUT, READINGS, begin_run, end_run, f, machine_line, markdown_table,  # noqa: E402
+                         model_problem, read_csv, save_page, write_csv)
 
 
 def fastest_of_two(n, **options):
@@ -19,11 +22,21 @@ def fastest_of_two(n, **options):
     return min((model_problem(n, **options) for _ in range(2)), key=lambda r: f(r, "time_solve"))
 
 
+PAGE = "parallel"
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--skip-1024", action="store_true", help="leave out h = 1/1024")
+    parser.add_argument("--render", action="store_true", help="re-render the page from its CSVs, no run")
     options = parser.parse_args()
-    started = time.time()
+    if not options.render:
+        measure(options.skip_1024)
+    render()
+
+
+def measure(skip_1024):
+    begun = begin_run()
     strong = [
         ("1 process, 1 thread", 1, 1, fastest_of_two(512, threads=1)),
         ("1 process, 2 OpenMP threads", 1, 2, fastest_of_two(512, threads=2)),
@@ -34,27 +47,33 @@ def main():
         ("1 rank, n = 320", 1, model_problem(320, threads=1)),
         ("2 ranks, n = 448", 2, model_problem(448, ranks=2)),
     ]
-    large = [] if options.skip_1024 else [
+    large = [] if skip_1024 else [
         ("1 process, 2 OpenMP threads", model_problem(1024)),
         ("2 MPI ranks, 1 thread each", model_problem(1024, ranks=2)),
     ]
-    os.makedirs(OUT, exist_ok=True)
-    write_plot(strong)
-    write_page(strong, weak, large, time.time() - started)
+    write_csv(PAGE, "strong", [dict(case=name, ranks_used=ranks, threads_used=threads, **r) for name, ranks, threads, r in strong])
+    write_csv(PAGE, "weak", [dict(case=name, ranks_used=ranks, **r) for name, ranks, r in weak])
+    write_csv(PAGE, "large", [dict(case=name, **r) for name, r in large])
+    # Each rank's own line (RANK) of every run, beside its table and case.
+    write_csv(PAGE, "ranks", [dict(table=table, case=name, **d) for table, runs in
+                              (("strong", [(x[0], x[-1]) for x in strong]), ("weak", [(x[0], x[-1]) for x in weak]),
+                               ("large", large)) for name, r in runs for d in r["ranks_detail"]])
+    end_run(PAGE, begun)
 
 
 def write_plot(strong):
     fig, ax = plt.subplots(figsize=(6.5, 4))
-    labels = [name for name, *_ in strong]
+    labels = [r["case"] for r in strong]
     phases = [("assembly (FreeFEM)", "time_assembly"), ("set-up", "time_factor"),
               ("dual solve", "time_solve"), ("recovery", "time_recovery")]
     bottom = [0.0] * len(strong)
     for label, key in phases:
-        values = [f(r, key) for *_, r in strong]
+        values = [f(r, key) for r in strong]
         ax.barh(labels, values, left=bottom, label=label)
         bottom = [b + v for b, v in zip(bottom, values)]
     ax.set_xlabel("wall-clock seconds")
-    ax.set_title("h = 1/512, 128 subdomains, 540800 unknowns")
+    first = strong[0]
+    ax.set_title(f"h = 1/{first['n']}, {first['subdomains']} subdomains, {first['primal']} unknowns")
     ax.invert_yaxis()
     ax.legend(fontsize=8)
     fig.tight_layout()
@@ -62,76 +81,84 @@ def write_plot(strong):
     plt.close(fig)
 
 
-def rank_table(r):
-    rows = ["| rank | subdomains | unknowns | factorization [s] | dual solve [s] | peak memory [MiB] |",
-            "|---|---|---|---|---|---|"]
-    for d in r["ranks_detail"]:
-        rows.append(f"| {d['rank']} | {d['subdomains']} | {d['primal']} | {float(d['time_factor']):.3f} | "
-                    f"{float(d['time_solve']):.3f} | {float(d['peak_memory_mb']):.0f} |")
-    return rows
+def per_product(r):
+    """Dual solve time per dual operator application (the norm estimate's included), ms."""
+    return 1000 * f(r, "time_solve") / (f(r, "hessian") + f(r, "hessian_norm_estimate"))
 
 
-def write_page(strong, weak, large, elapsed):
-    base = strong[0][3]
+def render():
+    strong, weak, large, ranks = (read_csv(PAGE, table) for table in ("strong", "weak", "large", "ranks"))
+    run_row = read_csv(PAGE, "run")[0]
+    write_plot(strong)
+    base = strong[0]
+    for r in strong:
+        r["cores"] = int(r["ranks_used"]) * int(r["threads_used"])
+        r["efficiency"] = f(base, "time_solve") / (r["cores"] * f(r, "time_solve"))
+    for r in weak:
+        r["per_rank"] = int(r["subdomains"]) / int(r["ranks_used"])
+    w1, w2 = weak
+    two_ranks = next(r for r in strong if int(r["ranks_used"]) == 2)
     lines = [
         "# Parallel runs of the model problem",
         "",
         "Generated by `scripts/benchmark.sh parallel` (do not edit by hand). Every figure comes",
-        f"from one run on: {machine()}. Whole run: {elapsed:.0f} s. No machine with more cores",
-        "was available to this project, so P stops at the core count, 2.",
+        f"from one run on: {machine_line(run_row)} No machine with more cores",
+        f"was available to this project, so P stops at the core count, {run_row['cores']}.",
         "",
         "Ranks are `mpirun -np P FreeFem++-mpi edp/model-problem.edp`; each rank assembles and",
         "factorizes its own subdomains (round-robin), the dual vectors are replicated, one",
         "allgather per dual operator application. With several ranks each rank runs",
         "cores / ranks OpenMP threads by default. Efficiency = T(1 process, 1 thread) /",
-        "(cores used x T). Strong-scaling rows are the faster of two runs.",
+        "(cores used x T). Strong-scaling rows are the faster of two runs. Raw data:",
+        f"[{PAGE}-strong.csv]({PAGE}-strong.csv), [{PAGE}-weak.csv]({PAGE}-weak.csv),",
+        f"[{PAGE}-large.csv]({PAGE}-large.csv), and each rank's own figures [{PAGE}-ranks.csv]({PAGE}-ranks.csv).",
         "",
-        "## Strong scaling, h = 1/512 (540800 unknowns, 128 subdomains)",
+        f"## Strong scaling, h = 1/{base['n']} ({base['primal']} unknowns, {base['subdomains']} subdomains)",
         "",
-        "| run | cores | assembly [s] | set-up [s] | dual solve [s] | recovery [s] | Hessian mult. | solve efficiency | energy |",
-        "|---|---|---|---|---|---|---|---|---|",
-    ]
-    for name, ranks, threads, r in strong:
-        cores = ranks * threads
-        efficiency = f(base, "time_solve") / (cores * f(r, "time_solve"))
-        lines.append(f"| {name} | {cores} | {f(r, 'time_assembly'):.2f} | {f(r, 'time_factor'):.2f} | "
-                     f"{f(r, 'time_solve'):.2f} | {f(r, 'time_recovery'):.3f} | {r['hessian']} | "
-                     f"{100 * efficiency:.0f}% | {r['energy']} |")
-    lines += ["", "![strong scaling](parallel.png)", "", "Load balance with 2 ranks:", ""]
-    lines += rank_table(strong[2][3])
-    w1, w2 = weak[0][2], weak[1][2]
-    lines += [
+        *markdown_table(strong, [
+            ("run", "case"), ("cores", "cores"), ("assembly [s]", ("time_assembly", ".2f")),
+            ("set-up [s]", ("time_factor", ".2f")), ("dual solve [s]", ("time_solve", ".2f")),
+            ("recovery [s]", ("time_recovery", ".3f")), ("Hessian mult.", "hessian"),
+            ("solve efficiency", ("efficiency", ".0%")), ("energy", "energy")]),
+        "",
+        "![strong scaling](parallel.png)",
+        "",
+        f"Load balance with {two_ranks['ranks_used']} ranks:",
+        "",
+        *markdown_table([d for d in ranks if d["table"] == "strong" and d["case"] == two_ranks["case"]], [
+            ("rank", "rank"), ("subdomains", "subdomains"), ("unknowns", "primal"),
+            ("factorization [s]", ("time_factor", ".3f")), ("dual solve [s]", ("time_solve", ".3f")),
+            ("peak memory [MiB]", ("peak_memory_mb", ".0f"))]),
         "",
         "## Weak scaling, H/h = 64",
         "",
-        "About the same number of subdomains per rank (50 and 49); a square split cannot",
+        f"About the same number of subdomains per rank ({w1['per_rank']:.0f} and {w2['per_rank']:.0f}); a square split cannot",
         "double exactly.",
         "",
-        "| run | subdomains | unknowns | subdomains per rank | set-up [s] | dual solve [s] | Hessian mult. | solve time per Hessian mult. [ms] |",
-        "|---|---|---|---|---|---|---|---|",
+        *markdown_table(weak, [
+            ("run", "case"), ("subdomains", "subdomains"), ("unknowns", "primal"), ("subdomains per rank", ("per_rank", ".0f")),
+            ("set-up [s]", ("time_factor", ".2f")), ("dual solve [s]", ("time_solve", ".2f")), ("Hessian mult.", "hessian"),
+            ("solve time per Hessian mult. [ms]", lambda r: f"{per_product(r):.1f}")]),
+        "",
+        f"Weak-scaling efficiency of one dual operator application: {per_product(w1) / per_product(w2):.0%}.",
     ]
-    for name, ranks, r in weak:
-        per_product = 1000 * f(r, "time_solve") / (f(r, "hessian") + f(r, "hessian_norm_estimate"))
-        lines.append(f"| {name} | {r['subdomains']} | {r['primal']} | {int(r['subdomains']) / ranks:.0f} | "
-                     f"{f(r, 'time_factor'):.2f} | {f(r, 'time_solve'):.2f} | {r['hessian']} | {per_product:.1f} |")
-    lines.append("")
-    lines.append("Weak-scaling efficiency of one dual operator application: "
-                 f"{100 * (f(w1, 'time_solve') / (f(w1, 'hessian') + 15)) / (f(w2, 'time_solve') / (f(w2, 'hessian') + 15)):.0f}%.")
     if large:
         lines += [
             "",
-            "## Past the seed: h = 1/1024 (512 subdomains)",
+            f"## Past the seed: h = 1/{large[0]['n']} ({large[0]['subdomains']} subdomains)",
             "",
-            "| run | unknowns | dual | Hessian mult. | assembly [s] | set-up [s] | dual solve [s] | total [s] | peak memory per rank [MiB] | status |",
-            "|---|---|---|---|---|---|---|---|---|---|",
+            *markdown_table(large, [
+                ("run", "case"), ("unknowns", "primal"), ("dual", "dual"), ("Hessian mult.", "hessian"),
+                ("assembly [s]", ("time_assembly", ".1f")), ("set-up [s]", ("time_factor", ".2f")),
+                ("dual solve [s]", ("time_solve", ".2f")), ("total [s]", ("time_total", ".1f")),
+                ("peak memory per rank [MiB]", lambda r: ", ".join(
+                    f"{f(d, 'peak_memory_mb'):.0f}" for d in ranks if d["table"] == "large" and d["case"] == r["case"])),
+                ("status", "status")]),
         ]
-        for name, r in large:
-            memory = ", ".join(f"{float(d['peak_memory_mb']):.0f}" for d in r["ranks_detail"])
-            lines.append(f"| {name} | {r['primal']} | {r['dual']} | {r['hessian']} | {f(r, 'time_assembly'):.1f} | "
-                         f"{f(r, 'time_factor'):.2f} | {f(r, 'time_solve'):.2f} | {f(r, 'time_total'):.1f} | {memory} | {r['status']} |")
     lines.append("")
-    lines.append(open(os.path.join(OUT, "parallel-reading.md")).read())
-    save_page("parallel.md", lines)
+    with open(os.path.join(READINGS, "parallel-reading.md")) as reading:
+        lines.append(reading.read())
+    save_page(f"{PAGE}.md", lines)
 
 
 if __name__ == "__main__":
