@@ -36,7 +36,7 @@ TEST(SettleStart, LowersTheCostAndKeepsTheIterateFeasibleAndItsGradientExact) {
   Vec g = qp.A * x - qp.b;
   const double before = cost(qp, x);
   IterationCounts counts;
-  settle_start(test::dense_operator(qp.A), qp.b, qp.lower, 2, 1000, x, g, counts);
+  settle_start(test::dense_operator(qp.A), qp.b, Bounds{qp.lower}, 2, 1000, x, g, counts);
   EXPECT_LT(cost(qp, x), before);
   EXPECT_GT(counts.settle, 0);
   EXPECT_GE(counts.hessian, counts.settle);
@@ -58,7 +58,7 @@ TEST(SettleStart, KeepsTheStartWhenTheProjectedFaceSolutionCostsMore) {
   Vec x = start, g = qp.A * x - qp.b;
   const Vec g_start = g;
   IterationCounts counts;
-  settle_start(test::dense_operator(qp.A), qp.b, qp.lower, 2, 100, x, g, counts);
+  settle_start(test::dense_operator(qp.A), qp.b, Bounds{qp.lower}, 2, 100, x, g, counts);
   EXPECT_EQ(counts.settle, 2);    // the face solve ran
   EXPECT_EQ(counts.hessian, 3);  // two CG steps and the projected point's gradient
   EXPECT_EQ(x, start);           // and was not kept
@@ -71,7 +71,7 @@ TEST(SettleStart, StaysWithinTheMultiplicationBudget) {
   project_onto_bounds(x, qp.lower);
   Vec g = qp.A * x - qp.b;
   IterationCounts counts;
-  settle_start(test::dense_operator(qp.A), qp.b, qp.lower, 5, 4, x, g, counts);
+  settle_start(test::dense_operator(qp.A), qp.b, Bounds{qp.lower}, 5, 4, x, g, counts);
   EXPECT_LE(counts.hessian, 4);
   EXPECT_LT((qp.A * x - qp.b - g).norm(), 1e-10 * qp.b.norm());
 }

@@ -9,33 +9,41 @@ namespace ffeti {
 namespace {
 
 /// Free gradient phi: g on the free set, 0 on the active set.
-void free_gradient(const Vec& x, const Vec& g, const Vec& lower, Vec& phi) {
-  for (Eigen::Index i = 0; i < x.size(); ++i) phi[i] = above_bound(x[i], lower[i]) ? g[i] : 0.0;
+void free_gradient(const Vec& x, const Vec& g, const Bounds& bounds, Vec& phi) {
+  for (Eigen::Index i = 0; i < x.size(); ++i) phi[i] = bounds.free(i, x[i]) ? g[i] : 0.0;
 }
 
-/// phi'phit and ||phit||^2 of the reduced free gradient phit_i = min((x_i - l_i) / abar, phi_i)
-/// on the bounded free components (phi_i where unbounded, 0 on the active set).
+/// phi'phit and ||phit||^2 of the reduced free gradient on the free set: phit_i =
+/// min((x_i - l_i) / abar, phi_i), then max((x_i - u_i) / abar, .) where bounded (phi_i where
+/// unbounded, 0 on the active set): the part of phi a step abar can take without leaving
+/// the box.
 struct ReducedFreeGradient {
   double dot_phi = 0, squared_norm = 0;
 };
 
-ReducedFreeGradient reduced_free_gradient(const Vec& x, const Vec& phi, const Vec& lower, double abar) {
+ReducedFreeGradient reduced_free_gradient(const Vec& x, const Vec& phi, const Bounds& bounds, double abar) {
+  const Vec& lower = bounds.lower;
   ReducedFreeGradient r;
   for (Eigen::Index i = 0; i < x.size(); ++i) {
-    const double phit = (!above_bound(x[i], lower[i]) || lower[i] == kUnbounded)
-                            ? phi[i]
-                            : std::min((x[i] - lower[i]) / abar, phi[i]);
+    double phit = phi[i];
+    if (bounds.free(i, x[i])) {
+      if (lower[i] != kUnbounded) phit = std::min((x[i] - lower[i]) / abar, phit);
+      if (bounds.has_upper(i)) phit = std::max((x[i] - (*bounds.upper)[i]) / abar, phit);
+    }
     r.dot_phi += phit * phi[i];
     r.squared_norm += phit * phit;
   }
   return r;
 }
 
-/// Largest step a >= 0 with x - a p >= l on the bounded components.
-double feasible_step(const Vec& x, const Vec& p, const Vec& lower) {
+/// Largest step a >= 0 with l <= x - a p <= u on the bounded components.
+double feasible_step(const Vec& x, const Vec& p, const Bounds& bounds) {
+  const Vec& lower = bounds.lower;
   double step = std::numeric_limits<double>::infinity();
-  for (Eigen::Index i = 0; i < x.size(); ++i)
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
     if (lower[i] != kUnbounded && p[i] > 0) step = std::min(step, (x[i] - lower[i]) / p[i]);
+    if (p[i] < 0 && bounds.has_upper(i)) step = std::min(step, (x[i] - (*bounds.upper)[i]) / p[i]);
+  }
   return step;
 }
 
@@ -47,14 +55,33 @@ int off_bound_count(const Vec& x, const Vec& lower) {
   return count;
 }
 
-int project_onto_bounds(Vec& x, const Vec& lower) {
+int project_onto_bounds(Vec& x, const Vec& lower) { return project_onto_bounds(x, Bounds{lower}); }
+
+int project_onto_bounds(Vec& x, const Bounds& bounds) {
+  const Vec& lower = bounds.lower;
   int projected = 0;
-  for (Eigen::Index i = 0; i < x.size(); ++i)
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
     if (lower[i] != kUnbounded && x[i] < lower[i]) {
       x[i] = lower[i];
       ++projected;
+    } else if (bounds.has_upper(i) && x[i] > (*bounds.upper)[i]) {
+      x[i] = (*bounds.upper)[i];
+      ++projected;
     }
+  }
   return projected;
+}
+
+Vec projected_gradient(const Vec& x, const Vec& g, const Vec& lower) { return projected_gradient(x, g, Bounds{lower}); }
+
+Vec projected_gradient(const Vec& x, const Vec& g, const Bounds& bounds) {
+  Vec gp(x.size());
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
+    if (bounds.free(i, x[i])) gp[i] = g[i];
+    else if (!above_bound(x[i], bounds.lower[i])) gp[i] = std::min(g[i], 0.0);  // at the lower bound
+    else gp[i] = std::max(g[i], 0.0);                                            // at the upper bound
+  }
+  return gp;
 }
 
 void MprgpSettings::validate() const {
@@ -65,21 +92,22 @@ void MprgpSettings::validate() const {
   if (settle_rounds < 0) throw std::invalid_argument("MPRGP settle_rounds must be >= 0");
 }
 
-Vec projected_gradient(const Vec& x, const Vec& g, const Vec& lower) {
-  Vec gp(x.size());
-  for (Eigen::Index i = 0; i < x.size(); ++i)
-    gp[i] = above_bound(x[i], lower[i]) ? g[i] : std::min(g[i], 0.0);
-  return gp;
-}
 
 MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, double a_norm,
                   Vec& x, Vec& g, bool gradient_is_current, const MprgpSettings& settings,
                   const StopTest& stop, const Monitor& monitor, const LinearOperator& preconditioner) {
+  return mprgp(A, b, Bounds{lower}, a_norm, x, g, gradient_is_current, settings, stop, monitor, preconditioner);
+}
+
+MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Bounds& bounds, double a_norm,
+                  Vec& x, Vec& g, bool gradient_is_current, const MprgpSettings& settings,
+                  const StopTest& stop, const Monitor& monitor, const LinearOperator& preconditioner) {
   settings.validate();
+  const Vec& lower = bounds.lower;
   MprgpResult result;
   const Eigen::Index n = b.size();
-  if (x.size() != n || lower.size() != n)
-    throw std::invalid_argument("MPRGP: x, b and lower bounds differ in size");
+  if (x.size() != n || lower.size() != n || (bounds.upper && bounds.upper->size() != n))
+    throw std::invalid_argument("MPRGP: x, b and the bounds differ in size");
   if (!(a_norm > 0)) throw std::invalid_argument("MPRGP: the norm estimate of A must be > 0");
   const double abar = settings.step_factor / a_norm;
   IterationCounts& counts = result.counts;
@@ -92,17 +120,17 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
     preconditioner(phi, z);
     ++counts.preconditioner;
     for (Eigen::Index i = 0; i < n; ++i)
-      if (!above_bound(x[i], lower[i])) z[i] = 0.0;
+      if (!bounds.free(i, x[i])) z[i] = 0.0;
     return z;
   };
 
   if (!gradient_is_current) {
-    project_onto_bounds(x, lower);
+    project_onto_bounds(x, bounds);
     g.resize(n);
     multiply(x, Ap);
     g = Ap - b;  // g = A x - b
   }
-  free_gradient(x, g, lower, phi);
+  free_gradient(x, g, bounds, phi);
   p = precondition_in_face();
 
   // True while the direction descends from one carried across a face change (expansion
@@ -111,14 +139,14 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
   // gradient is guaranteed to; a step that does not restarts CG from the free gradient.
   bool continued = false;
   for (int iteration = 0;; ++iteration) {
-    // Split the gradient: chopped gradient beta, and the reduced free gradient's products.
+    // Split the gradient: chopped gradient beta (at a bound, the part pointing into the box), and the reduced free gradient's products.
     double beta_sq = 0, gp_sq = 0;
     for (Eigen::Index i = 0; i < n; ++i) {
-      beta[i] = above_bound(x[i], lower[i]) ? 0.0 : std::min(g[i], 0.0);
+      beta[i] = bounds.free(i, x[i]) ? 0.0 : !above_bound(x[i], lower[i]) ? std::min(g[i], 0.0) : std::max(g[i], 0.0);
       beta_sq += beta[i] * beta[i];
       gp_sq += phi[i] * phi[i] + beta[i] * beta[i];
     }
-    const ReducedFreeGradient reduced = reduced_free_gradient(x, phi, lower, abar);
+    const ReducedFreeGradient reduced = reduced_free_gradient(x, phi, bounds, abar);
     const double phit_phi = reduced.dot_phi, phit_sq = reduced.squared_norm;
     result.gradient_norm = std::sqrt(gp_sq);
     if (monitor) monitor({"mprgp", iteration, result.gradient_norm, 0.0, counts.hessian, off_bound_count(x, lower)});
@@ -131,8 +159,8 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
       return result;
     }
     if (iteration == 0 && settings.settle_rounds > 0) {  // a start that passes the test is kept as is
-      settle_start(A, b, lower, settings.settle_rounds, settings.max_hessian, x, g, counts, preconditioner, monitor);
-      free_gradient(x, g, lower, phi);
+      settle_start(A, b, bounds, settings.settle_rounds, settings.max_hessian, x, g, counts, preconditioner, monitor);
+      free_gradient(x, g, bounds, phi);
       p = precondition_in_face();
       continue;
     }
@@ -149,13 +177,13 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
       }
       const double g_p = g.dot(p);
       const double a_cg = g_p / pAp;
-      const double a_f = feasible_step(x, p, lower);
+      const double a_f = feasible_step(x, p, bounds);
       if (a_cg <= a_f) {
         // Exact line search decreases f by (g'p)^2 / (2 p'Ap); the fixed step's guarantee:
         const bool guaranteed = 0.5 * a_cg * g_p >= abar * phit_phi - 0.5 * a_norm * abar * abar * phit_sq;
         x -= a_cg * p;   // x_{k+1} = x_k - a_cg p
         g -= a_cg * Ap;  // g = A x - b
-        free_gradient(x, g, lower, phi);
+        free_gradient(x, g, bounds, phi);
         const Vec& direction = precondition_in_face();
         if (continued && !guaranteed) {
           p = direction;
@@ -174,11 +202,11 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
           const double f_x = 0.5 * x.dot(g - b);
           const double f_half = f_x - a_f * g.dot(p) + 0.5 * a_f * a_f * pAp;
           trial = x - a_cg * p;
-          project_onto_bounds(trial, lower);
+          project_onto_bounds(trial, bounds);
           x -= a_f * p;
           g -= a_f * Ap;
-          free_gradient(x, g, lower, phi);
-          const ReducedFreeGradient at_half = reduced_free_gradient(x, phi, lower, abar);  // at x - a_f p
+          free_gradient(x, g, bounds, phi);
+          const ReducedFreeGradient at_half = reduced_free_gradient(x, phi, bounds, abar);  // at x - a_f p
           const double guaranteed =
               f_half - abar * at_half.dot_phi + 0.5 * a_norm * abar * abar * at_half.squared_norm;
           multiply(trial, A_trial);
@@ -193,15 +221,15 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
         } else {
           x -= a_f * p;
           g -= a_f * Ap;
-          free_gradient(x, g, lower, phi);
+          free_gradient(x, g, bounds, phi);
         }
         if (!expanded) {
           x -= abar * phi;  // expansion: fixed-step projected gradient step
-          project_onto_bounds(x, lower);
+          project_onto_bounds(x, bounds);
           multiply(x, Ap);
           g = Ap - b;
         }
-        free_gradient(x, g, lower, phi);
+        free_gradient(x, g, bounds, phi);
         const Vec& direction = precondition_in_face();
         continued = false;
         if (expanded && settings.expansion == MprgpExpansion::projected_cg) {
@@ -209,7 +237,7 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
           // every expansion is steepest descent where the contact zone's edge moves a band per
           // step (the large contact zone: 1.7 times the multiplications, docs/algorithms.md).
           for (Eigen::Index i = 0; i < n; ++i)
-            if (!above_bound(x[i], lower[i])) p[i] = 0.0;
+            if (!bounds.free(i, x[i])) p[i] = 0.0;
           trial = direction - (direction.dot(Ap) / pAp) * p;  // Ap = A p of the last direction
           continued = trial.dot(g) > 0;                       // a descent direction, or restart
         }
@@ -224,10 +252,14 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, doubl
         result.status = SolveStatus::not_positive_definite;
         return result;
       }
-      const double a = g.dot(beta) / dAd;
+      // Exact line search along beta, held inside the box: with upper bounds a component
+      // released from one bound could otherwise pass the other (lower bounds only: no cap).
+      const double a_feasible = feasible_step(x, beta, bounds);
+      const double a = std::min(g.dot(beta) / dAd, a_feasible);
       x -= a * beta;
+      if (a == a_feasible) project_onto_bounds(x, bounds);  // the bound reached exactly, not round-off past it
       g -= a * Ap;
-      free_gradient(x, g, lower, phi);
+      free_gradient(x, g, bounds, phi);
       p = precondition_in_face();
       continued = false;
       ++counts.proportioning;

@@ -1,5 +1,6 @@
 // MPRGP: modified proportioning with reduced gradient projections (Dostal 1997), for
-//   min 1/2 x'Ax - b'x  subject to  x_i >= l_i  (l_i = kUnbounded: component i is free).
+//   min 1/2 x'Ax - b'x  subject to  l_i <= x_i <= u_i  (l_i = kUnbounded, u_i = +infinity:
+//   no bound; the frictionless dual has lower bounds only, friction's tangential rows both).
 #pragma once
 
 #include "qp/qp_types.h"
@@ -33,9 +34,13 @@ using MprgpResult = QpResult;
 /// Projected gradient gP = phi + beta of ALGORITHMS.md section 4:
 /// gP_i = g_i where x_i is free (unbounded or x_i > l_i), min(g_i, 0) where x_i = l_i.
 Vec projected_gradient(const Vec& x, const Vec& g, const Vec& lower);
+/// The same for box bounds: max(g_i, 0) where x_i = u_i.
+Vec projected_gradient(const Vec& x, const Vec& g, const Bounds& bounds);
 
 /// Sets the components of x below their bound to it; returns how many there were.
 int project_onto_bounds(Vec& x, const Vec& lower);
+/// The same for box bounds (components above u_i set to it).
+int project_onto_bounds(Vec& x, const Bounds& bounds);
 
 /// Bounded components of x above their bound: for the FETI dual, the contact rows with a
 /// positive multiplier (the contact set).
@@ -51,6 +56,14 @@ int off_bound_count(const Vec& x, const Vec& lower);
 /// restricted to the free set (an SPD preconditioner of the face's reduced problem); the
 /// expansion and proportioning steps, and so the convergence guarantees, are unchanged.
 MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, double a_norm,
+                  Vec& x, Vec& g, bool gradient_is_current, const MprgpSettings& settings,
+                  const StopTest& stop, const Monitor& monitor = {}, const LinearOperator& preconditioner = {});
+
+/// The same for box bounds (Dostal's MPRGP for bound constraints on both sides: the free
+/// set excludes both bounds, the chopped gradient points into the box, the reduced free
+/// gradient and the feasible step respect both). With `bounds.upper` null it is the call
+/// above, iterate for iterate.
+MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Bounds& bounds, double a_norm,
                   Vec& x, Vec& g, bool gradient_is_current, const MprgpSettings& settings,
                   const StopTest& stop, const Monitor& monitor = {}, const LinearOperator& preconditioner = {});
 

@@ -35,6 +35,18 @@ std::string to_string(SolveStatus status);
 /// Component x of an iterate is off its lower bound l (always so where l = kUnbounded).
 inline bool above_bound(double x, double l) { return l == kUnbounded || x > l; }
 
+/// Box bounds l_i <= x_i <= u_i of a QP: kUnbounded in `lower` where a component has no
+/// lower bound; `upper` null where no component has an upper one (the frictionless dual,
+/// whose contact multipliers are bounded below only), else +infinity where one has none.
+struct Bounds {
+  const Vec& lower;
+  const Vec* upper = nullptr;
+
+  /// x_i strictly inside its bounds: free to move either way.
+  bool free(Eigen::Index i, double x) const { return above_bound(x, lower[i]) && (!upper || x < (*upper)[i]); }
+  bool has_upper(Eigen::Index i) const { return upper && (*upper)[i] < std::numeric_limits<double>::infinity(); }
+};
+
 /// Machine-independent cost of one solve. Every application of the Hessian inside the
 /// solve is counted in `hessian`; the norm estimate's multiplications are kept apart.
 struct IterationCounts {

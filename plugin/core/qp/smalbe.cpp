@@ -25,9 +25,10 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
     throw std::invalid_argument("SMALBE: incomplete problem");
   const Vec& b = *problem.b;
   const Vec& lower = *problem.lower;
+  const Bounds bounds{lower, problem.upper};
   const Eigen::Index n = b.size();
-  if (x.size() != n || lower.size() != n)
-    throw std::invalid_argument("SMALBE: x, b and lower bounds differ in size");
+  if (x.size() != n || lower.size() != n || (problem.upper && problem.upper->size() != n))
+    throw std::invalid_argument("SMALBE: x, b and the bounds differ in size");
   if (!(problem.hessian_norm > 0)) throw std::invalid_argument("SMALBE: ||H|| must be > 0");
 
   SmalbeResult result;
@@ -72,7 +73,7 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
       problem.range_projector(xi, Qx);
       const double q_norm = Qx.norm();
       // Projected gradient of L(x, nu, 0): the gradient without its penalty part rho Q x.
-      const Vec gp0 = projected_gradient(xi, gi - rho * Qx, lower);
+      const Vec gp0 = projected_gradient(xi, gi - rho * Qx, bounds);
       result.gradient_norm = gp0.norm();
       result.equality_norm = q_norm;
       if (monitor)
@@ -93,7 +94,7 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
     inner.max_hessian = settings.max_hessian - result.counts.hessian;
     if (outer > 0) inner.settle_rounds = 0;  // a start is settled once, not every multiplier update
     const MprgpResult inner_result =
-        mprgp(A, shifted_b, lower, std::max(problem.hessian_norm, rho), x, g,
+        mprgp(A, shifted_b, bounds, std::max(problem.hessian_norm, rho), x, g,
               gradient_is_current, inner, inner_stop, {}, inner_preconditioner);
     result.counts += inner_result.counts;
     result.rho = rho;

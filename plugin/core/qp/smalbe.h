@@ -1,5 +1,5 @@
 // SMALBE: semimonotonic augmented Lagrangians for bound and equality constraints,
-//   min 1/2 x'Hx - b'x  subject to  x_i >= l_i  and  C x = 0,
+//   min 1/2 x'Hx - b'x  subject to  l_i <= x_i <= u_i  and  C x = 0,
 // with MPRGP on the bound-constrained subproblems. The equality constraint enters only
 // through Q, the orthogonal projector onto Im C' (C x = 0 <=> Q x = 0); with orthonormal
 // rows of C the penalty term rho/2 ||C x||^2 equals rho/2 x'Qx.
@@ -45,6 +45,7 @@ struct SmalbeProblem {
   /// preconditions in face with P M P + Q / rho (P = I - Q), the inverse's approximation
   /// of H + rho Q.
   LinearOperator preconditioner;
+  const Vec* upper = nullptr;              ///< upper bounds (+infinity where none); null: none
 };
 
 /// Global stopping test: x, gP(x, nu, 0) (projected gradient of the Lagrangian without

@@ -61,18 +61,18 @@ void solve_on_face(const LinearOperator& A, const std::vector<char>& face, int m
 
 }  // namespace
 
-void settle_start(const LinearOperator& A, const Vec& b, const Vec& lower, int rounds, int max_hessian,
+void settle_start(const LinearOperator& A, const Vec& b, const Bounds& bounds, int rounds, int max_hessian,
                   Vec& x, Vec& g, IterationCounts& counts, const LinearOperator& preconditioner,
                   const Monitor& monitor) {
   const Eigen::Index n = x.size();
   std::vector<char> face(n);
   Vec y, gy, Ay;
   for (int round = 0; round < rounds && counts.hessian + 1 < max_hessian; ++round) {
-    for (Eigen::Index i = 0; i < n; ++i) face[i] = above_bound(x[i], lower[i]);
+    for (Eigen::Index i = 0; i < n; ++i) face[i] = bounds.free(i, x[i]);
     y = x;
     gy = g;
     solve_on_face(A, face, max_hessian - 1, y, gy, counts, preconditioner);
-    const int released = project_onto_bounds(y, lower);
+    const int released = project_onto_bounds(y, bounds);
     if (released > 0) {
       A(y, Ay);
       ++counts.hessian;
@@ -82,7 +82,8 @@ void settle_start(const LinearOperator& A, const Vec& b, const Vec& lower, int r
     x.swap(y);
     g.swap(gy);
     if (monitor)
-      monitor({"settle", round, projected_gradient(x, g, lower).norm(), 0.0, counts.hessian, off_bound_count(x, lower)});
+      monitor({"settle", round, projected_gradient(x, g, bounds).norm(), 0.0, counts.hessian,
+               off_bound_count(x, bounds.lower)});
     if (released == 0) return;
   }
 }
