@@ -5,17 +5,20 @@ time and accuracy over h, for the expansion step (fixed step against projected C
 restarted or continued after it) and the
 stopping test (the seed's against the relative KKT one), side by side in one run. Accuracy
 is measured against a primal-dual active set solution of the unsplit problem (UMFPACK) up
-to n = 160, and against ffeti at tol = 1e-10 beyond. Writes docs/results/large-contact.md
-and its plot. FFETI_LARGE_CONTACT_SIZES overrides the sizes (default "40 80 160 320")."""
+to n = 160, and against ffeti at tol = 1e-10 beyond. Writes the raw data of one run
+(docs/results/large-contact-cases.csv, large-contact-references.csv, large-contact-trace.csv)
+and renders docs/results/large-contact.md and its plots from it (--render: again from the
+CSVs, no run). FFETI_LARGE_CONTACT_SIZES overrides the sizes (default "40 80 160 320")."""
+import argparse
 import os
 import re
-import time
 
 import matplotlib
 
 matplotlib.use("Agg")
 
-from ffeti_bench import OUT, f, machine, plot_cost_over_unknowns, run, save_page  # noqa: E402
+from ffeti_bench import (OUT, begin_run, end_run, f, machine_line, markdown_table, plot_cost_over_unknowns,  # noqa: E402
+                         read_csv, run, save_page, span, write_csv)
 
 SIZES = [int(n) for n in os.environ.get("FFETI_LARGE_CONTACT_SIZES", "40 80 160 320").split()]
 # At fixed H/h (option Hh) one more size, twice the largest (about 900,000 unknowns, 2048
@@ -72,15 +75,24 @@ def trace(n, **options):
     return [(int(h), float(g), int(c)) for h, g, c in PROGRESS.findall(output)]
 
 
-def plot_traces(traces, contact, n, name):
+PAGE = "large-contact"
+TOL = "1e-4"  # the scene's default, every case
+# The traces of the second figure, in drawing order (the settled run last: on top of the
+# unsettled one where they overlap).
+TRACES = [("default (cold start)", {}), ("nested over n/2, not settled (before)", {"nested": 1, "settle": 0}),
+          ("nested over n/2, start settled", {"nested": 1})]
+
+
+def plot_traces(trace_rows, contact, n, subdomains, name):
     """Couples in contact and ||gP|| against the Hessian multiplications, one line per trace."""
     import matplotlib.pyplot as plt
 
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.6))
-    for label, points in traces.items():
-        hessian = [p[0] for p in points]
-        axes[0].plot(hessian, [p[2] for p in points], ".-", label=label)
-        axes[1].semilogy(hessian, [p[1] for p in points], ".-", label=label)
+    for label, _ in TRACES:
+        points = [p for p in trace_rows if p["trace"] == label]
+        hessian = [int(p["hessian"]) for p in points]
+        axes[0].plot(hessian, [int(p["contact"]) for p in points], ".-", label=label)
+        axes[1].semilogy(hessian, [f(p, "gP") for p in points], ".-", label=label)
     axes[0].axhline(contact, color="k", linestyle="--", linewidth=0.8, label="contact set of the solution")
     axes[0].set_ylabel("couples in contact")
     axes[1].set_ylabel("||gP||_2")
@@ -88,65 +100,87 @@ def plot_traces(traces, contact, n, name):
         ax.set_xlabel("Hessian multiplications")
         ax.grid(True, alpha=0.3)
     axes[0].legend(fontsize=8)
-    fig.suptitle(f"Large contact zone, n = {n}, 9 subdomains: how MPRGP finds the contact set")
+    fig.suptitle(f"Large contact zone, n = {n}, {subdomains} subdomains: how MPRGP finds the contact set")
     fig.tight_layout()
     fig.savefig(os.path.join(OUT, name), dpi=110)
     plt.close(fig)
 
 
-def ring_summary(n, reference):
+def ring_summary(reference):
     """The active set reference starts with every couple in contact and releases couples until
     the set repeats: couples released per iteration, beside the edge of the contact zone (a
     square-like zone of c nodes has about 4 sqrt(c) on its edge)."""
     contact = int(reference["active_reference"])
     released = (int(reference["couples"]) - contact) / max(int(reference["pdas_iterations"]) - 1, 1)
-    return (f"n = {n}: {reference['pdas_iterations']} active set iterations, {f(reference, 'time_reference'):.1f} s, "
-            f"{released:.0f} couples released per iteration (edge of the zone: {4 * contact ** 0.5:.0f} nodes)")
+    return (f"n = {reference['n']}: {reference['pdas_iterations']} active set iterations, "
+            f"{f(reference, 'time_reference'):.1f} s, {released:.0f} couples released per iteration "
+            f"(edge of the zone: {4 * contact ** 0.5:.0f} nodes)")
 
 
 def main():
-    started = time.time()
-    runs = {label: [] for label, _ in CASES}
-    references = {}
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--render", action="store_true", help="re-render the page from its CSVs, no run")
+    if not parser.parse_args().render:
+        measure()
+    render()
+
+
+def measure():
+    begun = begin_run()
+    references, cases = [], []
     for n in SIZES:
-        with_reference = n <= LARGEST_REFERENCE
-        if with_reference:
-            references[n] = scene(n, reference=1)  # also the default case
+        if n <= LARGEST_REFERENCE:
+            references.append(dict(kind="active set", **scene(n, reference=1)))  # also the default case
         else:
-            references[n] = scene(n, reference=0, tol=1e-10)
-        for label, options in CASES:
-            r = scene(n, reference=0, **options)
-            runs[label].append(r)
-            if options.get("glued"):
-                continue  # another problem: no energy to compare
-            reference = references[n]
-            q_ref = f(reference, "energy_reference") if with_reference else f(reference, "energy")
-            r["error_vs_reference"] = (f(r, "energy") - q_ref) / abs(q_ref)
-            r["reference_kind"] = "active set" if with_reference else "ffeti tol 1e-10"
-            r["active_reference"] = reference["active_reference"] if with_reference else reference["active"]
-    for label, options in CASES:
-        if "Hh" in options:
-            runs[label].append(scene(FIXED_H_EXTRA_SIZE, reference=0, **options))
-    plotted = {label: runs[label] for label in PLOTTED}
-    plot_cost_over_unknowns(plotted, "Large contact zone (every interior node a couple), tol = 1e-4", "large-contact.png",
-                            legend_columns=2)
+            references.append(dict(kind="ffeti tol 1e-10", **scene(n, reference=0, tol=1e-10)))
+        cases += [dict(case=label, **scene(n, reference=0, **options)) for label, options in CASES]
+    cases += [dict(case=label, **scene(FIXED_H_EXTRA_SIZE, reference=0, **options))
+              for label, options in CASES if "Hh" in options]
+    write_csv(PAGE, "references", references)
+    write_csv(PAGE, "cases", cases)
     largest = SIZES[-1]
-    # The settled run last: drawn on top of the unsettled one where they overlap.
-    traces = {"default (cold start)": trace(largest), "nested over n/2, not settled (before)": trace(largest, nested=1, settle=0),
-              "nested over n/2, start settled": trace(largest, nested=1)}
-    plot_traces(traces, int(references[largest]["active_reference"] if largest <= LARGEST_REFERENCE
-                            else references[largest]["active"]), largest, "large-contact-trace.png")
+    write_csv(PAGE, "trace", [dict(trace=label, n=largest, hessian=h, gP=g, contact=c)
+                              for label, options in TRACES for h, g, c in trace(largest, **options)])
+    end_run(PAGE, begun)
+
+
+def render():
+    references, cases, trace_rows = (read_csv(PAGE, table) for table in ("references", "cases", "trace"))
+    run_row = read_csv(PAGE, "run")[0]
+    by_n = {r["n"]: r for r in references}
+    for r in cases:  # the energy error against the reference and the reference's contact set
+        reference = by_n.get(r["n"])
+        if reference is None or r["glued"] == "1":
+            continue  # no reference at the extra size; glued: another problem, no energy to compare
+        active_set = reference["kind"] == "active set"
+        q_ref = f(reference, "energy_reference") if active_set else f(reference, "energy")
+        r["error_vs_reference"] = (f(r, "energy") - q_ref) / abs(q_ref)
+        r["active_reference"] = reference["active_reference"] if active_set else reference["active"]
+    plotted = {label: [r for r in cases if r["case"] == label] for label in PLOTTED}
+    plot_cost_over_unknowns(plotted, f"Large contact zone (every interior node a couple), tol = {TOL}",
+                            "large-contact.png", legend_columns=2)
+    largest = references[-1]
+    trace_n = trace_rows[0]["n"]
+    subdomains = next(r["subdomains"] for r in cases if r["n"] == trace_n and r["case"] == CASES[0][0])
+    plot_traces(trace_rows, int(largest["active_reference"] if largest["kind"] == "active set" else largest["active"]),
+                trace_n, subdomains, "large-contact-trace.png")
+    order = {label: k for k, (label, _) in enumerate(CASES)}
+    rows = sorted(cases, key=lambda r: (int(r["n"]), order[r["case"]]))
+    seed_stop = [max(f(r, "kkt_equality"), f(r, "kkt_inequality")) / float(TOL) for r in cases
+                 if r["stop"] == "seed" and r["glued"] == "0"]
     lines = [
         "# A large contact zone: expansion steps and the stopping test",
         "",
         "Generated by `scripts/benchmark.sh large-contact` (do not edit by hand) on:",
-        f"{machine()}. Whole run: {time.time() - started:.0f} s.",
+        machine_line(run_row),
         "",
         "The scene (`edp/large-contact.edp`): two membranes stacked over the unit square, both clamped",
         "on their whole boundary, the upper one (load -1) pressed onto the lower one across a gap of",
         "0.01; every interior node is a contact couple, about half end up in contact. The split is",
         "fixed, 9 subdomains whatever h (H/h grows with n), none floats: the dual problem is bound",
-        "constrained and MPRGP solves it. tol = 1e-4 in every case.",
+        f"constrained and MPRGP solves it. tol = {TOL} in every case. Raw data:",
+        f"[{PAGE}-cases.csv]({PAGE}-cases.csv) (every solve), [{PAGE}-references.csv]({PAGE}-references.csv)",
+        f"(the reference solves), [{PAGE}-trace.csv]({PAGE}-trace.csv) (the progress lines of the second figure).",
         "",
         "- *H/h = 20 fixed* (`-Hh 20`): instead each membrane in squares of 20 cells per side, as the",
         "  seed measures scalability (H/h fixed as h shrinks); the inner squares float (the SMALBE-M",
@@ -154,7 +188,8 @@ def main():
         f"  run at n = {FIXED_H_EXTRA_SIZE}, without a reference.",
         "- *stop*: the default KKT test `||gP||_inf <= tol ||u||_inf` bounds the relative constraint",
         "  violation (gluing jumps, penetration) of the primal solution; the seed's `||gP||_2 <= tol ||b||_2`",
-        "  sums over all rows, so with thousands of couples it stops with violations 5 to 9 times tol.",
+        "  sums over all rows, so with thousands of couples it stops with violations",
+        f"  {span(seed_stop, '.1f')} times tol in this run.",
         "- *expansion*: the fixed step (`expansion=\"fixed\"`) moves each multiplier by at most",
         "  abar |phi_i| per expansion; the projected CG step takes the whole CG step and",
         "  projects it, kept if it decreases the cost at least as much as the fixed step is",
@@ -175,7 +210,7 @@ def main():
         "  and their whole time (assembly, set-up, solve, transfer) are in their own column.",
         "",
         "Energy error: relative to the reference (a primal-dual active set solution of the unsplit",
-        "problem up to n = 160, ffeti at tol 1e-10 beyond); negative means below the minimum, which",
+        f"problem up to n = {LARGEST_REFERENCE}, ffeti at tol 1e-10 beyond); negative means below the minimum, which",
         "only a solution that violates the constraints can reach. \"violation\": the largest",
         "relative KKT residual of the returned solution (equality, inequality; fetiInfo). Contact:",
         "couples with a positive multiplier, and in the reference. \"glued\": both membranes one",
@@ -185,39 +220,31 @@ def main():
         "contact set. Every interior node is a couple, so no subdomain has interior dofs and the",
         "Dirichlet preconditioner is the lumped one (the default), at no factorization.",
         "",
-        "| n | unknowns | couples | subdomains | case | outer | Hessian mult. | expansions | fallbacks | CG steps | settle |"
-        " solve [s] | coarser levels: mult. (finest equiv.), [s] | energy error | violation | contact (reference) |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
-    ]
-    for n in SIZES + [FIXED_H_EXTRA_SIZE]:
-        for label, _ in CASES:
-            rows = [r for r in runs[label] if int(r["n"]) == n]
-            if not rows:
-                continue
-            r = rows[0]
-            violation = max(f(r, "kkt_equality"), f(r, "kkt_inequality"))
-            error = f"{r['error_vs_reference']:.1e}" if "error_vs_reference" in r else "-"
-            contact = f"{r['active']} ({r['active_reference']})" if "error_vs_reference" in r else "-"
-            coarser = (f"{r['nested_hessian']} ({f(r, 'nested_work'):.0f}), {f(r, 'time_nested'):.2f}"
-                       if f(r, "nested") > 0 else "-")
-            lines.append(
-                f"| {n} | {r['primal']} | {r['couples']} | {r['subdomains']} | {label} | {r['outer']} | {r['hessian']} | {r['expansion']} | "
-                f"{r['expansion_fallback']} | {r['cg']} | {r['settle']} | {f(r, 'time_solve'):.3f} | {coarser} | {error} | "
-                f"{violation:.1e} | {contact} |")
-    lines += [
+        *markdown_table(rows, [
+            ("n", "n"), ("unknowns", "primal"), ("couples", "couples"), ("subdomains", "subdomains"), ("case", "case"),
+            ("outer", "outer"), ("Hessian mult.", "hessian"), ("expansions", "expansion"),
+            ("fallbacks", "expansion_fallback"), ("CG steps", "cg"), ("settle", "settle"),
+            ("solve [s]", ("time_solve", ".3f")),
+            ("coarser levels: mult. (finest equiv.), [s]", lambda r: (
+                f"{r['nested_hessian']} ({f(r, 'nested_work'):.0f}), {f(r, 'time_nested'):.2f}"
+                if f(r, "nested") > 0 else "-")),
+            ("energy error", ("error_vs_reference", ".1e")),
+            ("violation", lambda r: f"{max(f(r, 'kkt_equality'), f(r, 'kkt_inequality')):.1e}"),
+            ("contact (reference)", lambda r: f"{r['active']} ({r['active_reference']})" if "error_vs_reference" in r
+             else "-")]),
         "",
         "Reference solutions (from every couple in contact): " + "; ".join(
-            ring_summary(n, references[n]) for n in SIZES if n <= LARGEST_REFERENCE) + ".",
+            ring_summary(r) for r in references if r["kind"] == "active set") + ".",
         "",
         "![large contact zone](large-contact.png)",
         "",
-        f"MPRGP's progress at n = {largest} (9 subdomains): couples in contact and the projected gradient",
+        f"MPRGP's progress at n = {trace_n} ({subdomains} subdomains): couples in contact and the projected gradient",
         "after each step (and each round settling a nested start), against the Hessian multiplications so far.",
         "",
         "![how the contact set is found](large-contact-trace.png)",
         "",
     ]
-    save_page("large-contact.md", lines)
+    save_page(f"{PAGE}.md", lines)
 
 
 if __name__ == "__main__":
