@@ -1,12 +1,15 @@
 #!/usr/bin/env python3
 """Contact shape optimization (the seed's second half): the two design loops, what a
-gradient costs against an analysis, and the gradient checks. Writes
-docs/results/shape-optimization.md and its pictures from one run on this machine."""
+gradient costs against an analysis, and the gradient checks. Writes the raw data of one run
+on this machine (docs/results/shape-optimization-<table>.csv: loops, history, costs,
+gradient-checks, and the uniform-pressure section's) and renders
+docs/results/shape-optimization.md and its plots from it (--render: again from the CSVs;
+the spanner pictures come from the run's stress fields, not kept, and stay as they are)."""
+import argparse
 import glob
 import os
 import subprocess
 import tempfile
-import time
 
 import matplotlib
 
@@ -14,7 +17,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
-from ffeti_bench import EDP, OUT, ROOT, f, machine, run, save_page  # noqa: E402
+from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, machine_line, markdown_table, read_csv, run,  # noqa: E402
+                         save_page, write_csv)
 import uniform_pressure_section  # noqa: E402
 
 MESHES = os.path.join(ROOT, "meshes")
@@ -103,18 +107,30 @@ def spanner_picture(folder, name):
     plt.close(fig)
 
 
-def history_plot(curves, maxima, name):
-    """Left: cost over its initial value per design step; right: the spanners' true
-    maximum von Mises stress (not the aggregate the loop minimizes) per design step."""
+PAGE = "shape-optimization"
+# The seed paper's spanner (published figures, not measured here): its design steps (a
+# feasible direction method) and seconds per analysis in ODESSY, and in ANSYS (minutes).
+SEED_SPANNER = {"steps": 79, "odessy_s": 13, "ansys_min": 12}
+MEMBRANE_LOOP = "membranes, h = 1/128"
+
+
+def history_plot(history_rows, name):
+    """Left: cost over its initial value per design step (the membranes' loop and the
+    pictured spanner loops); right: the spanners' true maximum von Mises stress (not the
+    aggregate the loop minimizes) per design step. From shape-optimization-history.csv."""
     fig, (left, right) = plt.subplots(1, 2, figsize=(11, 3.8))
-    for label, costs in curves:
+    loops = list(dict.fromkeys(r["loop"] for r in history_rows))
+    for loop in loops:
+        rows = [r for r in history_rows if r["loop"] == loop]
+        costs = [f(r, "cost") for r in rows]
+        label = loop if loop == MEMBRANE_LOOP else "spanner, " + loop
         left.plot(range(1, len(costs) + 1), [c / costs[0] for c in costs], "o-", ms=3, label=label)
+        if loop != MEMBRANE_LOOP:
+            right.plot(range(1, len(rows) + 1), [f(r, "true_max") for r in rows], "o-", ms=3, label=loop)
     left.set_xlabel("design step (analysis)")
     left.set_ylabel("cost / initial cost")
     left.set_title("Cost history")
     left.legend(fontsize=8)
-    for label, values in maxima:
-        right.plot(range(1, len(values) + 1), values, "o-", ms=3, label=label)
     right.set_xlabel("design step (analysis)")
     right.set_ylabel("largest von Mises stress away from the slot [MPa]")
     right.set_title("Spanner: the true maximum")
@@ -125,50 +141,110 @@ def history_plot(curves, maxima, name):
 
 
 def main():
-    started = time.time()
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--render", action="store_true",
+                        help="re-render the page from its CSVs, no run (the spanner pictures are kept)")
+    if not parser.parse_args().render:
+        measure()
+    render()
+
+
+def measure():
+    begun = begin_run()
     os.makedirs(OUT, exist_ok=True)
     with tempfile.TemporaryDirectory() as folder:
+        loops, history_rows = [], []
         membrane = run("membrane-shape.edp", "-history", os.path.join(folder, "m.history"))["RESULT"][0]
-        membrane_costs, _ = history(os.path.join(folder, "m.history"))
-        spanners, curves, maxima = [], [("membranes, h = 1/128", membrane_costs)], []
+        loops.append(dict(case="membranes h = 1/128", kind="membranes", **membrane))
+        costs, _ = history(os.path.join(folder, "m.history"))
+        history_rows += [dict(loop=MEMBRANE_LOOP, step=k + 1, cost=c) for k, c in enumerate(costs)]
         for label, name, args in SPANNER_LOOPS:
             path = os.path.join(folder, name + ".history")
             out = ["-out", os.path.join(folder, "spanner")] if name in SPANNER_PICTURES else []
             args = [a.replace("{folder}", folder) if isinstance(a, str) else a for a in args]
             r = run("spanner-opt.edp", "-meshes", MESHES, *args, "-history", path, *out)["RESULT"][0]
-            spanners.append((label, r))
-            costs, true_max = history(path)
+            loops.append(dict(case=label, kind="spanner", **r))
             if name in SPANNER_PICTURES:
+                # The stress fields are drawn from the run's own files (tens of thousands of
+                # triangles: not kept); the cost history of the pictured loops is kept.
                 spanner_picture(folder, SPANNER_PICTURES[name])
-                curves.append(("spanner, " + label, costs))
-                maxima.append((label, true_max))
-        uniform = uniform_pressure_section.section(folder)
-    history_plot(curves, maxima, "shape-optimization-history.png")
-    checks = [(label, gradient_check(script, args)) for label, script, args in GRADIENT_CHECKS]
-    costs = [(label, run(script, *args, "-costs", 1, prefixes=("COSTS",))["COSTS"][0]) for label, script, args in COSTS]
-    write_page(uniform, membrane, spanners, checks, costs, time.time() - started)
+                costs, true_max = history(path)
+                history_rows += [dict(loop=label, step=k + 1, cost=c, true_max=m)
+                                 for k, (c, m) in enumerate(zip(costs, true_max))]
+        uniform_pressure_section.measure(folder)
+    write_csv(PAGE, "loops", loops)
+    write_csv(PAGE, "history", history_rows)
+    write_csv(PAGE, "gradient-checks", [dict(case=label, **gradient_check(script, args))
+                                        for label, script, args in GRADIENT_CHECKS])
+    write_csv(PAGE, "costs", [dict(case=label, **run(script, *args, "-costs", 1, prefixes=("COSTS",))["COSTS"][0])
+                              for label, script, args in COSTS])
+    end_run(PAGE, begun)
 
 
-def loop_row(label, r, max_key=None):
-    maximum = (f"{f(r, max_key + '0'):.1f} → {f(r, max_key):.1f} ({100 * (1 - f(r, max_key) / f(r, max_key + '0')):.1f} %)"
-               if max_key else "–")
-    steps = int(r["steps"])
-    return (f"| {label} | {steps} | {f(r, 'cost0'):.5g} → {f(r, 'cost'):.5g} | {maximum} | "
-            f"{f(r, 'volume') / f(r, 'volume0'):.6f} | {r['factorizations']} | {r['sensitivity_solves']} | "
-            f"{f(r, 'time_analysis') / steps:.3f} | {f(r, 'time_sensitivity') / steps:.3f} | "
-            f"{f(r, 'time_total'):.1f} | {r['ipopt_status']} | {r['status']} |")
+def maximum(r):
+    if r["kind"] != "spanner":
+        return "–"
+    before, after = f(r, "vonmises_max0"), f(r, "vonmises_max")
+    return f"{before:.1f} → {after:.1f} ({100 * (1 - after / before):.1f} %)"
 
 
-def write_page(uniform, membrane, spanners, checks, costs, elapsed):
-    by_name = dict(spanners)
+def loop_label(r):
+    if r["kind"] == "spanner":
+        return f"spanner {r['case']}, {r['unknowns']} unknowns, {r['couples']} couples, {r['subdomains']} subdomains"
+    return f"{r['case']} ({r.get('design', '').count(',') + 1} variables)"
+
+
+LOOPS = [("loop", loop_label), ("design steps", "steps"),
+         ("cost before → after", lambda r: f"{f(r, 'cost0'):.5g} → {f(r, 'cost'):.5g}"),
+         ("max von Mises [MPa]", maximum), ("area / area0", lambda r: f"{f(r, 'volume') / f(r, 'volume0'):.6f}"),
+         ("factorizations", "factorizations"), ("sensitivity solves", "sensitivity_solves"),
+         ("analysis [s/step]", lambda r: f"{f(r, 'time_analysis') / int(r['steps']):.3f}"),
+         ("gradient [s/step]", lambda r: f"{f(r, 'time_sensitivity') / int(r['steps']):.3f}"),
+         ("total [s]", ("time_total", ".1f")), ("IPOPT status", "ipopt_status"), ("status", "status")]
+COST_COLUMNS = [
+    ("scene", "case"), ("unknowns", "unknowns"), ("subdomains", "subdomains"), ("k", "variables"),
+    ("analysis [s]", ("analysis", ".3f")),
+    ("direct, per variable [s] (x analysis)", lambda c: f"{f(c, 'direct_all') / f(c, 'variables'):.3f} "
+                                                        f"({f(c, 'direct_all') / f(c, 'variables') / f(c, 'analysis'):.2f})"),
+    ("of which plugin [s]", lambda c: f"{f(c, 'direct_plugin') / f(c, 'variables'):.4f}"),
+    ("adjoint, all k [s] (x analysis)", lambda c: f"{f(c, 'adjoint_all'):.3f} ({f(c, 'adjoint_all') / f(c, 'analysis'):.2f})"),
+    ("of which plugin [s]", ("adjoint_plugin", ".4f")), ("finite differences [s]", ("fd_all", ".2f")),
+    ("Hessian mult.: state / direct, all k / adjoint", lambda c: " / ".join(
+        str(int(f(c, key))) for key in ("state_hessian", "direct_hessian", "adjoint_hessian")))]
+BLOCK_COLUMNS = [
+    ("scene", "case"), ("unknowns", "unknowns"), ("subdomains", "subdomains"), ("k", "variables"),
+    ("Hessian mult. per direction", lambda c: f"{f(c, 'direct_hessian') / f(c, 'variables'):.0f}"),
+    ("plugin, one call each [s]", ("direct_plugin_one_by_one", ".4f")),
+    ("plugin, one call for all k [s]", ("direct_plugin", ".4f")),
+    ("speed-up", lambda c: f"{f(c, 'direct_plugin_one_by_one') / f(c, 'direct_plugin'):.2f}"),
+    ("plugin share of the direct mode", lambda c: f"{f(c, 'direct_plugin') / f(c, 'direct_all'):.0%}"),
+    ("difference", ("one_by_one_difference", ".1e"))]
+
+
+def render():
+    loops, history_rows, checks, costs = (read_csv(PAGE, table) for table in ("loops", "history", "gradient-checks",
+                                                                              "costs"))
+    run_row = read_csv(PAGE, "run")[0]
+    history_plot(history_rows, "shape-optimization-history.png")
+    uniform = uniform_pressure_section.section()
+    write_page(uniform, loops, checks, costs, run_row)
+
+
+def write_page(uniform, loops, checks, costs, run_row):
+    by_name = {r["case"]: r for r in loops}
+    spanners = [r for r in loops if r["kind"] == "spanner"]
+    membrane = next(r for r in loops if r["kind"] == "membranes")
     carried, finer, carried_fine, fine = (by_name[label] for label, _, _ in SPANNER_LOOPS[2:6])
     same_design = abs(f(carried, "vonmises_max0") / f(finer, "vonmises_max") - 1)
     same_design_fine = abs(f(carried_fine, "vonmises_max0") / f(fine, "vonmises_max") - 1)
+    one_per_subdomain = all(int(r["factorizations"]) == int(r["steps"]) * int(r["subdomains"]) for r in spanners)
+    extra_solves = [r for r in loops if int(r["sensitivity_solves"]) != int(r["steps"])]
+    membrane_change = abs(1 - f(membrane, "cost") / f(membrane, "cost0"))
     lines = [
         "# Contact shape optimization",
         "",
         "Generated by `scripts/benchmark.sh shape-optimization` (do not edit by hand) on:",
-        f"{machine()}. Whole run: {elapsed:.0f} s.",
+        machine_line(run_row),
         "",
         "The seed's second half: semi-analytic sensitivities (seed eq. 12) on the state's",
         "factorizations, and design loops driven by IPOPT (FreeFEM's ff-Ipopt, L-BFGS) with",
@@ -183,34 +259,36 @@ def write_page(uniform, membrane, spanners, checks, costs, elapsed):
         "stress, frictionless node-to-segment contact), the p-norm (p = 24) of the von Mises",
         "stress away from the slot minimized over the whole outer outline of the head and the",
         "head-handle transition (upper and lower curves from x = -45 mm, in the handle, to the",
-        f"jaw tips: 2 x 8 B-spline bumps, |alpha| <= 3 mm), area not above the drawn spanner's;",
+        "jaw tips: 2 x 8 B-spline bumps, |alpha| <= 3 mm), area not above the drawn spanner's;",
         "the moved mesh is remeshed where an element keeps less than 0.2 of its area. \"max von",
         "Mises\" is the true maximum of the element stresses away from the slot, the quantity",
         "the p-norm stands in for. Is it an optimum: IPOPT's optimality test (status 0), the",
         "same design from a second start, and the same design on a finer mesh: the lc = 1.9",
-        f"optimum evaluated on the lc = 1.0 and 0.4 meshes has a true maximum within",
+        "optimum evaluated on the lc = 1.0 and 0.4 meshes has a true maximum within",
         f"{100 * same_design:.1f} % and {100 * same_design_fine:.1f} % of those loops' own optima (the",
         "element stresses' maximum itself still grows under refinement: it is a peak resolved",
         "by P1 elements). `edp/membrane-shape.edp`: the seed's membranes,",
-        "minimal compliance over the bottom of membrane 1 (10 B-spline heights).",
+        "minimal compliance over the bottom of membrane 1 (10 B-spline heights). Raw data:",
+        f"[{PAGE}-loops.csv]({PAGE}-loops.csv) (one row per loop), [{PAGE}-history.csv]({PAGE}-history.csv) (the",
+        "plotted loops' cost and true maximum per design step); the spanner pictures are drawn",
+        "from the run's stress fields, which are not kept.",
         "",
-        "| loop | design steps | cost before → after | max von Mises [MPa] | area / area0 | factorizations |"
-        " sensitivity solves | analysis [s/step] | gradient [s/step] | total [s] | IPOPT status | status |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|",
-        *[loop_row(f"spanner {label}, {r['unknowns']} unknowns, {r['couples']} couples, {r['subdomains']} subdomains",
-                   r, "vonmises_max") for label, r in spanners],
-        loop_row(f"membranes h = 1/128 ({membrane.get('design', '').count(',') + 1} variables)", membrane),
+        *markdown_table(spanners + [membrane], LOOPS),
         "",
-        "Factorizations equal the design steps times the subdomains: one factorization per",
-        "subdomain and design step, whatever the number of design variables; sensitivity solves",
-        "are one adjoint solve per step. The seed needed 79 design steps for its spanner (a",
-        "feasible direction method) and 13 s per analysis in ODESSY (ANSYS: 12 minutes). The",
+        ("Factorizations equal the design steps times the subdomains in every spanner loop: one"
+         if one_per_subdomain else "Factorizations are not the design steps times the subdomains in every spanner loop: one"),
+        "factorization per subdomain and design step, whatever the number of design variables;",
+        "sensitivity solves are one adjoint solve per step"
+        + ("." if not extra_solves else ", except in " + ", ".join(
+            f"{r['case']} ({r['sensitivity_solves']} for {r['steps']} steps)" for r in extra_solves) + "."),
+        f"The seed needed {SEED_SPANNER['steps']} design steps for its spanner (a feasible direction method)",
+        f"and {SEED_SPANNER['odessy_s']} s per analysis in ODESSY (ANSYS: {SEED_SPANNER['ansys_min']} minutes). The",
         "\"evaluated\" rows take the lc = 1.9 optimum as their start and stop there (IPOPT at its",
         "iteration limit, hence their status): their \"before\" is that design on the finer mesh.",
         "",
         "The membranes' loop stays as the seed's example of the gradient machinery on a scalar",
         "problem, not as a design result: the bottom curve of membrane 1 hardly controls its",
-        "compliance (the loop moves it by a fraction of a percent, whatever the bounds). The",
+        f"compliance (the loop moves it by {100 * membrane_change:.1f} %). The",
         "contact design that a reader cares about, the contact pressure, is the uniform-pressure",
         "scene above, which replaces it as the demonstration.",
         "",
@@ -230,22 +308,9 @@ def write_page(uniform, membrane, spanners, checks, costs, elapsed):
         "(`fetiAdjointGradient`); spanner: one adjoint solve, then the exact P1 shape",
         "derivatives as one nodal shape gradient per subdomain (two varfs), each variable a dot",
         "product with its velocity. \"plugin\" is the part spent in the plugin's solves; the rest",
-        "is FreeFEM (assembly of K', the cost's derivatives).",
+        f"is FreeFEM (assembly of K', the cost's derivatives). Raw data: [{PAGE}-costs.csv]({PAGE}-costs.csv).",
         "",
-        "| scene | unknowns | subdomains | k | analysis [s] | direct, per variable [s] (x analysis) |"
-        " of which plugin [s] | adjoint, all k [s] (x analysis) | of which plugin [s] | finite differences [s] |"
-        " Hessian mult.: state / direct, all k / adjoint |",
-        "|---|---|---|---|---|---|---|---|---|---|---|",
-    ]
-    for label, c in costs:
-        k, analysis = int(c["variables"]), f(c, "analysis")
-        lines.append(
-            f"| {label} | {c['unknowns']} | {c['subdomains']} | {k} | {analysis:.3f} | "
-            f"{f(c, 'direct_all') / k:.3f} ({f(c, 'direct_all') / k / analysis:.2f}) | {f(c, 'direct_plugin') / k:.4f} | "
-            f"{f(c, 'adjoint_all'):.3f} ({f(c, 'adjoint_all') / analysis:.2f}) | {f(c, 'adjoint_plugin'):.4f} | "
-            f"{f(c, 'fd_all'):.2f} | {int(f(c, 'state_hessian'))} / {int(f(c, 'direct_hessian'))} / "
-            f"{int(f(c, 'adjoint_hessian'))} |")
-    lines += [
+        *markdown_table(costs, COST_COLUMNS),
         "",
         "## Many directions at once",
         "",
@@ -256,33 +321,20 @@ def write_page(uniform, membrane, spanners, checks, costs, elapsed):
         "the comparison (same Hessian multiplications per direction; \"difference\": largest",
         "|z_block - z_single| over the largest |z|, at the solve's tolerance).",
         "",
-        "| scene | unknowns | subdomains | k | Hessian mult. per direction | plugin, one call each [s] |"
-        " plugin, one call for all k [s] | speed-up | plugin share of the direct mode | difference |",
-        "|---|---|---|---|---|---|---|---|---|---|",
-    ]
-    for label, c in costs:
-        k = int(c["variables"])
-        single, block = f(c, "direct_plugin_one_by_one"), f(c, "direct_plugin")
-        lines.append(
-            f"| {label} | {c['unknowns']} | {c['subdomains']} | {k} | {f(c, 'direct_hessian') / k:.0f} | "
-            f"{single:.4f} | {block:.4f} | {single / block:.2f} | {100 * block / f(c, 'direct_all'):.0f}% | "
-            f"{f(c, 'one_by_one_difference'):.1e} |")
-    lines += [
+        *markdown_table(costs, BLOCK_COLUMNS),
         "",
         "## Gradient checks",
         "",
         "The regression tests (`ctest -R sensitivity`) compare the semi-analytic gradient with",
         "central finite differences of full re-solves (tol = 1e-10 to 1e-12, the contact set",
         "checked unchanged), and the adjoint with the direct mode; errors relative to the",
-        "largest gradient component.",
+        f"largest gradient component. Raw data: [{PAGE}-gradient-checks.csv]({PAGE}-gradient-checks.csv).",
         "",
-        "| scene | J | direct vs finite differences | adjoint vs direct |",
-        "|---|---|---|---|",
+        *markdown_table(checks, [("scene", "case"), ("J", ("J", ".6g")), ("direct vs finite differences", ("fd_error", ".1e")),
+                                 ("adjoint vs direct", ("adjoint_error", ".1e"))]),
+        "",
     ]
-    for label, r in checks:
-        lines.append(f"| {label} | {f(r, 'J'):.6g} | {f(r, 'fd_error'):.1e} | {f(r, 'adjoint_error'):.1e} |")
-    lines.append("")
-    save_page("shape-optimization.md", lines)
+    save_page(f"{PAGE}.md", lines)
 
 
 if __name__ == "__main__":

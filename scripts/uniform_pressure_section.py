@@ -1,8 +1,9 @@
 """The uniform-pressure part of docs/results/shape-optimization.md: the known optimum
 (edp/uniform-pressure.edp) on two meshes and for both costs, the same loops with adjoint,
 direct and finite-difference gradients side by side, and the gradient checks including
-lambda'. Raw data: docs/results/shape-optimization-uniform-pressure.csv (one row per loop)
-and shape-optimization-uniform-pressure-profiles.csv (pressure and profile per node)."""
+lambda'. measure() writes the raw data (docs/results/shape-optimization-uniform-pressure.csv,
+one row per loop; ...-profiles.csv, pressure and profile per node; ...-checks.csv, the
+gradient checks); section() draws the picture and renders the section from them."""
 import csv
 import os
 
@@ -11,13 +12,10 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from ffeti_bench import OUT, f, run  # noqa: E402
+from ffeti_bench import OUT, f, markdown_table, read_csv, run, write_csv  # noqa: E402
 
 SCRIPT = "uniform-pressure.edp"
-LOOP_KEYS = ["cost_name", "gradient", "m", "k", "couples", "steps", "cost0", "cost", "pressure_cv0", "pressure_cv",
-             "pressure_mean", "pressure_max0", "pressure_max", "volume0", "volume", "area_active", "area_multiplier",
-             "stationarity", "factorizations", "sensitivity_solves", "time_analysis", "time_sensitivity",
-             "time_total", "ipopt_status", "status"]
+PAGE, TABLE = "shape-optimization", "uniform-pressure"
 # (cost, m, k, gradient): the optimum of both costs on two meshes (12 variables), then the
 # peers: the energy at 20 variables (m = 32: 33 contact nodes; more variables than nodes
 # leaves the optimum non-unique), the pressure's P-mean at 12 (its loop takes about 200
@@ -28,34 +26,29 @@ PEERS = [("energy", 32, 20, gradient) for gradient in ("adjoint", "direct", "fd"
 LOOPS = OPTIMA + [loop for loop in PEERS if loop not in OPTIMA]
 
 
-def run_loops(folder):
-    """Runs every loop of LOOPS; returns their RESULT dicts and the profiles (per loop of
-    the first four: rows of x, pressure0, pressure, profile0, profile)."""
-    results, profiles = {}, {}
+def key(r):
+    """(cost, m, k, gradient) of a loop's row."""
+    return r["cost_name"], int(r["m"]), int(r["k"]), r["gradient"]
+
+
+def measure(folder):
+    """Runs every loop of LOOPS and the gradient checks; writes their raw data:
+    shape-optimization-uniform-pressure.csv (one row per loop),
+    shape-optimization-uniform-pressure-profiles.csv (pressure and profile per node and loop)
+    and shape-optimization-uniform-pressure-checks.csv (one row per gradient check)."""
+    results, profiles = [], []
     for cost, m, k, gradient in LOOPS:
         name = f"{cost}-m{m}-k{k}-{gradient}"
         profile = os.path.join(folder, name + ".csv")
-        r = run(SCRIPT, "-cost", cost, "-m", m, "-k", k, "-gradient", gradient,
-                "-history", os.path.join(folder, name + ".history"), "-profile", profile)["RESULT"][0]
-        results[(cost, m, k, gradient)] = r
+        results.append(run(SCRIPT, "-cost", cost, "-m", m, "-k", k, "-gradient", gradient,
+                           "-history", os.path.join(folder, name + ".history"), "-profile", profile)["RESULT"][0])
         with open(profile) as file:
-            profiles[(cost, m, k, gradient)] = [{key: float(v) for key, v in row.items()} for row in csv.DictReader(file)]
-    return results, profiles
-
-
-def write_raw(results, profiles):
-    with open(os.path.join(OUT, "shape-optimization-uniform-pressure.csv"), "w", newline="") as file:
-        writer = csv.writer(file)
-        writer.writerow(LOOP_KEYS)
-        for r in results.values():
-            writer.writerow([r[key] for key in LOOP_KEYS])
-    with open(os.path.join(OUT, "shape-optimization-uniform-pressure-profiles.csv"), "w", newline="") as file:
-        writer = csv.writer(file)
-        writer.writerow(["cost", "m", "k", "gradient", "x", "pressure0", "pressure", "profile0", "profile"])
-        for (cost, m, k, gradient), rows in profiles.items():
-            for row in rows:
-                writer.writerow([cost, m, k, gradient] + [row[key] for key in
-                                                          ("x", "pressure0", "pressure", "profile0", "profile")])
+            profiles += [dict(cost=cost, m=m, k=k, gradient=gradient, **row) for row in csv.DictReader(file)]
+    write_csv(PAGE, f"{TABLE}", results)
+    write_csv(PAGE, f"{TABLE}-profiles", profiles)
+    write_csv(PAGE, f"{TABLE}-checks", [
+        run(SCRIPT, "-gradcheck", 1e-5, "-cost", cost, "-m", m, prefixes=("GRADCHECK",))["GRADCHECK"][0]
+        for cost in ("energy", "pressure") for m in (16, 32)])
 
 
 def picture(profiles, uniform, name):
@@ -64,16 +57,16 @@ def picture(profiles, uniform, name):
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 6.4), sharex=True)
     styles = {16: "-", 32: "--"}
     for cost, m, k, gradient in OPTIMA:
-        rows = profiles[(cost, m, k, gradient)]
-        x = [r["x"] for r in rows]
+        rows = [r for r in profiles if (r["cost"], int(r["m"]), int(r["k"]), r["gradient"]) == (cost, m, k, gradient)]
+        x = [f(r, "x") for r in rows]
         colour = "C1" if cost == "energy" else "C2"
         if cost == "energy":
-            top.plot(x, [r["pressure0"] for r in rows], "C0" + styles[m], marker=".", label=f"initial (crowned), m = {m}")
-            bottom.plot(x, [1e3 * r["profile0"] for r in rows], "C0" + styles[m], label=f"initial, m = {m}")
+            top.plot(x, [f(r, "pressure0") for r in rows], "C0" + styles[m], marker=".", label=f"initial (crowned), m = {m}")
+            bottom.plot(x, [1e3 * f(r, "profile0") for r in rows], "C0" + styles[m], label=f"initial, m = {m}")
         marker = "." if cost == "energy" else "x"
-        top.plot(x, [r["pressure"] for r in rows], colour + styles[m], marker=marker, ms=5,
+        top.plot(x, [f(r, "pressure") for r in rows], colour + styles[m], marker=marker, ms=5,
                  label=f"optimum of the {cost}, m = {m}")
-        bottom.plot(x, [1e3 * r["profile"] for r in rows], colour + styles[m], label=f"optimum of the {cost}, m = {m}")
+        bottom.plot(x, [1e3 * f(r, "profile") for r in rows], colour + styles[m], label=f"optimum of the {cost}, m = {m}")
     top.axhline(uniform, color="k", lw=0.8, ls=":", label=f"uniform pressure q = {uniform:g} MPa")
     top.set_ylabel("contact pressure [MPa]")
     top.set_title("Contact pressure and punch profile, before and after (half model)")
@@ -86,15 +79,24 @@ def picture(profiles, uniform, name):
     plt.close(fig)
 
 
-def section(folder):
-    """Runs the loops and the gradient checks; writes raw data and the picture; returns the
-    Markdown lines of the section."""
-    results, profiles = run_loops(folder)
-    write_raw(results, profiles)
+def multiplier(r):
+    if r["cost_name"] == "pressure":
+        return "– (the cost does not see the material)"
+    return f"{f(r, 'area_multiplier'):.3f}" if r["area_active"] == "1" else "– (not active)"
+
+
+def section():
+    """Draws the picture and returns the Markdown lines of the section, from the CSVs."""
+    results = {key(r): r for r in read_csv(PAGE, TABLE)}
+    profiles, checks = read_csv(PAGE, f"{TABLE}-profiles"), read_csv(PAGE, f"{TABLE}-checks")
     uniform = f(results[OPTIMA[0]], "pressure_uniform")
     picture(profiles, uniform, "shape-optimization-uniform-pressure.png")
-    checks = [run(SCRIPT, "-gradcheck", 1e-5, "-cost", cost, "-m", m, prefixes=("GRADCHECK",))["GRADCHECK"][0]
-              for cost in ("energy", "pressure") for m in (16, 32)]
+    peers = [results[loop] for loop in PEERS]
+    for r in peers:
+        base = next(p for p in peers if p["cost_name"] == r["cost_name"] and p["gradient"] == "adjoint")
+        r["analyses"] = int(r["steps"]) * (1 + 2 * int(r["k"])) if r["gradient"] == "fd" else int(r["steps"])
+        r["time_ratio"] = f(r, "time_total") / f(base, "time_total")
+    energy_peer, pressure_peer = PEERS[0], PEERS[-1]
     lines = [
         "## A known optimum: uniform contact pressure",
         "",
@@ -110,22 +112,17 @@ def section(folder):
         "Pressure: force over the node's share of the contact line (`fetiContactPressure`);",
         "cv: its coefficient of variation over the nodes in contact without the outermost one",
         "(share-weighted); stationarity: the largest gradient component left after the bound's",
-        "multiplier, over the free variables, relative to the largest at the start.",
+        "multiplier, over the free variables, relative to the largest at the start. Raw data:",
+        f"[{PAGE}-{TABLE}.csv]({PAGE}-{TABLE}.csv) (one row per loop), [{PAGE}-{TABLE}-profiles.csv]({PAGE}-{TABLE}-profiles.csv)",
+        f"(pressure and profile per node), [{PAGE}-{TABLE}-checks.csv]({PAGE}-{TABLE}-checks.csv) (the gradient checks).",
         "",
-        "| cost | mesh (cells across the zone) | k | design steps | cv before | cv after |"
-        " max pressure before → after [MPa] | material / material0 | bound's multiplier [MPa] |"
-        " stationarity | factorizations | total [s] | status |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|",
-    ]
-    for r in (results[loop] for loop in OPTIMA):
-        multiplier = (f"{f(r, 'area_multiplier'):.3f}" if r["cost_name"] == "energy" and r["area_active"] == "1"
-                      else "– (the cost does not see the material)" if r["cost_name"] == "pressure" else "– (not active)")
-        lines.append(
-            f"| {r['cost_name']} | {r['m']} | {r['k']} | {r['steps']} | {f(r, 'pressure_cv0'):.3f} | "
-            f"{f(r, 'pressure_cv'):.1e} | {f(r, 'pressure_max0'):.1f} → {f(r, 'pressure_max'):.2f} | "
-            f"{f(r, 'volume') / f(r, 'volume0'):.4f} | {multiplier} | {f(r, 'stationarity'):.1e} | "
-            f"{r['factorizations']} | {f(r, 'time_total'):.2f} | {r['status']} |")
-    lines += [
+        *markdown_table([results[loop] for loop in OPTIMA], [
+            ("cost", "cost_name"), ("mesh (cells across the zone)", "m"), ("k", "k"), ("design steps", "steps"),
+            ("cv before", ("pressure_cv0", ".3f")), ("cv after", ("pressure_cv", ".1e")),
+            ("max pressure before → after [MPa]", lambda r: f"{f(r, 'pressure_max0'):.1f} → {f(r, 'pressure_max'):.2f}"),
+            ("material / material0", lambda r: f"{f(r, 'volume') / f(r, 'volume0'):.4f}"),
+            ("bound's multiplier [MPa]", multiplier), ("stationarity", ("stationarity", ".1e")),
+            ("factorizations", "factorizations"), ("total [s]", ("time_total", ".2f")), ("status", "status")]),
         "",
         "![uniform pressure](shape-optimization-uniform-pressure.png)",
         "",
@@ -135,24 +132,15 @@ def section(folder):
         "design step, then one product per variable), (b) direct sensitivities (the k",
         "directions in one `fetiSensitivity` call), (c) central finite differences of full",
         "re-solves (what a script without the plugin's sensitivities does: 2k analyses per",
-        "gradient, step 1e-6 mm): the energy with k = 20 variables on the m = 32 mesh, the",
-        "pressure's P-mean with k = 12 on m = 16. Same optimum: compare the final cost and cv.",
+        f"gradient, step 1e-6 mm): the energy with k = {energy_peer[2]} variables on the m = {energy_peer[1]} mesh, the",
+        f"pressure's P-mean with k = {pressure_peer[2]} on m = {pressure_peer[1]}. Same optimum: compare the final cost and cv.",
         "",
-        "| cost | k | gradient | design steps | analyses (incl. gradients) | factorizations | sensitivity solves |"
-        " total [s] | x (a)'s time | final cost | cv after | status |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|",
-    ]
-    peers = [results[loop] for loop in PEERS]
-    for r in peers:
-        base = next(p for p in peers if p["cost_name"] == r["cost_name"] and p["gradient"] == "adjoint")
-        k = int(r["k"])
-        steps = int(r["steps"])
-        analyses = steps * (1 + 2 * k) if r["gradient"] == "fd" else steps
-        lines.append(
-            f"| {r['cost_name']} | {k} | {r['gradient']} | {steps} | {analyses} | {r['factorizations']} | "
-            f"{r['sensitivity_solves']} | {f(r, 'time_total'):.2f} | {f(r, 'time_total') / f(base, 'time_total'):.1f} | "
-            f"{f(r, 'cost'):.8g} | {f(r, 'pressure_cv'):.1e} | {r['status']} |")
-    lines += [
+        *markdown_table(peers, [
+            ("cost", "cost_name"), ("k", "k"), ("gradient", "gradient"), ("design steps", "steps"),
+            ("analyses (incl. gradients)", "analyses"), ("factorizations", "factorizations"),
+            ("sensitivity solves", "sensitivity_solves"), ("total [s]", ("time_total", ".2f")),
+            ("x (a)'s time", ("time_ratio", ".1f")), ("final cost", ("cost", ".8g")), ("cv after", ("pressure_cv", ".1e")),
+            ("status", "status")]),
         "",
         "### Gradient checks of the gap design",
         "",
@@ -161,13 +149,10 @@ def section(folder):
         "`dLambda`) against central differences of the contact forces; errors relative to the",
         "largest entry (`ctest -R uniform_pressure_gradients` asserts them below 1e-5).",
         "",
-        "| cost | m | k | active / contact rows | adjoint vs direct | direct vs finite differences |"
-        " lambda' vs finite differences | status |",
-        "|---|---|---|---|---|---|---|---|",
+        *markdown_table(checks, [
+            ("cost", "cost_name"), ("m", "m"), ("k", "k"), ("active / contact rows", lambda c: f"{c['active']} / {c['rows']}"),
+            ("adjoint vs direct", ("adjoint_vs_direct", ".1e")), ("direct vs finite differences", ("direct_vs_fd", ".1e")),
+            ("lambda' vs finite differences", ("dlambda_vs_fd", ".1e")), ("status", "status")]),
+        "",
     ]
-    for c in checks:
-        lines.append(f"| {c['cost_name']} | {c['m']} | {c['k']} | {c['active']} / {c['rows']} | "
-                     f"{f(c, 'adjoint_vs_direct'):.1e} | {f(c, 'direct_vs_fd'):.1e} | {f(c, 'dlambda_vs_fd'):.1e} | "
-                     f"{c['status']} |")
-    lines.append("")
     return lines
