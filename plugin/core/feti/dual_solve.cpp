@@ -90,7 +90,7 @@ Vec DualSystem::run(const DualQp& qp, const Vec* lower, const DualStop& stop, co
     const MprgpResult r = mprgp(
         qp.hessian, qp.b, *lower, qp.hessian_norm, x, g, false, mprgp_within(settings),
         [&](const Vec& xi, const Vec& gi, double norm) {
-          return converged(xi, projected_gradient(xi, gi, *lower).lpNorm<Eigen::Infinity>(), norm);
+          return converged(xi, projected_gradient_max(xi, gi, Bounds{*lower}), norm);
         },
         settings.monitor, qp.preconditioner);
     record(result, r);

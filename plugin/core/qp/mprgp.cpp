@@ -74,14 +74,25 @@ int project_onto_bounds(Vec& x, const Bounds& bounds) {
 
 Vec projected_gradient(const Vec& x, const Vec& g, const Vec& lower) { return projected_gradient(x, g, Bounds{lower}); }
 
+namespace {
+/// Component i of the projected gradient.
+double projected_component(const Vec& x, const Vec& g, const Bounds& bounds, Eigen::Index i) {
+  if (bounds.free(i, x[i])) return g[i];
+  if (!above_bound(x[i], bounds.lower[i])) return std::min(g[i], 0.0);  // at the lower bound
+  return std::max(g[i], 0.0);                                          // at the upper bound
+}
+}  // namespace
+
 Vec projected_gradient(const Vec& x, const Vec& g, const Bounds& bounds) {
   Vec gp(x.size());
-  for (Eigen::Index i = 0; i < x.size(); ++i) {
-    if (bounds.free(i, x[i])) gp[i] = g[i];
-    else if (!above_bound(x[i], bounds.lower[i])) gp[i] = std::min(g[i], 0.0);  // at the lower bound
-    else gp[i] = std::max(g[i], 0.0);                                            // at the upper bound
-  }
+  for (Eigen::Index i = 0; i < x.size(); ++i) gp[i] = projected_component(x, g, bounds, i);
   return gp;
+}
+
+double projected_gradient_max(const Vec& x, const Vec& g, const Bounds& bounds) {
+  double largest = 0;
+  for (Eigen::Index i = 0; i < x.size(); ++i) largest = std::max(largest, std::abs(projected_component(x, g, bounds, i)));
+  return largest;
 }
 
 void MprgpSettings::validate() const {

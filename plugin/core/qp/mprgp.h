@@ -36,6 +36,8 @@ using MprgpResult = QpResult;
 Vec projected_gradient(const Vec& x, const Vec& g, const Vec& lower);
 /// The same for box bounds: max(g_i, 0) where x_i = u_i.
 Vec projected_gradient(const Vec& x, const Vec& g, const Bounds& bounds);
+/// ||gP||_inf without forming gP (stopping tests call it every iteration).
+double projected_gradient_max(const Vec& x, const Vec& g, const Bounds& bounds);
 
 /// Sets the components of x below their bound to it; returns how many there were.
 int project_onto_bounds(Vec& x, const Vec& lower);
