@@ -6,12 +6,7 @@
 set -euo pipefail
 source_dir=$1
 lessons="$source_dir/edp/tutorial"
-pref=$PWD/freefem++.pref
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-cp "$pref" .
-echo 'includepath += "'"$lessons"'"' >> freefem++.pref
+source "$(dirname "${BASH_SOURCE[0]}")/scratch-folder.sh"
 failures=0
 exercise() {  # exercise NAME LESSON ARGS...
   local name=$1 lesson=$2

@@ -10,12 +10,7 @@ source_dir=$1
 lesson=$2
 pictures=${3:-}
 ranks=${4:-}
-pref=$PWD/freefem++.pref
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-cp "$pref" .
-echo 'includepath += "'"$source_dir"'/edp/tutorial"' >> freefem++.pref
+source "$(dirname "${BASH_SOURCE[0]}")/scratch-folder.sh"
 if [ -n "$ranks" ]; then
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
   run=(mpirun --oversubscribe -np "$ranks" FreeFem++-mpi -nw)
