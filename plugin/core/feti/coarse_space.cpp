@@ -141,15 +141,17 @@ Vec CoarseSpace::least_norm_solution(const Vec& e) const {
   return G_.transpose() * GGt_.solve(e);
 }
 
-double CoarseSpace::feasibility_residual(const Vec& e, int first_bounded, double enough) const {
+double CoarseSpace::feasibility_residual(const Vec& e, const Vec& lower, const Vec& upper, double enough) const {
   const double e_norm = e.norm();
   if (empty() || !(e_norm > 0)) return 0.0;
   const Eigen::Index m = G_.cols();
-  Vec lower = Vec::Constant(m, kUnbounded);
-  lower.tail(m - first_bounded).setZero();
+  const Bounds bounds{lower, upper.size() ? &upper : nullptr};
   Vec lambda = least_norm_solution(e);
-  if (lambda.tail(m - first_bounded).minCoeff() >= 0) return 0.0;  // G lambda = e already
-  // min 1/2 ||G lambda - e||^2 = 1/2 lambda'G'G lambda - (G'e)'lambda + const, lambda_I >= 0.
+  bool within = true;
+  for (Eigen::Index i = 0; i < m; ++i)
+    within = within && (lower[i] == kUnbounded || lambda[i] >= lower[i]) && (!bounds.has_upper(i) || lambda[i] <= upper[i]);
+  if (within) return 0.0;  // G lambda = e already
+  // min 1/2 ||G lambda - e||^2 = 1/2 lambda'G'G lambda - (G'e)'lambda + const, within the bounds.
   Vec Gv;
   const LinearOperator GtG = [&](const Vec& v, Vec& y) {
     Gv = G_ * v;
@@ -161,7 +163,7 @@ double CoarseSpace::feasibility_residual(const Vec& e, int first_bounded, double
   settings.max_hessian = 20000;
   Vec g;
   double distance = -1.0;  // of the last iterate, relative
-  const MprgpResult r = mprgp(GtG, b, lower, norm, lambda, g, false, settings, [&](const Vec& x, const Vec&, double gp) {
+  const MprgpResult r = mprgp(GtG, b, bounds, norm, lambda, g, false, settings, [&](const Vec& x, const Vec&, double gp) {
     distance = (G_ * x - e).norm() / e_norm;
     return distance <= enough || gp <= stop_at;
   });

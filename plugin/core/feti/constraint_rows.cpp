@@ -115,19 +115,20 @@ std::vector<SlaveNode> slave_nodes(const std::vector<DofRecord>& records, double
   return nodes;
 }
 
+const DofRecord* fixed_record(const std::vector<DofRecord>& records, int subdomain, int dof) {
+  auto it = std::lower_bound(records.begin(), records.end(), std::make_pair(subdomain, dof),
+                             [](const DofRecord& r, const std::pair<int, int>& key) {
+                               return std::make_pair(r.subdomain, r.dof) < key;
+                             });
+  return it != records.end() && it->subdomain == subdomain && it->dof == dof && it->fixed ? &*it : nullptr;
+}
+
 void substitute_dirichlet(const std::vector<DofRecord>& records, std::vector<Row>& rows) {
-  const auto find = [&](int s, int dof) {
-    auto it = std::lower_bound(records.begin(), records.end(), std::make_pair(s, dof),
-                               [](const DofRecord& r, const std::pair<int, int>& key) {
-                                 return std::make_pair(r.subdomain, r.dof) < key;
-                               });
-    return it != records.end() && it->subdomain == s && it->dof == dof && it->fixed ? &*it : nullptr;
-  };
   std::vector<Row> kept;
   for (Row& row : rows) {
     std::vector<ConstraintEntry> free_entries;
     for (const ConstraintEntry& e : row.entries) {
-      if (const DofRecord* fixed = find(e.subdomain, e.dof))
+      if (const DofRecord* fixed = fixed_record(records, e.subdomain, e.dof))
         row.rhs -= e.coefficient * fixed->value;
       else
         free_entries.push_back(e);

@@ -17,6 +17,7 @@ struct Row {
   RowKind kind = RowKind::gluing;
   bool equality = true;
   ContactRowGeometry geometry{};
+  int normal_row = -1;  ///< a friction row's contact row
 };
 
 /// A slave node of the node-to-segment or obstacle contact: its two dofs and position.
@@ -34,7 +35,13 @@ void add_node_to_segment_rows(const std::vector<DofRecord>& records, const std::
                               const ContactInput& contact, double snap, std::vector<Row>& rows);
 void add_obstacle_rows(const std::vector<DofRecord>& records, const ContactInput& contact, double snap,
                        std::vector<Row>& rows);
+/// The record of a fixed dof, nullptr if the dof is not fixed.
+const DofRecord* fixed_record(const std::vector<DofRecord>& records, int subdomain, int dof);
 /// FETI-1: known Dirichlet values move to the right-hand side.
 void substitute_dirichlet(const std::vector<DofRecord>& records, std::vector<Row>& rows);
+/// Appends a friction row for each contact row of `rows` (its index there as normal_row);
+/// FETI-1 (`eliminated`): fixed dofs leave the row, and a row left empty (a slave that
+/// cannot slip) is dropped.
+void add_friction_rows(const std::vector<DofRecord>& records, bool eliminated, std::vector<Row>& rows);
 
 }  // namespace ffeti

@@ -2,6 +2,8 @@
 
 #include "feti/constraint_rows.h"
 
+#include "base/errors.h"
+
 #include <algorithm>
 
 namespace ffeti {
@@ -15,6 +17,10 @@ Constraints build_constraints(std::vector<DofRecord> records, const std::vector<
   std::sort(records.begin(), records.end(), [](const DofRecord& a, const DofRecord& b) {
     return std::make_pair(a.subdomain, a.dof) < std::make_pair(b.subdomain, b.dof);
   });
+  if (contact.has_friction() && segments.empty() && !contact.obstacle)
+    throw InputError(std::string(contact.friction >= 0 ? "friction" : "slipBound") +
+                     ": needs node-to-segment (contactSegments=) or obstacle (obstacle=) contact, whose slave "
+                     "nodes list both components; a node-to-node row has no tangent");
   std::vector<Row> rows;
   add_gluing_rows(records, snap, rows);
   if (variant == FetiVariant::tfeti) add_dirichlet_rows(records, rows);
@@ -24,6 +30,7 @@ Constraints build_constraints(std::vector<DofRecord> records, const std::vector<
   if (variant == FetiVariant::feti1) substitute_dirichlet(records, rows);
 
   std::stable_partition(rows.begin(), rows.end(), [](const Row& r) { return r.equality; });
+  if (contact.has_friction()) add_friction_rows(records, variant == FetiVariant::feti1, rows);
   Constraints result;
   for (const Row& row : rows) {
     result.entries.insert(result.entries.end(), row.entries.begin(), row.entries.end());
@@ -31,7 +38,8 @@ Constraints build_constraints(std::vector<DofRecord> records, const std::vector<
     result.rhs.push_back(row.rhs);
     result.kind.push_back(row.kind);
     result.equality_rows += row.equality ? 1 : 0;
-    if (!row.equality) result.geometry.push_back(row.geometry);
+    if (row.kind == RowKind::contact) result.geometry.push_back(row.geometry);
+    if (row.kind == RowKind::friction) result.normal_row.push_back(row.normal_row), ++result.friction_rows;
   }
   return result;
 }

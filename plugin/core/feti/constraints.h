@@ -13,7 +13,7 @@
 
 namespace ffeti {
 
-enum class RowKind : std::uint8_t { gluing, dirichlet, contact };
+enum class RowKind : std::uint8_t { gluing, dirichlet, contact, friction };
 
 struct ConstraintEntry {
   int subdomain;
@@ -34,19 +34,25 @@ struct ContactRowGeometry {
   Point s{}, a{}, b{};  ///< slave position, segment ends (obstacle: a = point, b = normal)
 };
 
-/// Rows in CSR form over (subdomain, dof) entries; equalities first, then inequalities
-/// B_I u <= c_I. Full row rank by construction: a node shared by k subdomains gets k-1
-/// gluing rows, and none where every copy carries a Dirichlet row.
+/// Rows in CSR form over (subdomain, dof) entries; equalities first, then the contact rows
+/// B_I u <= c_I, then (with friction) the tangential rows, whose multipliers are bounded on
+/// both sides, |lambda_t| <= g. Full row rank by construction: a node shared by k
+/// subdomains gets k-1 gluing rows, and none where every copy carries a Dirichlet row.
 struct Constraints {
   std::vector<int> row_start{0};
   std::vector<ConstraintEntry> entries;
   std::vector<double> rhs;
   std::vector<RowKind> kind;
   int equality_rows = 0;
-  std::vector<ContactRowGeometry> geometry;  ///< one per inequality row, in row order
+  int friction_rows = 0;
+  std::vector<ContactRowGeometry> geometry;  ///< one per contact row, in row order
+  std::vector<int> normal_row;               ///< per friction row: the row of its contact row
 
   int rows() const { return static_cast<int>(rhs.size()); }
+  /// The rows with bounded multipliers: contact and friction rows.
   int inequality_rows() const { return rows() - equality_rows; }
+  int contact_rows() const { return inequality_rows() - friction_rows; }
+  int first_friction_row() const { return rows() - friction_rows; }
   int count(RowKind k) const;
 };
 

@@ -18,4 +18,13 @@ LinearizedRow obstacle_row(const Point& s, const Point& point, const Point& norm
   return {{-normal[0], -normal[1], 0, 0, 0, 0}, normal[0] * (s[0] - point[0]) + normal[1] * (s[1] - point[1])};
 }
 
+LinearizedRow node_to_segment_slip(const Point& s, const Point& a, const Point& b) {
+  const double dx = b[0] - a[0], dy = b[1] - a[1], length = std::hypot(dx, dy);
+  const double xi = std::clamp(((s[0] - a[0]) * dx + (s[1] - a[1]) * dy) / (length * length), 0.0, 1.0);
+  const double tx = dx / length, ty = dy / length;
+  return {{tx, ty, -(1 - xi) * tx, -(1 - xi) * ty, -xi * tx, -xi * ty}, 0.0};
+}
+
+LinearizedRow obstacle_slip(const Point& normal) { return {{-normal[1], normal[0], 0, 0, 0, 0}, 0.0}; }
+
 }  // namespace ffeti

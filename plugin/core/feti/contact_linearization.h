@@ -20,4 +20,11 @@ LinearizedRow node_to_segment_row(const Point& s, const Point& a, const Point& b
 /// Rigid obstacle through `point` with outward unit normal n: -n.u_s <= n.(s - point).
 LinearizedRow obstacle_row(const Point& s, const Point& point, const Point& normal);
 
+/// The slip of a contact row's slave along the master, t.(u_s - u_p), with t the unit
+/// tangent (b - a)/|b - a| of the segment, or on an obstacle the line's direction
+/// (-n_y, n_x): the same turn from the outward normal in both. Coefficients as above; the
+/// gap is 0 (the slip is measured from the state of the last load step).
+LinearizedRow node_to_segment_slip(const Point& s, const Point& a, const Point& b);
+LinearizedRow obstacle_slip(const Point& normal);
+
 }  // namespace ffeti

@@ -20,7 +20,7 @@ NodeKey node_key(int body, double x, double y, double snap) {
 ContactPressure contact_pressure(const FetiProblem& problem, const Vec& lambda, const std::vector<Vec>& share) {
   const Constraints& c = problem.constraints();
   const auto& inputs = problem.inputs();
-  const int rows = c.inequality_rows();
+  const int rows = c.contact_rows();
   collectively(problem.communicator(), [&] {
     if (share.size() != inputs.size()) throw InputError("Share: needs one entry per subdomain");
     for (size_t k = 0; k < inputs.size(); ++k)

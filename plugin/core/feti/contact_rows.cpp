@@ -125,4 +125,24 @@ void add_obstacle_rows(const std::vector<DofRecord>& records, const ContactInput
   }
 }
 
+void add_friction_rows(const std::vector<DofRecord>& records, bool eliminated, std::vector<Row>& rows) {
+  const size_t count = rows.size();
+  for (size_t i = 0; i < count; ++i) {
+    if (rows[i].kind != RowKind::contact) continue;
+    const ContactRowGeometry& g = rows[i].geometry;
+    const bool on_segment = g.kind == ContactRowGeometry::Kind::node_to_segment;
+    const LinearizedRow slip = on_segment ? node_to_segment_slip(g.s, g.a, g.b) : obstacle_slip(g.b);
+    const std::array<int, 2> dofs[6] = {g.slave[0], g.slave[1], g.master[0], g.master[1], g.master[2], g.master[3]};
+    Row row{{}, 0.0, RowKind::friction, false, g, static_cast<int>(i)};
+    for (size_t k = 0; k < (on_segment ? 6u : 2u); ++k) {
+      if (slip.coefficients[k] == 0) continue;
+      // FETI-1: a fixed dof moves by its prescribed value in every step, so it adds
+      // nothing to the slip increment: it just leaves the row.
+      if (eliminated && fixed_record(records, dofs[k][0], dofs[k][1])) continue;
+      row.entries.push_back({dofs[k][0], dofs[k][1], slip.coefficients[k]});
+    }
+    if (!row.entries.empty()) rows.push_back(std::move(row));
+  }
+}
+
 }  // namespace ffeti

@@ -2,6 +2,7 @@
 // qp/ that fits it, one stopping test for all, and the primal solution recovered.
 #include "feti/dual_system.h"
 
+#include "base/errors.h"
 #include "base/stopwatch.h"
 #include "qp/conjugate_gradient.h"
 #include "qp/mprgp.h"
@@ -16,14 +17,6 @@ namespace {
 /// spanner gave 1.3e-11, depending on the expansion steps), so a smaller tol must not turn
 /// that round-off into "infeasible"; infeasible scenes are off by far more (docs/algorithms.md).
 constexpr double kFeasibilityResolution = 1e-8;
-
-/// Multipliers exactly at their bound are exactly zero in lambda (not round-off).
-Vec lambda_from_shifted(const Vec& mu, const Vec& lower, const Vec& lambda_tilde) {
-  Vec lambda = mu + lambda_tilde;
-  for (Eigen::Index i = 0; i < mu.size(); ++i)
-    if (lower[i] != kUnbounded && mu[i] <= lower[i]) lambda[i] = 0.0;
-  return lambda;
-}
 
 /// The inner solvers' settings, limited by the whole solve's multiplications.
 MprgpSettings mprgp_within(const DualSolveSettings& settings) {
@@ -62,7 +55,7 @@ const char* path_name(DualPath path) {
   return "smalbe";
 }
 
-Vec DualSystem::run(const DualQp& qp, const Vec* lower, const DualStop& stop, const DualSolveSettings& settings,
+Vec DualSystem::run(const DualQp& qp, const Bounds* bounds, const DualStop& stop, const DualSolveSettings& settings,
                     DualSolution& result) const {
   Vec mu_of_x;
   const auto multipliers = [&](const Vec& x) -> const Vec& {
@@ -78,7 +71,7 @@ Vec DualSystem::run(const DualQp& qp, const Vec* lower, const DualStop& stop, co
     return stop(mu, gradient_inf, gradient_norm, result.equality_norm, result.equality_reference);
   };
   Vec x = qp.start, g;
-  if (!lower) {  // equality rows only: CG
+  if (!bounds) {  // equality rows only: CG
     CgSettings cg;
     cg.max_hessian = settings.max_hessian;
     const CgResult r = conjugate_gradient(
@@ -88,9 +81,9 @@ Vec DualSystem::run(const DualQp& qp, const Vec* lower, const DualStop& stop, co
     record(result, r);
   } else if (!qp.range_projector) {  // bounds only: MPRGP
     const MprgpResult r = mprgp(
-        qp.hessian, qp.b, *lower, qp.hessian_norm, x, g, false, mprgp_within(settings),
+        qp.hessian, qp.b, *bounds, qp.hessian_norm, x, g, false, mprgp_within(settings),
         [&](const Vec& xi, const Vec& gi, double norm) {
-          return converged(xi, projected_gradient_max(xi, gi, Bounds{*lower}), norm);
+          return converged(xi, projected_gradient_max(xi, gi, *bounds), norm);
         },
         settings.monitor, qp.preconditioner);
     record(result, r);
@@ -99,7 +92,8 @@ Vec DualSystem::run(const DualQp& qp, const Vec* lower, const DualStop& stop, co
     problem.hessian = qp.hessian;
     problem.range_projector = qp.range_projector;
     problem.b = &qp.b;
-    problem.lower = lower;
+    problem.lower = &bounds->lower;
+    problem.upper = bounds->upper;
     problem.hessian_norm = qp.hessian_norm;
     problem.preconditioner = qp.preconditioner;
     const SmalbeResult r = smalbe(
@@ -132,11 +126,17 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
   const double operator_start = F_->application_seconds();
   const double preconditioner_start = preconditioner_ ? preconditioner_->application_seconds() : 0.0;
   const double check_start = check_seconds_;
-  const Vec lower = lower_bounds(data);
+  if (data.slip_bound.size() != constraints_.friction_rows)
+    throw InputError("slipBound: needs one bound per friction row (" + std::to_string(constraints_.friction_rows) +
+                     "), got " + std::to_string(data.slip_bound.size()));
+  const Vec multiplier_lower = lower_bounds(data), multiplier_upper = upper_bounds(data);
+  // Of mu = lambda - lambda~, the solvers' variable (-inf stays -inf).
+  const Vec lower = multiplier_lower - data.lambda_tilde, upper = multiplier_upper.size() ? Vec(multiplier_upper - data.lambda_tilde) : Vec();
+  const Bounds bounds{lower, upper.size() ? &upper : nullptr};
   // The primal check of the stopping test at shifted multipliers mu (lambda = mu + lambda~,
-  // multipliers at their bound exactly 0).
+  // multipliers at a bound exactly there).
   RelativeKktStop kkt_stop(settings.tolerance, [&](const Vec& mu) {
-    return primal_check(data, lambda_from_shifted(mu, lower, data.lambda_tilde));
+    return primal_check(data, lambda_from_shifted(mu, bounds, data));
   });
   const auto stop_for = [&](const DualSolution& r) {  // built once the formulation has set the references
     return DualStop(settings.stopping, settings.tolerance, r.gradient_reference, kkt_stop);
@@ -148,13 +148,14 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     lambda = run(qp, nullptr, stop_for(result), settings, result) + data.lambda_tilde;
   } else if (route == DualPath::mprgp) {
     const DualQp qp = plain_qp(data, settings, result, true);
-    lambda = lambda_from_shifted(run(qp, &lower, stop_for(result), settings, result), lower, data.lambda_tilde);
+    lambda = lambda_from_shifted(run(qp, &bounds, stop_for(result), settings, result), bounds, data);
   } else if (const double resolution = std::max(settings.tolerance, kFeasibilityResolution),
-             distance = coarse_->feasibility_residual(data.e, constraints_.equality_rows, resolution);
+             distance = coarse_->feasibility_residual(data.e, multiplier_lower, multiplier_upper, resolution);
              distance > resolution) {
-    // No multipliers of the right signs balance the loads on the floating bodies (Farkas):
+    // No multipliers within their bounds balance the loads on the floating bodies (Farkas):
     // no equilibrium, and SMALBE could only iterate until maxit. The least-norm lambda~
-    // (G lambda~ = e, some contact multipliers negative) gives the field the recovery shows.
+    // (G lambda~ = e, some contact multipliers negative or friction forces beyond their
+    // bound: a body that would slide away) gives the field the recovery shows.
     result.status = SolveStatus::infeasible;
     result.equality_norm = distance * result.equality_reference;
     lambda = data.lambda_tilde;
@@ -162,7 +163,7 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     const DualQp qp = settings.coarse_constraints == CoarseConstraints::free_rows
                           ? free_rows_qp(data, settings, result)
                           : penalty_qp(data, settings, result);
-    lambda = lambda_from_shifted(run(qp, &lower, stop_for(result), settings, result), lower, data.lambda_tilde);
+    lambda = lambda_from_shifted(run(qp, &bounds, stop_for(result), settings, result), bounds, data);
   }
   result.violation = kkt_stop.measure();
   result.scale_evaluations = kkt_stop.evaluations();

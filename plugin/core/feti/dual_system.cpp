@@ -139,7 +139,8 @@ DualSolution DualSystem::prepared(const DualData& data, const DualSolveSettings&
 
 PrimalCheck DualSystem::primal_check(const DualData& data, const Vec& lambda) const {
   Stopwatch clock;
-  const std::vector<Vec> u = recover_primal(*F_, coarse_.get(), constraints_, data.loads, data.c, lambda);
+  const std::vector<Vec> u = recover_primal(*F_, coarse_.get(), constraints_, data.loads, data.c, lambda,
+                                            data.slip_bound);
   PrimalCheck check;
   for (const Vec& us : u)
     if (us.size()) check.displacement = std::max(check.displacement, us.lpNorm<Eigen::Infinity>());
@@ -150,11 +151,18 @@ PrimalCheck DualSystem::primal_check(const DualData& data, const Vec& lambda) co
   // with equality (both relative as kkt_residuals has them).
   double violation = 0, complementarity = 0;
   const double lambda_scale = lambda.size() ? lambda.lpNorm<Eigen::Infinity>() : 0.0;
-  for (int i = 0; i < rows(); ++i) {
+  const int first_friction = constraints_.first_friction_row();
+  for (int i = 0; i < first_friction; ++i) {
     const double r = Bu[i] - data.c[i];
     violation = std::max(violation, i < constraints_.equality_rows ? std::abs(r) : r);
     if (i >= constraints_.equality_rows && lambda_scale > 0)
       complementarity = std::max(complementarity, std::abs(lambda[i] * r) / lambda_scale);
+  }
+  // A friction row slips (s = B_t u - c_t) only at its bound and against its force.
+  for (int i = first_friction; i < rows() && lambda_scale > 0; ++i) {
+    const double slip = Bu[i] - data.c[i], g = data.slip_bound[i - first_friction];
+    complementarity = std::max({complementarity, (g - std::abs(lambda[i])) * std::abs(slip) / lambda_scale,
+                                -lambda[i] * slip / lambda_scale});
   }
   violation = std::max(violation, complementarity);
   check.violation = check.displacement > 0 ? violation / check.displacement
@@ -172,7 +180,7 @@ PrimalCheck DualSystem::primal_check(const DualData& data, const Vec& lambda) co
 
 void DualSystem::recover(const DualData& data, Vec lambda, DualSolution& result) const {
   Stopwatch recovery_clock;
-  result.u = recover_primal(*F_, coarse_.get(), constraints_, data.loads, data.c, lambda);
+  result.u = recover_primal(*F_, coarse_.get(), constraints_, data.loads, data.c, lambda, data.slip_bound);
   result.lambda = std::move(lambda);
   result.times.recovery = recovery_clock.seconds();
 }
@@ -226,8 +234,32 @@ const FreeRowProjector& DualSystem::free_rows() const {
 
 Vec DualSystem::lower_bounds(const DualData& data) const {
   Vec lower = Vec::Constant(rows(), kUnbounded);
-  for (int i = constraints_.equality_rows; i < rows(); ++i) lower[i] = -data.lambda_tilde[i];  // lambda_I >= 0
+  const int first_friction = constraints_.first_friction_row();
+  for (int i = constraints_.equality_rows; i < first_friction; ++i) lower[i] = 0.0;  // lambda_I >= 0
+  for (int i = first_friction; i < rows(); ++i) lower[i] = -data.slip_bound[i - first_friction];
   return lower;
+}
+
+Vec DualSystem::upper_bounds(const DualData& data) const {
+  if (constraints_.friction_rows == 0) return Vec();
+  Vec upper = Vec::Constant(rows(), std::numeric_limits<double>::infinity());
+  upper.tail(constraints_.friction_rows) = data.slip_bound;
+  return upper;
+}
+
+Vec DualSystem::lambda_from_shifted(const Vec& mu, const Bounds& bounds, const DualData& data) const {
+  // Multipliers at a bound are the bound exactly (0, or -g, g), not the bound plus the
+  // round-off of lambda~.
+  Vec lambda = mu + data.lambda_tilde;
+  const int first_friction = constraints_.first_friction_row();
+  for (Eigen::Index i = 0; i < first_friction; ++i)
+    if (bounds.lower[i] != kUnbounded && mu[i] <= bounds.lower[i]) lambda[i] = 0.0;
+  for (Eigen::Index i = first_friction; i < mu.size(); ++i) {
+    const double g = data.slip_bound[i - first_friction];
+    if (mu[i] <= bounds.lower[i]) lambda[i] = -g;
+    else if (mu[i] >= (*bounds.upper)[i]) lambda[i] = g;
+  }
+  return lambda;
 }
 
 }  // namespace ffeti

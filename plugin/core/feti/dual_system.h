@@ -70,6 +70,7 @@ struct DualData {
   std::vector<Vec> loads;
   Vec c, e, lambda_tilde, b;
   double data_norm = 0;  ///< ||B K^+ f||: the size of what b was computed from
+  Vec slip_bound;        ///< per friction row: g >= 0 of |lambda_t| <= g (empty without friction)
 };
 
 struct DualSolution {
@@ -142,7 +143,11 @@ class DualSystem {
   void recover(const DualData& data, Vec lambda, DualSolution& result) const;
   const FreeRowProjector& free_rows() const;  // built at first use
   PrimalCheck primal_check(const DualData& data, const Vec& lambda) const;  // of the recovered u(lambda)
-  Vec lower_bounds(const DualData& data) const;  // of mu = lambda - lambda~: lambda_I >= 0
+  // Of lambda: lambda_I >= 0 on contact rows, |lambda_t| <= g on friction rows; upper_bounds
+  // is empty without friction rows.
+  Vec lower_bounds(const DualData& data) const;
+  Vec upper_bounds(const DualData& data) const;
+  Vec lambda_from_shifted(const Vec& mu, const Bounds& bounds, const DualData& data) const;
 
   // The formulations (dual_formulations.cpp), each the QP of one path.
   DualQp plain_qp(const DualData& data, const DualSolveSettings& settings, DualSolution& result,
@@ -153,7 +158,7 @@ class DualSystem {
   void set_equality_reference(DualSolution& result, double hessian_norm) const;
 
   // The dispatcher's pieces (dual_solve.cpp).
-  Vec run(const DualQp& qp, const Vec* lower, const DualStop& stop, const DualSolveSettings& settings,
+  Vec run(const DualQp& qp, const Bounds* bounds, const DualStop& stop, const DualSolveSettings& settings,
           DualSolution& result) const;  // CG, MPRGP or SMALBE on qp; returns mu
   DualSolution solved_by_subdomains(const DualData& data, DualSolution result) const;  // the cholesky path
 

@@ -73,6 +73,8 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   const std::vector<SegmentRecord> segments =
       unpack_segments(comm.allgather(pack(segment_records(inputs_, global_ids_, local_contact))));
   Constraints constraints = build_constraints(records, segments, local_contact, settings_.variant, snap);
+  rhs_ = Eigen::Map<const Vec>(constraints.rhs.data(), constraints.rows());
+  friction_ = {local_contact.friction, local_contact.slip_bound};
   std::sort(records.begin(), records.end(), [](const DofRecord& a, const DofRecord& b) {
     return std::make_pair(a.subdomain, a.dof) < std::make_pair(b.subdomain, b.dof);
   });
@@ -191,19 +193,42 @@ void FetiProblem::compute_dual_data() {
   Stopwatch clock;
   std::vector<Vec> loads;
   for (const auto& in : inputs_) loads.push_back(in.f);
-  const Constraints& c = constraints();
-  data_ = dual_->data(operator_loads(loads, false), Eigen::Map<const Vec>(c.rhs.data(), c.rows()));
+  data_ = dual_->data(operator_loads(loads, false), rhs_);
   setup_times_.dual_data = clock.seconds();
+}
+
+void FetiProblem::start_load_step(const FetiResult& last) {
+  collectively(*comm_, [&] {
+    if (last.status != SolveStatus::converged)
+      throw InputError("P: the last solve ended " + to_string(last.status) +
+                       ", so its state cannot start the next load step (friction depends on the load path)");
+  });
+  if (!has_friction()) return;
+  Vec Bu;
+  dual_->F().apply_B(last.u, Bu);
+  rhs_.tail(constraints().friction_rows) = Bu.tail(constraints().friction_rows);  // slip measured from here
+  step_start_ = last.lambda;
+  compute_dual_data();
 }
 
 FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
   FetiResult result;
-  static_cast<DualSolution&>(result) = dual_->solve(data_, settings);
+  if (has_friction()) {
+    FrictionSolution friction = solve_with_friction(*dual_, data_, friction_, settings, step_start_);
+    static_cast<DualSolution&>(result) = std::move(friction.dual);
+    result.friction_iterations = friction.iterations;
+    result.friction_hessian = std::move(friction.hessian);
+    result.friction_bound_change = friction.bound_change;
+    result.slip_bound = std::move(friction.slip_bound);
+  } else {
+    static_cast<DualSolution&>(result) = dual_->solve(data_, settings);
+  }
   result.phases = "constraints,factorization";
   if (dual_->coarse()) result.phases += ",coarse_space";
   if (result.path != "cholesky") result.phases += ",dual_data";
   if (result.path == "mprgp" || result.path == "smalbe") result.phases += ",norm_estimate";
   if (result.path != "cholesky") result.phases += "," + result.path;
+  if (has_friction()) result.phases += ",friction";
   result.phases += ",recovery,kkt";
 
   Stopwatch kkt_clock;
@@ -211,8 +236,8 @@ FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
   std::vector<Vec> loads;
   for (const auto& in : inputs_) loads.push_back(in.f);
   const bool eliminated = settings_.variant == FetiVariant::feti1;
-  result.kkt = kkt_residuals(inputs_, loads, Eigen::Map<const Vec>(c.rhs.data(), c.rows()), false, dual_->local(),
-                             dual_->F(), c, eliminated, result.u, result.lambda, *comm_);
+  result.kkt = kkt_residuals(inputs_, loads, rhs_, false, dual_->local(), dual_->F(), c, eliminated, result.u,
+                             result.lambda, *comm_, result.slip_bound);
   result.energy = energy(inputs_, result.u, *comm_);
   // Finite data can still overflow (a gap of -1e300, a point at 1e308): no answer with a
   // non-finite energy, residual or multiplier is reported as anything but an overflow.
@@ -226,6 +251,9 @@ FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
     result.status = SolveStatus::inaccurate;
   for (int i = c.equality_rows; i < c.rows(); ++i)
     if (c.kind[static_cast<size_t>(i)] == RowKind::contact && result.lambda[i] > 0) ++result.active_contact;
+  if (has_friction())
+    for (ContactState state : contact_row_forces(c, result.lambda, result.slip_bound).state)
+      result.slipping_contact += state == ContactState::slip ? 1 : 0;
   result.times.kkt = kkt_clock.seconds();
   gather_rank_statistics(result.times.norm_estimate + result.times.solve);
   PhaseTimes& t = result.times;  // the slowest rank's, by name (a positional list broke once a phase was added)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "feti/dual_system.h"
+#include "feti/friction.h"
 #include "feti/primal.h"
 #include "feti/problem_input.h"
 #include "feti/subdomain.h"
@@ -34,6 +35,12 @@ struct FetiResult : DualSolution {
   double energy = 0;             ///< 1/2 u'Ku - f'u
   KktResiduals kkt;
   int active_contact = 0;        ///< contact rows with lambda > 0
+  // With friction (counts and times above are summed over the Tresca solves):
+  int friction_iterations = 0;   ///< Tresca solves (Coulomb: of the fixed point)
+  std::vector<int> friction_hessian;  ///< Hessian multiplications of each
+  double friction_bound_change = 0;   ///< Coulomb: the fixed point's last relative change of g
+  Vec slip_bound;                ///< g per friction row of the last Tresca solve
+  int slipping_contact = 0;      ///< contact rows whose friction force is at its bound
 };
 
 /// What one rank holds and spent, for load-balance reports.
@@ -66,6 +73,13 @@ class FetiProblem {
   /// New loads for the local subdomains, same matrices: keeps every factorization and the
   /// coarse factor. Collective.
   void set_loads(const std::vector<Vec>& loads);
+
+  /// With friction: `last` (a converged solve of this problem) becomes the state the next
+  /// load step starts from: the slip of the friction rows is measured from its u, and its
+  /// multipliers start the next solve. Collective.
+  void start_load_step(const FetiResult& last);
+  bool has_friction() const { return constraints().friction_rows > 0; }
+  const FrictionLaw& friction_law() const { return friction_; }
 
   int subdomain_count() const { return global_count_; }
   int local_subdomain_count() const { return static_cast<int>(inputs_.size()); }
@@ -127,6 +141,9 @@ class FetiProblem {
   SubdomainList subdomains_;
   std::unique_ptr<DualSystem> dual_;
   DualData data_;                       // the state problem's dual right-hand side
+  Vec rhs_;                             // c: the constraints' rhs, friction rows' from the last load step
+  FrictionLaw friction_;
+  Vec step_start_;                      // friction: multipliers of the last load step (empty: none)
   long primal_dimension_ = 0;
   long factorizations_ = 0;
   double factor_nonzeros_ = 0;

@@ -114,6 +114,12 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
       if (!std::isfinite(gap[i]))
         throw InputError(indexed("contactGap", ids[k]) + ": entry " + std::to_string(i) + " is not finite");
   }
+  for (const auto& [name, value] : {std::pair<const char*, double>{"friction", contact.friction},
+                                    std::pair<const char*, double>{"slipBound", contact.slip_bound}})
+    if (!std::isfinite(value) || (value < 0 && value != -1))
+      throw InputError(std::string(name) + ": must be a finite number >= 0, got " + std::to_string(value));
+  if (contact.friction >= 0 && contact.slip_bound >= 0)
+    throw InputError("friction, slipBound: give one law, Coulomb (friction=) or Tresca (slipBound=), not both");
   for (double v : {contact.obstacle_point[0], contact.obstacle_point[1], contact.obstacle_normal[0], contact.obstacle_normal[1]})
     if (contact.obstacle && !std::isfinite(v)) throw InputError("obstacle: the point and the normal must be finite");
 }

@@ -1,6 +1,8 @@
 // Where the time of a set-up and a solve went, phase by phase.
 #pragma once
 
+#include <cstddef>
+
 namespace ffeti {
 
 struct PhaseTimes {  ///< wall-clock seconds; in a problem's result over several ranks, the slowest rank's
@@ -11,6 +13,17 @@ struct PhaseTimes {  ///< wall-clock seconds; in a problem's result over several
   double dual_operator = 0;   ///< the part of solve spent applying F
   double preconditioner = 0;  ///< the part of solve spent applying the preconditioner
   double primal_checks = 0;   ///< the part of solve spent in the stopping test's primal checks
+
+  /// Several solves of one problem (friction's fixed point) add up phase by phase.
+  PhaseTimes& operator+=(const PhaseTimes& o) {
+    double* mine[] = {&constraints, &factorization, &coarse_space, &dual_data, &norm_estimate, &free_rows, &solve,
+                      &recovery, &kkt, &dual_operator, &preconditioner, &primal_checks};
+    const double* theirs[] = {&o.constraints, &o.factorization, &o.coarse_space, &o.dual_data, &o.norm_estimate,
+                              &o.free_rows, &o.solve, &o.recovery, &o.kkt, &o.dual_operator, &o.preconditioner,
+                              &o.primal_checks};
+    for (size_t k = 0; k < sizeof(mine) / sizeof(mine[0]); ++k) *mine[k] += *theirs[k];
+    return *this;
+  }
 };
 
 }  // namespace ffeti

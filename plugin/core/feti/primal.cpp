@@ -8,10 +8,6 @@
 namespace ffeti {
 namespace {
 
-bool holds_with_equality(const Constraints& constraints, const Vec& lambda, int row) {
-  return row < constraints.equality_rows || lambda[row] > 0;
-}
-
 double inf_norm(const std::vector<Vec>& u) {
   double value = 0;
   for (const Vec& us : u) value = std::max(value, us.size() ? us.cwiseAbs().maxCoeff() : 0.0);
@@ -37,9 +33,16 @@ Vec solve_normal_equations(const Eigen::SparseMatrix<double>& normal, const Vec&
 
 }  // namespace
 
+bool holds_with_equality(const Constraints& constraints, const Vec& lambda, const Vec& slip_bound, int row) {
+  if (row < constraints.equality_rows) return true;
+  const int friction = row - constraints.first_friction_row();
+  if (friction < 0) return lambda[row] > 0;
+  return std::abs(lambda[row]) < slip_bound[friction];
+}
+
 std::vector<Vec> recover_primal(const DualOperator& F, const CoarseSpace* coarse,
                                 const Constraints& constraints, const std::vector<Vec>& f,
-                                const Vec& c, const Vec& lambda) {
+                                const Vec& c, const Vec& lambda, const Vec& slip_bound) {
   std::vector<Vec> u;
   F.pseudo_inverse_of_residual(f, lambda, u);  // u~ = K^+(f - B'lambda)
   if (!coarse || coarse->empty()) return u;
@@ -47,7 +50,7 @@ std::vector<Vec> recover_primal(const DualOperator& F, const CoarseSpace* coarse
   // alpha from  (G_S G_S') alpha = G_S (c - B u~)_S  over the rows S holding with equality.
   const int m = constraints.rows();
   Vec mask = Vec::Zero(m);
-  for (int i = 0; i < m; ++i) mask[i] = holds_with_equality(constraints, lambda, i) ? 1.0 : 0.0;
+  for (int i = 0; i < m; ++i) mask[i] = holds_with_equality(constraints, lambda, slip_bound, i) ? 1.0 : 0.0;
   Vec Bu;
   F.apply_B(u, Bu);
   const Vec residual = (c - Bu).cwiseProduct(mask);
@@ -70,7 +73,8 @@ bool KktResiduals::finite() const {
 KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs, const std::vector<Vec>& f, const Vec& c,
                            bool homogeneous_dirichlet, const std::vector<LocalConstraints>& local, const DualOperator& F,
                            const Constraints& constraints, bool dirichlet_eliminated,
-                           const std::vector<Vec>& u, const Vec& lambda, const Communicator& comm) {
+                           const std::vector<Vec>& u, const Vec& lambda, const Communicator& comm,
+                           const Vec& slip_bound) {
   KktResiduals r;
   const int m = constraints.rows();
   const double u_scale = comm.max(inf_norm(u));
@@ -105,6 +109,10 @@ KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs, const std:
   for (int i = 0; i < m; ++i) {
     if (i < constraints.equality_rows) {
       equality = std::max(equality, std::abs(gap[i]));
+    } else if (const int t = i - constraints.first_friction_row(); t >= 0) {
+      const double g = slip_bound[t], slip = gap[i];
+      negative = std::max(negative, std::abs(lambda[i]) - g);
+      complementarity = std::max({complementarity, (g - std::abs(lambda[i])) * std::abs(slip), -lambda[i] * slip});
     } else {
       inequality = std::max(inequality, gap[i]);
       negative = std::max(negative, -lambda[i]);

@@ -10,11 +10,16 @@ namespace ffeti {
 
 /// u = K^+(f - B'lambda) + R alpha, with alpha the least-squares solution of
 /// B R alpha = c - B K^+(f - B'lambda) on the rows that hold with equality (all equality
-/// rows and the inequality rows with lambda_i > 0). `f` are the loads the operators use,
-/// `c` the right-hand side of the rows. Collective; returns u for this rank's subdomains.
+/// rows, the contact rows with lambda_i > 0 and the friction rows that stick, |lambda_t| <
+/// g). `f` are the loads the operators use, `c` the right-hand side of the rows,
+/// `slip_bound` g per friction row. Collective; returns u for this rank's subdomains.
 std::vector<Vec> recover_primal(const DualOperator& F, const CoarseSpace* coarse,
                                 const Constraints& constraints, const std::vector<Vec>& f,
-                                const Vec& c, const Vec& lambda);
+                                const Vec& c, const Vec& lambda, const Vec& slip_bound = Vec());
+
+/// A row holds with equality at lambda: an equality row, a contact row with lambda_i > 0, a
+/// friction row that sticks (|lambda_t| < g, g its `slip_bound` entry).
+bool holds_with_equality(const Constraints& constraints, const Vec& lambda, const Vec& slip_bound, int row);
 
 /// KKT conditions of  min 1/2 u'Ku - f'u  s.t.  B_E u = c_E, B_I u <= c_I, recomputed in
 /// primal form from the original (not eliminated) K_s of `inputs`, the loads `f` (this
@@ -24,8 +29,12 @@ std::vector<Vec> recover_primal(const DualOperator& F, const CoarseSpace* coarse
 ///                     (FETI-1: Dirichlet dofs excluded, their reactions are not in lambda)
 ///   equality        = max(|B_E u - c_E|, |u_D - g|) / ||u||_inf
 ///   inequality      = max(0, max(B_I u - c_I)) / ||u||_inf
-///   dual_feasibility= max(0, -min lambda_I) / ||lambda||_inf
-///   complementarity = max |lambda_i (B_I u - c_I)_i| / (||lambda||_inf ||u||_inf)
+///   dual_feasibility= max(0, -min lambda_I, max(|lambda_t| - g)) / ||lambda||_inf
+///   complementarity = max |lambda_i (B_I u - c_I)_i| / (||lambda||_inf ||u||_inf), and on
+///                     the friction rows, s = B_t u - c_t the slip of the step:
+///                     max((g - |lambda_t|) |s|, max(0, -lambda_t s)) over the same scale
+///                     (a row slips only at its bound, and against its friction force)
+/// (friction rows: slip_bound g per row, empty without friction)
 struct KktResiduals {
   double equilibrium = 0, equality = 0, inequality = 0, dual_feasibility = 0, complementarity = 0;
   double max() const;
@@ -36,7 +45,8 @@ struct KktResiduals {
 KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs, const std::vector<Vec>& f, const Vec& c,
                            bool homogeneous_dirichlet, const std::vector<LocalConstraints>& local, const DualOperator& F,
                            const Constraints& constraints, bool dirichlet_eliminated,
-                           const std::vector<Vec>& u, const Vec& lambda, const Communicator& comm);
+                           const std::vector<Vec>& u, const Vec& lambda, const Communicator& comm,
+                           const Vec& slip_bound = Vec());
 
 /// 1/2 u'Ku - f'u summed over all subdomains, with the original K_s and f_s (collective).
 double energy(const std::vector<SubdomainInput>& inputs, const std::vector<Vec>& u, const Communicator& comm);

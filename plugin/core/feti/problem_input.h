@@ -46,6 +46,15 @@ struct ContactInput {
   double search_distance = 1e300;             ///< node to segment: farther slaves get no row
   bool obstacle = false;
   std::array<double, 2> obstacle_point{0, 0}, obstacle_normal{0, 1};
+  /// Friction (node to segment and obstacle; docs/algorithms.md, "Friction"): each contact
+  /// row gets a tangential row, the slip t.(u_slave - u_p) of the slave along the master's
+  /// tangent t (on an obstacle the line's direction) measured from the state of the last
+  /// load step, whose multiplier, the friction force, keeps |lambda_t| <= g.
+  /// Coulomb: g = friction * lambda_n (a fixed point over Tresca solves). Tresca: g =
+  /// slip_bound, a force per row. Negative: not given; neither given: frictionless, no rows.
+  double friction = -1;
+  double slip_bound = -1;
+  bool has_friction() const { return friction >= 0 || slip_bound >= 0; }
 };
 
 enum class FetiVariant {

@@ -30,6 +30,7 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
       {"time_coarse", setup.coarse_space},
       {"time_dual_data", setup.dual_data},
   };
+  if (c.friction_rows > 0) s.push_back({"friction_rows", c.friction_rows});
   if (!result) return s;
   const Statistics solve = {
       {"status", status_code(result->status)},
@@ -66,13 +67,21 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
       {"time_kkt", result->times.kkt},
   };
   s.insert(s.end(), solve.begin(), solve.end());
+  if (c.friction_rows > 0) {
+    const Statistics friction = {
+        {"friction_iterations", result->friction_iterations},
+        {"friction_bound_change", result->friction_bound_change},
+        {"slipping", result->slipping_contact},
+    };
+    s.insert(s.end(), friction.begin(), friction.end());
+  }
   return s;
 }
 
 std::vector<ContactMultiplier> contact_multipliers(const FetiProblem& problem, const FetiResult* result) {
   const Constraints& c = problem.constraints();
   std::vector<ContactMultiplier> rows;
-  for (int i = c.equality_rows; i < c.rows(); ++i) {
+  for (int i = c.equality_rows; i < c.first_friction_row(); ++i) {
     const auto& position = problem.contact_positions()[static_cast<size_t>(i - c.equality_rows)];
     rows.push_back({position[0], position[1], result && result->lambda.size() ? result->lambda[i] : 0.0});
   }

@@ -72,6 +72,9 @@ SensitivityProblem::SensitivityProblem(const FetiProblem& problem, const FetiRes
   Stopwatch clock;
   if (state.lambda.size() != problem.dual_dimension() || state.u.size() != problem.inputs().size())
     throw InputError("P: the solution does not belong to this problem (call fetiSolve first)");
+  if (problem.has_friction())
+    throw InputError("P: has friction (friction= or slipBound=); the sensitivity analysis of a state with "
+                     "friction is not derived yet (docs/reference.md), only of frictionless contact");
   classification_ = classify_contact(problem, state, threshold);
   const Constraints& full = problem.constraints();
   Constraints rows;  // E, then S as equalities, then W as inequalities; right-hand sides per direction

@@ -1,0 +1,73 @@
+#include "feti/friction.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ffeti {
+namespace {
+
+/// g = mu max(lambda_n, 0) per friction row (zero where lambda is not given).
+Vec coulomb_bounds(const Constraints& c, const Vec& lambda, double mu) {
+  Vec g = Vec::Zero(c.friction_rows);
+  if (lambda.size() != c.rows()) return g;
+  for (int t = 0; t < c.friction_rows; ++t) g[t] = mu * std::max(lambda[c.normal_row[static_cast<size_t>(t)]], 0.0);
+  return g;
+}
+
+}  // namespace
+
+FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, const FrictionLaw& law,
+                                     DualSolveSettings settings, const Vec& start) {
+  const Constraints& c = dual.constraints();
+  if (settings.start.size() == 0) settings.start = start;
+  FrictionSolution out;
+  Vec g = law.coulomb() ? coulomb_bounds(c, settings.start, law.coefficient)
+                        : Vec::Constant(c.friction_rows, law.slip_bound);
+  IterationCounts counts;
+  PhaseTimes times;
+  for (;;) {
+    data.slip_bound = g;
+    DualSolution solved = dual.solve(data, settings);
+    ++out.iterations;
+    out.hessian.push_back(solved.counts.hessian);
+    const int estimate = counts.hessian_norm_estimate;  // estimated once: the later solves reuse it
+    counts += solved.counts;
+    counts.hessian_norm_estimate = out.iterations == 1 ? solved.counts.hessian_norm_estimate : estimate;
+    times += solved.times;
+    out.dual = std::move(solved);
+    out.slip_bound = g;
+    if (!law.coulomb() || out.dual.status != SolveStatus::converged) break;
+    const Vec next = coulomb_bounds(c, out.dual.lambda, law.coefficient);
+    const double scale = next.size() ? next.lpNorm<Eigen::Infinity>() : 0.0;
+    const double change = next.size() ? (next - g).lpNorm<Eigen::Infinity>() : 0.0;
+    out.bound_change = scale > 0 ? change / scale : change;
+    if (out.bound_change <= settings.tolerance) break;
+    if (out.iterations == kMaxFixedPointIterations) {
+      out.dual.status = SolveStatus::max_iterations;
+      break;
+    }
+    g = next;
+    settings.start = out.dual.lambda;  // each Tresca solve starts from the last one's multipliers
+  }
+  out.dual.counts = counts;
+  out.dual.times = times;
+  return out;
+}
+
+ContactRowForces contact_row_forces(const Constraints& c, const Vec& lambda, const Vec& slip_bound) {
+  ContactRowForces forces;
+  forces.tangential.assign(static_cast<size_t>(c.contact_rows()), 0.0);
+  forces.state.assign(static_cast<size_t>(c.contact_rows()), ContactState::open);
+  if (lambda.size() != c.rows()) return forces;
+  for (int i = 0; i < c.contact_rows(); ++i)
+    if (lambda[c.equality_rows + i] > 0) forces.state[static_cast<size_t>(i)] = ContactState::stick;
+  for (int t = 0; t < c.friction_rows; ++t) {
+    const auto i = static_cast<size_t>(c.normal_row[static_cast<size_t>(t)] - c.equality_rows);
+    const double lambda_t = lambda[c.first_friction_row() + t];
+    forces.tangential[i] = lambda_t;
+    if (forces.state[i] == ContactState::stick && std::abs(lambda_t) >= slip_bound[t]) forces.state[i] = ContactState::slip;
+  }
+  return forces;
+}
+
+}  // namespace ffeti

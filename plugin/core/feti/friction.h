@@ -1,0 +1,48 @@
+// Friction in the dual (docs/algorithms.md, "Friction"): Tresca is one dual solve with the
+// friction rows' multipliers in [-g, g]; Coulomb is the fixed point of the seed's reference
+// [DHK00] over Tresca solves, g = mu lambda_n of the previous one.
+#pragma once
+
+#include "feti/dual_system.h"
+
+#include <vector>
+
+namespace ffeti {
+
+struct FrictionLaw {
+  double coefficient = -1;  ///< Coulomb's mu (>= 0), or negative: Tresca
+  double slip_bound = -1;   ///< Tresca's g per row (>= 0), or negative: Coulomb
+  bool coulomb() const { return coefficient >= 0; }
+};
+
+/// The Coulomb fixed point stops at  ||g_new - g||_inf <= tolerance ||g_new||_inf  with the
+/// user's tol: each Tresca solve is accurate to about tol, so the bounds cannot settle finer.
+/// Beyond this many Tresca solves it reports max_iterations.
+inline constexpr int kMaxFixedPointIterations = 50;
+
+/// A solve with friction: the last Tresca solve (its lambda, u and status; counts and times
+/// summed over all of them) and what the fixed point adds.
+struct FrictionSolution {
+  DualSolution dual;
+  Vec slip_bound;                  ///< g of the last Tresca solve, per friction row
+  int iterations = 0;              ///< Tresca solves (1 for Tresca)
+  std::vector<int> hessian;        ///< Hessian multiplications of each
+  double bound_change = 0;         ///< Coulomb: the last ||g_new - g||_inf / ||g_new||_inf
+};
+
+/// Solves with friction from `start` (multipliers of the last load step; empty: none, and
+/// the first Coulomb bounds are zero, a frictionless solve). `data` are the state problem's
+/// (its slip_bound is set here). Collective.
+FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, const FrictionLaw& law,
+                                     DualSolveSettings settings, const Vec& start);
+
+/// The contact state of each contact row (fetiContact): open (lambda_n = 0), stick (its
+/// friction row inside its bound, or no friction row and closed), slip (at its bound).
+enum class ContactState { open = 0, stick = 1, slip = 2 };
+struct ContactRowForces {
+  std::vector<double> tangential;  ///< lambda_t per contact row (0 without a friction row)
+  std::vector<ContactState> state;
+};
+ContactRowForces contact_row_forces(const Constraints& constraints, const Vec& lambda, const Vec& slip_bound);
+
+}  // namespace ffeti

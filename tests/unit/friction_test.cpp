@@ -1,0 +1,324 @@
+// Friction against a dense reference: an elastic block pressed onto a rigid plane and
+// dragged along it by its top edge, split in two subdomains; the reference solves the
+// undivided block's dual (B K^-1 B' with a dense K) by enumerating every assignment of the
+// rows to their bounds, an exact active-set method that shares no code with qp/.
+#include "feti/feti_problem.h"
+#include "feti/friction.h"
+#include "sens/sensitivity.h"
+#include "base/errors.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <functional>
+
+namespace ffeti {
+namespace {
+
+constexpr double kYoung = 1000, kPoisson = 0.3;
+constexpr double kPush = -0.01, kDrag = 0.004, kGap = 0.001;  // top edge moves by (kDrag, kPush)
+
+/// P1 plane-strain elasticity on [x0, x0+w] x [0, h], nx x ny cells; dofs 2k (x), 2k+1 (y)
+/// of node k; the top edge fixed at (drag, push).
+SubdomainInput elastic_block(double x0, double w, double h, int nx, int ny, double drag, double push) {
+  SubdomainInput s;
+  const int nodes = (nx + 1) * (ny + 1);
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i)
+      for (int c = 0; c < 2; ++c) s.x.push_back(x0 + w * i / nx), s.y.push_back(h * j / ny), s.component.push_back(c);
+  const double lambda = kYoung * kPoisson / ((1 + kPoisson) * (1 - 2 * kPoisson)), mu = kYoung / (2 * (1 + kPoisson));
+  Eigen::Matrix3d D;
+  D << lambda + 2 * mu, lambda, 0, lambda, lambda + 2 * mu, 0, 0, 0, mu;
+  std::vector<Eigen::Triplet<double, int>> entries;
+  const auto id = [&](int i, int j) { return j * (nx + 1) + i; };
+  const auto triangle = [&](int a, int b, int c) {
+    const int v[3] = {a, b, c};
+    const double xa = s.x[2 * a], ya = s.y[2 * a];
+    const double area = 0.5 * ((s.x[2 * b] - xa) * (s.y[2 * c] - ya) - (s.x[2 * c] - xa) * (s.y[2 * b] - ya));
+    Eigen::Matrix<double, 3, 6> B = Eigen::Matrix<double, 3, 6>::Zero();
+    for (int k = 0; k < 3; ++k) {
+      const int p = v[(k + 1) % 3], q = v[(k + 2) % 3];
+      const double gx = (s.y[2 * p] - s.y[2 * q]) / (2 * area), gy = (s.x[2 * q] - s.x[2 * p]) / (2 * area);
+      B(0, 2 * k) = gx, B(1, 2 * k + 1) = gy, B(2, 2 * k) = gy, B(2, 2 * k + 1) = gx;
+    }
+    const Eigen::Matrix<double, 6, 6> Ke = std::abs(area) * B.transpose() * D * B;
+    for (int k = 0; k < 6; ++k)
+      for (int l = 0; l < 6; ++l) entries.emplace_back(2 * v[k / 2] + k % 2, 2 * v[l / 2] + l % 2, Ke(k, l));
+  };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) triangle(id(i, j), id(i + 1, j), id(i + 1, j + 1)), triangle(id(i, j), id(i + 1, j + 1), id(i, j + 1));
+  s.K.resize(2 * nodes, 2 * nodes);
+  s.K.setFromTriplets(entries.begin(), entries.end());
+  s.f = Vec::Zero(2 * nodes);
+  for (int i = 0; i <= nx; ++i) {
+    s.dirichlet_dofs.insert(s.dirichlet_dofs.end(), {2 * id(i, ny), 2 * id(i, ny) + 1});
+    s.dirichlet_values.insert(s.dirichlet_values.end(), {drag, push});
+  }
+  return s;
+}
+
+/// The bottom nodes' dofs (both components): the slaves on the plane y = -kGap.
+ContactInput on_plane(const std::vector<SubdomainInput>& subdomains) {
+  ContactInput contact;
+  for (const SubdomainInput& s : subdomains) {
+    contact.slave_dofs.emplace_back();
+    for (int k = 0; k < static_cast<int>(s.y.size()); ++k)
+      if (s.y[static_cast<size_t>(k)] == 0) contact.slave_dofs.back().push_back(k);
+  }
+  contact.obstacle = true;
+  contact.obstacle_point = {0, -kGap};
+  contact.obstacle_normal = {0, 1};
+  return contact;
+}
+
+std::vector<SubdomainInput> two_subdomains(double drag) {
+  return {elastic_block(0, 0.5, 0.5, 2, 2, drag, kPush), elastic_block(0.5, 0.5, 0.5, 2, 2, drag, kPush)};
+}
+
+/// The undivided block's dual by enumeration. Rows per bottom node k (x = k/4): the normal
+/// row -u_y <= kGap (multiplier n_k >= 0) and the slip row -u_x - s_k (s_k the slip
+/// reference of the step, multiplier t_k in [-g_k, g_k]), with u = u(lambda) of the block
+/// whose top edge is fixed. Returns per node (x, n_k, t_k) and the bottom u_x.
+struct Reference {
+  std::vector<double> x, normal, tangential, bottom_ux;
+};
+Reference enumerated(const Eigen::VectorXd& g, const Eigen::VectorXd& slip_reference, double drag) {
+  const SubdomainInput block = elastic_block(0, 1, 0.5, 4, 2, drag, kPush);
+  const int n = static_cast<int>(block.K.rows());
+  std::vector<int> free, fixed_at(static_cast<size_t>(n), -1);
+  for (size_t k = 0; k < block.dirichlet_dofs.size(); ++k) fixed_at[static_cast<size_t>(block.dirichlet_dofs[k])] = static_cast<int>(k);
+  for (int i = 0; i < n; ++i)
+    if (fixed_at[static_cast<size_t>(i)] < 0) free.push_back(i);
+  const Eigen::MatrixXd K(block.K);
+  const int nf = static_cast<int>(free.size());
+  Eigen::MatrixXd Kff(nf, nf);
+  Eigen::VectorXd f(nf);
+  for (int a = 0; a < nf; ++a) {
+    f[a] = 0;
+    for (int i = 0; i < n; ++i)
+      if (fixed_at[static_cast<size_t>(i)] >= 0) f[a] -= K(free[static_cast<size_t>(a)], i) * block.dirichlet_values[static_cast<size_t>(fixed_at[static_cast<size_t>(i)])];
+    for (int b = 0; b < nf; ++b) Kff(a, b) = K(free[static_cast<size_t>(a)], free[static_cast<size_t>(b)]);
+  }
+  const int nodes = 5, m = 2 * nodes;  // rows: normal 0..4, slip 5..9
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(m, nf);
+  Eigen::VectorXd c(m);
+  for (int k = 0; k < nodes; ++k) {
+    const int x_dof = 2 * k, y_dof = 2 * k + 1;  // bottom row of nodes: ids 0..4
+    const auto col = [&](int dof) { return static_cast<int>(std::find(free.begin(), free.end(), dof) - free.begin()); };
+    B(k, col(y_dof)) = -1, c[k] = kGap;
+    B(nodes + k, col(x_dof)) = -1, c[nodes + k] = slip_reference[k];
+  }
+  const Eigen::LLT<Eigen::MatrixXd> Kllt(Kff);
+  const Eigen::MatrixXd H = B * Kllt.solve(B.transpose());
+  const Eigen::VectorXd d = B * Kllt.solve(f) - c;
+  // State per row: normal rows 0 (lambda = 0) or 1 (free); slip rows 0 (-g), 1 (free), 2 (+g).
+  Eigen::VectorXd best;
+  int found = 0;
+  std::vector<int> state(static_cast<size_t>(m), 0);
+  const std::function<void(int)> visit = [&](int row) {
+    if (row == m) {
+      Eigen::VectorXd lambda = Eigen::VectorXd::Zero(m);
+      std::vector<int> open;
+      for (int i = 0; i < m; ++i) {
+        const int st = state[static_cast<size_t>(i)];
+        if (st == 1) open.push_back(i);
+        else if (i >= nodes) lambda[i] = st == 0 ? -g[i - nodes] : g[i - nodes];
+      }
+      const int o = static_cast<int>(open.size());
+      Eigen::MatrixXd Hoo(o, o);
+      Eigen::VectorXd rhs(o);
+      for (int a = 0; a < o; ++a) {
+        rhs[a] = d[open[static_cast<size_t>(a)]] - H.row(open[static_cast<size_t>(a)]).dot(lambda);
+        for (int b = 0; b < o; ++b) Hoo(a, b) = H(open[static_cast<size_t>(a)], open[static_cast<size_t>(b)]);
+      }
+      const Eigen::VectorXd lo = Hoo.ldlt().solve(rhs);
+      for (int a = 0; a < o; ++a) lambda[open[static_cast<size_t>(a)]] = lo[a];
+      const Eigen::VectorXd grad = H * lambda - d;  // of 1/2 l'Hl - d'l
+      const double eps = 1e-12 * (1 + d.lpNorm<Eigen::Infinity>());
+      for (int i = 0; i < m; ++i) {
+        const int st = state[static_cast<size_t>(i)];
+        const double lower = i < nodes ? 0.0 : -g[i - nodes], upper = i < nodes ? INFINITY : g[i - nodes];
+        if (st == 1 && (lambda[i] < lower - eps || lambda[i] > upper + eps)) return;
+        if (st == 0 && grad[i] < -eps) return;
+        if (st == 2 && grad[i] > eps) return;
+      }
+      best = lambda, ++found;
+      return;
+    }
+    const int states = row < nodes ? 2 : (g[row - nodes] > 0 ? 3 : 1);
+    for (int st = 0; st < states; ++st) {
+      state[static_cast<size_t>(row)] = states == 1 ? 0 : st;
+      visit(row + 1);
+    }
+  };
+  visit(0);
+  EXPECT_GE(found, 1);
+  Reference r;
+  const Eigen::VectorXd uf = Kllt.solve(f - B.transpose() * best);
+  for (int k = 0; k < nodes; ++k) {
+    r.x.push_back(k / 4.0), r.normal.push_back(best[k]), r.tangential.push_back(best[nodes + k]);
+    r.bottom_ux.push_back(uf[std::find(free.begin(), free.end(), 2 * k) - free.begin()]);
+  }
+  return r;
+}
+
+/// FETI's multipliers per bottom node in x order: (normal, tangential), from fetiContact's rows.
+std::vector<std::array<double, 2>> per_node(const FetiProblem& p, const FetiResult& r) {
+  const Constraints& c = p.constraints();
+  const ContactRowForces forces = contact_row_forces(c, r.lambda, r.slip_bound);
+  std::vector<std::pair<double, std::array<double, 2>>> rows;
+  for (int i = 0; i < c.contact_rows(); ++i)
+    rows.push_back({p.contact_positions()[static_cast<size_t>(i)][0],
+                    {r.lambda[c.equality_rows + i], forces.tangential[static_cast<size_t>(i)]}});
+  std::sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::array<double, 2>> out;
+  for (const auto& row : rows) out.push_back(row.second);
+  return out;
+}
+
+DualSolveSettings tight() {
+  DualSolveSettings s;
+  s.tolerance = 1e-12;
+  s.max_hessian = 100000;
+  return s;
+}
+
+void expect_matches(const FetiProblem& p, const FetiResult& r, const Reference& ref) {
+  ASSERT_EQ(r.status, SolveStatus::converged);
+  const auto rows = per_node(p, r);
+  ASSERT_EQ(rows.size(), 5u);
+  double scale = 0;
+  for (double v : ref.normal) scale = std::max(scale, std::abs(v));
+  for (size_t k = 0; k < 5; ++k) {
+    EXPECT_NEAR(rows[k][0], ref.normal[k], 1e-8 * scale) << "normal force at node " << k;
+    EXPECT_NEAR(rows[k][1], ref.tangential[k], 1e-8 * scale) << "friction force at node " << k;
+  }
+}
+
+class Tresca : public ::testing::TestWithParam<FetiVariant> {};
+
+TEST_P(Tresca, MatchesTheEnumeratedDualOfTheUndividedBlock) {
+  // A bound that holds some rows and lets others slip: both kinds must appear.
+  for (double bound : {0.0, 1.0, 2.0, 100.0}) {
+    ContactInput contact = on_plane(two_subdomains(kDrag));
+    contact.slip_bound = bound;
+    FetiSetupSettings setup;
+    setup.variant = GetParam();
+    const FetiProblem p(two_subdomains(kDrag), contact, setup);
+    EXPECT_EQ(p.constraints().friction_rows, 5);
+    const FetiResult r = p.solve(tight());
+    const Reference ref = enumerated(Eigen::VectorXd::Constant(5, bound), Eigen::VectorXd::Zero(5), kDrag);
+    SCOPED_TRACE("slip bound " + std::to_string(bound));
+    expect_matches(p, r, ref);
+    EXPECT_LT(r.kkt.max(), 1e-8);
+    EXPECT_EQ(r.friction_iterations, 1);
+    if (bound == 1.0) {  // the mixed case the test is for: some rows stick, some slip
+      EXPECT_GT(r.slipping_contact, 0);
+      EXPECT_LT(r.slipping_contact, r.active_contact);
+    }
+  }
+}
+
+TEST_P(Tresca, ZeroBoundIsTheFrictionlessSolution) {
+  FetiSetupSettings setup;
+  setup.variant = GetParam();
+  const FetiProblem frictionless(two_subdomains(kDrag), on_plane(two_subdomains(kDrag)), setup);
+  ContactInput contact = on_plane(two_subdomains(kDrag));
+  contact.friction = 0;
+  const FetiProblem coulomb(two_subdomains(kDrag), contact, setup);
+  const FetiResult a = frictionless.solve(tight()), b = coulomb.solve(tight());
+  ASSERT_EQ(b.status, SolveStatus::converged);
+  EXPECT_NEAR(a.energy, b.energy, 1e-10 * std::abs(a.energy));
+  EXPECT_EQ(b.slipping_contact, b.active_contact);  // g = 0: every closed row slips
+}
+
+TEST_P(Tresca, CoulombFixedPointMeetsTheLawAndTheReference) {
+  constexpr double mu = 0.3;
+  ContactInput contact = on_plane(two_subdomains(kDrag));
+  contact.friction = mu;
+  FetiSetupSettings setup;
+  setup.variant = GetParam();
+  const FetiProblem p(two_subdomains(kDrag), contact, setup);
+  const FetiResult r = p.solve(tight());
+  ASSERT_EQ(r.status, SolveStatus::converged);
+  EXPECT_GT(r.friction_iterations, 1);
+  EXPECT_LE(r.friction_bound_change, 1e-12);
+  // The answer is the Tresca solution for g = mu lambda_n of itself.
+  const auto rows = per_node(p, r);
+  Eigen::VectorXd g(5);
+  for (size_t k = 0; k < 5; ++k) g[static_cast<Eigen::Index>(k)] = mu * rows[k][0];
+  expect_matches(p, r, enumerated(g, Eigen::VectorXd::Zero(5), kDrag));
+  EXPECT_GT(r.slipping_contact, 0);
+}
+
+TEST_P(Tresca, LoadStepsMeasureTheSlipFromTheLastStep) {
+  // Step 1 drags the top edge by kDrag, step 2 brings it back to 0: what slipped in step 1
+  // stays (hysteresis), unlike a single solve with the top edge at 0.
+  constexpr double bound = 1.0;
+  FetiSetupSettings setup;
+  setup.variant = GetParam();
+  ContactInput contact = on_plane(two_subdomains(kDrag));
+  contact.slip_bound = bound;
+  FetiProblem step1(two_subdomains(kDrag), contact, setup);
+  const FetiResult r1 = step1.solve(tight());
+  const Reference ref1 = enumerated(Eigen::VectorXd::Constant(5, bound), Eigen::VectorXd::Zero(5), kDrag);
+  expect_matches(step1, r1, ref1);
+  // The second step on a problem whose Dirichlet values are those of step 2: the state of
+  // step 1 enters through start_load_step on a problem set up with the same rows.
+  FetiProblem step2(two_subdomains(0.0), contact, setup);
+  FetiResult carried = r1;  // u and lambda of step 1 on the same subdomains and rows
+  step2.start_load_step(carried);
+  const FetiResult r2 = step2.solve(tight());
+  Eigen::VectorXd slip1(5);  // B_t u of step 1: -u_x at the bottom nodes
+  for (int k = 0; k < 5; ++k) slip1[k] = -ref1.bottom_ux[static_cast<size_t>(k)];
+  expect_matches(step2, r2, enumerated(Eigen::VectorXd::Constant(5, bound), slip1, 0.0));
+  const FetiResult fresh = FetiProblem(two_subdomains(0.0), contact, setup).solve(tight());
+  const auto a = per_node(step2, r2), b = per_node(step2, fresh);
+  double difference = 0;
+  for (size_t k = 0; k < 5; ++k) difference = std::max(difference, std::abs(a[k][1] - b[k][1]));
+  EXPECT_GT(difference, 0.1 * bound);  // the path matters
+}
+
+INSTANTIATE_TEST_SUITE_P(Variants, Tresca, ::testing::Values(FetiVariant::feti1, FetiVariant::tfeti),
+                         [](const auto& info) { return info.param == FetiVariant::feti1 ? "feti1" : "tfeti"; });
+
+void expect_input_error(const std::function<void()>& f, const std::string& part) {
+  try {
+    f();
+    ADD_FAILURE() << "no InputError, expected one containing '" << part << "'";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+  }
+}
+
+TEST(FrictionInput, BadLawsAreRefusedByName) {
+  const auto with = [](const std::function<void(ContactInput&)>& change) {
+    ContactInput contact = on_plane(two_subdomains(kDrag));
+    change(contact);
+    FetiProblem p(two_subdomains(kDrag), contact);
+  };
+  expect_input_error([&] { with([](ContactInput& c) { c.friction = -0.5; }); }, "friction: must be");
+  expect_input_error([&] { with([](ContactInput& c) { c.slip_bound = NAN; }); }, "slipBound: must be");
+  expect_input_error([&] { with([](ContactInput& c) { c.friction = 0.3, c.slip_bound = 1; }); }, "give one law");
+  expect_input_error([&] {
+    auto subs = two_subdomains(kDrag);
+    ContactInput c;  // node to node: no tangent
+    c.slave_dofs.resize(2), c.master_dofs.resize(2);
+    c.slave_dofs[0] = {1}, c.master_dofs[1] = {1};
+    c.friction = 0.3;
+    FetiProblem p(std::move(subs), c);
+  }, "friction: needs node-to-segment");
+}
+
+TEST(FrictionInput, SensitivityOfAFrictionStateIsRefused) {
+  ContactInput contact = on_plane(two_subdomains(kDrag));
+  contact.friction = 0.3;
+  const FetiProblem p(two_subdomains(kDrag), contact);
+  const FetiResult r = p.solve();
+  expect_input_error([&] { SensitivityProblem s(p, r, 1e-8); }, "has friction");
+}
+
+}  // namespace
+}  // namespace ffeti
