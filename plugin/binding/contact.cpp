@@ -10,19 +10,21 @@
 #include "feti/constraint_triplets.h"
 #include "feti/contact_pressure.h"
 #include "feti/contact_transfer.h"
+#include "feti/friction.h"
 
 namespace ffeti::binding {
 namespace {
 
 /// Fills xc, yc with the slave positions of the contact rows and lc with their multipliers
 /// from the last solve (0 before any: the positions serve to build a start); returns the
-/// number of contact rows.
-class FetiContact : public E_F0mps {
+/// number of contact rows. With friction, tangential= receives each row's friction force
+/// (0 without a friction row) and state= 0 open, 1 stick, 2 slip.
+class FetiContact : public WithNamedArguments {
  public:
   typedef long Result;
+  static NamedParameters name_param;
   Expression id, xc, yc, lc;
-  explicit FetiContact(const basicAC_F0& args) {
-    args.SetNameParam(0, nullptr, nullptr);
+  explicit FetiContact(const basicAC_F0& args) : WithNamedArguments(args, name_param) {
     id = to<long>(args[0]);
     xc = to<KN<double>*>(args[1]);
     yc = to<KN<double>*>(args[2]);
@@ -46,10 +48,25 @@ class FetiContact : public E_F0mps {
         y[k] = rows[static_cast<size_t>(k)].y;
         l[k] = rows[static_cast<size_t>(k)].lambda;
       }
+      auto* tangential = optional_pointer<KN<double>>(nargs[0], stack);
+      auto* state = optional_pointer<KN<long>>(nargs[1], stack);
+      if (tangential || state) {
+        const Vec none;
+        const ContactRowForces forces =
+            contact_row_forces(h.problem->constraints(), h.result ? h.result->lambda : none,
+                               h.result ? h.result->slip_bound : none);
+        if (tangential) copy_to(forces.tangential, *tangential);
+        if (state) {
+          state->resize(count);
+          for (long k = 0; k < count; ++k) (*state)[k] = static_cast<long>(forces.state[static_cast<size_t>(k)]);
+        }
+      }
       return count;
     }));
   }
 };
+
+NamedParameters FetiContact::name_param = {{"tangential", &typeid(KN<double>*)}, {"state", &typeid(KN<long>*)}};
 
 // ---- int rows = fetiContactPressure(P, Share, Pr, rows=pc, shares=wc) ----------------------
 /// The contact pressure of the last solve per dof into Pr (this rank's subdomains, others

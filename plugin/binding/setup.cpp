@@ -39,7 +39,7 @@ class FetiSetup : public WithNamedArguments {
  private:
   // Named parameters by position in name_param: these, then the set-up options.
   enum Named { kDirichlet, kDirichletValues, kSlave, kMaster, kGap, kComponent, kComm, kSegments, kObstacle,
-               kRadius, kContactGap, kOptions };
+               kRadius, kContactGap, kFriction, kSlipBound, kOptions };
 
   long setup(Stack stack) const {
     auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
@@ -148,6 +148,11 @@ class FetiSetup : public WithNamedArguments {
       contact.obstacle_normal = {(*obstacle)[2], (*obstacle)[3]};
     }
     contact.search_distance = optional_real(nargs[kRadius], stack, contact.search_distance);
+    // Not given: -1, no friction rows (a given negative value is refused by the core).
+    contact.friction = optional_real(nargs[kFriction], stack, -1.0);
+    contact.slip_bound = optional_real(nargs[kSlipBound], stack, -1.0);
+    if ((nargs[kFriction] && contact.friction == -1.0) || (nargs[kSlipBound] && contact.slip_bound == -1.0))
+      throw InputError(std::string(nargs[kFriction] ? "friction" : "slipBound") + ": must be >= 0, got -1");
     if (const auto* gaps = optional_pointer<KN<KN<double>>>(nargs[kContactGap], stack)) {
       if (gaps->N() != count)
         throw InputError("contactGap: has " + std::to_string(gaps->N()) + " entries for " + std::to_string(count) +
@@ -170,7 +175,8 @@ NamedParameters FetiSetup::name_param = named_parameters(
      {"gap", &typeid(double)},                    {"component", &typeid(KN<KN<long>>*)},
      {"comm", &typeid(pcommworld)},               {"contactSegments", &typeid(KN<KN<long>>*)},
      {"obstacle", &typeid(KN<double>*)},          {"contactRadius", &typeid(double)},
-     {"contactGap", &typeid(KN<KN<double>>*)}},
+     {"contactGap", &typeid(KN<KN<double>>*)},   {"friction", &typeid(double)},
+     {"slipBound", &typeid(double)}},
     OptionScope::setup);
 
 long feti_set_loads(const long& id, KN<KN<double>>* const& loads) {
@@ -178,6 +184,9 @@ long feti_set_loads(const long& id, KN<KN<double>>* const& loads) {
     Handle& h = handle(id);
     std::vector<Vec> f;
     for (long s = 0; s < loads->N(); ++s) f.push_back(to_vec((*loads)[s]));
+    // With friction new loads are the next load step: the last solve's state is where its
+    // slip is measured from (before any solve, the unloaded state still is).
+    if (h.problem->has_friction() && h.result) h.problem->start_load_step(*h.result);
     h.problem->set_loads(f);
     h.sensitivity.reset();
     h.result.reset();

@@ -293,12 +293,16 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
   const ContactSpec& first = problem.contact.front();
   if (first.search_distance) contact.search_distance = *first.search_distance;
   contact.gap = first.gap.value_or(0.0);
+  contact.friction = first.friction.value_or(-1.0);
+  contact.slip_bound = first.slip_bound.value_or(-1.0);
   for (size_t i = 0; i < problem.contact.size(); ++i) {
     const ContactSpec& c = problem.contact[i];
     const std::string key = "contact[" + std::to_string(i) + "]";
-    if (c.search_distance != first.search_distance || c.gap != first.gap)
+    if (c.search_distance != first.search_distance || c.gap != first.gap || c.friction != first.friction ||
+        c.slip_bound != first.slip_bound)
       throw InputError(problem.path + ": " + key +
-                       ": search_distance and gap must be those of contact[0] (one value per problem)");
+                       ": search_distance, gap, friction and slip_bound must be those of contact[0] (one value "
+                       "per problem)");
     add_node_dofs(from_group(problem, key + ".slave", [&] { return mesh.nodes(1, c.slave); }), layouts,
                   contact.slave_dofs);
     if (c.obstacle) {

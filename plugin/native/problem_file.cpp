@@ -216,6 +216,14 @@ ContactSpec read_contact(ObjectReader& r, int components) {
     if (components != 1) r.fail(r.path("gap"), "applies to node-to-node contact (1 component) only");
     c.gap = r.required<double>("gap");
   }
+  for (const auto& [key, law] : {std::pair<const char*, std::optional<double>*>{"friction", &c.friction},
+                                 std::pair<const char*, std::optional<double>*>{"slip_bound", &c.slip_bound}}) {
+    if (!r.has(key)) continue;
+    if (components != 2) r.fail(r.path(key), "applies to plane displacements (\"components\": 2) only");
+    *law = r.required<double>(key);
+    if (!(**law >= 0)) r.fail(r.path(key), "must be >= 0");
+  }
+  if (c.friction && c.slip_bound) r.fail(r.path("slip_bound"), "give one law, friction (Coulomb) or slip_bound (Tresca)");
   if (c.slave == c.master) r.fail(r.path("master"), "is the slave curve");
   return c;
 }

@@ -159,11 +159,10 @@ PrimalCheck DualSystem::primal_check(const DualData& data, const Vec& lambda) co
       complementarity = std::max(complementarity, std::abs(lambda[i] * r) / lambda_scale);
   }
   // A friction row slips (s = B_t u - c_t) only at its bound and against its force.
-  for (int i = first_friction; i < rows() && lambda_scale > 0; ++i) {
-    const double slip = Bu[i] - data.c[i], g = data.slip_bound[i - first_friction];
-    complementarity = std::max({complementarity, (g - std::abs(lambda[i])) * std::abs(slip) / lambda_scale,
-                                -lambda[i] * slip / lambda_scale});
-  }
+  for (int i = first_friction; i < rows() && lambda_scale > 0; ++i)
+    complementarity = std::max(complementarity, friction_complementarity(lambda[i], Bu[i] - data.c[i],
+                                                                         data.slip_bound[i - first_friction],
+                                                                         lambda_scale) / lambda_scale);
   violation = std::max(violation, complementarity);
   check.violation = check.displacement > 0 ? violation / check.displacement
                                            : (violation > 0 ? std::numeric_limits<double>::infinity() : 0.0);

@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ffeti {
 namespace {
 
-/// g = mu max(lambda_n, 0) per friction row (zero where lambda is not given).
+/// g = mu max(lambda_n, 0) per friction row. Without multipliers to start from, g = +inf:
+/// the first solve sticks everywhere. (g = 0, a frictionless first solve, has no solution
+/// where friction alone holds a body: a block on a slope, a cylinder pushed sideways.)
 Vec coulomb_bounds(const Constraints& c, const Vec& lambda, double mu) {
-  Vec g = Vec::Zero(c.friction_rows);
+  Vec g = Vec::Constant(c.friction_rows, std::numeric_limits<double>::infinity());
   if (lambda.size() != c.rows()) return g;
   for (int t = 0; t < c.friction_rows; ++t) g[t] = mu * std::max(lambda[c.normal_row[static_cast<size_t>(t)]], 0.0);
   return g;

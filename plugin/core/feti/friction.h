@@ -31,8 +31,8 @@ struct FrictionSolution {
 };
 
 /// Solves with friction from `start` (multipliers of the last load step; empty: none, and
-/// the first Coulomb bounds are zero, a frictionless solve). `data` are the state problem's
-/// (its slip_bound is set here). Collective.
+/// the first Coulomb solve has no bound: it sticks everywhere). `data` are the state
+/// problem's (its slip_bound is set here). Collective.
 FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, const FrictionLaw& law,
                                      DualSolveSettings settings, const Vec& start);
 

@@ -33,6 +33,10 @@ Vec solve_normal_equations(const Eigen::SparseMatrix<double>& normal, const Vec&
 
 }  // namespace
 
+double friction_complementarity(double lambda_t, double slip, double g, double lambda_scale) {
+  return std::max(std::min(g - std::abs(lambda_t), lambda_scale) * std::abs(slip), -lambda_t * slip);
+}
+
 bool holds_with_equality(const Constraints& constraints, const Vec& lambda, const Vec& slip_bound, int row) {
   if (row < constraints.equality_rows) return true;
   const int friction = row - constraints.first_friction_row();
@@ -110,9 +114,8 @@ KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs, const std:
     if (i < constraints.equality_rows) {
       equality = std::max(equality, std::abs(gap[i]));
     } else if (const int t = i - constraints.first_friction_row(); t >= 0) {
-      const double g = slip_bound[t], slip = gap[i];
-      negative = std::max(negative, std::abs(lambda[i]) - g);
-      complementarity = std::max({complementarity, (g - std::abs(lambda[i])) * std::abs(slip), -lambda[i] * slip});
+      negative = std::max(negative, std::abs(lambda[i]) - slip_bound[t]);
+      complementarity = std::max(complementarity, friction_complementarity(lambda[i], gap[i], slip_bound[t], lambda_scale));
     } else {
       inequality = std::max(inequality, gap[i]);
       negative = std::max(negative, -lambda[i]);

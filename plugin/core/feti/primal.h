@@ -17,6 +17,11 @@ std::vector<Vec> recover_primal(const DualOperator& F, const CoarseSpace* coarse
                                 const Constraints& constraints, const std::vector<Vec>& f,
                                 const Vec& c, const Vec& lambda, const Vec& slip_bound = Vec());
 
+/// A friction row's complementarity, lambda_scale times the (relative) KKT measure: it may
+/// slip (s != 0) only at its bound g and against its force; the distance from the bound
+/// counts up to lambda_scale (g may be +inf: a row that must stick).
+double friction_complementarity(double lambda_t, double slip, double g, double lambda_scale);
+
 /// A row holds with equality at lambda: an equality row, a contact row with lambda_i > 0, a
 /// friction row that sticks (|lambda_t| < g, g its `slip_bound` entry).
 bool holds_with_equality(const Constraints& constraints, const Vec& lambda, const Vec& slip_bound, int row);
@@ -32,7 +37,7 @@ bool holds_with_equality(const Constraints& constraints, const Vec& lambda, cons
 ///   dual_feasibility= max(0, -min lambda_I, max(|lambda_t| - g)) / ||lambda||_inf
 ///   complementarity = max |lambda_i (B_I u - c_I)_i| / (||lambda||_inf ||u||_inf), and on
 ///                     the friction rows, s = B_t u - c_t the slip of the step:
-///                     max((g - |lambda_t|) |s|, max(0, -lambda_t s)) over the same scale
+///                     max(min(g - |lambda_t|, ||lambda||_inf) |s|, -lambda_t s) over the same scale
 ///                     (a row slips only at its bound, and against its friction force)
 /// (friction rows: slip_bound g per row, empty without friction)
 struct KktResiduals {
