@@ -116,6 +116,26 @@ TEST(BoxBounds, MprgpFindsTheEnumeratedSolution) {
   }
 }
 
+TEST(BoxBounds, PinnedComponentsStayAndTheRestIsSolved) {
+  // l_i = u_i (a friction row whose bound is 0: an open contact). Before pinned components
+  // counted as at-the-lower-bound, their chopped gradient pointed past the upper one, and
+  // proportioning took zero steps until maxit (a Cattaneo-Mindlin solve did 9974).
+  for (unsigned seed = 1; seed <= 4; ++seed) {
+    BoxQp qp = random_box_qp(7, 50.0, seed);
+    for (int i : {1, 4}) qp.upper[i] = qp.lower[i] = 0.0;
+    const Vec reference = reference_solution(qp);
+    Vec x = Vec::Zero(7), g;
+    const double tol = 1e-12 * qp.b.norm();
+    const MprgpResult r = mprgp(test::dense_operator(qp.A), qp.b, Bounds{qp.lower, &qp.upper}, 1.05 * 50.0, x, g,
+                                false, MprgpSettings{}, [&](const Vec&, const Vec&, double norm) { return norm <= tol; });
+    ASSERT_EQ(r.status, SolveStatus::converged) << "seed " << seed;
+    EXPECT_LT(r.counts.hessian, 200) << "seed " << seed;
+    EXPECT_LT((x - reference).norm(), 1e-8 * reference.norm()) << "seed " << seed;
+    EXPECT_EQ(x[1], 0.0);
+    EXPECT_EQ(x[4], 0.0);
+  }
+}
+
 TEST(BoxBounds, EveryBoundIsReachedSomewhere) {
   // The test problems do exercise both bounds (else the test above proves little).
   int at_lower = 0, at_upper = 0;

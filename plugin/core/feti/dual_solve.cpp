@@ -96,6 +96,7 @@ Vec DualSystem::run(const DualQp& qp, const Bounds* bounds, const DualStop& stop
     problem.upper = bounds->upper;
     problem.hessian_norm = qp.hessian_norm;
     problem.preconditioner = qp.preconditioner;
+    problem.multiplier = settings.equality_multiplier;
     const SmalbeResult r = smalbe(
         problem, x, smalbe_within(settings),
         [&](const Vec& xi, const Vec& gP, const Vec&) { return converged(xi, gP.lpNorm<Eigen::Infinity>(), gP.norm()); },

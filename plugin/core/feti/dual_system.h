@@ -59,6 +59,10 @@ struct DualSolveSettings {
   /// Face solves that settle a given start before MPRGP (qp/start_settling.h); 0: MPRGP
   /// from the start as given. Ignored without a start. 2: measured, docs/results/large-contact.md.
   int settle = 2;
+  /// SMALBE path: in/out the solver's multiplier term of the equality part (qp/smalbe.h),
+  /// for a sequence of solves of one system that each start from the last (friction's fixed
+  /// point); null: each solve starts it at 0.
+  Vec* equality_multiplier = nullptr;
 
   void validate() const;  ///< throws InputError naming the setting
 };

@@ -28,6 +28,8 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
                         : Vec::Constant(c.friction_rows, law.slip_bound);
   IterationCounts counts;
   PhaseTimes times;
+  Vec equality_multiplier;  // carried from solve to solve with the multipliers
+  settings.equality_multiplier = &equality_multiplier;
   for (;;) {
     data.slip_bound = g;
     DualSolution solved = dual.solve(data, settings);

@@ -78,6 +78,7 @@ namespace {
 /// Component i of the projected gradient.
 double projected_component(const Vec& x, const Vec& g, const Bounds& bounds, Eigen::Index i) {
   if (bounds.free(i, x[i])) return g[i];
+  if (bounds.pinned(i, x[i])) return 0.0;  // at both bounds: no direction is feasible
   if (!above_bound(x[i], bounds.lower[i])) return std::min(g[i], 0.0);  // at the lower bound
   return std::max(g[i], 0.0);                                          // at the upper bound
 }
@@ -153,7 +154,7 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Bounds& bounds, d
     // Split the gradient: chopped gradient beta (at a bound, the part pointing into the box), and the reduced free gradient's products.
     double beta_sq = 0, gp_sq = 0;
     for (Eigen::Index i = 0; i < n; ++i) {
-      beta[i] = bounds.free(i, x[i]) ? 0.0 : !above_bound(x[i], lower[i]) ? std::min(g[i], 0.0) : std::max(g[i], 0.0);
+      beta[i] = bounds.free(i, x[i]) ? 0.0 : projected_component(x, g, bounds, i);
       beta_sq += beta[i] * beta[i];
       gp_sq += phi[i] * phi[i] + beta[i] * beta[i];
     }

@@ -45,6 +45,9 @@ struct Bounds {
   /// x_i strictly inside its bounds: free to move either way.
   bool free(Eigen::Index i, double x) const { return above_bound(x, lower[i]) && (!upper || x < (*upper)[i]); }
   bool has_upper(Eigen::Index i) const { return upper && (*upper)[i] < std::numeric_limits<double>::infinity(); }
+  /// x_i at both bounds (l_i = u_i, e.g. a friction row whose bound is 0): it cannot move,
+  /// whatever the sign of its gradient.
+  bool pinned(Eigen::Index i, double x) const { return !above_bound(x, lower[i]) && upper && x >= (*upper)[i]; }
 };
 
 /// Machine-independent cost of one solve. Every application of the Hessian inside the

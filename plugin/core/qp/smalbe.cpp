@@ -38,8 +38,10 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
   // (units of x): scale it by 1/||A|| there.
   double eta = settings.eta_factor * b.norm() /
                (settings.variant == SmalbeVariant::smalbe_m ? 1.0 : std::max(problem.hessian_norm, rho));
-  Vec nu = Vec::Zero(n);           // multiplier term C'mu, kept in Im C'
-  Vec shifted_b = b;               // b - nu: linear term of the inner problem
+  Vec own_multiplier;
+  Vec& nu = problem.multiplier ? *problem.multiplier : own_multiplier;  // multiplier term C'mu, kept in Im C'
+  if (nu.size() != n) nu = Vec::Zero(n);
+  Vec shifted_b = b - nu;          // linear term of the inner problem
   Vec Qx(n), Qv(n), g(n);  // Qx: Q at the iterate; Qv: scratch of the operator A
   bool gradient_is_current = false;
   double previous_lagrangian = std::numeric_limits<double>::infinity();

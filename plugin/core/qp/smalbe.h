@@ -46,6 +46,11 @@ struct SmalbeProblem {
   /// of H + rho Q.
   LinearOperator preconditioner;
   const Vec* upper = nullptr;              ///< upper bounds (+infinity where none); null: none
+  /// In: the multiplier term nu = C'mu to start from (empty: 0); out: the final one. A
+  /// sequence of solves of one problem with other bounds (friction's fixed point) starts
+  /// each from the last one's x and nu: with x alone the gradient of the Lagrangian at the
+  /// start is off by the whole of nu, and every solve costs as much as a cold one. Null: 0.
+  Vec* multiplier = nullptr;
 };
 
 /// Global stopping test: x, gP(x, nu, 0) (projected gradient of the Lagrangian without
