@@ -182,8 +182,13 @@ NamedParameters FetiSetup::name_param = named_parameters(
 long feti_set_loads(const long& id, KN<KN<double>>* const& loads) {
   return guarded("fetiSetLoads", [&] {
     Handle& h = handle(id);
+    // One entry per subdomain, as fetiSetup's F; each rank takes its own subdomains' (with
+    // all of them handed to the core, a second rank refused the array).
+    if (loads->N() != h.problem->subdomain_count())
+      throw InputError("F: has " + std::to_string(loads->N()) + " entries for " +
+                       std::to_string(h.problem->subdomain_count()) + " subdomains");
     std::vector<Vec> f;
-    for (long s = 0; s < loads->N(); ++s) f.push_back(to_vec((*loads)[s]));
+    for (int s : h.problem->global_ids()) f.push_back(to_vec((*loads)[s]));
     // With friction new loads are the next load step: the last solve's state is where its
     // slip is measured from (before any solve, the unloaded state still is).
     if (h.problem->has_friction() && h.result) h.problem->start_load_step(*h.result);

@@ -40,8 +40,8 @@ const DofRecord* fixed_record(const std::vector<DofRecord>& records, int subdoma
 /// FETI-1: known Dirichlet values move to the right-hand side.
 void substitute_dirichlet(const std::vector<DofRecord>& records, std::vector<Row>& rows);
 /// Appends a friction row for each contact row of `rows` (its index there as normal_row);
-/// FETI-1 (`eliminated`): fixed dofs leave the row, and a row left empty (a slave that
-/// cannot slip) is dropped.
-void add_friction_rows(const std::vector<DofRecord>& records, bool eliminated, std::vector<Row>& rows);
+/// fixed dofs leave the row (their values to its right-hand side), and a row left empty (a
+/// slave that cannot slip) is dropped.
+void add_friction_rows(const std::vector<DofRecord>& records, std::vector<Row>& rows);
 
 }  // namespace ffeti

@@ -30,7 +30,7 @@ Constraints build_constraints(std::vector<DofRecord> records, const std::vector<
   if (variant == FetiVariant::feti1) substitute_dirichlet(records, rows);
 
   std::stable_partition(rows.begin(), rows.end(), [](const Row& r) { return r.equality; });
-  if (contact.has_friction()) add_friction_rows(records, variant == FetiVariant::feti1, rows);
+  if (contact.has_friction()) add_friction_rows(records, rows);
   Constraints result;
   for (const Row& row : rows) {
     result.entries.insert(result.entries.end(), row.entries.begin(), row.entries.end());

@@ -125,7 +125,7 @@ void add_obstacle_rows(const std::vector<DofRecord>& records, const ContactInput
   }
 }
 
-void add_friction_rows(const std::vector<DofRecord>& records, bool eliminated, std::vector<Row>& rows) {
+void add_friction_rows(const std::vector<DofRecord>& records, std::vector<Row>& rows) {
   const size_t count = rows.size();
   for (size_t i = 0; i < count; ++i) {
     if (rows[i].kind != RowKind::contact) continue;
@@ -136,10 +136,14 @@ void add_friction_rows(const std::vector<DofRecord>& records, bool eliminated, s
     Row row{{}, 0.0, RowKind::friction, false, g, static_cast<int>(i)};
     for (size_t k = 0; k < (on_segment ? 6u : 2u); ++k) {
       if (slip.coefficients[k] == 0) continue;
-      // FETI-1: a fixed dof moves by its prescribed value in every step, so it adds
-      // nothing to the slip increment: it just leaves the row.
-      if (eliminated && fixed_record(records, dofs[k][0], dofs[k][1])) continue;
-      row.entries.push_back({dofs[k][0], dofs[k][1], slip.coefficients[k]});
+      // A fixed dof leaves the row, its prescribed motion moving to the right-hand side
+      // (it is there from the first load step on and adds nothing to later increments). In
+      // Total FETI too: its Dirichlet row already holds it, and a row on it alone would
+      // repeat that row (B would lose full rank).
+      if (const DofRecord* fixed = fixed_record(records, dofs[k][0], dofs[k][1]))
+        row.rhs -= slip.coefficients[k] * fixed->value;
+      else
+        row.entries.push_back({dofs[k][0], dofs[k][1], slip.coefficients[k]});
     }
     if (!row.entries.empty()) rows.push_back(std::move(row));
   }
