@@ -14,6 +14,8 @@
 #   ./scripts/benchmark.sh hard-cases      the hard-case suite as a table (~1 min)
 #   ./scripts/benchmark.sh accuracy        what accuracy costs in time, every scene, tol 1e-2 .. 1e-10 (~3 min)
 #   ./scripts/benchmark.sh busy-machine    scenes idle and beside busy neighbour processes, threads (~2 min)
+#   ./scripts/benchmark.sh friction        Cattaneo-Mindlin and a block on a slope: tractions, stick/slip,
+#                                          the Coulomb fixed point's cost against frictionless (~1 min)
 #   ./scripts/benchmark.sh                 all
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -33,6 +35,7 @@ case "${1:-all}" in
   large-contact) /usr/bin/python3 "$root/scripts/large_contact_benchmark.py" ;;
   hard-cases) /usr/bin/python3 "$root/scripts/hard_cases_table.py" ;;
   accuracy) /usr/bin/python3 "$root/scripts/accuracy_benchmark.py" ;;
+  friction) /usr/bin/python3 "$root/scripts/friction_benchmark.py" ;;
   all) /usr/bin/python3 "$root/scripts/model_problem_benchmark.py"
        /usr/bin/python3 "$root/scripts/parallel_benchmark.py"
        /usr/bin/python3 "$root/scripts/hertz_benchmark.py"
@@ -42,6 +45,7 @@ case "${1:-all}" in
        /usr/bin/python3 "$root/scripts/large_contact_benchmark.py"
        /usr/bin/python3 "$root/scripts/hard_cases_table.py"
        /usr/bin/python3 "$root/scripts/accuracy_benchmark.py"
-       /usr/bin/python3 "$root/scripts/busy_machine_benchmark.py" ;;
+       /usr/bin/python3 "$root/scripts/busy_machine_benchmark.py"
+       /usr/bin/python3 "$root/scripts/friction_benchmark.py" ;;
   *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization|scalability|large-contact|hard-cases|accuracy|busy-machine]" >&2; exit 2 ;;
 esac
