@@ -34,4 +34,7 @@ rm -r scenes 05-several-bodies.edp
 exercise "lesson 6: -k 6" "$lessons/06-sensitivity.edp" -k 6
 exercise "lesson 7: -start 0.1" "$lessons/07-shape-optimization.edp" -start 0.1
 exercise "lesson 7: -amax 0.02" "$lessons/07-shape-optimization.edp" -amax 0.02
+exercise "lesson 9: -pull 0.9" "$lessons/09-friction.edp" -pull 0.9
+exercise "lesson 9: -onestep 1" "$lessons/09-friction.edp" -onestep 1
+exercise "lesson 9: -mu 0.2" "$lessons/09-friction.edp" -mu 0.2
 [ "$failures" -eq 0 ] && echo "all checks passed" || { echo "$failures exercise(s) failed"; exit 1; }
