@@ -81,6 +81,35 @@ for name, error, bound in checks:
 sys.exit(0 if all(e <= b for _, e, b in checks) else 1)
 PY
 
+# Friction from the problem file: the same cylinder on the plane with "friction": 0.3 builds
+# friction rows, converges and keeps the force balance; "friction": 0 gives the frictionless
+# contact forces (1e-8), a friction coefficient on a scalar field is refused by name.
+python3 - <<'PY'
+import json
+problem = json.load(open("obstacle.json"))
+for mu in (0.3, 0):
+    problem["contact"][0]["friction"] = mu
+    problem["output"] = {"table": f"friction{mu}.csv"}
+    json.dump(problem, open(f"friction{mu}.json", "w"), indent=2)
+PY
+for mu in 0.3 0; do
+  "$ffeti_solve" friction$mu.json | grep '^RESULT' | grep 'status_name=converged' | grep -q ' friction_rows=[1-9]' \
+    || { echo "FAILED: friction $mu: no converged solve with friction rows"; exit 1; }
+done
+python3 - <<'PY'
+import csv, sys
+F = 35000.0
+plain = {r["node"]: float(r["contact_force"]) for r in csv.DictReader(open("obstacle.csv")) if r["contact_row"] == "1"}
+zero = {r["node"]: float(r["contact_force"]) for r in csv.DictReader(open("friction0.csv")) if r["contact_row"] == "1"}
+rough = [float(r["contact_force"]) for r in csv.DictReader(open("friction0.3.csv")) if r["contact_row"] == "1"]
+scale = max(abs(v) for v in plain.values())
+checks = [("friction 0.3: force balance", abs(sum(rough) - F / 2) / (F / 2), 1e-8),
+          ("friction 0: the frictionless forces", max(abs(plain[n] - zero[n]) for n in plain) / scale, 1e-8)]
+for name, error, bound in checks:
+    print(f"{'ok' if error <= bound else 'FAILED'}: {name}: relative difference {error:.3e} (bound {bound:g})")
+sys.exit(0 if all(e <= b for _, e, b in checks) and plain.keys() == zero.keys() else 1)
+PY
+
 # The same problem file under mpirun on 1, 2, 3 and 7 ranks (6 subdomains, spread by size:
 # 3-3 on 2 ranks, 2-2-2 on 3, one rank without a subdomain on 7).
 failures=0
