@@ -10,7 +10,6 @@
 #include "feti/constraint_triplets.h"
 #include "feti/contact_pressure.h"
 #include "feti/contact_transfer.h"
-#include "feti/friction.h"
 
 namespace ffeti::binding {
 namespace {
@@ -48,18 +47,13 @@ class FetiContact : public WithNamedArguments {
         y[k] = rows[static_cast<size_t>(k)].y;
         l[k] = rows[static_cast<size_t>(k)].lambda;
       }
-      auto* tangential = optional_pointer<KN<double>>(nargs[0], stack);
-      auto* state = optional_pointer<KN<long>>(nargs[1], stack);
-      if (tangential || state) {
-        const Vec none;
-        const ContactRowForces forces =
-            contact_row_forces(h.problem->constraints(), h.result ? h.result->lambda : none,
-                               h.result ? h.result->slip_bound : none);
-        if (tangential) copy_to(forces.tangential, *tangential);
-        if (state) {
-          state->resize(count);
-          for (long k = 0; k < count; ++k) (*state)[k] = static_cast<long>(forces.state[static_cast<size_t>(k)]);
-        }
+      if (auto* tangential = optional_pointer<KN<double>>(nargs[0], stack)) {
+        tangential->resize(count);
+        for (long k = 0; k < count; ++k) (*tangential)[k] = rows[static_cast<size_t>(k)].tangential;
+      }
+      if (auto* state = optional_pointer<KN<long>>(nargs[1], stack)) {
+        state->resize(count);
+        for (long k = 0; k < count; ++k) (*state)[k] = static_cast<long>(rows[static_cast<size_t>(k)].state);
       }
       return count;
     }));

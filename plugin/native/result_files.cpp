@@ -139,6 +139,8 @@ NodalResults nodal_results(const ProblemFile& problem, const GmshMesh& mesh, con
     const auto node = slave_at.find({row.x, row.y});
     if (node == slave_at.end()) continue;  // a row of another kind at this position: none expected
     results.contact_force[node->second] += row.lambda;
+    results.friction_force[node->second] += row.tangential;
+    results.contact_state[node->second] = static_cast<int>(row.state);
   }
   for (const auto& [node, force] : results.contact_force) {
     const auto length = share.find(node);
@@ -179,6 +181,11 @@ void write_views(const std::string& path, const ProblemFile& problem, const Gmsh
   std::map<NodeTag, double> active;
   for (const auto& [node, force] : results.contact_force) active[node] = force > 0 ? 1.0 : 0.0;
   node_view("active set", active);
+  if (problem.contact.size() && (problem.contact.front().friction || problem.contact.front().slip_bound)) {
+    node_view("friction force", results.friction_force);
+    std::map<NodeTag, double> state(results.contact_state.begin(), results.contact_state.end());
+    node_view("contact state (0 open, 1 stick, 2 slip)", state);
+  }
 
   std::vector<std::size_t> element_tags;
   std::vector<double> stress;
@@ -198,14 +205,15 @@ void write_views(const std::string& path, const ProblemFile& problem, const Gmsh
 
 void write_table(const std::string& path, const GmshMesh& mesh, const NodalResults& results) {
   std::ofstream out = open_output(path);
-  out << "node,body,x,y,u_x,u_y,contact_row,contact_force,contact_pressure,active\n";
+  out << "node,body,x,y,u_x,u_y,contact_row,contact_force,contact_pressure,active,friction_force,state\n";
   for (const auto& [node, u] : results.displacement) {
     const auto p = mesh.position(node);
     const auto force = results.contact_force.find(node);
     const bool slave = force != results.contact_force.end();
     out << node << ',' << results.body.at(node) << ',' << p[0] << ',' << p[1] << ',' << u[0] << ',' << u[1] << ','
         << slave << ',' << (slave ? force->second : 0.0) << ',' << (slave ? results.contact_pressure.at(node) : 0.0) << ','
-        << (slave && force->second > 0 ? 1 : 0) << '\n';
+        << (slave && force->second > 0 ? 1 : 0) << ',' << (slave ? results.friction_force.at(node) : 0.0) << ','
+        << (slave ? results.contact_state.at(node) : 0) << '\n';
   }
 }
 

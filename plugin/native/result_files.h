@@ -40,6 +40,8 @@ struct NodalResults {
   std::map<NodeTag, std::array<double, 2>> displacement;
   std::map<NodeTag, int> body;
   std::map<NodeTag, double> contact_force, contact_pressure;
+  std::map<NodeTag, double> friction_force;  ///< the friction row's multiplier (0 without friction)
+  std::map<NodeTag, int> contact_state;      ///< 0 open, 1 stick, 2 slip (friction.h)
   std::vector<ElementStress> stresses;  ///< plane displacements, bodies with a material
 };
 
@@ -50,8 +52,9 @@ NodalResults nodal_results(const ProblemFile& problem, const GmshMesh& mesh, con
 void write_views(const std::string& path, const ProblemFile& problem, const GmshMesh& mesh,
                  const NodalResults& results);
 
-/// node,body,x,y,u_x,u_y,contact_row,contact_force,contact_pressure,active (contact_row: 1 at
-/// the slave nodes that have a contact row)
+/// node,body,x,y,u_x,u_y,contact_row,contact_force,contact_pressure,active,friction_force,state
+/// (contact_row: 1 at the slave nodes that have a contact row; friction_force and state (0
+/// open, 1 stick, 2 slip) as fetiContact's tangential= and state=)
 void write_table(const std::string& path, const GmshMesh& mesh, const NodalResults& results);
 
 /// element,body,x,y,von_mises (centroids), for the bodies with a material.

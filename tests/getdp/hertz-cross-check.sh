@@ -103,11 +103,17 @@ plain = {r["node"]: float(r["contact_force"]) for r in csv.DictReader(open("obst
 zero = {r["node"]: float(r["contact_force"]) for r in csv.DictReader(open("friction0.csv")) if r["contact_row"] == "1"}
 rough = [float(r["contact_force"]) for r in csv.DictReader(open("friction0.3.csv")) if r["contact_row"] == "1"]
 scale = max(abs(v) for v in plain.values())
-checks = [("friction 0.3: force balance", abs(sum(rough) - F / 2) / (F / 2), 1e-8),
+table = [r for r in csv.DictReader(open("friction0.3.csv")) if r["contact_row"] == "1"]
+beyond = max(abs(float(r["friction_force"])) - 0.3 * float(r["contact_force"]) for r in table)
+states = {r["state"] for r in table if float(r["contact_force"]) > 0}
+print(f"{'ok' if states <= {'1', '2'} else 'FAILED'}: friction 0.3: closed rows stick or slip (states {sorted(states)})")
+# the bound is mu lambda_n of the last fixed-point iterate: met to the fixed point's tolerance
+checks = [("friction 0.3: |friction force| <= 0.3 normal force", max(beyond, 0) / (F / 2), 1e-8),
+          ("friction 0.3: force balance", abs(sum(rough) - F / 2) / (F / 2), 1e-8),
           ("friction 0: the frictionless forces", max(abs(plain[n] - zero[n]) for n in plain) / scale, 1e-8)]
 for name, error, bound in checks:
     print(f"{'ok' if error <= bound else 'FAILED'}: {name}: relative difference {error:.3e} (bound {bound:g})")
-sys.exit(0 if all(e <= b for _, e, b in checks) and plain.keys() == zero.keys() else 1)
+sys.exit(0 if all(e <= b for _, e, b in checks) and plain.keys() == zero.keys() and states <= {'1', '2'} else 1)
 PY
 
 # The same problem file under mpirun on 1, 2, 3 and 7 ranks (6 subdomains, spread by size:

@@ -80,10 +80,13 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
 
 std::vector<ContactMultiplier> contact_multipliers(const FetiProblem& problem, const FetiResult* result) {
   const Constraints& c = problem.constraints();
+  const bool solved = result && result->lambda.size();
+  const ContactRowForces forces = contact_row_forces(c, solved ? result->lambda : Vec(), solved ? result->slip_bound : Vec());
   std::vector<ContactMultiplier> rows;
   for (int i = c.equality_rows; i < c.first_friction_row(); ++i) {
-    const auto& position = problem.contact_positions()[static_cast<size_t>(i - c.equality_rows)];
-    rows.push_back({position[0], position[1], result && result->lambda.size() ? result->lambda[i] : 0.0});
+    const auto k = static_cast<size_t>(i - c.equality_rows);
+    const auto& position = problem.contact_positions()[k];
+    rows.push_back({position[0], position[1], solved ? result->lambda[i] : 0.0, forces.tangential[k], forces.state[k]});
   }
   return rows;
 }

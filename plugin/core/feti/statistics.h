@@ -3,6 +3,7 @@
 #pragma once
 
 #include "feti/feti_problem.h"
+#include "feti/friction.h"
 
 #include <string>
 #include <utility>
@@ -23,9 +24,11 @@ int status_code(SolveStatus status);
 /// One contact row: the position of its slave dof and its multiplier (the contact force).
 struct ContactMultiplier {
   double x, y, lambda;
+  double tangential = 0;                     ///< the friction row's multiplier (0 without one)
+  ContactState state = ContactState::open;   ///< open, stick or slip (friction.h)
 };
 /// The contact rows in row order, with the multipliers of `result` (0 without one: the
-/// positions alone, known from the set-up).
+/// positions alone, known from the set-up) and, with friction, the friction forces and states.
 std::vector<ContactMultiplier> contact_multipliers(const FetiProblem& problem, const FetiResult* result);
 
 /// One line "RANK rank=r subdomains=... primal=... time_factor=... time_solve=...
