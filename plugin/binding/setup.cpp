@@ -39,7 +39,7 @@ class FetiSetup : public WithNamedArguments {
  private:
   // Named parameters by position in name_param: these, then the set-up options.
   enum Named { kDirichlet, kDirichletValues, kSlave, kMaster, kGap, kComponent, kComm, kSegments, kObstacle,
-               kRadius, kContactGap, kFriction, kSlipBound, kOptions };
+               kRadius, kContactGap, kFriction, kSlipBound, kFrictionField, kOptions };
 
   long setup(Stack stack) const {
     auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
@@ -121,7 +121,8 @@ class FetiSetup : public WithNamedArguments {
     }
   }
 
-  /// contactSlave=, contactMaster=, gap=, contactSegments=, obstacle=, contactRadius=, contactGap=.
+  /// contactSlave=, contactMaster=, gap=, contactSegments=, obstacle=, contactRadius=, contactGap=,
+  /// friction=, slipBound=, frictionField=.
   ContactInput contact_input(Stack stack, long count, const std::vector<int>& ids, const std::vector<long>& dofs) const {
     ContactInput contact;
     contact.slave_dofs = per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kSlave], stack), count, ids,
@@ -153,6 +154,13 @@ class FetiSetup : public WithNamedArguments {
     contact.slip_bound = optional_real(nargs[kSlipBound], stack, -1.0);
     if ((nargs[kFriction] && contact.friction == -1.0) || (nargs[kSlipBound] && contact.slip_bound == -1.0))
       throw InputError(std::string(nargs[kFriction] ? "friction" : "slipBound") + ": must be >= 0, got -1");
+    if (const auto* mu = optional_pointer<KN<KN<double>>>(nargs[kFrictionField], stack)) {
+      if (mu->N() != count)
+        throw InputError("frictionField: has " + std::to_string(mu->N()) + " entries for " + std::to_string(count) +
+                         " subdomains");
+      for (int s : ids) contact.friction_field.push_back(to_std((*mu)[s]));
+      if (!nargs[kFriction]) contact.friction = 0.0;  // where the field has no entry
+    }
     if (const auto* gaps = optional_pointer<KN<KN<double>>>(nargs[kContactGap], stack)) {
       if (gaps->N() != count)
         throw InputError("contactGap: has " + std::to_string(gaps->N()) + " entries for " + std::to_string(count) +
@@ -176,7 +184,7 @@ NamedParameters FetiSetup::name_param = named_parameters(
      {"comm", &typeid(pcommworld)},               {"contactSegments", &typeid(KN<KN<long>>*)},
      {"obstacle", &typeid(KN<double>*)},          {"contactRadius", &typeid(double)},
      {"contactGap", &typeid(KN<KN<double>>*)},   {"friction", &typeid(double)},
-     {"slipBound", &typeid(double)}},
+     {"slipBound", &typeid(double)},             {"frictionField", &typeid(KN<KN<double>>*)}},
     OptionScope::setup);
 
 long feti_set_loads(const long& id, KN<KN<double>>* const& loads) {

@@ -283,6 +283,18 @@ void add_node_dofs(const std::vector<NodeTag>& nodes, const std::vector<Subdomai
         dofs[k].push_back(static_cast<int>(i));
 }
 
+/// Coulomb's coefficient `mu` at the dofs of `nodes` (sorted: a contact entry's slave curve),
+/// 0 at the other dofs: one coefficient per contact entry.
+void set_friction(const std::vector<NodeTag>& nodes, double mu, const std::vector<SubdomainLayout>& layouts,
+                  std::vector<std::vector<double>>& field) {
+  field.resize(layouts.size());
+  for (size_t k = 0; k < layouts.size(); ++k) {
+    if (field[k].empty()) field[k].assign(layouts[k].dofs.size(), 0.0);
+    for (size_t i = 0; i < layouts[k].dofs.size(); ++i)
+      if (std::binary_search(nodes.begin(), nodes.end(), layouts[k].dofs[i].node)) field[k][i] = mu;
+  }
+}
+
 ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, const std::vector<SubdomainLayout>& layouts,
                            long& segments_here, long& segments_total) {
   ContactInput contact;
@@ -293,18 +305,20 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
   const ContactSpec& first = problem.contact.front();
   if (first.search_distance) contact.search_distance = *first.search_distance;
   contact.gap = first.gap.value_or(0.0);
-  contact.friction = first.friction.value_or(-1.0);
+  // Coulomb: a coefficient per entry (0 for an entry without one); Tresca: one bound.
+  const bool coulomb = std::any_of(problem.contact.begin(), problem.contact.end(),
+                                   [](const ContactSpec& c) { return c.friction.has_value(); });
+  if (coulomb) contact.friction = 0.0;
   contact.slip_bound = first.slip_bound.value_or(-1.0);
   for (size_t i = 0; i < problem.contact.size(); ++i) {
     const ContactSpec& c = problem.contact[i];
     const std::string key = "contact[" + std::to_string(i) + "]";
-    if (c.search_distance != first.search_distance || c.gap != first.gap || c.friction != first.friction ||
-        c.slip_bound != first.slip_bound)
+    if (c.search_distance != first.search_distance || c.gap != first.gap || c.slip_bound != first.slip_bound)
       throw InputError(problem.path + ": " + key +
-                       ": search_distance, gap, friction and slip_bound must be those of contact[0] (one value "
-                       "per problem)");
-    add_node_dofs(from_group(problem, key + ".slave", [&] { return mesh.nodes(1, c.slave); }), layouts,
-                  contact.slave_dofs);
+                       ": search_distance, gap and slip_bound must be those of contact[0] (one value per problem)");
+    const std::vector<NodeTag> slaves = from_group(problem, key + ".slave", [&] { return mesh.nodes(1, c.slave); });
+    add_node_dofs(slaves, layouts, contact.slave_dofs);
+    if (c.friction) set_friction(slaves, *c.friction, layouts, contact.friction_field);
     if (c.obstacle) {
       if (contact.obstacle)
         throw InputError(problem.path + ": " + key + ": a second obstacle (one rigid obstacle per problem)");

@@ -53,7 +53,7 @@ struct ContactSpec {
   bool obstacle = false;  ///< a rigid straight obstacle: a point and a normal, or a curve
   std::array<double, 2> obstacle_point{0, 0}, obstacle_normal{0, 1};
   int obstacle_curve = 0;  ///< > 0: a straight physical curve, its normal towards the slave
-  std::optional<double> friction;    ///< Coulomb coefficient (2 components only; one per problem)
+  std::optional<double> friction;    ///< Coulomb coefficient of this entry's rows (2 components only)
   std::optional<double> slip_bound;  ///< Tresca bound per row, a force (2 components only; one per problem)
 };
 

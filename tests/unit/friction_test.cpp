@@ -253,6 +253,26 @@ TEST_P(Tresca, CoulombFixedPointMeetsTheLawAndTheReference) {
   EXPECT_GT(r.slipping_contact, 0);
 }
 
+TEST_P(Tresca, CoulombWithACoefficientPerRow) {
+  // frictionField: mu = 0.1 + 0.2 x at each bottom node (x in [0, 1]).
+  std::vector<SubdomainInput> subs = two_subdomains(kDrag);
+  ContactInput contact = on_plane(subs);
+  contact.friction = 0;
+  for (const SubdomainInput& s : subs) {
+    contact.friction_field.emplace_back();
+    for (double x : s.x) contact.friction_field.back().push_back(0.1 + 0.2 * x);
+  }
+  FetiSetupSettings setup;
+  setup.variant = GetParam();
+  const FetiProblem p(std::move(subs), contact, setup);
+  const FetiResult r = p.solve(tight());
+  ASSERT_EQ(r.status, SolveStatus::converged);
+  const auto rows = per_node(p, r);
+  Eigen::VectorXd g(5);
+  for (size_t k = 0; k < 5; ++k) g[static_cast<Eigen::Index>(k)] = (0.1 + 0.2 * (k / 4.0)) * rows[k][0];
+  expect_matches(p, r, enumerated(g, Eigen::VectorXd::Zero(5), kDrag));
+}
+
 TEST_P(Tresca, LoadStepsMeasureTheSlipFromTheLastStep) {
   // Step 1 drags the top edge by kDrag, step 2 brings it back to 0: what slipped in step 1
   // stays (hysteresis), unlike a single solve with the top edge at 0.
@@ -302,6 +322,13 @@ TEST(FrictionInput, BadLawsAreRefusedByName) {
   expect_input_error([&] { with([](ContactInput& c) { c.friction = -0.5; }); }, "friction: must be");
   expect_input_error([&] { with([](ContactInput& c) { c.slip_bound = NAN; }); }, "slipBound: must be");
   expect_input_error([&] { with([](ContactInput& c) { c.friction = 0.3, c.slip_bound = 1; }); }, "give one law");
+  expect_input_error([&] { with([](ContactInput& c) { c.friction_field = {{}, {}}; }); }, "frictionField: needs friction");
+  expect_input_error([&] {
+    with([](ContactInput& c) { c.friction = 0, c.friction_field = {std::vector<double>(2, 0.3), {}}; });
+  }, "frictionField[0]: needs one value per dof");
+  expect_input_error([&] {
+    with([](ContactInput& c) { c.friction = 0, c.friction_field = {{}, std::vector<double>(18, -1.0)}; });
+  }, "frictionField[1]: entry 0 is");
   expect_input_error([&] {
     auto subs = two_subdomains(kDrag);
     ContactInput c;  // node to node: no tangent

@@ -82,6 +82,9 @@ std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& 
     std::vector<double> value(n, 0.0);
     const std::vector<double>* gap = local_contact.gap_field.empty() || local_contact.gap_field[k].empty()
                                          ? nullptr : &local_contact.gap_field[k];
+    const std::vector<double>* friction =
+        local_contact.friction_field.empty() || local_contact.friction_field[k].empty() ? nullptr
+                                                                                          : &local_contact.friction_field[k];
     for (size_t i = 0; i < sub.dirichlet_dofs.size(); ++i) {
       fixed[static_cast<size_t>(sub.dirichlet_dofs[i])] = 1;
       value[static_cast<size_t>(sub.dirichlet_dofs[i])] = sub.dirichlet_values.empty() ? 0.0 : sub.dirichlet_values[i];
@@ -98,7 +101,7 @@ std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& 
       if (shared || fixed[i] || slave[i] || master[i])
         records.push_back({s, static_cast<int>(i), sub.body, sub.component.empty() ? 0 : sub.component[i],
                            sub.x[i], sub.y[i], fixed[i] != 0, slave[i] != 0, master[i] != 0, value[i],
-                           gap ? (*gap)[i] : 0.0});
+                           gap ? (*gap)[i] : 0.0, friction ? (*friction)[i] : local_contact.friction});
     }
   }
   return records;
@@ -106,22 +109,22 @@ std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& 
 
 std::vector<double> pack(const std::vector<DofRecord>& records) {
   std::vector<double> packed;
-  packed.reserve(records.size() * 9);
+  packed.reserve(records.size() * 10);
   for (const DofRecord& r : records) {
     const double flags = (r.fixed ? 1 : 0) + (r.slave ? 2 : 0) + (r.master ? 4 : 0);
     packed.insert(packed.end(), {double(r.subdomain), double(r.dof), double(r.body), double(r.component),
-                                 r.x, r.y, flags, r.value, r.gap});
+                                 r.x, r.y, flags, r.value, r.gap, r.friction});
   }
   return packed;
 }
 
 std::vector<DofRecord> unpack(const std::vector<double>& packed) {
   std::vector<DofRecord> records;
-  for (size_t k = 0; k + 9 <= packed.size(); k += 9) {
+  for (size_t k = 0; k + 10 <= packed.size(); k += 10) {
     const int flags = static_cast<int>(packed[k + 6]);
     records.push_back({static_cast<int>(packed[k]), static_cast<int>(packed[k + 1]), static_cast<int>(packed[k + 2]),
                        static_cast<int>(packed[k + 3]), packed[k + 4], packed[k + 5], (flags & 1) != 0,
-                       (flags & 2) != 0, (flags & 4) != 0, packed[k + 7], packed[k + 8]});
+                       (flags & 2) != 0, (flags & 4) != 0, packed[k + 7], packed[k + 8], packed[k + 9]});
   }
   return records;
 }

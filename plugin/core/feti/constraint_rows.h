@@ -18,6 +18,7 @@ struct Row {
   bool equality = true;
   ContactRowGeometry geometry{};
   int normal_row = -1;  ///< a friction row's contact row
+  double friction = 0;  ///< a contact or friction row's Coulomb coefficient (its slave node's)
 };
 
 /// A slave node of the node-to-segment or obstacle contact: its two dofs and position.

@@ -39,7 +39,11 @@ Constraints build_constraints(std::vector<DofRecord> records, const std::vector<
     result.kind.push_back(row.kind);
     result.equality_rows += row.equality ? 1 : 0;
     if (row.kind == RowKind::contact) result.geometry.push_back(row.geometry);
-    if (row.kind == RowKind::friction) result.normal_row.push_back(row.normal_row), ++result.friction_rows;
+    if (row.kind == RowKind::friction) {
+      result.normal_row.push_back(row.normal_row);
+      result.friction_coefficient.push_back(row.friction);
+      ++result.friction_rows;
+    }
   }
   return result;
 }

@@ -47,6 +47,7 @@ struct Constraints {
   int friction_rows = 0;
   std::vector<ContactRowGeometry> geometry;  ///< one per contact row, in row order
   std::vector<int> normal_row;               ///< per friction row: the row of its contact row
+  std::vector<double> friction_coefficient;  ///< per friction row: Coulomb's mu (its slave node's)
 
   int rows() const { return static_cast<int>(rhs.size()); }
   /// The rows with bounded multipliers: contact and friction rows.

@@ -97,7 +97,7 @@ void add_node_to_segment_rows(const std::vector<DofRecord>& records, const std::
     for (size_t k = 0; k < 4; ++k) geometry.master[k] = {best->subdomain, best->dofs[k]};
     geometry.s = {sx, sy}, geometry.a = {best->ax, best->ay}, geometry.b = {best->bx, best->by};
     const LinearizedRow linear = node_to_segment_row(geometry.s, geometry.a, geometry.b);
-    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry};
+    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction};
     const std::array<int, 2> dofs[6] = {geometry.slave[0], geometry.slave[1], geometry.master[0],
                                         geometry.master[1], geometry.master[2], geometry.master[3]};
     for (size_t k = 0; k < 6; ++k)
@@ -118,7 +118,7 @@ void add_obstacle_rows(const std::vector<DofRecord>& records, const ContactInput
     geometry.s = {node.x_dof->x, node.x_dof->y};
     geometry.a = contact.obstacle_point, geometry.b = {nx, ny};
     const LinearizedRow linear = obstacle_row(geometry.s, geometry.a, geometry.b);
-    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry};
+    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction};
     for (size_t k = 0; k < 2; ++k)
       if (linear.coefficients[k] != 0) row.entries.push_back({geometry.slave[k][0], geometry.slave[k][1], linear.coefficients[k]});
     rows.push_back(std::move(row));
@@ -133,7 +133,7 @@ void add_friction_rows(const std::vector<DofRecord>& records, std::vector<Row>& 
     const bool on_segment = g.kind == ContactRowGeometry::Kind::node_to_segment;
     const LinearizedRow slip = on_segment ? node_to_segment_slip(g.s, g.a, g.b) : obstacle_slip(g.b);
     const std::array<int, 2> dofs[6] = {g.slave[0], g.slave[1], g.master[0], g.master[1], g.master[2], g.master[3]};
-    Row row{{}, 0.0, RowKind::friction, false, g, static_cast<int>(i)};
+    Row row{{}, 0.0, RowKind::friction, false, g, static_cast<int>(i), rows[i].friction};
     for (size_t k = 0; k < (on_segment ? 6u : 2u); ++k) {
       if (slip.coefficients[k] == 0) continue;
       // A fixed dof leaves the row, its prescribed motion moving to the right-hand side

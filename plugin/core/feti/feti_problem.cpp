@@ -74,7 +74,7 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
       unpack_segments(comm.allgather(pack(segment_records(inputs_, global_ids_, local_contact))));
   Constraints constraints = build_constraints(records, segments, local_contact, settings_.variant, snap);
   rhs_ = Eigen::Map<const Vec>(constraints.rhs.data(), constraints.rows());
-  friction_ = {local_contact.friction, local_contact.slip_bound};
+  friction_ = {local_contact.slip_bound};
   std::sort(records.begin(), records.end(), [](const DofRecord& a, const DofRecord& b) {
     return std::make_pair(a.subdomain, a.dof) < std::make_pair(b.subdomain, b.dof);
   });

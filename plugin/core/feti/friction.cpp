@@ -7,13 +7,16 @@
 namespace ffeti {
 namespace {
 
-/// g = mu max(lambda_n, 0) per friction row. Without multipliers to start from, g = +inf:
+/// g = mu max(lambda_n, 0) per friction row, mu its own. Without multipliers to start from, g = +inf:
 /// the first solve sticks everywhere. (g = 0, a frictionless first solve, has no solution
 /// where friction alone holds a body: a block on a slope, a cylinder pushed sideways.)
-Vec coulomb_bounds(const Constraints& c, const Vec& lambda, double mu) {
+Vec coulomb_bounds(const Constraints& c, const Vec& lambda) {
   Vec g = Vec::Constant(c.friction_rows, std::numeric_limits<double>::infinity());
   if (lambda.size() != c.rows()) return g;
-  for (int t = 0; t < c.friction_rows; ++t) g[t] = mu * std::max(lambda[c.normal_row[static_cast<size_t>(t)]], 0.0);
+  for (int t = 0; t < c.friction_rows; ++t) {
+    const auto k = static_cast<size_t>(t);
+    g[t] = c.friction_coefficient[k] * std::max(lambda[c.normal_row[k]], 0.0);
+  }
   return g;
 }
 
@@ -24,8 +27,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
   const Constraints& c = dual.constraints();
   if (settings.start.size() == 0) settings.start = start;
   FrictionSolution out;
-  Vec g = law.coulomb() ? coulomb_bounds(c, settings.start, law.coefficient)
-                        : Vec::Constant(c.friction_rows, law.slip_bound);
+  Vec g = law.coulomb() ? coulomb_bounds(c, settings.start) : Vec::Constant(c.friction_rows, law.slip_bound);
   IterationCounts counts;
   PhaseTimes times;
   Vec equality_multiplier;  // carried from solve to solve with the multipliers
@@ -42,7 +44,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
     out.dual = std::move(solved);
     out.slip_bound = g;
     if (!law.coulomb() || out.dual.status != SolveStatus::converged) break;
-    const Vec next = coulomb_bounds(c, out.dual.lambda, law.coefficient);
+    const Vec next = coulomb_bounds(c, out.dual.lambda);
     const double scale = next.size() ? next.lpNorm<Eigen::Infinity>() : 0.0;
     const double change = next.size() ? (next - g).lpNorm<Eigen::Infinity>() : 0.0;
     out.bound_change = scale > 0 ? change / scale : change;

@@ -9,10 +9,11 @@
 
 namespace ffeti {
 
+/// Coulomb's coefficients per friction row (Constraints::friction_coefficient), or Tresca's
+/// bound, the same for every row.
 struct FrictionLaw {
-  double coefficient = -1;  ///< Coulomb's mu (>= 0), or negative: Tresca
   double slip_bound = -1;   ///< Tresca's g per row (>= 0), or negative: Coulomb
-  bool coulomb() const { return coefficient >= 0; }
+  bool coulomb() const { return slip_bound < 0; }
 };
 
 /// The Coulomb fixed point stops at  ||g_new - g||_inf <= tolerance ||g_new||_inf  with the

@@ -118,6 +118,24 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
                                     std::pair<const char*, double>{"slipBound", contact.slip_bound}})
     if (!std::isfinite(value) || (value < 0 && value != -1))
       throw InputError(std::string(name) + ": must be a finite number >= 0, got " + std::to_string(value));
+  if (!contact.friction_field.empty() && contact.friction_field.size() != subdomains.size())
+    throw InputError("frictionField: has " + std::to_string(contact.friction_field.size()) + " entries for " +
+                     std::to_string(subdomains.size()) + " subdomains");
+  for (size_t k = 0; k < contact.friction_field.size(); ++k) {
+    const std::vector<double>& mu = contact.friction_field[k];
+    if (!mu.empty() && mu.size() != static_cast<size_t>(subdomains[k].K.rows()))
+      throw InputError(indexed("frictionField", ids[k]) + ": needs one value per dof (" +
+                       std::to_string(subdomains[k].K.rows()) + ") or none, got " + std::to_string(mu.size()));
+    for (size_t i = 0; i < mu.size(); ++i)
+      if (!(std::isfinite(mu[i]) && mu[i] >= 0))
+        throw InputError(indexed("frictionField", ids[k]) + ": entry " + std::to_string(i) + " is " +
+                         std::to_string(mu[i]) + ", a friction coefficient must be a finite number >= 0");
+  }
+  if (!contact.friction_field.empty() && contact.friction < 0 && contact.slip_bound < 0)
+    throw InputError("frictionField: needs friction >= 0 as well (its value where the field has no entry; "
+                     "fetiSetup sets 0 when only frictionField is given)");
+  if (!contact.friction_field.empty() && contact.slip_bound >= 0)
+    throw InputError("frictionField, slipBound: a coefficient per row is Coulomb's law; Tresca's takes slipBound alone");
   if (contact.friction >= 0 && contact.slip_bound >= 0)
     throw InputError("friction, slipBound: give one law, Coulomb (friction=) or Tresca (slipBound=), not both");
   for (double v : {contact.obstacle_point[0], contact.obstacle_point[1], contact.obstacle_normal[0], contact.obstacle_normal[1]})

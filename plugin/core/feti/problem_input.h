@@ -54,6 +54,10 @@ struct ContactInput {
   /// slip_bound, a force per row. Negative: not given; neither given: frictionless, no rows.
   double friction = -1;
   double slip_bound = -1;
+  /// Coulomb with a coefficient per contact row: per subdomain one value per dof (empty
+  /// entries: `friction` there, which must be given), read at the slave node's component-0
+  /// dof like gap_field.
+  std::vector<std::vector<double>> friction_field;
   bool has_friction() const { return friction >= 0 || slip_bound >= 0; }
 };
 
