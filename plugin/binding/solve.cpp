@@ -64,6 +64,9 @@ class FetiSolve : public WithNamedArguments {
                   "KKT check %.2e\n",
                   to_string(r.status).c_str(), r.counts.hessian, r.counts.outer, r.path.c_str(),
                   r.gradient_norm / r.gradient_reference, r.violation);
+    if (verbosity >= 1 && h.problem->communicator().rank() == 0 && r.friction_iterations > 0)
+      std::printf("ffeti: friction: %d Tresca solves (Hessian multiplications %s), last change of the bounds %.2e\n",
+                  r.friction_iterations, friction_counts(r).c_str(), r.friction_bound_change);
     std::fflush(stdout);
     return status_code(r.status);
   }

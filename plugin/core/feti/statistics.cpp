@@ -91,6 +91,12 @@ std::vector<ContactMultiplier> contact_multipliers(const FetiProblem& problem, c
   return rows;
 }
 
+std::string friction_counts(const FetiResult& result) {
+  std::string list;
+  for (int count : result.friction_hessian) list += (list.empty() ? "" : ",") + std::to_string(count);
+  return list;
+}
+
 std::string format_rank_report(const FetiProblem& problem) {
   std::ostringstream out;
   out.precision(4);
@@ -109,6 +115,7 @@ std::string format_report(const FetiProblem& problem, const FetiResult* result) 
       << " preconditioner=" << preconditioner_name(problem.dual().preconditioner_kind());
   if (result) out << " status_name=" << to_string(result->status) << " phases=" << result->phases;
   for (const auto& [key, value] : statistics(problem, result)) out << ' ' << key << '=' << value;
+  if (result && result->friction_iterations > 0) out << " friction_hessian=" << friction_counts(*result);
   return out.str();
 }
 

@@ -31,6 +31,10 @@ struct ContactMultiplier {
 /// positions alone, known from the set-up) and, with friction, the friction forces and states.
 std::vector<ContactMultiplier> contact_multipliers(const FetiProblem& problem, const FetiResult* result);
 
+/// The Hessian multiplications of each Tresca solve of a solve with friction, comma
+/// separated ("73,56,14,23"; empty without friction).
+std::string friction_counts(const FetiResult& result);
+
 /// One line "RANK rank=r subdomains=... primal=... time_factor=... time_solve=...
 /// peak_memory_mb=..." per rank: the load balance (subdomains, unknowns) and per-rank times.
 std::string format_rank_report(const FetiProblem& problem);
