@@ -9,33 +9,16 @@ script="$source_dir/edp/cattaneo-mindlin.edp"
 args=(-h 0.25 -meshes "$source_dir/meshes")
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
-result() { grep '^RESULT ' | head -n 1; }
-value() { printf '%s\n' "$1" | tr ' ' '\n' | sed -n "s/^$2=//p"; }
+source "$(dirname "${BASH_SOURCE[0]}")/result-keys.sh"
 
 serial=$(FreeFem++-nw -v 0 "$script" "${args[@]}" | result)
 [ -n "$serial" ] || { echo "no RESULT line from the serial run"; exit 1; }
 [ "$(value "$serial" status)" = converged ] || { echo "serial run: $(value "$serial" status)"; exit 1; }
-failures=0
 for ranks in 2 3; do
   parallel=$(mpirun --oversubscribe -np "$ranks" FreeFem++-mpi -v 0 "$script" "${args[@]}" | result)
   [ -n "$parallel" ] || { echo "no RESULT line with $ranks ranks"; exit 1; }
-  for key in status couples sticking slipping fixed_point_iterations fixed_point_iterations_step1 hessian \
-             hessian_step1 hessian_frictionless; do
-    if [ "$(value "$serial" $key)" = "$(value "$parallel" $key)" ]; then
-      echo "ok: $ranks ranks: $key = $(value "$parallel" $key)"
-    else
-      echo "FAILED: $ranks ranks: $key = $(value "$parallel" $key), serial $(value "$serial" $key)"
-      failures=$((failures + 1))
-    fi
-  done
-  for key in stick_ratio a P tangential_force; do
-    if awk -v a="$(value "$serial" $key)" -v b="$(value "$parallel" $key)" \
-         'BEGIN { d = a - b; if (d < 0) d = -d; s = a < 0 ? -a : a; exit !(d <= 1e-8 * s) }'; then
-      echo "ok: $ranks ranks: $key = $(value "$parallel" $key) (serial $(value "$serial" $key))"
-    else
-      echo "FAILED: $ranks ranks: $key = $(value "$parallel" $key), serial $(value "$serial" $key)"
-      failures=$((failures + 1))
-    fi
-  done
+  same_keys "$ranks ranks" "$serial" "$parallel" status couples sticking slipping fixed_point_iterations \
+    fixed_point_iterations_step1 hessian hessian_step1 hessian_frictionless
+  close_keys "$ranks ranks" "$serial" "$parallel" 1e-8 stick_ratio a P tangential_force
 done
 [ "$failures" -eq 0 ] && echo "all checks passed" || { echo "$failures check(s) failed"; exit 1; }

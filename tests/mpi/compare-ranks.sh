@@ -9,32 +9,15 @@ n=$2
 script="$source_dir/edp/model-problem.edp"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
-result() { grep '^RESULT ' | head -n 1; }
-value() { printf '%s\n' "$1" | tr ' ' '\n' | sed -n "s/^$2=//p"; }
+source "$(dirname "${BASH_SOURCE[0]}")/result-keys.sh"
 
 serial=$(FreeFem++-nw -v 0 "$script" -n "$n" | result)
 [ -n "$serial" ] || { echo "no RESULT line from the serial run"; exit 1; }
-failures=0
 for ranks in 2 3; do
   parallel=$(mpirun --oversubscribe -np "$ranks" FreeFem++-mpi -v 0 "$script" -n "$n" | result)
   [ -n "$parallel" ] || { echo "no RESULT line with $ranks ranks"; exit 1; }
   [ "$(value "$parallel" ranks)" = "$ranks" ] || { echo "ranks key is not $ranks"; failures=$((failures + 1)); }
-  for key in status subdomains primal dual couples active floating outer hessian cg expansion; do
-    if [ "$(value "$serial" $key)" = "$(value "$parallel" $key)" ]; then
-      echo "ok: $ranks ranks: $key = $(value "$parallel" $key)"
-    else
-      echo "FAILED: $ranks ranks: $key = $(value "$parallel" $key), serial $(value "$serial" $key)"
-      failures=$((failures + 1))
-    fi
-  done
-  for key in energy energy_plugin u_norm lambda_norm; do
-    if awk -v a="$(value "$serial" $key)" -v b="$(value "$parallel" $key)" \
-         'BEGIN { d = a - b; if (d < 0) d = -d; s = a < 0 ? -a : a; exit !(d <= 1e-10 * s) }'; then
-      echo "ok: $ranks ranks: $key = $(value "$parallel" $key) (serial $(value "$serial" $key))"
-    else
-      echo "FAILED: $ranks ranks: $key = $(value "$parallel" $key), serial $(value "$serial" $key)"
-      failures=$((failures + 1))
-    fi
-  done
+  same_keys "$ranks ranks" "$serial" "$parallel" status subdomains primal dual couples active floating outer hessian cg expansion
+  close_keys "$ranks ranks" "$serial" "$parallel" 1e-10 energy energy_plugin u_norm lambda_norm
 done
 [ "$failures" -eq 0 ] && echo "all checks passed" || { echo "$failures check(s) failed"; exit 1; }

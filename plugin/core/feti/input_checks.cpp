@@ -49,6 +49,26 @@ void check_per_subdomain_lists(const std::vector<std::vector<int>>& lists, const
   for (size_t k = 0; k < lists.size(); ++k) check_dofs(lists[k], subdomains[k].K.rows(), indexed(name, ids[k]));
 }
 
+/// A field of one value per dof and subdomain (empty entries allowed), each finite and at
+/// least `lowest`.
+void check_dof_field(const std::vector<std::vector<double>>& field, const std::vector<size_t>& ids,
+                     const std::vector<SubdomainInput>& subdomains, const char* name, double lowest) {
+  if (!field.empty() && field.size() != subdomains.size())
+    throw InputError(std::string(name) + ": has " + std::to_string(field.size()) + " entries for " +
+                     std::to_string(subdomains.size()) + " subdomains");
+  for (size_t k = 0; k < field.size(); ++k) {
+    const std::vector<double>& values = field[k];
+    if (!values.empty() && values.size() != static_cast<size_t>(subdomains[k].K.rows()))
+      throw InputError(indexed(name, ids[k]) + ": needs one value per dof (" + std::to_string(subdomains[k].K.rows()) +
+                       ") or none, got " + std::to_string(values.size()));
+    for (size_t i = 0; i < values.size(); ++i)
+      if (!(std::isfinite(values[i]) && values[i] >= lowest))
+        throw InputError(indexed(name, ids[k]) + ": entry " + std::to_string(i) + " is " + std::to_string(values[i]) +
+                         (lowest > -INFINITY ? ", it must be a finite number >= " + std::to_string(lowest)
+                                             : ", it must be a finite number"));
+  }
+}
+
 }  // namespace
 
 void validate_input(const std::vector<SubdomainInput>& subdomains, const ContactInput& contact,
@@ -102,35 +122,12 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
     throw InputError("contactMaster: node-to-node contact cannot be combined with contactSegments or "
                      "obstacle in one problem (the slave dofs would belong to both)");
   if (!std::isfinite(contact.gap)) throw InputError("gap: must be finite");
-  if (!contact.gap_field.empty() && contact.gap_field.size() != subdomains.size())
-    throw InputError("contactGap: has " + std::to_string(contact.gap_field.size()) + " entries for " +
-                     std::to_string(subdomains.size()) + " subdomains");
-  for (size_t k = 0; k < contact.gap_field.size(); ++k) {
-    const std::vector<double>& gap = contact.gap_field[k];
-    if (!gap.empty() && gap.size() != static_cast<size_t>(subdomains[k].K.rows()))
-      throw InputError(indexed("contactGap", ids[k]) + ": needs one value per dof (" +
-                       std::to_string(subdomains[k].K.rows()) + ") or none, got " + std::to_string(gap.size()));
-    for (size_t i = 0; i < gap.size(); ++i)
-      if (!std::isfinite(gap[i]))
-        throw InputError(indexed("contactGap", ids[k]) + ": entry " + std::to_string(i) + " is not finite");
-  }
+  check_dof_field(contact.gap_field, ids, subdomains, "contactGap", -INFINITY);
   for (const auto& [name, value] : {std::pair<const char*, double>{"friction", contact.friction},
                                     std::pair<const char*, double>{"slipBound", contact.slip_bound}})
     if (!std::isfinite(value) || (value < 0 && value != -1))
       throw InputError(std::string(name) + ": must be a finite number >= 0, got " + std::to_string(value));
-  if (!contact.friction_field.empty() && contact.friction_field.size() != subdomains.size())
-    throw InputError("frictionField: has " + std::to_string(contact.friction_field.size()) + " entries for " +
-                     std::to_string(subdomains.size()) + " subdomains");
-  for (size_t k = 0; k < contact.friction_field.size(); ++k) {
-    const std::vector<double>& mu = contact.friction_field[k];
-    if (!mu.empty() && mu.size() != static_cast<size_t>(subdomains[k].K.rows()))
-      throw InputError(indexed("frictionField", ids[k]) + ": needs one value per dof (" +
-                       std::to_string(subdomains[k].K.rows()) + ") or none, got " + std::to_string(mu.size()));
-    for (size_t i = 0; i < mu.size(); ++i)
-      if (!(std::isfinite(mu[i]) && mu[i] >= 0))
-        throw InputError(indexed("frictionField", ids[k]) + ": entry " + std::to_string(i) + " is " +
-                         std::to_string(mu[i]) + ", a friction coefficient must be a finite number >= 0");
-  }
+  check_dof_field(contact.friction_field, ids, subdomains, "frictionField", 0.0);
   if (!contact.friction_field.empty() && contact.friction < 0 && contact.slip_bound < 0)
     throw InputError("frictionField: needs friction >= 0 as well (its value where the field has no entry; "
                      "fetiSetup sets 0 when only frictionField is given)");
