@@ -253,6 +253,22 @@ TEST_P(Tresca, CoulombFixedPointMeetsTheLawAndTheReference) {
   EXPECT_GT(r.slipping_contact, 0);
 }
 
+TEST_P(Tresca, AnUnsettledFixedPointIsReportedAsSuch) {
+  // The same Coulomb problem allowed one Tresca solve (frictionit = 1): the bounds of the
+  // first, sticking solve are not the law's, and the status says so.
+  ContactInput contact = on_plane(two_subdomains(kDrag));
+  contact.friction = 0.3;
+  FetiSetupSettings setup;
+  setup.variant = GetParam();
+  const FetiProblem p(two_subdomains(kDrag), contact, setup);
+  DualSolveSettings one = tight();
+  one.friction_iterations = 1;
+  const FetiResult r = p.solve(one);
+  EXPECT_EQ(r.status, SolveStatus::max_iterations);
+  EXPECT_EQ(r.friction_iterations, 1);
+  EXPECT_GT(r.friction_bound_change, 1e-3);
+}
+
 TEST_P(Tresca, CoulombWithACoefficientPerRow) {
   // frictionField: mu = 0.1 + 0.2 x at each bottom node (x in [0, 1]).
   std::vector<SubdomainInput> subs = two_subdomains(kDrag);

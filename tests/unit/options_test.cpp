@@ -68,6 +68,7 @@ TEST(Options, StatedDefaultsAreTheSettingsDefaults) {
   const std::pair<const char*, double> numbers[] = {
       {"tol", defaults.solve.tolerance},         {"maxit", defaults.solve.max_hessian},
       {"settle", defaults.solve.settle},         {"verbosity", defaults.verbosity},
+      {"frictionit", defaults.solve.friction_iterations},
       {"rho", defaults.solve.smalbe.rho_factor}, {"M", defaults.solve.smalbe.M_factor},
       {"eta", defaults.solve.smalbe.eta_factor}, {"gamma", defaults.solve.mprgp.gamma},
       {"threads", setup.threads}};

@@ -21,6 +21,7 @@ void DualSolveSettings::validate() const {
     if (!(value > 0)) throw InputError(std::string(name) + ": must be > 0");
   if (!start.allFinite()) throw InputError("start: has entries that are not finite numbers");
   if (settle < 0) throw InputError("settle: must be >= 0");
+  if (friction_iterations < 1) throw InputError("frictionit: must be >= 1");
   try {
     smalbe.validate();
     mprgp.validate();

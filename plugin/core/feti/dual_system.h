@@ -59,6 +59,8 @@ struct DualSolveSettings {
   /// Face solves that settle a given start before MPRGP (qp/start_settling.h); 0: MPRGP
   /// from the start as given. Ignored without a start. 2: measured, docs/results/large-contact.md.
   int settle = 2;
+  /// Coulomb friction: Tresca solves of the fixed point at most (feti/friction.h).
+  int friction_iterations = 50;
   /// SMALBE path: in/out the solver's multiplier term of the equality part (qp/smalbe.h),
   /// for a sequence of solves of one system that each start from the last (friction's fixed
   /// point); null: each solve starts it at 0.

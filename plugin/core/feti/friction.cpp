@@ -49,7 +49,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
     const double change = next.size() ? (next - g).lpNorm<Eigen::Infinity>() : 0.0;
     out.bound_change = scale > 0 ? change / scale : change;
     if (out.bound_change <= settings.tolerance) break;
-    if (out.iterations == kMaxFixedPointIterations) {
+    if (out.iterations >= settings.friction_iterations) {
       out.dual.status = SolveStatus::max_iterations;
       break;
     }

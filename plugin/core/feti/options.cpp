@@ -130,6 +130,10 @@ std::vector<Option> make_options() {
        "[algorithms](algorithms.md), measured in [large contact](results/large-contact.md)); 0: MPRGP from the "
        "start as given. Ignored without a start",
        [](SolverSettings& s, const OptionValue& v) { s.solve.settle = integer(v); }},
+      {"frictionit", S::solve, K::integer, {}, 1, kIntMax, false, false, "50",
+       "with Coulomb friction: Tresca solves the fixed point may take; beyond them the status is `max_iterations` "
+       "(1), the last iterate returned ([algorithms](algorithms.md#friction)). Without friction: ignored",
+       [](SolverSettings& s, const OptionValue& v) { s.solve.friction_iterations = integer(v); }},
       {"verbosity", S::solve, K::integer, {}, 0, kIntMax, false, false, "0",
        "1: a line per outer iteration (Hessian multiplications so far, `‖gP‖`, `‖Qμ‖` — the part of the iterate "
        "outside the kernel of the constraints left to SMALBE-M, zero iff Gλ = e — and the contact rows with a "
