@@ -39,7 +39,7 @@ class FetiSetup : public WithNamedArguments {
  private:
   // Named parameters by position in name_param: these, then the set-up options.
   enum Named { kDirichlet, kDirichletValues, kSlave, kMaster, kGap, kComponent, kComm, kSegments, kObstacle,
-               kRadius, kContactGap, kFriction, kSlipBound, kFrictionField, kOptions };
+               kRadius, kContactGap, kFriction, kSlipBound, kFrictionField, kZ, kOptions };
 
   long setup(Stack stack) const {
     auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
@@ -70,12 +70,14 @@ class FetiSetup : public WithNamedArguments {
                                                     settings, comm));
   }
 
-  /// F, X, Y and body need one entry per subdomain, as K has.
+  /// F, X, Y, body and Z need one entry per subdomain, as K has.
   void check_array_sizes(Stack stack, long count) const {
     const std::pair<const char*, long> sizes[] = {{"F", GetAny<KN<KN<double>>*>((*F)(stack))->N()},
                                                   {"X", GetAny<KN<KN<double>>*>((*X)(stack))->N()},
                                                   {"Y", GetAny<KN<KN<double>>*>((*Y)(stack))->N()},
-                                                  {"body", GetAny<KN<long>*>((*body)(stack))->N()}};
+                                                  {"body", GetAny<KN<long>*>((*body)(stack))->N()},
+                                                  {"Z", nargs[kZ] ? GetAny<KN<KN<double>>*>((*nargs[kZ])(stack))->N()
+                                                                  : count}};
     for (const auto& [name, n] : sizes)
       if (n != count)
         throw InputError(std::string(name) + ": has " + std::to_string(n) + " entries, K has " +
@@ -89,6 +91,7 @@ class FetiSetup : public WithNamedArguments {
     auto& Xs = *GetAny<KN<KN<double>>*>((*X)(stack));
     auto& Ys = *GetAny<KN<KN<double>>*>((*Y)(stack));
     auto& bodies = *GetAny<KN<long>*>((*body)(stack));
+    const auto* Zs = optional_pointer<KN<KN<double>>>(nargs[kZ], stack);
     std::vector<SubdomainInput> subdomains;
     for (int s : ids) {
       SubdomainInput sub;
@@ -96,6 +99,7 @@ class FetiSetup : public WithNamedArguments {
       sub.f = to_vec(Fs[s]);
       sub.x = to_std(Xs[s]);
       sub.y = to_std(Ys[s]);
+      if (Zs) sub.z = to_std((*Zs)[s]);
       sub.body = static_cast<int>(bodies[s]);
       subdomains.push_back(std::move(sub));
     }
@@ -184,7 +188,8 @@ NamedParameters FetiSetup::name_param = named_parameters(
      {"comm", &typeid(pcommworld)},               {"contactSegments", &typeid(KN<KN<long>>*)},
      {"obstacle", &typeid(KN<double>*)},          {"contactRadius", &typeid(double)},
      {"contactGap", &typeid(KN<KN<double>>*)},   {"friction", &typeid(double)},
-     {"slipBound", &typeid(double)},             {"frictionField", &typeid(KN<KN<double>>*)}},
+     {"slipBound", &typeid(double)},             {"frictionField", &typeid(KN<KN<double>>*)},
+     {"Z", &typeid(KN<KN<double>>*)}},
     OptionScope::setup);
 
 long feti_set_loads(const long& id, KN<KN<double>>* const& loads) {

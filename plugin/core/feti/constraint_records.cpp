@@ -27,12 +27,15 @@ class BoxGrid {
           members_[static_cast<size_t>(j * cells_ + i)].push_back(s);
     }
   }
+  /// The grid is over x and y; z (0 in a plane problem) is tested against each box.
   template <class F>
-  void for_each_containing(double x, double y, F&& visit) const {
+  void for_each_containing(double x, double y, double z, F&& visit) const {
     const int i = cell(x, lo_x_, cell_x_), j = cell(y, lo_y_, cell_y_);
     for (int s : members_[static_cast<size_t>(j * cells_ + i)]) {
       const BoundingBox& b = boxes_[static_cast<size_t>(s)];
-      if (x >= b.x0 - margin_ && x <= b.x1 + margin_ && y >= b.y0 - margin_ && y <= b.y1 + margin_) visit(s);
+      if (x >= b.x0 - margin_ && x <= b.x1 + margin_ && y >= b.y0 - margin_ && y <= b.y1 + margin_ &&
+          z >= b.z0 - margin_ && z <= b.z1 + margin_)
+        visit(s);
     }
   }
 
@@ -54,16 +57,21 @@ BoundingBox bounding_box(const SubdomainInput& subdomain) {
     b.x0 = std::min(b.x0, subdomain.x[i]), b.x1 = std::max(b.x1, subdomain.x[i]);
     b.y0 = std::min(b.y0, subdomain.y[i]), b.y1 = std::max(b.y1, subdomain.y[i]);
   }
+  if (!subdomain.z.empty()) {
+    b.z0 = INFINITY, b.z1 = -INFINITY;
+    for (double z : subdomain.z) b.z0 = std::min(b.z0, z), b.z1 = std::max(b.z1, z);
+  }
   return b;
 }
 
 double snapping_length(const std::vector<BoundingBox>& boxes) {
-  double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
+  double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY, lo_z = INFINITY, hi_z = -INFINITY;
   for (const BoundingBox& b : boxes) {
     lo_x = std::min(lo_x, b.x0), hi_x = std::max(hi_x, b.x1);
     lo_y = std::min(lo_y, b.y0), hi_y = std::max(hi_y, b.y1);
+    lo_z = std::min(lo_z, b.z0), hi_z = std::max(hi_z, b.z1);
   }
-  const double diagonal = std::hypot(hi_x - lo_x, hi_y - lo_y);
+  const double diagonal = std::hypot(hi_x - lo_x, hi_y - lo_y, hi_z - lo_z);
   return 1e-9 * (diagonal > 0 && std::isfinite(diagonal) ? diagonal : 1.0);
 }
 
@@ -95,12 +103,13 @@ std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& 
       for (int dof : local_contact.master_dofs[k]) master[static_cast<size_t>(dof)] = 1;
     for (size_t i = 0; i < n; ++i) {
       bool shared = false;
-      grid.for_each_containing(sub.x[i], sub.y[i], [&](int other) {
+      const double z = sub.z.empty() ? 0.0 : sub.z[i];
+      grid.for_each_containing(sub.x[i], sub.y[i], z, [&](int other) {
         shared = shared || (other != s && bodies[static_cast<size_t>(other)] == sub.body);
       });
       if (shared || fixed[i] || slave[i] || master[i])
         records.push_back({s, static_cast<int>(i), sub.body, sub.component.empty() ? 0 : sub.component[i],
-                           sub.x[i], sub.y[i], fixed[i] != 0, slave[i] != 0, master[i] != 0, value[i],
+                           sub.x[i], sub.y[i], z, fixed[i] != 0, slave[i] != 0, master[i] != 0, value[i],
                            gap ? (*gap)[i] : 0.0, friction ? (*friction)[i] : local_contact.friction});
     }
   }
@@ -109,22 +118,22 @@ std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& 
 
 std::vector<double> pack(const std::vector<DofRecord>& records) {
   std::vector<double> packed;
-  packed.reserve(records.size() * 10);
+  packed.reserve(records.size() * 11);
   for (const DofRecord& r : records) {
     const double flags = (r.fixed ? 1 : 0) + (r.slave ? 2 : 0) + (r.master ? 4 : 0);
     packed.insert(packed.end(), {double(r.subdomain), double(r.dof), double(r.body), double(r.component),
-                                 r.x, r.y, flags, r.value, r.gap, r.friction});
+                                 r.x, r.y, r.z, flags, r.value, r.gap, r.friction});
   }
   return packed;
 }
 
 std::vector<DofRecord> unpack(const std::vector<double>& packed) {
   std::vector<DofRecord> records;
-  for (size_t k = 0; k + 10 <= packed.size(); k += 10) {
-    const int flags = static_cast<int>(packed[k + 6]);
+  for (size_t k = 0; k + 11 <= packed.size(); k += 11) {
+    const int flags = static_cast<int>(packed[k + 7]);
     records.push_back({static_cast<int>(packed[k]), static_cast<int>(packed[k + 1]), static_cast<int>(packed[k + 2]),
-                       static_cast<int>(packed[k + 3]), packed[k + 4], packed[k + 5], (flags & 1) != 0,
-                       (flags & 2) != 0, (flags & 4) != 0, packed[k + 7], packed[k + 8], packed[k + 9]});
+                       static_cast<int>(packed[k + 3]), packed[k + 4], packed[k + 5], packed[k + 6], (flags & 1) != 0,
+                       (flags & 2) != 0, (flags & 4) != 0, packed[k + 8], packed[k + 9], packed[k + 10]});
   }
   return records;
 }

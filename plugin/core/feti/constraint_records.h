@@ -16,7 +16,7 @@ namespace ffeti {
 /// holds the whole primal problem.
 struct DofRecord {
   int subdomain, dof, body, component;  // subdomain: global index
-  double x, y;
+  double x, y, z;                       // z = 0 in a plane problem
   bool fixed, slave, master;
   double value;  // Dirichlet value where fixed
   double gap;    // ContactInput::gap_field's entry (0 without one)
@@ -38,6 +38,7 @@ std::vector<SegmentRecord> unpack_segments(const std::vector<double>& packed);
 
 struct BoundingBox {
   double x0, y0, x1, y1;
+  double z0 = 0, z1 = 0;  ///< 0 in a plane problem
 };
 
 BoundingBox bounding_box(const SubdomainInput& subdomain);

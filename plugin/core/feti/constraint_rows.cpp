@@ -13,19 +13,19 @@ namespace {
 /// A record with its node snapped to a grid of the snapping length.
 struct Located {
   const DofRecord* record;
-  long long ix, iy;
-  auto key() const { return std::tie(record->body, record->component, ix, iy); }
-  auto position() const { return std::tie(record->component, ix, iy); }
+  long long ix, iy, iz;
+  auto key() const { return std::tie(record->body, record->component, ix, iy, iz); }
+  auto position() const { return std::tie(record->component, ix, iy, iz); }
 };
 
 std::vector<Located> locate(const std::vector<DofRecord>& records, double snap,
                             bool (*select)(const DofRecord&)) {
   std::vector<Located> located;
   for (const DofRecord& r : records)
-    if (select(r)) located.push_back({&r, std::llround(r.x / snap), std::llround(r.y / snap)});
+    if (select(r)) located.push_back({&r, std::llround(r.x / snap), std::llround(r.y / snap), std::llround(r.z / snap)});
   std::stable_sort(located.begin(), located.end(), [](const Located& a, const Located& b) {
-    return std::tie(a.record->body, a.record->component, a.ix, a.iy, a.record->subdomain, a.record->dof) <
-           std::tie(b.record->body, b.record->component, b.ix, b.iy, b.record->subdomain, b.record->dof);
+    return std::tie(a.record->body, a.record->component, a.ix, a.iy, a.iz, a.record->subdomain, a.record->dof) <
+           std::tie(b.record->body, b.record->component, b.ix, b.iy, b.iz, b.record->subdomain, b.record->dof);
   });
   return located;
 }
@@ -103,7 +103,7 @@ std::vector<SlaveNode> slave_nodes(const std::vector<DofRecord>& records, double
   std::vector<SlaveNode> nodes;
   for (const Located& s : slaves) {
     if (s.record->component != 0) continue;
-    const auto wanted = std::make_tuple(s.record->body, 1, s.ix, s.iy);  // the y dof of the same node
+    const auto wanted = std::make_tuple(s.record->body, 1, s.ix, s.iy, s.iz);  // the y dof of the same node
     const auto partner = std::lower_bound(slaves.begin(), slaves.end(), wanted,
                                           [](const Located& o, const auto& key) { return o.key() < key; });
     if (partner == slaves.end() || partner->key() != wanted)

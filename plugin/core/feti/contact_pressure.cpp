@@ -21,6 +21,8 @@ ContactPressure contact_pressure(const FetiProblem& problem, const Vec& lambda, 
   const Constraints& c = problem.constraints();
   const auto& inputs = problem.inputs();
   const int rows = c.contact_rows();
+  if (problem.space_dimension() != 2)
+    throw InputError("P: fetiContactPressure takes plane problems only so far (its shares are per contact curve)");
   collectively(problem.communicator(), [&] {
     if (share.size() != inputs.size()) throw InputError("Share: needs one entry per subdomain");
     for (size_t k = 0; k < inputs.size(); ++k)

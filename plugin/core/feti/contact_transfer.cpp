@@ -1,5 +1,7 @@
 #include "feti/contact_transfer.h"
 
+#include "base/errors.h"
+
 #include <algorithm>
 #include <limits>
 
@@ -55,6 +57,8 @@ std::vector<double> transfer_contact_forces(const std::vector<ContactMultiplier>
 }
 
 Vec start_from_contact_forces(const FetiProblem& problem, const std::vector<ContactMultiplier>& from) {
+  if (problem.space_dimension() != 2)
+    throw InputError("P: fetiContactStart takes plane problems only so far (it pairs rows along a contact curve)");
   const Constraints& c = problem.constraints();
   Vec start = Vec::Zero(c.rows());
   const std::vector<double> forces = transfer_contact_forces(from, problem.contact_positions());

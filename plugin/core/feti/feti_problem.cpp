@@ -46,7 +46,8 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   std::vector<double> mine;
   for (size_t k = 0; k < inputs_.size(); ++k) {
     const BoundingBox b = bounding_box(inputs_[k]);
-    mine.insert(mine.end(), {double(global_ids_[k]), double(inputs_[k].body), b.x0, b.y0, b.x1, b.y1});
+    mine.insert(mine.end(), {double(global_ids_[k]), double(inputs_[k].body), b.x0, b.y0, b.x1, b.y1, b.z0, b.z1,
+                             inputs_[k].z.empty() ? 2.0 : 3.0});
   }
   std::vector<int> counts;
   const std::vector<double> all = comm.allgather(mine, &counts);
@@ -56,16 +57,21 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   bodies.assign(static_cast<size_t>(global_count_), 0), owner.assign(static_cast<size_t>(global_count_), -1);
   std::string ownership_error;
   for (size_t r = 0, p = 0; r < counts.size(); ++r)
-    for (int end = static_cast<int>(p) + counts[r]; static_cast<int>(p) < end; p += 6) {
+    for (int end = static_cast<int>(p) + counts[r]; static_cast<int>(p) < end; p += 9) {
       const auto s = static_cast<size_t>(all[p]);
       if (owner[s] >= 0) ownership_error = "K[" + std::to_string(s) + "]: given by two ranks";
       owner[s] = static_cast<int>(r);
       bodies[s] = static_cast<int>(all[p + 1]);
-      boxes[s] = {all[p + 2], all[p + 3], all[p + 4], all[p + 5]};
+      boxes[s] = {all[p + 2], all[p + 3], all[p + 4], all[p + 5], all[p + 6], all[p + 7]};
+      if (all[p + 8] != all[8])  // ranks' local checks see their own subdomains only
+        ownership_error = "Z[" + std::to_string(s) + "]: " + (all[p + 8] == 3 ? "given" : "missing") + " where Z[" +
+                          std::to_string(static_cast<int>(all[0])) + "] is " + (all[8] == 3 ? "given" : "missing") +
+                          ": every subdomain of a problem is plane or every one has a third coordinate";
     }
   for (size_t s = 0; s < owner.size(); ++s)
     if (owner[s] < 0) ownership_error = "K[" + std::to_string(s) + "]: given by no rank";
   if (!ownership_error.empty()) throw InputError(ownership_error);  // the same on every rank
+  space_dimension_ = static_cast<int>(all[8]);
 
   const double snap = snap_ = snapping_length(boxes);
   std::vector<DofRecord> records =
@@ -140,7 +146,7 @@ void FetiProblem::factorize() {
       const bool eliminated = eliminate && !in.dirichlet_dofs.empty();
       subdomains_[static_cast<size_t>(k)] = std::make_unique<Subdomain>(
           global_ids_[static_cast<size_t>(k)], eliminated ? eliminate_dirichlet(in.K, in.dirichlet_dofs) : in.K,
-          candidate_kernel(in.x, in.y, in.component), settings_.factor);
+          candidate_kernel(in.x, in.y, in.component, in.z), settings_.factor);
     } catch (...) {
       failures[static_cast<size_t>(k)] = std::current_exception();
     }

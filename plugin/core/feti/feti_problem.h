@@ -90,6 +90,8 @@ class FetiProblem {
   const Communicator& communicator() const { return *comm_; }
   std::shared_ptr<const Communicator> shared_communicator() const { return comm_; }
   long primal_dimension() const { return primal_dimension_; }
+  /// 2 for a plane problem, 3 with a third coordinate.
+  int space_dimension() const { return space_dimension_; }
   int dual_dimension() const { return dual_->rows(); }
   int floating_subdomains() const { return dual_->coarse() ? dual_->coarse()->floating_subdomains() : 0; }
   int coarse_dimension() const { return dual_->coarse() ? dual_->coarse()->dimension() : 0; }
@@ -138,6 +140,7 @@ class FetiProblem {
   std::vector<std::array<double, 2>> contact_positions_;
   std::vector<std::array<int, 2>> contact_body_component_;
   double snap_ = 0;
+  int space_dimension_ = 2;
   SubdomainList subdomains_;
   std::unique_ptr<DualSystem> dual_;
   DualData data_;                       // the state problem's dual right-hand side

@@ -93,12 +93,25 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
       if (!std::isfinite(sub.x[i]) || !std::isfinite(sub.y[i]))
         throw InputError(indexed("X", s) + ", " + indexed("Y", s) + ": the coordinates of dof " + std::to_string(i) +
                          " are not finite (" + std::to_string(sub.x[i]) + ", " + std::to_string(sub.y[i]) + ")");
+    if (!sub.z.empty() && sub.z.size() != n)
+      throw InputError(indexed("Z", s) + ": needs one coordinate per dof (" + std::to_string(n) + "), got " +
+                       std::to_string(sub.z.size()));
+    for (size_t i = 0; i < sub.z.size(); ++i)
+      if (!std::isfinite(sub.z[i]))
+        throw InputError(indexed("Z", s) + ": the coordinate of dof " + std::to_string(i) + " is not finite");
+    if (sub.z.empty() != subdomains.front().z.empty())
+      throw InputError(indexed("Z", s) + ": " + (sub.z.empty() ? "missing" : "given") + " where Z[" +
+                       std::to_string(ids.front()) + "] is " + (sub.z.empty() ? "given" : "missing") +
+                       ": every subdomain of a problem is plane or every one has a third coordinate");
     if (sub.body < 0)
       throw InputError(indexed("body", s) + ": is " + std::to_string(sub.body) + ", body numbers must be >= 0");
     if (!sub.component.empty() && sub.component.size() != n)
       throw InputError(indexed("component", s) + ": needs one entry per dof");
+    const int components = sub.z.empty() ? 2 : 3;
     for (int c : sub.component)
-      if (c < 0 || c > 1) throw InputError(indexed("component", s) + ": components must be 0 or 1");
+      if (c < 0 || c >= components)
+        throw InputError(indexed("component", s) + ": components must be 0 or 1" + (sub.z.empty() ? "" : " or 2") +
+                         ", got " + std::to_string(c));
     check_dofs(sub.dirichlet_dofs, sub.K.rows(), indexed("dirichlet", s));
     if (!sub.dirichlet_values.empty() && sub.dirichlet_values.size() != sub.dirichlet_dofs.size())
       throw InputError(indexed("dirichletValues", s) + ": needs one value per Dirichlet dof");
@@ -106,6 +119,12 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
       if (!std::isfinite(sub.dirichlet_values[i]))
         throw InputError(indexed("dirichletValues", s) + ": entry " + std::to_string(i) + " is not finite");
   }
+  const bool three_d = !subdomains.empty() && !subdomains.front().z.empty();
+  if (three_d && (std::any_of(contact.master_segments.begin(), contact.master_segments.end(),
+                              [](const auto& list) { return !list.empty(); }) || contact.obstacle))
+    throw InputError(std::string(contact.obstacle ? "obstacle" : "contactSegments") +
+                     ": plane problems only; with Z (three dimensions) contact is node to node on matching faces "
+                     "(contactSlave, contactMaster) so far");
   check_per_subdomain_lists(contact.slave_dofs, ids, subdomains, "contactSlave");
   check_per_subdomain_lists(contact.master_dofs, ids, subdomains, "contactMaster");
   std::vector<std::vector<int>> segment_dofs;

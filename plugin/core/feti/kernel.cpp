@@ -6,20 +6,29 @@
 namespace ffeti {
 
 Eigen::MatrixXd candidate_kernel(const std::vector<double>& x, const std::vector<double>& y,
-                                 const std::vector<int>& component) {
+                                 const std::vector<int>& component, const std::vector<double>& z) {
   const Eigen::Index n = static_cast<Eigen::Index>(x.size());
   const bool vector_field =
       std::any_of(component.begin(), component.end(), [](int c) { return c != 0; });
   if (!vector_field) return Eigen::MatrixXd::Ones(n, 1);
-  double xc = 0, yc = 0;
-  for (Eigen::Index i = 0; i < n; ++i) xc += x[i], yc += y[i];
-  xc /= std::max<Eigen::Index>(n, 1);
-  yc /= std::max<Eigen::Index>(n, 1);
-  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(n, 3);
+  const bool three_d = !z.empty();
+  double xc = 0, yc = 0, zc = 0;
+  for (Eigen::Index i = 0; i < n; ++i) xc += x[i], yc += y[i], zc += three_d ? z[i] : 0.0;
+  const double count = static_cast<double>(std::max<Eigen::Index>(n, 1));
+  xc /= count, yc /= count, zc /= count;
+  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(n, three_d ? 6 : 3);
   for (Eigen::Index i = 0; i < n; ++i) {
     const int c = component[i];
-    R(i, c) = 1.0;                                 // translation along component c
-    R(i, 2) = c == 0 ? -(y[i] - yc) : (x[i] - xc);  // rotation about the centroid
+    const double dx = x[i] - xc, dy = y[i] - yc;
+    R(i, c) = 1.0;  // translation along component c
+    if (!three_d) {
+      R(i, 2) = c == 0 ? -dy : dx;  // rotation about the centroid
+      continue;
+    }
+    // Rotations about the x, y and z axes through the centroid: omega x (x - xc).
+    const double dz = z[i] - zc;
+    const double about_x[3] = {0, -dz, dy}, about_y[3] = {dz, 0, -dx}, about_z[3] = {-dy, dx, 0};
+    R(i, 3) = about_x[c], R(i, 4) = about_y[c], R(i, 5) = about_z[c];
   }
   return R;
 }

@@ -10,10 +10,11 @@
 namespace ffeti {
 
 /// Candidate kernel from geometry: for a scalar field (every component 0) the constants;
-/// for 2D vector fields (components 0 and 1) the three rigid modes (1,0), (0,1), (-y,x).
-/// Coordinates are centred first so that the rotation is well scaled.
+/// for 2D vector fields (components 0 and 1) the three rigid modes (1,0), (0,1), (-y,x);
+/// with z (3D vector fields, components 0..2) the three translations and the three
+/// rotations. Coordinates are centred first so that the rotations are well scaled.
 Eigen::MatrixXd candidate_kernel(const std::vector<double>& x, const std::vector<double>& y,
-                                 const std::vector<int>& component);
+                                 const std::vector<int>& component, const std::vector<double>& z = {});
 
 /// The true kernel inside span(candidates): the orthonormal basis of
 /// {R c : ||K R c|| <= tol ||K||}, from the SVD of K R. A subdomain with Dirichlet dofs

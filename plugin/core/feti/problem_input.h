@@ -15,7 +15,8 @@ struct SubdomainInput {
   SparseMatrix K;                 ///< stiffness, symmetric, full (not half) storage
   Vec f;                          ///< load
   std::vector<double> x, y;       ///< coordinates of each dof's node
-  std::vector<int> component;     ///< field component of each dof (empty: scalar field)
+  std::vector<double> z;          ///< third coordinate (empty: a plane problem; every subdomain alike)
+  std::vector<int> component;     ///< field component of each dof (empty: scalar field; 0..2 in 3D)
   int body = 0;                   ///< body the subdomain belongs to
   std::vector<int> dirichlet_dofs;      ///< local dofs with a prescribed value
   std::vector<double> dirichlet_values; ///< their values (empty: all zero)

@@ -1,0 +1,81 @@
+// Three dimensions: the rigid modes of 3D elasticity, and constraints that tell nodes apart
+// by their third coordinate.
+#include "base/errors.h"
+#include "feti/constraints.h"
+#include "feti/kernel.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <functional>
+
+namespace ffeti {
+namespace {
+
+/// P1 elasticity (E = 1, nu = 0.3) of one tetrahedron, dofs 3k + c: an independent
+/// stiffness whose kernel is the six rigid motions and nothing else.
+Eigen::MatrixXd tetrahedron_stiffness(const std::array<Eigen::Vector3d, 4>& p) {
+  Eigen::Matrix4d M;
+  for (int k = 0; k < 4; ++k) M.row(k) << 1, p[k].transpose();
+  const Eigen::Matrix4d C = M.inverse();  // columns: barycentric coordinates' coefficients
+  const double volume = std::abs(M.determinant()) / 6;
+  Eigen::Matrix<double, 6, 12> B = Eigen::Matrix<double, 6, 12>::Zero();
+  for (int k = 0; k < 4; ++k) {
+    const double gx = C(1, k), gy = C(2, k), gz = C(3, k);
+    B(0, 3 * k) = gx, B(1, 3 * k + 1) = gy, B(2, 3 * k + 2) = gz;
+    B(3, 3 * k) = gy, B(3, 3 * k + 1) = gx;
+    B(4, 3 * k + 1) = gz, B(4, 3 * k + 2) = gy;
+    B(5, 3 * k) = gz, B(5, 3 * k + 2) = gx;
+  }
+  const double nu = 0.3, lambda = nu / ((1 + nu) * (1 - 2 * nu)), mu = 1 / (2 * (1 + nu));
+  Eigen::Matrix<double, 6, 6> D = Eigen::Matrix<double, 6, 6>::Zero();
+  D.topLeftCorner<3, 3>().setConstant(lambda);
+  D.topLeftCorner<3, 3>().diagonal().array() += 2 * mu;
+  D.bottomRightCorner<3, 3>().diagonal().setConstant(mu);
+  return volume * B.transpose() * D * B;
+}
+
+TEST(ThreeDimensions, CandidateRigidModesSpanTheElasticKernel) {
+  const std::array<Eigen::Vector3d, 4> p = {Eigen::Vector3d(0.1, 0.2, 0.0), Eigen::Vector3d(1.3, 0.1, 0.2),
+                                            Eigen::Vector3d(0.2, 1.1, 0.1), Eigen::Vector3d(0.3, 0.2, 0.9)};
+  std::vector<double> x, y, z;
+  std::vector<int> component;
+  for (int k = 0; k < 4; ++k)
+    for (int c = 0; c < 3; ++c) x.push_back(p[k][0]), y.push_back(p[k][1]), z.push_back(p[k][2]), component.push_back(c);
+  const Eigen::MatrixXd K = tetrahedron_stiffness(p);
+  const Eigen::MatrixXd R = candidate_kernel(x, y, component, z);
+  ASSERT_EQ(R.cols(), 6);
+  EXPECT_LT((K * R).norm(), 1e-12 * K.norm() * R.norm());  // every candidate is a rigid motion
+  EXPECT_EQ(Eigen::FullPivLU<Eigen::MatrixXd>(R).rank(), 6);  // six independent ones
+  // And the element has no other zero-energy mode: its kernel is exactly these six.
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> spectrum(K);
+  EXPECT_GT(spectrum.eigenvalues()[6], 1e-6 * spectrum.eigenvalues()[11]);
+  // A plane field keeps the 2D modes.
+  EXPECT_EQ(candidate_kernel(x, y, std::vector<int>(12, 1)).cols(), 3);
+}
+
+/// A "subdomain" whose dofs sit at the corners of the unit box [x0, x0+1] x [0,1]^2: four
+/// corners share x and y with another four and differ only in z.
+SubdomainInput box_corners(double x0) {
+  SubdomainInput s;
+  for (int k = 0; k < 8; ++k) s.x.push_back(x0 + (k & 1)), s.y.push_back((k >> 1) & 1), s.z.push_back((k >> 2) & 1);
+  s.K = SparseMatrix(8, 8);
+  s.K.setIdentity();
+  s.f = Vec::Zero(8);
+  return s;
+}
+
+TEST(ThreeDimensions, GluingTellsNodesApartByZ) {
+  // Two boxes of one body side by side: their face x = 1 shares four nodes, glued by four
+  // rows. Read in the plane, the nodes (1, y, 0) and (1, y, 1) would coincide.
+  const Constraints c = build_constraints({box_corners(0), box_corners(1)}, ContactInput{}, FetiVariant::feti1);
+  EXPECT_EQ(c.count(RowKind::gluing), 4);
+  std::vector<SubdomainInput> plane = {box_corners(0), box_corners(1)};
+  for (SubdomainInput& s : plane) s.z.clear();
+  EXPECT_THROW(build_constraints(plane, ContactInput{}, FetiVariant::feti1), InputError);
+}
+
+}  // namespace
+}  // namespace ffeti
