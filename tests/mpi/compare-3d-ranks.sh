@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# The seed's model problem in three dimensions (edp/model-problem-3d.edp) in one process and
+# on 2 and 3 ranks: the same dimensions and counts, the energy to 1e-10.
+# Usage: compare-3d-ranks.sh SOURCE_DIR   (run where freefem++.pref points at the build)
+set -euo pipefail
+source_dir=$1
+script="$source_dir/edp/model-problem-3d.edp"
+args=(-n 16 -Hh 4 -reference 0)
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+source "$(dirname "${BASH_SOURCE[0]}")/result-keys.sh"
+
+serial=$(FreeFem++-nw -v 0 "$script" "${args[@]}" | result)
+[ -n "$serial" ] || { echo "no RESULT line from the serial run"; exit 1; }
+for ranks in 2 3; do
+  parallel=$(mpirun --oversubscribe -np "$ranks" FreeFem++-mpi -v 0 "$script" "${args[@]}" | result)
+  [ -n "$parallel" ] || { echo "no RESULT line with $ranks ranks"; exit 1; }
+  same_keys "$ranks ranks" "$serial" "$parallel" status subdomains primal dual couples active floating outer hessian
+  close_keys "$ranks ranks" "$serial" "$parallel" 1e-10 energy
+done
+[ "$failures" -eq 0 ] && echo "all checks passed" || { echo "$failures check(s) failed"; exit 1; }
