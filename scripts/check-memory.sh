@@ -18,14 +18,20 @@ if ! command -v valgrind >/dev/null; then
   "${as_root[@]}" apt-get install -y -qq valgrind >/dev/null
 fi
 # Scenes: contact through FETI-1 and Total FETI, node-to-segment contact, obstacles,
-# sensitivities and adjoints, bad input caught by try.
+# sensitivities and adjoints, bad input caught by try, friction (Coulomb, Tresca, load
+# steps), three dimensions (elasticity, the cubes).
 scenes=("$root/edp/example.edp"
         "$root/tests/edp/elastic-contact.edp"
         "$root/tests/edp/bad-input.edp"
         "$root/tests/edp/sensitivity-membrane.edp"
         "$root/tests/edp/sensitivity-elastic.edp -scene 0"
         "$root/tests/edp/sensitivity-elastic.edp -scene 1"
-        "$root/edp/uniform-pressure.edp -m 8 -k 6 -gradcheck 1e-5 -cost pressure")
+        "$root/edp/uniform-pressure.edp -m 8 -k 6 -gradcheck 1e-5 -cost pressure"
+        "$root/edp/block-on-slope.edp -check 1"
+        "$root/edp/block-on-slope.edp -law tresca -check 1"
+        "$root/edp/cattaneo-mindlin.edp -h 0.4 -meshes $root/meshes -check 0.05"
+        "$root/tests/edp/elasticity-3d.edp"
+        "$root/edp/model-problem-3d.edp -n 8 -Hh 4 -tol 1e-8 -check 1e-8")
 label() { local script=${1%% *}; echo "$(basename "$script")${1#"$script"}"; }
 failures=0
 log=$(mktemp)
