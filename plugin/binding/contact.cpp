@@ -17,7 +17,8 @@ namespace {
 /// Fills xc, yc with the slave positions of the contact rows and lc with their multipliers
 /// from the last solve (0 before any: the positions serve to build a start); returns the
 /// number of contact rows. With friction, tangential= receives each row's friction force
-/// (0 without a friction row) and state= 0 open, 1 stick, 2 slip.
+/// (0 without a friction row) and state= 0 open, 1 stick, 2 slip; zc= the slave nodes' third
+/// coordinate (three dimensions).
 class FetiContact : public WithNamedArguments {
  public:
   typedef long Result;
@@ -51,6 +52,10 @@ class FetiContact : public WithNamedArguments {
         tangential->resize(count);
         for (long k = 0; k < count; ++k) (*tangential)[k] = rows[static_cast<size_t>(k)].tangential;
       }
+      if (auto* z = optional_pointer<KN<double>>(nargs[2], stack)) {
+        z->resize(count);
+        for (long k = 0; k < count; ++k) (*z)[k] = rows[static_cast<size_t>(k)].z;
+      }
       if (auto* state = optional_pointer<KN<long>>(nargs[1], stack)) {
         state->resize(count);
         for (long k = 0; k < count; ++k) (*state)[k] = static_cast<long>(rows[static_cast<size_t>(k)].state);
@@ -60,7 +65,8 @@ class FetiContact : public WithNamedArguments {
   }
 };
 
-NamedParameters FetiContact::name_param = {{"tangential", &typeid(KN<double>*)}, {"state", &typeid(KN<long>*)}};
+NamedParameters FetiContact::name_param = {
+    {"tangential", &typeid(KN<double>*)}, {"state", &typeid(KN<long>*)}, {"zc", &typeid(KN<double>*)}};
 
 // ---- int rows = fetiContactPressure(P, Share, Pr, rows=pc, shares=wc) ----------------------
 /// The contact pressure of the last solve per dof into Pr (this rank's subdomains, others

@@ -37,4 +37,7 @@ exercise "lesson 7: -amax 0.02" "$lessons/07-shape-optimization.edp" -amax 0.02
 exercise "lesson 9: -pull 0.9" "$lessons/09-friction.edp" -pull 0.9
 exercise "lesson 9: -onestep 1" "$lessons/09-friction.edp" -onestep 1
 exercise "lesson 9: -mu 0.2" "$lessons/09-friction.edp" -mu 0.2
+exercise "lesson 10: -n 8" "$lessons/10-three-dimensions.edp" -n 8
+exercise "lesson 10: -n 32" "$lessons/10-three-dimensions.edp" -n 32
+exercise "lesson 10: -n 16 -Hh 4" "$lessons/10-three-dimensions.edp" -n 16 -Hh 4
 [ "$failures" -eq 0 ] && echo "all checks passed" || { echo "$failures exercise(s) failed"; exit 1; }

@@ -90,6 +90,7 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
                                        return std::make_pair(r.subdomain, r.dof) < key;
                                      });
     contact_positions_.push_back({it->x, it->y});
+    contact_heights_.push_back(it->z);
     contact_body_component_.push_back({it->body, it->component});
   }
   setup_times_.constraints = constraints_clock.seconds();

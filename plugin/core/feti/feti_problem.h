@@ -109,6 +109,8 @@ class FetiProblem {
   /// Position and multiplier of every contact row's slave dof (gathered: the same on all
   /// ranks; every contact row, in row order).
   const std::vector<std::array<double, 2>>& contact_positions() const { return contact_positions_; }
+  /// The third coordinate of the same (0 in a plane problem).
+  const std::vector<double>& contact_heights() const { return contact_heights_; }
   /// Body and field component of every contact row's slave dof (the dof that carries its
   /// gap: node to segment and obstacle rows name the node by its component-0 dof).
   const std::vector<std::array<int, 2>>& contact_body_component() const { return contact_body_component_; }
@@ -138,6 +140,7 @@ class FetiProblem {
   int global_count_ = 0;
   std::vector<int> owner_, bodies_;     // of every global subdomain
   std::vector<std::array<double, 2>> contact_positions_;
+  std::vector<double> contact_heights_;
   std::vector<std::array<int, 2>> contact_body_component_;
   double snap_ = 0;
   int space_dimension_ = 2;

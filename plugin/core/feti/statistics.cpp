@@ -86,7 +86,8 @@ std::vector<ContactMultiplier> contact_multipliers(const FetiProblem& problem, c
   for (int i = c.equality_rows; i < c.first_friction_row(); ++i) {
     const auto k = static_cast<size_t>(i - c.equality_rows);
     const auto& position = problem.contact_positions()[k];
-    rows.push_back({position[0], position[1], solved ? result->lambda[i] : 0.0, forces.tangential[k], forces.state[k]});
+    rows.push_back({position[0], position[1], solved ? result->lambda[i] : 0.0, problem.contact_heights()[k],
+                    forces.tangential[k], forces.state[k]});
   }
   return rows;
 }

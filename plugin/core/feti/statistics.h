@@ -24,6 +24,7 @@ int status_code(SolveStatus status);
 /// One contact row: the position of its slave dof and its multiplier (the contact force).
 struct ContactMultiplier {
   double x, y, lambda;
+  double z = 0;                              ///< the slave node's third coordinate (0 in a plane problem)
   double tangential = 0;                     ///< the friction row's multiplier (0 without one)
   ContactState state = ContactState::open;   ///< open, stick or slip (friction.h)
 };
