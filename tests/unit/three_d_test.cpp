@@ -2,6 +2,7 @@
 // by their third coordinate.
 #include "base/errors.h"
 #include "feti/constraints.h"
+#include "feti/contact_linearization.h"
 #include "feti/kernel.h"
 
 #include <gtest/gtest.h>
@@ -9,6 +10,7 @@
 #include <Eigen/Dense>
 
 #include <array>
+#include <cmath>
 #include <functional>
 
 namespace ffeti {
@@ -75,6 +77,32 @@ TEST(ThreeDimensions, GluingTellsNodesApartByZ) {
   std::vector<SubdomainInput> plane = {box_corners(0), box_corners(1)};
   for (SubdomainInput& s : plane) s.z.clear();
   EXPECT_THROW(build_constraints(plane, ContactInput{}, FetiVariant::feti1), InputError);
+}
+
+TEST(ThreeDimensions, ClosestPointOfATriangleInEveryRegion) {
+  // Against a brute-force search over a fine barycentric grid, for points beyond each corner,
+  // each edge and above the face.
+  const Point3 a{0, 0, 0}, b{2, 0, 0.5}, c{0.3, 1.5, -0.2};
+  const Point3 points[] = {{-1, -1, 0.3}, {3, -0.5, 1}, {0, 3, 0}, {1, -1, 0.2}, {-1, 0.7, 0}, {1.5, 1.5, 0.1},
+                           {0.6, 0.4, 2}, {0.6, 0.4, -2}};
+  for (const Point3& s : points) {
+    const std::array<double, 3> w = closest_point_weights(s, a, b, c);
+    const auto at = [&](double wa, double wb, double wc) {
+      return Point3{wa * a[0] + wb * b[0] + wc * c[0], wa * a[1] + wb * b[1] + wc * c[1], wa * a[2] + wb * b[2] + wc * c[2]};
+    };
+    const auto distance = [&](const Point3& p) {
+      return std::sqrt((p[0] - s[0]) * (p[0] - s[0]) + (p[1] - s[1]) * (p[1] - s[1]) + (p[2] - s[2]) * (p[2] - s[2]));
+    };
+    double best = INFINITY;
+    constexpr int kSteps = 400;
+    for (int i = 0; i <= kSteps; ++i)
+      for (int j = 0; i + j <= kSteps; ++j)
+        best = std::min(best, distance(at(1.0 * (kSteps - i - j) / kSteps, 1.0 * i / kSteps, 1.0 * j / kSteps)));
+    EXPECT_NEAR(w[0] + w[1] + w[2], 1.0, 1e-14);
+    for (double weight : w) EXPECT_GE(weight, -1e-14);
+    EXPECT_LE(distance(at(w[0], w[1], w[2])), best + 1e-12);       // no grid point is nearer
+    EXPECT_GE(distance(at(w[0], w[1], w[2])), best - 1e-2);         // and it is the grid's optimum, to its spacing
+  }
 }
 
 }  // namespace

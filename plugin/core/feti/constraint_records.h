@@ -30,6 +30,19 @@ struct SegmentRecord {
   double ax, ay, bx, by;
 };
 
+/// A master triangle of node-to-face contact: its dofs (a_x, a_y, a_z, b_x, ..., c_z) and corners.
+struct FaceRecord {
+  int subdomain, body;
+  std::array<int, 9> dofs;
+  std::array<std::array<double, 3>, 3> corners;
+};
+
+/// The master faces of the local subdomains (global subdomain indices).
+std::vector<FaceRecord> face_records(const std::vector<SubdomainInput>& local, const std::vector<int>& global_ids,
+                                     const ContactInput& local_contact);
+std::vector<double> pack(const std::vector<FaceRecord>& faces);
+std::vector<FaceRecord> unpack_faces(const std::vector<double>& packed);
+
 /// The master segments of the local subdomains (global subdomain indices).
 std::vector<SegmentRecord> segment_records(const std::vector<SubdomainInput>& local,
                                            const std::vector<int>& global_ids, const ContactInput& local_contact);

@@ -98,19 +98,24 @@ void add_node_to_node_rows(const std::vector<DofRecord>& records, double gap, do
   }
 }
 
-std::vector<SlaveNode> slave_nodes(const std::vector<DofRecord>& records, double snap) {
+std::vector<SlaveNode> slave_nodes(const std::vector<DofRecord>& records, double snap, int components) {
   const std::vector<Located> slaves = unique_slaves(records, snap);  // sorted by key(): component 0 first
   std::vector<SlaveNode> nodes;
   for (const Located& s : slaves) {
     if (s.record->component != 0) continue;
-    const auto wanted = std::make_tuple(s.record->body, 1, s.ix, s.iy, s.iz);  // the y dof of the same node
-    const auto partner = std::lower_bound(slaves.begin(), slaves.end(), wanted,
-                                          [](const Located& o, const auto& key) { return o.key() < key; });
-    if (partner == slaves.end() || partner->key() != wanted)
-      throw InputError("contactSlave[" + std::to_string(s.record->subdomain) + "]: dof " +
-                       std::to_string(s.record->dof) + " has no dof of component 1 at its node: list both "
-                       "components of each slave node for node-to-segment or obstacle contact");
-    nodes.push_back({s.record, partner->record});
+    std::array<const DofRecord*, 3> dofs{s.record, nullptr, nullptr};
+    for (int c = 1; c < components; ++c) {
+      const auto wanted = std::make_tuple(s.record->body, c, s.ix, s.iy, s.iz);  // the same node's other dofs
+      const auto partner = std::lower_bound(slaves.begin(), slaves.end(), wanted,
+                                            [](const Located& o, const auto& key) { return o.key() < key; });
+      if (partner == slaves.end() || partner->key() != wanted)
+        throw InputError("contactSlave[" + std::to_string(s.record->subdomain) + "]: dof " +
+                         std::to_string(s.record->dof) + " has no dof of component " + std::to_string(c) +
+                         " at its node: list every component of each slave node for node-to-segment, node-to-face "
+                         "or obstacle contact");
+      dofs[static_cast<size_t>(c)] = partner->record;
+    }
+    nodes.push_back({dofs[0], dofs[1], dofs[2]});
   }
   return nodes;
 }

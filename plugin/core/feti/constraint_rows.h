@@ -25,15 +25,19 @@ struct Row {
 struct SlaveNode {
   const DofRecord* x_dof;
   const DofRecord* y_dof;
+  const DofRecord* z_dof = nullptr;  ///< three dimensions (node to face) only
 };
 
 // In all of these `records` are sorted by (subdomain, dof).
-std::vector<SlaveNode> slave_nodes(const std::vector<DofRecord>& records, double snap);
+/// `components` = 3: each slave node also needs its z dof (node to face).
+std::vector<SlaveNode> slave_nodes(const std::vector<DofRecord>& records, double snap, int components = 2);
 void add_gluing_rows(const std::vector<DofRecord>& records, double snap, std::vector<Row>& rows);
 void add_dirichlet_rows(const std::vector<DofRecord>& records, std::vector<Row>& rows);
 void add_node_to_node_rows(const std::vector<DofRecord>& records, double gap, double snap, std::vector<Row>& rows);
 void add_node_to_segment_rows(const std::vector<DofRecord>& records, const std::vector<SegmentRecord>& segments,
                               const ContactInput& contact, double snap, std::vector<Row>& rows);
+void add_node_to_face_rows(const std::vector<DofRecord>& records, const std::vector<FaceRecord>& faces,
+                           const ContactInput& contact, double snap, std::vector<Row>& rows);
 void add_obstacle_rows(const std::vector<DofRecord>& records, const ContactInput& contact, double snap,
                        std::vector<Row>& rows);
 /// The record of a fixed dof, nullptr if the dof is not fixed.

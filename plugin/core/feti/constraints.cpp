@@ -13,7 +13,8 @@ int Constraints::count(RowKind k) const {
 }
 
 Constraints build_constraints(std::vector<DofRecord> records, const std::vector<SegmentRecord>& segments,
-                              const ContactInput& contact, FetiVariant variant, double snap) {
+                              const std::vector<FaceRecord>& faces, const ContactInput& contact, FetiVariant variant,
+                              double snap) {
   std::sort(records.begin(), records.end(), [](const DofRecord& a, const DofRecord& b) {
     return std::make_pair(a.subdomain, a.dof) < std::make_pair(b.subdomain, b.dof);
   });
@@ -26,7 +27,8 @@ Constraints build_constraints(std::vector<DofRecord> records, const std::vector<
   if (variant == FetiVariant::tfeti) add_dirichlet_rows(records, rows);
   if (!segments.empty()) add_node_to_segment_rows(records, segments, contact, snap, rows);
   if (contact.obstacle) add_obstacle_rows(records, contact, snap, rows);
-  if (segments.empty() && !contact.obstacle) add_node_to_node_rows(records, contact.gap, snap, rows);
+  if (!faces.empty()) add_node_to_face_rows(records, faces, contact, snap, rows);
+  if (segments.empty() && faces.empty() && !contact.obstacle) add_node_to_node_rows(records, contact.gap, snap, rows);
   if (variant == FetiVariant::feti1) substitute_dirichlet(records, rows);
 
   std::stable_partition(rows.begin(), rows.end(), [](const Row& r) { return r.equality; });
@@ -59,7 +61,8 @@ Constraints build_constraints(const std::vector<SubdomainInput>& subdomains,
   }
   const double snap = snapping_length(boxes);
   return build_constraints(constraint_candidates(subdomains, ids, contact, boxes, bodies, snap),
-                           segment_records(subdomains, ids, contact), contact, variant, snap);
+                           segment_records(subdomains, ids, contact), face_records(subdomains, ids, contact), contact,
+                           variant, snap);
 }
 
 std::vector<LocalConstraints> split_by_subdomain(const Constraints& constraints,

@@ -24,10 +24,11 @@ struct ConstraintEntry {
 /// One contact row's linearized condition as a function of the positions it was built
 /// from; the sensitivity analysis differentiates it when the geometry moves.
 struct ContactRowGeometry {
-  enum class Kind : std::uint8_t { node_to_node, node_to_segment, obstacle };
+  enum class Kind : std::uint8_t { node_to_node, node_to_segment, obstacle, node_to_face };
   Kind kind = Kind::node_to_node;
   /// Node to segment and obstacle: the slave node's x and y dofs (subdomain, dof); node to
   /// node: the slave dof in slave[0]. Node to segment: the segment's a_x, a_y, b_x, b_y.
+  /// Node to face (3D): the slave's x and y dofs only, s and a, b its x and y (no sensitivity yet).
   /// Unused entries are {-1, -1}. slave[0] is the dof that carries the row's gap_field.
   std::array<std::array<int, 2>, 2> slave{{{-1, -1}, {-1, -1}}};
   std::array<std::array<int, 2>, 4> master{{{-1, -1}, {-1, -1}, {-1, -1}, {-1, -1}}};
@@ -65,7 +66,8 @@ struct Constraints {
 /// `contact` supplies the scalar parameters (gap, search distance, obstacle), the same on
 /// every rank; its per-subdomain lists are not read.
 Constraints build_constraints(std::vector<DofRecord> records, const std::vector<SegmentRecord>& segments,
-                              const ContactInput& contact, FetiVariant variant, double snap);
+                              const std::vector<FaceRecord>& faces, const ContactInput& contact, FetiVariant variant,
+                              double snap);
 
 /// The same for subdomains all held here (global index = position): one process.
 Constraints build_constraints(const std::vector<SubdomainInput>& subdomains,

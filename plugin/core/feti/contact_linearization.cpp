@@ -27,4 +27,58 @@ LinearizedRow node_to_segment_slip(const Point& s, const Point& a, const Point& 
 
 LinearizedRow obstacle_slip(const Point& normal) { return {{-normal[1], normal[0], 0, 0, 0, 0}, 0.0}; }
 
+namespace {
+Point3 minus(const Point3& p, const Point3& q) { return {p[0] - q[0], p[1] - q[1], p[2] - q[2]}; }
+double dot(const Point3& p, const Point3& q) { return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]; }
+}  // namespace
+
+std::array<double, 3> closest_point_weights(const Point3& s, const Point3& a, const Point3& b, const Point3& c) {
+  // The Voronoi regions of the triangle's corners, edges and face, in turn (the classic
+  // region test; weights of the point p = w_a a + w_b b + w_c c).
+  const Point3 ab = minus(b, a), ac = minus(c, a), as = minus(s, a);
+  const double d1 = dot(ab, as), d2 = dot(ac, as);
+  if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
+  const Point3 bs = minus(s, b);
+  const double d3 = dot(ab, bs), d4 = dot(ac, bs);
+  if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+    const double t = d1 / (d1 - d3);
+    return {1 - t, t, 0};
+  }
+  const Point3 cs = minus(s, c);
+  const double d5 = dot(ab, cs), d6 = dot(ac, cs);
+  if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+    const double t = d2 / (d2 - d6);
+    return {1 - t, 0, t};
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+    const double t = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {0, 1 - t, t};
+  }
+  const double denominator = 1 / (va + vb + vc);
+  const double v = vb * denominator, w = vc * denominator;
+  return {1 - v - w, v, w};
+}
+
+LinearizedFaceRow node_to_face_row(const Point3& s, const Point3& a, const Point3& b, const Point3& c) {
+  const Point3 ab = minus(b, a), ac = minus(c, a);
+  Point3 n = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]};
+  const double length = std::sqrt(dot(n, n));
+  for (double& component : n) component /= length;
+  const std::array<double, 3> w = closest_point_weights(s, a, b, c);
+  Point3 p{};
+  for (size_t i = 0; i < 3; ++i) p[i] = w[0] * a[i] + w[1] * b[i] + w[2] * c[i];
+  LinearizedFaceRow row{};
+  for (size_t i = 0; i < 3; ++i) {
+    row.coefficients[i] = -n[i];
+    for (size_t corner = 0; corner < 3; ++corner) row.coefficients[3 + 3 * corner + i] = w[corner] * n[i];
+  }
+  row.gap = dot(n, minus(s, p));
+  return row;
+}
+
 }  // namespace ffeti

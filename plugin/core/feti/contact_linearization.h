@@ -25,6 +25,18 @@ LinearizedRow obstacle_row(const Point& s, const Point& point, const Point& norm
 /// (-n_y, n_x): the same turn from the outward normal in both. Coefficients as above; the
 /// gap is 0 (the slip is measured from the state of the last load step).
 LinearizedRow node_to_segment_slip(const Point& s, const Point& a, const Point& b);
+
+/// Node to face (three dimensions): slave s against triangle a, b, c with outward normal
+/// n = (b - a) x (c - a) / |.|, p its closest point, w its barycentric weights:
+/// n.(sum_i w_i u_i - u_s) <= n.(s - p). Coefficients of (s_x, s_y, s_z, a_x, ..., c_z).
+using Point3 = std::array<double, 3>;
+struct LinearizedFaceRow {
+  std::array<double, 12> coefficients;
+  double gap;
+};
+LinearizedFaceRow node_to_face_row(const Point3& s, const Point3& a, const Point3& b, const Point3& c);
+/// The closest point of triangle a, b, c to s as barycentric weights (w_a, w_b, w_c).
+std::array<double, 3> closest_point_weights(const Point3& s, const Point3& a, const Point3& b, const Point3& c);
 LinearizedRow obstacle_slip(const Point& normal);
 
 }  // namespace ffeti

@@ -133,12 +133,23 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
     for (const auto& segment : segments) segment_dofs.back().insert(segment_dofs.back().end(), segment.begin(), segment.end());
   }
   check_per_subdomain_lists(segment_dofs, ids, subdomains, "contactSegments");
+  std::vector<std::vector<int>> face_dofs;
+  for (const auto& faces : contact.master_faces) {
+    face_dofs.emplace_back();
+    for (const auto& face : faces) face_dofs.back().insert(face_dofs.back().end(), face.begin(), face.end());
+  }
+  check_per_subdomain_lists(face_dofs, ids, subdomains, "contactFaces");
+  const bool has_faces = std::any_of(contact.master_faces.begin(), contact.master_faces.end(),
+                                     [](const auto& list) { return !list.empty(); });
+  if (has_faces && !subdomains.empty() && subdomains.front().z.empty())
+    throw InputError("contactFaces: node-to-face contact needs Z (three dimensions); a plane problem takes "
+                     "contactSegments");
   if (!(contact.search_distance > 0)) throw InputError("contactRadius: must be > 0");
   const auto any = [](const auto& lists) {
     return std::any_of(lists.begin(), lists.end(), [](const auto& list) { return !list.empty(); });
   };
-  if (any(contact.master_dofs) && (any(contact.master_segments) || contact.obstacle))
-    throw InputError("contactMaster: node-to-node contact cannot be combined with contactSegments or "
+  if (any(contact.master_dofs) && (any(contact.master_segments) || any(contact.master_faces) || contact.obstacle))
+    throw InputError("contactMaster: node-to-node contact cannot be combined with contactSegments, contactFaces or "
                      "obstacle in one problem (the slave dofs would belong to both)");
   if (!std::isfinite(contact.gap)) throw InputError("gap: must be finite");
   check_dof_field(contact.gap_field, ids, subdomains, "contactGap", -INFINITY);

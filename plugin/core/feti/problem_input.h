@@ -38,6 +38,12 @@ struct ContactInput {
   std::vector<std::vector<int>> slave_dofs;   ///< per subdomain (may be empty)
   std::vector<std::vector<int>> master_dofs;  ///< per subdomain: node-to-node partners
   std::vector<std::vector<std::array<int, 4>>> master_segments;  ///< per subdomain: (a_x, a_y, b_x, b_y)
+  /// Three dimensions, node to face: per subdomain the master triangles, each the x, y, z
+  /// dofs of its corners a, b, c, ordered so that (b - a) x (c - a) points out of its body.
+  /// Each slave node (its three dofs in slave_dofs) is projected on the nearest face of
+  /// another body within search_distance, p its closest point, n the face's unit normal:
+  /// n.(u_p - u_slave) <= n.(x_slave - p), u_p interpolated linearly on the face.
+  std::vector<std::vector<std::array<int, 9>>> master_faces;
   double gap = 0;                             ///< node to node only
   /// Per subdomain, one value per dof (empty: none): a clearance added to the right-hand
   /// side of the contact row of each slave node, read at its slave dof (node to node) or

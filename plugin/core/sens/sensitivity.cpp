@@ -72,6 +72,10 @@ SensitivityProblem::SensitivityProblem(const FetiProblem& problem, const FetiRes
   Stopwatch clock;
   if (state.lambda.size() != problem.dual_dimension() || state.u.size() != problem.inputs().size())
     throw InputError("P: the solution does not belong to this problem (call fetiSolve first)");
+  for (const ContactRowGeometry& row : problem.constraints().geometry)
+    if (row.kind == ContactRowGeometry::Kind::node_to_face)
+      throw InputError("P: has node-to-face contact (contactFaces=); the derivatives of its rows are not derived "
+                       "yet, only those of node-to-node, node-to-segment and obstacle rows");
   if (problem.has_friction())
     throw InputError("P: has friction (friction= or slipBound=); the sensitivity analysis of a state with "
                      "friction is not derived yet (docs/reference.md), only of frictionless contact");
