@@ -157,12 +157,17 @@ class FetiSetup : public WithNamedArguments {
       }
     }
     if (const auto* obstacle = optional_pointer<KN<double>>(nargs[kObstacle], stack)) {
-      if (obstacle->N() != 4)
-        throw InputError("obstacle: needs [point x, point y, normal x, normal y], got " +
+      if (obstacle->N() != 4 && obstacle->N() != 6)
+        throw InputError("obstacle: needs [point x, point y, normal x, normal y] (with Z: [px, py, pz, nx, ny, nz]), got " +
                          std::to_string(obstacle->N()) + " entries");
       contact.obstacle = true;
-      contact.obstacle_point = {(*obstacle)[0], (*obstacle)[1]};
-      contact.obstacle_normal = {(*obstacle)[2], (*obstacle)[3]};
+      if (obstacle->N() == 6) {  // three dimensions: a plane
+        contact.obstacle_point = {(*obstacle)[0], (*obstacle)[1], (*obstacle)[2]};
+        contact.obstacle_normal = {(*obstacle)[3], (*obstacle)[4], (*obstacle)[5]};
+      } else {
+        contact.obstacle_point = {(*obstacle)[0], (*obstacle)[1], 0.0};
+        contact.obstacle_normal = {(*obstacle)[2], (*obstacle)[3], 0.0};
+      }
     }
     contact.search_distance = optional_real(nargs[kRadius], stack, contact.search_distance);
     // Not given: -1, no friction rows (a given negative value is refused by the core).

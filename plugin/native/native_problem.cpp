@@ -270,8 +270,8 @@ void obstacle_from_curve(const ProblemFile& problem, const GmshMesh& mesh, const
     throw InputError(problem.path + ": " + key + ".obstacle.curve: the slave nodes' centroid lies on the obstacle's "
                      "line: give \"point\" and \"normal\" instead");
   if (side < 0) normal = {-normal[0], -normal[1]};
-  contact.obstacle_point = p0;
-  contact.obstacle_normal = normal;
+  contact.obstacle_point = {p0[0], p0[1], 0.0};
+  contact.obstacle_normal = {normal[0], normal[1], 0.0};
 }
 
 /// Dofs of the local subdomains at `nodes` (sorted; all components).
@@ -323,8 +323,8 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
       if (contact.obstacle)
         throw InputError(problem.path + ": " + key + ": a second obstacle (one rigid obstacle per problem)");
       contact.obstacle = true;
-      contact.obstacle_point = c.obstacle_point;
-      contact.obstacle_normal = c.obstacle_normal;
+      contact.obstacle_point = {c.obstacle_point[0], c.obstacle_point[1], 0.0};
+      contact.obstacle_normal = {c.obstacle_normal[0], c.obstacle_normal[1], 0.0};
       if (c.obstacle_curve > 0) obstacle_from_curve(problem, mesh, c, key, contact);
     } else if (problem.components == 1) {  // node to node, matching meshes
       contact.master_dofs.resize(n);

@@ -60,9 +60,11 @@ Constraints build_constraints(const std::vector<SubdomainInput>& subdomains,
     ids.push_back(static_cast<int>(ids.size()));
   }
   const double snap = snapping_length(boxes);
+  ContactInput with_dimension = contact;
+  with_dimension.three_d = !subdomains.empty() && !subdomains.front().z.empty();
   return build_constraints(constraint_candidates(subdomains, ids, contact, boxes, bodies, snap),
-                           segment_records(subdomains, ids, contact), face_records(subdomains, ids, contact), contact,
-                           variant, snap);
+                           segment_records(subdomains, ids, contact), face_records(subdomains, ids, contact),
+                           with_dimension, variant, snap);
 }
 
 std::vector<LocalConstraints> split_by_subdomain(const Constraints& constraints,

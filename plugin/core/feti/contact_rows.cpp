@@ -108,19 +108,27 @@ void add_node_to_segment_rows(const std::vector<DofRecord>& records, const std::
 
 void add_obstacle_rows(const std::vector<DofRecord>& records, const ContactInput& contact, double snap,
                        std::vector<Row>& rows) {
-  const double norm = std::hypot(contact.obstacle_normal[0], contact.obstacle_normal[1]);
-  if (!(norm > 0)) throw InputError("obstacle: the normal (entries 3 and 4) must not be zero");
-  const double nx = contact.obstacle_normal[0] / norm, ny = contact.obstacle_normal[1] / norm;
-  for (const SlaveNode& node : slave_nodes(records, snap)) {
+  const auto& normal = contact.obstacle_normal;
+  const double norm = contact.three_d ? std::hypot(normal[0], normal[1], normal[2]) : std::hypot(normal[0], normal[1]);
+  if (!(norm > 0)) throw InputError("obstacle: the normal must not be zero");
+  const Point3 n{normal[0] / norm, normal[1] / norm, normal[2] / norm};
+  for (const SlaveNode& node : slave_nodes(records, snap, contact.three_d ? 3 : 2)) {
     ContactRowGeometry geometry;
     geometry.kind = ContactRowGeometry::Kind::obstacle;
     geometry.slave = {{{node.x_dof->subdomain, node.x_dof->dof}, {node.y_dof->subdomain, node.y_dof->dof}}};
     geometry.s = {node.x_dof->x, node.x_dof->y};
-    geometry.a = contact.obstacle_point, geometry.b = {nx, ny};
-    const LinearizedRow linear = obstacle_row(geometry.s, geometry.a, geometry.b);
+    geometry.a = {contact.obstacle_point[0], contact.obstacle_point[1]}, geometry.b = {n[0], n[1]};
+    // -n.u_s <= n.(s - point): in the plane the row the sensitivity analysis differentiates,
+    // in 3D the same with z.
+    LinearizedRow linear = obstacle_row(geometry.s, geometry.a, geometry.b);
+    if (contact.three_d) {
+      linear.coefficients[2] = -n[2];
+      linear.gap += n[2] * (node.x_dof->z - contact.obstacle_point[2]);
+    }
     Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction};
-    for (size_t k = 0; k < 2; ++k)
-      if (linear.coefficients[k] != 0) row.entries.push_back({geometry.slave[k][0], geometry.slave[k][1], linear.coefficients[k]});
+    const DofRecord* slave[3] = {node.x_dof, node.y_dof, node.z_dof};
+    for (size_t k = 0; k < (contact.three_d ? 3u : 2u); ++k)
+      if (linear.coefficients[k] != 0) row.entries.push_back({slave[k]->subdomain, slave[k]->dof, linear.coefficients[k]});
     rows.push_back(std::move(row));
   }
 }

@@ -80,7 +80,9 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
       unpack_segments(comm.allgather(pack(segment_records(inputs_, global_ids_, local_contact))));
   const std::vector<FaceRecord> faces =
       unpack_faces(comm.allgather(pack(face_records(inputs_, global_ids_, local_contact))));
-  Constraints constraints = build_constraints(records, segments, faces, local_contact, settings_.variant, snap);
+  ContactInput contact = local_contact;
+  contact.three_d = space_dimension_ == 3;
+  Constraints constraints = build_constraints(records, segments, faces, contact, settings_.variant, snap);
   rhs_ = Eigen::Map<const Vec>(constraints.rhs.data(), constraints.rows());
   friction_ = {local_contact.slip_bound};
   std::sort(records.begin(), records.end(), [](const DofRecord& a, const DofRecord& b) {

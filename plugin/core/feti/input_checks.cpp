@@ -120,11 +120,14 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
         throw InputError(indexed("dirichletValues", s) + ": entry " + std::to_string(i) + " is not finite");
   }
   const bool three_d = !subdomains.empty() && !subdomains.front().z.empty();
-  if (three_d && (std::any_of(contact.master_segments.begin(), contact.master_segments.end(),
-                              [](const auto& list) { return !list.empty(); }) || contact.obstacle))
-    throw InputError(std::string(contact.obstacle ? "obstacle" : "contactSegments") +
-                     ": plane problems only; with Z (three dimensions) contact is node to node on matching faces "
-                     "(contactSlave, contactMaster) so far");
+  if (three_d && std::any_of(contact.master_segments.begin(), contact.master_segments.end(),
+                             [](const auto& list) { return !list.empty(); }))
+    throw InputError("contactSegments: plane problems only; with Z (three dimensions) use contactFaces (node to face)");
+  if (three_d && contact.has_friction())
+    throw InputError(std::string(contact.friction >= 0 ? "friction" : "slipBound") +
+                     ": plane problems only so far (no tangential rows in three dimensions)");
+  if (!three_d && contact.obstacle && (contact.obstacle_point[2] != 0 || contact.obstacle_normal[2] != 0))
+    throw InputError("obstacle: six entries (a plane) need Z (three dimensions); a plane problem takes four");
   check_per_subdomain_lists(contact.slave_dofs, ids, subdomains, "contactSlave");
   check_per_subdomain_lists(contact.master_dofs, ids, subdomains, "contactMaster");
   std::vector<std::vector<int>> segment_dofs;
@@ -165,7 +168,8 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
     throw InputError("frictionField, slipBound: a coefficient per row is Coulomb's law; Tresca's takes slipBound alone");
   if (contact.friction >= 0 && contact.slip_bound >= 0)
     throw InputError("friction, slipBound: give one law, Coulomb (friction=) or Tresca (slipBound=), not both");
-  for (double v : {contact.obstacle_point[0], contact.obstacle_point[1], contact.obstacle_normal[0], contact.obstacle_normal[1]})
+  for (double v : {contact.obstacle_point[0], contact.obstacle_point[1], contact.obstacle_point[2],
+                   contact.obstacle_normal[0], contact.obstacle_normal[1], contact.obstacle_normal[2]})
     if (contact.obstacle && !std::isfinite(v)) throw InputError("obstacle: the point and the normal must be finite");
 }
 

@@ -32,8 +32,8 @@ struct SubdomainInput {
 ///   p = (1 - xi) a + xi b and n the segment's outward normal, n.(u_p - u_slave) <=
 ///   n.(x_slave - p). Segments run with their body on the left (FreeFEM's orientation of a
 ///   counter-clockwise border), so n = (b - a) rotated clockwise.
-/// - Rigid obstacle: a line through obstacle_point with outward normal obstacle_normal
-///   (pointing away from the obstacle): -n.u_slave <= n.(x_slave - point).
+/// - Rigid obstacle: a line (a plane in 3D) through obstacle_point with outward normal
+///   obstacle_normal (pointing away from the obstacle): -n.u_slave <= n.(x_slave - point).
 struct ContactInput {
   std::vector<std::vector<int>> slave_dofs;   ///< per subdomain (may be empty)
   std::vector<std::vector<int>> master_dofs;  ///< per subdomain: node-to-node partners
@@ -52,7 +52,9 @@ struct ContactInput {
   std::vector<std::vector<double>> gap_field;
   double search_distance = 1e300;             ///< node to segment: farther slaves get no row
   bool obstacle = false;
-  std::array<double, 2> obstacle_point{0, 0}, obstacle_normal{0, 1};
+  std::array<double, 3> obstacle_point{0, 0, 0}, obstacle_normal{0, 1, 0};  ///< z entries: 3D only
+  /// Set by the set-up (not the caller): the subdomains have a third coordinate.
+  bool three_d = false;
   /// Friction (node to segment and obstacle; docs/algorithms.md, "Friction"): each contact
   /// row gets a tangential row, the slip t.(u_slave - u_p) of the slave along the master's
   /// tangent t (on an obstacle the line's direction) measured from the state of the last
