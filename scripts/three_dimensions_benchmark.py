@@ -6,6 +6,7 @@ supernodal factors on 3D subdomains, and the 2D model problem of about the same 
 it. Writes docs/results/three-dimensions.md and its plot from one run on this machine."""
 import argparse
 import os
+import tempfile
 
 import matplotlib
 
@@ -39,6 +40,7 @@ FACTORS = [("n", "n"), ("H/h", "Hh"), ("subdomains", "subdomains"), ("unknowns",
 SPHERE = [("h [mm]", "h"), ("unknowns", "unknowns"), ("couples", "couples"), ("active", "active"),
           ("a [mm]", ("a", ".4f")), ("a Hertz", ("a_hertz", ".4f")), ("error a", ("a_relerr", ".2%")),
           ("p0 [MPa]", ("p0", ".2f")), ("p0 Hertz", ("p0_hertz", ".2f")), ("error p0", ("p0_relerr", ".2%")),
+          ("L2 error of p", ("pressure_l2_relerr", ".1%")),
           ("force balance", ("balance_error", ".0e")), ("Hessian mult.", "hessian"),
           ("solve [s]", ("time_solve", ".2f")), ("total [s]", ("time_total", ".2f")), ("status", "status")]
 PLANE_COLUMNS = [("problem", "problem"), ("unknowns", "primal"), ("subdomains", "subdomains"),
@@ -58,9 +60,17 @@ def main():
         factors = [run("model-problem-3d.edp", "-n", n, "-Hh", hh, "-reference", 0, "-factor", kind)["RESULT"][0]
                    for n, hh in FACTOR_CASES for kind in ("simplicial", "supernodal")]
         plane = run("model-problem.edp", "-n", PLANE[0], "-Hh", PLANE[1])["RESULT"][0]
-        sphere = [run("hertz-sphere.edp", "-h", h, "-meshes", os.path.join(ROOT, "meshes"))["RESULT"][0]
-                  for h in SPHERE_SIZES]
+        sphere, profile = [], []
+        with tempfile.TemporaryDirectory() as scratch:
+            for h in SPHERE_SIZES:
+                table = os.path.join(scratch, f"sphere-{h}.csv")
+                sphere.append(run("hertz-sphere.edp", "-h", h, "-meshes", os.path.join(ROOT, "meshes"),
+                                  "-table", table)["RESULT"][0])
+                with open(table) as rows:
+                    header = rows.readline().strip().split(",")
+                    profile += [dict(h=h, **dict(zip(header, line.strip().split(",")))) for line in rows]
         write_csv(PAGE, "sphere", sphere)
+        write_csv(PAGE, "sphere-pressure", profile)
         three = next(r for r in cubes if r["n"] == "64")
         write_csv(PAGE, "cubes", cubes)
         write_csv(PAGE, "reference", reference)
@@ -93,9 +103,29 @@ def write_plot(cubes):
     plt.close(fig)
 
 
+def write_profile(sphere, profile):
+    fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    finest = sphere[-1]
+    a, p0 = f(finest, "a_hertz"), f(finest, "p0_hertz")
+    rs = [1.5 * a * i / 300 for i in range(301)]
+    ax.plot(rs, [p0 * max(0.0, 1 - (r / a) ** 2) ** 0.5 for r in rs], "k-", label="Hertz")
+    for row, marker in zip(sphere[1:], ["s", "o"]):
+        points = [p for p in profile if float(p["h"]) == float(row["h"])]
+        ax.plot([f(p, "r") for p in points], [f(p, "pressure") for p in points], marker, ms=3,
+                label=f"ffeti, h = {row['h']} mm")
+    ax.set_xlabel("r [mm]")
+    ax.set_ylabel("contact pressure [MPa]")
+    ax.set_title("Sphere on a rigid plane: contact pressure per slave node")
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(OUT, "three-dimensions-sphere.png"), dpi=110)
+    plt.close(fig)
+
+
 def render():
-    cubes, reference, factors, plane, sphere = (read_csv(PAGE, t)
-                                                for t in ("cubes", "reference", "factors", "plane", "sphere"))
+    cubes, reference, factors, plane, sphere, profile = (
+        read_csv(PAGE, t) for t in ("cubes", "reference", "factors", "plane", "sphere", "sphere-pressure"))
+    write_profile(sphere, profile)
     run_row = read_csv(PAGE, "run")[0]
     write_plot(cubes)
     counts = [f(r, "hessian") for r in cubes]
@@ -161,14 +191,19 @@ def render():
         "its cut z = R (F about 500 N on the whole sphere: the mesh's polygonal cut applies a little",
         "less, and the analytic values use what it applies), Total FETI over 4 bands of z, the rigid",
         "plane as an obstacle, tol = 1e-6. Hertz: a = (3FR/(4E*))^(1/3), p0 = 3F/(2πa²), E* = E/(1 − ν²).",
-        "a: halfway between the outermost closed row and the nearest open one, by radius; p0: the",
-        "central node's force over its share of the surface.",
+        "a: halfway between the outermost closed row and the nearest open one, by radius; the pressure",
+        "per slave node: its force over its share of the surface (`fetiContactPressure`), p0 the",
+        "central node's; the L2 error over the rows within 1.2 a, weighted by their shares. Raw data",
+        f"per row: [{PAGE}-sphere-pressure.csv]({PAGE}-sphere-pressure.csv).",
         "",
         *markdown_table(sphere, SPHERE),
         "",
+        "![sphere](three-dimensions-sphere.png)",
+        "",
         f"Reading: a is within {span([f(r, 'a_relerr') for r in sphere], '.2%')} of Hertz's (read off the mesh, to",
         f"about half a node spacing), p0 within {listing([f(r, 'p0_relerr') for r in sphere], '.1%')} for h =",
-        f"{listing([r['h'] for r in sphere])} mm: within the 5 % aimed at and falling with h. The contact forces",
+        f"{listing([r['h'] for r in sphere])} mm: within the 5 % aimed at and falling with h; the profile's L2 error",
+        f"is {listing([f(r, 'pressure_l2_relerr') for r in sphere], '.1%')}. The contact forces",
         f"balance the load to {span([f(r, 'balance_error') for r in sphere], '.0e')}.",
         "",
         "## Simplicial or supernodal factors for 3D subdomains",

@@ -9,10 +9,10 @@
 namespace ffeti {
 namespace {
 
-using NodeKey = std::tuple<int, long long, long long>;  // body and snapped position
+using NodeKey = std::tuple<int, long long, long long, long long>;  // body and snapped position
 
-NodeKey node_key(int body, double x, double y, double snap) {
-  return {body, std::llround(x / snap), std::llround(y / snap)};
+NodeKey node_key(int body, double x, double y, double z, double snap) {
+  return {body, std::llround(x / snap), std::llround(y / snap), std::llround(z / snap)};
 }
 
 }  // namespace
@@ -21,8 +21,6 @@ ContactPressure contact_pressure(const FetiProblem& problem, const Vec& lambda, 
   const Constraints& c = problem.constraints();
   const auto& inputs = problem.inputs();
   const int rows = c.contact_rows();
-  if (problem.space_dimension() != 2)
-    throw InputError("P: fetiContactPressure takes plane problems only so far (its shares are per contact curve)");
   collectively(problem.communicator(), [&] {
     if (share.size() != inputs.size()) throw InputError("Share: needs one entry per subdomain");
     for (size_t k = 0; k < inputs.size(); ++k)
@@ -33,7 +31,9 @@ ContactPressure contact_pressure(const FetiProblem& problem, const Vec& lambda, 
   std::map<NodeKey, int> row_at;
   for (int i = 0; i < rows; ++i) {
     const auto& [x, y] = problem.contact_positions()[static_cast<size_t>(i)];
-    row_at.emplace(node_key(problem.contact_body_component()[static_cast<size_t>(i)][0], x, y, problem.snap()), i);
+    row_at.emplace(node_key(problem.contact_body_component()[static_cast<size_t>(i)][0], x, y,
+                            problem.contact_heights()[static_cast<size_t>(i)], problem.snap()),
+                   i);
   }
   // The contact row at each local dof's node (-1: none), then (row, share) of the copies
   // held here, summed in rank order: the same on every rank.
@@ -43,7 +43,7 @@ ContactPressure contact_pressure(const FetiProblem& problem, const Vec& lambda, 
     const SubdomainInput& in = inputs[k];
     std::vector<int>& rows_here = row_of_dof.emplace_back(static_cast<size_t>(in.K.rows()), -1);
     for (size_t d = 0; d < rows_here.size(); ++d) {
-      const auto it = row_at.find(node_key(in.body, in.x[d], in.y[d], problem.snap()));
+      const auto it = row_at.find(node_key(in.body, in.x[d], in.y[d], in.z.empty() ? 0.0 : in.z[d], problem.snap()));
       if (it == row_at.end()) continue;
       rows_here[d] = it->second;
       const int component = in.component.empty() ? 0 : in.component[d];
@@ -63,8 +63,8 @@ ContactPressure contact_pressure(const FetiProblem& problem, const Vec& lambda, 
     else if (force != 0 && missing.empty()) {
       const auto& [x, y] = problem.contact_positions()[static_cast<size_t>(i)];
       missing = "Share: the contact node at (" + std::to_string(x) + ", " + std::to_string(y) +
-                ") carries a force but has no positive share of the contact curve (integrate the test "
-                "functions over the contact boundary of every subdomain holding it)";
+                ") carries a force but has no positive share of the contact curve or surface (integrate the "
+                "test functions over the contact boundary of every subdomain holding it)";
     }
   }
   if (!missing.empty()) throw InputError(missing);  // the same on every rank: built from gathered data
