@@ -132,7 +132,8 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
                      "), got " + std::to_string(data.slip_bound.size()));
   const Vec multiplier_lower = lower_bounds(data), multiplier_upper = upper_bounds(data);
   // Of mu = lambda - lambda~, the solvers' variable (-inf stays -inf).
-  const Vec lower = multiplier_lower - data.lambda_tilde, upper = multiplier_upper.size() ? Vec(multiplier_upper - data.lambda_tilde) : Vec();
+  const Vec lower = multiplier_lower - data.lambda_tilde;
+  const Vec upper = multiplier_upper.size() ? Vec(multiplier_upper - data.lambda_tilde) : Vec();
   const Bounds bounds{lower, upper.size() ? &upper : nullptr};
   // The primal check of the stopping test at shifted multipliers mu (lambda = mu + lambda~,
   // multipliers at a bound exactly there).
