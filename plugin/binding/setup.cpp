@@ -39,7 +39,7 @@ class FetiSetup : public WithNamedArguments {
  private:
   // Named parameters by position in name_param: these, then the set-up options.
   enum Named { kDirichlet, kDirichletValues, kSlave, kMaster, kGap, kComponent, kComm, kSegments, kObstacle,
-               kRadius, kContactGap, kFriction, kSlipBound, kFrictionField, kZ, kFaces, kOptions };
+               kRadius, kContactGap, kFriction, kSlipBound, kFrictionField, kZ, kFaces, kSlaveFaces, kOptions };
 
   long setup(Stack stack) const {
     auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
@@ -127,6 +127,25 @@ class FetiSetup : public WithNamedArguments {
 
   /// contactSlave=, contactMaster=, gap=, contactSegments=, obstacle=, contactRadius=, contactGap=,
   /// friction=, slipBound=, frictionField=.
+  /// Triangles given as 9 dofs each (a_x, a_y, a_z, b_x, ..., c_z), per subdomain.
+  std::vector<std::vector<std::array<int, 9>>> faces(Stack stack, Named argument, const char* name, long count,
+                                                     const std::vector<int>& ids, const std::vector<long>& dofs) const {
+    const auto face_dofs = per_subdomain(optional_pointer<KN<KN<long>>>(nargs[argument], stack), count, ids, dofs, name);
+    std::vector<std::vector<std::array<int, 9>>> result;
+    for (size_t k = 0; k < face_dofs.size(); ++k) {
+      if (face_dofs[k].size() % 9 != 0)
+        throw InputError(std::string(name) + "[" + std::to_string(ids[k]) +
+                         "]: needs 9 dofs per face (a_x, a_y, a_z, b_x, ..., c_z)");
+      result.emplace_back();
+      for (size_t i = 0; i < face_dofs[k].size(); i += 9) {
+        std::array<int, 9> face{};
+        for (size_t j = 0; j < 9; ++j) face[j] = face_dofs[k][i + j];
+        result.back().push_back(face);
+      }
+    }
+    return result;
+  }
+
   ContactInput contact_input(Stack stack, long count, const std::vector<int>& ids, const std::vector<long>& dofs) const {
     ContactInput contact;
     contact.slave_dofs = per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kSlave], stack), count, ids,
@@ -144,18 +163,8 @@ class FetiSetup : public WithNamedArguments {
         contact.master_segments.back().push_back({segment_dofs[k][i], segment_dofs[k][i + 1],
                                                   segment_dofs[k][i + 2], segment_dofs[k][i + 3]});
     }
-    const auto face_dofs = per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kFaces], stack), count, ids, dofs,
-                                         "contactFaces");
-    for (size_t k = 0; k < face_dofs.size(); ++k) {
-      if (face_dofs[k].size() % 9 != 0)
-        throw InputError("contactFaces[" + std::to_string(ids[k]) + "]: needs 9 dofs per face (a_x, a_y, a_z, b_x, ..., c_z)");
-      contact.master_faces.emplace_back();
-      for (size_t i = 0; i < face_dofs[k].size(); i += 9) {
-        std::array<int, 9> face{};
-        for (size_t j = 0; j < 9; ++j) face[j] = face_dofs[k][i + j];
-        contact.master_faces.back().push_back(face);
-      }
-    }
+    contact.master_faces = faces(stack, kFaces, "contactFaces", count, ids, dofs);
+    contact.slave_faces = faces(stack, kSlaveFaces, "contactSlaveFaces", count, ids, dofs);
     if (const auto* obstacle = optional_pointer<KN<double>>(nargs[kObstacle], stack)) {
       if (obstacle->N() != 4 && obstacle->N() != 6)
         throw InputError("obstacle: needs [point x, point y, normal x, normal y] (with Z: [px, py, pz, nx, ny, nz]), got " +
@@ -206,7 +215,8 @@ NamedParameters FetiSetup::name_param = named_parameters(
      {"obstacle", &typeid(KN<double>*)},          {"contactRadius", &typeid(double)},
      {"contactGap", &typeid(KN<KN<double>>*)},   {"friction", &typeid(double)},
      {"slipBound", &typeid(double)},             {"frictionField", &typeid(KN<KN<double>>*)},
-     {"Z", &typeid(KN<KN<double>>*)},             {"contactFaces", &typeid(KN<KN<long>>*)}},
+     {"Z", &typeid(KN<KN<double>>*)},             {"contactFaces", &typeid(KN<KN<long>>*)},
+     {"contactSlaveFaces", &typeid(KN<KN<long>>*)}},
     OptionScope::setup);
 
 long feti_set_loads(const long& id, KN<KN<double>>* const& loads) {

@@ -99,6 +99,9 @@ std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& 
     }
     if (!local_contact.slave_dofs.empty())
       for (int dof : local_contact.slave_dofs[k]) slave[static_cast<size_t>(dof)] = 1;
+    if (!local_contact.slave_faces.empty())  // mortar: the slave nodes are the slave faces' corners
+      for (const auto& face : local_contact.slave_faces[k])
+        for (int dof : face) slave[static_cast<size_t>(dof)] = 1;
     if (!local_contact.master_dofs.empty())
       for (int dof : local_contact.master_dofs[k]) master[static_cast<size_t>(dof)] = 1;
     for (size_t i = 0; i < n; ++i) {
@@ -171,16 +174,19 @@ std::vector<SegmentRecord> unpack_segments(const std::vector<double>& packed) {
 std::vector<FaceRecord> face_records(const std::vector<SubdomainInput>& local, const std::vector<int>& global_ids,
                                      const ContactInput& local_contact) {
   std::vector<FaceRecord> faces;
-  for (size_t k = 0; k < local_contact.master_faces.size(); ++k)
-    for (const auto& dofs : local_contact.master_faces[k]) {
-      const SubdomainInput& sub = local[k];
-      FaceRecord face{global_ids[k], sub.body, dofs, {}};
-      for (size_t corner = 0; corner < 3; ++corner) {
-        const auto d = static_cast<size_t>(dofs[3 * corner]);
-        face.corners[corner] = {sub.x[d], sub.y[d], sub.z[d]};
+  for (const bool slave : {false, true}) {
+    const auto& lists = slave ? local_contact.slave_faces : local_contact.master_faces;
+    for (size_t k = 0; k < lists.size(); ++k)
+      for (const auto& dofs : lists[k]) {
+        const SubdomainInput& sub = local[k];
+        FaceRecord face{global_ids[k], sub.body, dofs, {}, slave};
+        for (size_t corner = 0; corner < 3; ++corner) {
+          const auto d = static_cast<size_t>(dofs[3 * corner]);
+          face.corners[corner] = {sub.x[d], sub.y[d], sub.z[d]};
+        }
+        faces.push_back(face);
       }
-      faces.push_back(face);
-    }
+  }
   return faces;
 }
 
@@ -190,14 +196,15 @@ std::vector<double> pack(const std::vector<FaceRecord>& faces) {
     packed.insert(packed.end(), {double(f.subdomain), double(f.body)});
     for (int dof : f.dofs) packed.push_back(double(dof));
     for (const auto& corner : f.corners) packed.insert(packed.end(), corner.begin(), corner.end());
+    packed.push_back(f.slave ? 1.0 : 0.0);
   }
   return packed;
 }
 
 std::vector<FaceRecord> unpack_faces(const std::vector<double>& packed) {
   std::vector<FaceRecord> faces;
-  for (size_t k = 0; k + 20 <= packed.size(); k += 20) {
-    FaceRecord f{static_cast<int>(packed[k]), static_cast<int>(packed[k + 1]), {}, {}};
+  for (size_t k = 0; k + 21 <= packed.size(); k += 21) {
+    FaceRecord f{static_cast<int>(packed[k]), static_cast<int>(packed[k + 1]), {}, {}, packed[k + 20] != 0};
     for (size_t i = 0; i < 9; ++i) f.dofs[i] = static_cast<int>(packed[k + 2 + i]);
     for (size_t c = 0; c < 3; ++c)
       for (size_t i = 0; i < 3; ++i) f.corners[c][i] = packed[k + 11 + 3 * c + i];

@@ -30,14 +30,16 @@ struct SegmentRecord {
   double ax, ay, bx, by;
 };
 
-/// A master triangle of node-to-face contact: its dofs (a_x, a_y, a_z, b_x, ..., c_z) and corners.
+/// A contact triangle (three dimensions): its dofs (a_x, a_y, a_z, b_x, ..., c_z) and corners;
+/// a master face (node to face, mortar) or a slave face (mortar).
 struct FaceRecord {
   int subdomain, body;
   std::array<int, 9> dofs;
   std::array<std::array<double, 3>, 3> corners;
+  bool slave = false;
 };
 
-/// The master faces of the local subdomains (global subdomain indices).
+/// The master and slave faces of the local subdomains (global subdomain indices).
 std::vector<FaceRecord> face_records(const std::vector<SubdomainInput>& local, const std::vector<int>& global_ids,
                                      const ContactInput& local_contact);
 std::vector<double> pack(const std::vector<FaceRecord>& faces);

@@ -38,6 +38,9 @@ void add_node_to_segment_rows(const std::vector<DofRecord>& records, const std::
                               const ContactInput& contact, double snap, std::vector<Row>& rows);
 void add_node_to_face_rows(const std::vector<DofRecord>& records, const std::vector<FaceRecord>& faces,
                            const ContactInput& contact, double snap, std::vector<Row>& rows);
+/// Mortar (three dimensions): `faces` holds the slave faces and the master faces.
+void add_mortar_rows(const std::vector<DofRecord>& records, const std::vector<FaceRecord>& faces,
+                     const ContactInput& contact, double snap, std::vector<Row>& rows);
 void add_obstacle_rows(const std::vector<DofRecord>& records, const ContactInput& contact, double snap,
                        std::vector<Row>& rows);
 /// The record of a fixed dof, nullptr if the dof is not fixed.

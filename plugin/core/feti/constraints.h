@@ -24,11 +24,11 @@ struct ConstraintEntry {
 /// One contact row's linearized condition as a function of the positions it was built
 /// from; the sensitivity analysis differentiates it when the geometry moves.
 struct ContactRowGeometry {
-  enum class Kind : std::uint8_t { node_to_node, node_to_segment, obstacle, node_to_face };
+  enum class Kind : std::uint8_t { node_to_node, node_to_segment, obstacle, node_to_face, mortar };
   Kind kind = Kind::node_to_node;
   /// Node to segment and obstacle: the slave node's x and y dofs (subdomain, dof); node to
   /// node: the slave dof in slave[0]. Node to segment: the segment's a_x, a_y, b_x, b_y.
-  /// Node to face (3D): the slave's x and y dofs only, s and a, b its x and y (no sensitivity yet).
+  /// Node to face and mortar (3D): the slave's x and y dofs only, s its x and y (no sensitivity yet).
   /// Unused entries are {-1, -1}. slave[0] is the dof that carries the row's gap_field.
   std::array<std::array<int, 2>, 2> slave{{{-1, -1}, {-1, -1}}};
   std::array<std::array<int, 2>, 4> master{{{-1, -1}, {-1, -1}, {-1, -1}, {-1, -1}}};

@@ -136,21 +136,27 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
     for (const auto& segment : segments) segment_dofs.back().insert(segment_dofs.back().end(), segment.begin(), segment.end());
   }
   check_per_subdomain_lists(segment_dofs, ids, subdomains, "contactSegments");
-  std::vector<std::vector<int>> face_dofs;
-  for (const auto& faces : contact.master_faces) {
-    face_dofs.emplace_back();
-    for (const auto& face : faces) face_dofs.back().insert(face_dofs.back().end(), face.begin(), face.end());
-  }
-  check_per_subdomain_lists(face_dofs, ids, subdomains, "contactFaces");
-  const bool has_faces = std::any_of(contact.master_faces.begin(), contact.master_faces.end(),
-                                     [](const auto& list) { return !list.empty(); });
-  if (has_faces && !subdomains.empty() && subdomains.front().z.empty())
-    throw InputError("contactFaces: node-to-face contact needs Z (three dimensions); a plane problem takes "
-                     "contactSegments");
-  if (!(contact.search_distance > 0)) throw InputError("contactRadius: must be > 0");
   const auto any = [](const auto& lists) {
     return std::any_of(lists.begin(), lists.end(), [](const auto& list) { return !list.empty(); });
   };
+  for (const auto& [faces, name] : {std::pair{&contact.master_faces, "contactFaces"},
+                                    std::pair{&contact.slave_faces, "contactSlaveFaces"}}) {
+    std::vector<std::vector<int>> face_dofs;
+    for (const auto& list : *faces) {
+      face_dofs.emplace_back();
+      for (const auto& face : list) face_dofs.back().insert(face_dofs.back().end(), face.begin(), face.end());
+    }
+    check_per_subdomain_lists(face_dofs, ids, subdomains, name);
+    if (any(*faces) && !three_d)
+      throw InputError(std::string(name) + ": contact on faces needs Z (three dimensions); a plane problem takes "
+                       "contactSegments");
+  }
+  if (any(contact.slave_faces) && !any(contact.master_faces))
+    throw InputError("contactSlaveFaces: mortar contact needs the master faces too (contactFaces=)");
+  if (any(contact.slave_faces) && (any(contact.slave_dofs) || contact.obstacle))
+    throw InputError("contactSlaveFaces: the slave nodes of mortar contact are the corners of these faces; give "
+                     "contactSlave (node to face, obstacle) or contactSlaveFaces (mortar), not both");
+  if (!(contact.search_distance > 0)) throw InputError("contactRadius: must be > 0");
   if (any(contact.master_dofs) && (any(contact.master_segments) || any(contact.master_faces) || contact.obstacle))
     throw InputError("contactMaster: node-to-node contact cannot be combined with contactSegments, contactFaces or "
                      "obstacle in one problem (the slave dofs would belong to both)");

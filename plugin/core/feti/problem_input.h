@@ -44,6 +44,14 @@ struct ContactInput {
   /// another body within search_distance, p its closest point, n the face's unit normal:
   /// n.(u_p - u_slave) <= n.(x_slave - p), u_p interpolated linearly on the face.
   std::vector<std::vector<std::array<int, 9>>> master_faces;
+  /// Mortar contact (three dimensions): per subdomain the slave triangles, ordered like the
+  /// master faces (outward normal). Their corners are the slave nodes (slave_dofs then stays
+  /// empty), each with one row: the gap weighted by its shape function phi_j and integrated
+  /// over the slave surface that master faces of another body cover (projected along the
+  /// slave's normal, within search_distance), n_j the slave's mean normal reversed:
+  /// int phi_j n_j.(u_m - u_s) <= int phi_j n_j.(x_s - x_m), divided by int phi_j so that
+  /// the multiplier is a force as in the other rows. A uniform pressure passes exactly.
+  std::vector<std::vector<std::array<int, 9>>> slave_faces;
   double gap = 0;                             ///< node to node only
   /// Per subdomain, one value per dof (empty: none): a clearance added to the right-hand
   /// side of the contact row of each slave node, read at its slave dof (node to node) or

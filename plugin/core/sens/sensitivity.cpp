@@ -73,9 +73,9 @@ SensitivityProblem::SensitivityProblem(const FetiProblem& problem, const FetiRes
   if (state.lambda.size() != problem.dual_dimension() || state.u.size() != problem.inputs().size())
     throw InputError("P: the solution does not belong to this problem (call fetiSolve first)");
   for (const ContactRowGeometry& row : problem.constraints().geometry)
-    if (row.kind == ContactRowGeometry::Kind::node_to_face ||
+    if (row.kind == ContactRowGeometry::Kind::node_to_face || row.kind == ContactRowGeometry::Kind::mortar ||
         (row.kind == ContactRowGeometry::Kind::obstacle && problem.space_dimension() == 3))
-      throw InputError("P: has node-to-face or obstacle contact in three dimensions; the derivatives of those rows "
+      throw InputError("P: has node-to-face, mortar or obstacle contact in three dimensions; the derivatives of those rows "
                        "are not derived yet (node-to-node rows in 3D are)");
   if (problem.has_friction())
     throw InputError("P: has friction (friction= or slipBound=); the sensitivity analysis of a state with "
