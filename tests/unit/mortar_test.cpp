@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace ffeti {
 namespace {
 
@@ -12,7 +14,7 @@ constexpr double kTight = 1e-14;
 // The slave in the plane z = 0, its outward normal +z; masters above it face down.
 const Triangle3 kSlave{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}};
 
-TEST(Mortar, SlaveInsideAFacingMasterGivesTheMassMatrixAndTheGap) {
+TEST(Mortar, SlaveInsideAParallelMasterGivesTheMassMatrixAndTheGap) {
   const double h = 0.1;
   const Triangle3 master{{{-1, -1, h}, {-1, 3, h}, {3, -1, h}}};  // (b - a) x (c - a) points down
   const MortarIntegrals in = integrate_mortar_pair(kSlave, master);
@@ -38,16 +40,23 @@ TEST(Mortar, SlaveInsideAFacingMasterGivesTheMassMatrixAndTheGap) {
   }
 }
 
-TEST(Mortar, PartialOverlapIsClipped) {
-  // The master covers x <= 0.5 of the slave (and reaches beyond it elsewhere), tilted.
+TEST(Mortar, PartialOverlapIsClippedOnTheMastersPlane) {
+  // A tilted master whose edge x = 0.5, z = 0.2 runs across the slave; the slave is
+  // projected on the master's plane along its normal (0.2, 0, 3.5)/|.| (pointing down), so
+  // the slave's covered part is x <= 0.5 - 0.2 * 0.2 / 3.5 and it counts with the cosine
+  // of the tilt, the plane's area.
   const Triangle3 master{{{0.5, -1, 0.2}, {-3, -1, 0.4}, {0.5, 3, 0.2}}};
   const MortarIntegrals in = integrate_mortar_pair(kSlave, master);
-  const double covered = 0.5 - 0.5 * 0.5 * 0.5;  // the slave's part with x <= 0.5
+  const double x0 = 0.5 - 0.04 / 3.5, cosine = 3.5 / std::hypot(3.5, 0.2);
+  const double covered = (0.5 - (1 - x0) * (1 - x0) / 2) * cosine;
   EXPECT_NEAR(in.area, covered, kTight);
-  double total = 0;
-  for (const auto& row : in.D)
-    for (double v : row) total += v;
+  EXPECT_NEAR(in.normal[0], -0.2 / std::hypot(3.5, 0.2), kTight);
+  EXPECT_NEAR(in.normal[2], -cosine, kTight);
+  double total = 0, master_total = 0;
+  for (size_t j = 0; j < 3; ++j)
+    for (size_t k = 0; k < 3; ++k) total += in.D[j][k], master_total += in.M[j][k];
   EXPECT_NEAR(total, covered, kTight);
+  EXPECT_NEAR(master_total, covered, kTight);
   // The corner (1, 0) lies outside: its shape function is at most 0.5 on the covered part.
   double corner_weight = 0;
   for (double v : in.D[1]) corner_weight += v;
@@ -55,11 +64,12 @@ TEST(Mortar, PartialOverlapIsClipped) {
   EXPECT_LT(corner_weight, 0.5 * covered);
 }
 
-TEST(Mortar, DisjointOrEdgeOnMastersCoverNothing) {
+TEST(Mortar, DisjointOrEdgeOnSlavesCoverNothing) {
   const Triangle3 away{{{2, 2, 0.1}, {2, 3, 0.1}, {3, 2, 0.1}}};
   EXPECT_EQ(integrate_mortar_pair(kSlave, away).area, 0);
+  const Triangle3 master_below{{{-1, -1, -0.1}, {3, -1, -0.1}, {-1, 3, -0.1}}};
   const Triangle3 edge_on{{{0.2, 0.2, 0}, {0.4, 0.2, 0}, {0.3, 0.2, 1}}};
-  EXPECT_EQ(integrate_mortar_pair(kSlave, edge_on).area, 0);
+  EXPECT_EQ(integrate_mortar_pair(edge_on, master_below).area, 0);
 }
 
 }  // namespace

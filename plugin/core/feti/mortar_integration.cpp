@@ -43,28 +43,29 @@ std::vector<Point2> clip_left_of(const std::vector<Point2>& polygon, const Point
 
 MortarIntegrals integrate_mortar_pair(const Triangle3& slave, const Triangle3& master) {
   MortarIntegrals out;
-  // Coordinates in the slave's plane: e1 along its first edge, e2 = n x e1, so that the
-  // slave runs counter-clockwise.
-  const Point3 ab = minus(slave[1], slave[0]), normal_area = cross(ab, minus(slave[2], slave[0]));
-  const double twice_slave_area = std::sqrt(dot(normal_area, normal_area)), edge = std::sqrt(dot(ab, ab));
-  if (!(twice_slave_area > 0)) return out;
-  const Point3 n{normal_area[0] / twice_slave_area, normal_area[1] / twice_slave_area, normal_area[2] / twice_slave_area};
+  // Coordinates in the master's plane: e1 along its first edge, e2 = n x e1, so that the
+  // master runs counter-clockwise.
+  const Point3 ab = minus(master[1], master[0]), normal_area = cross(ab, minus(master[2], master[0]));
+  const double twice_master_area = std::sqrt(dot(normal_area, normal_area)), edge = std::sqrt(dot(ab, ab));
+  if (!(twice_master_area > 0)) return out;
+  const Point3 n{normal_area[0] / twice_master_area, normal_area[1] / twice_master_area,
+                 normal_area[2] / twice_master_area};
   const Point3 e1{ab[0] / edge, ab[1] / edge, ab[2] / edge}, e2 = cross(n, e1);
   const auto in_plane = [&](const Point3& p) {
-    const Point3 d = minus(p, slave[0]);
+    const Point3 d = minus(p, master[0]);
     return Point2{dot(d, e1), dot(d, e2)};
   };
+  const std::array<Point2, 3> m2{in_plane(master[0]), in_plane(master[1]), in_plane(master[2])};
   const std::array<Point2, 3> s2{in_plane(slave[0]), in_plane(slave[1]), in_plane(slave[2])};
-  std::array<Point2, 3> m2{in_plane(master[0]), in_plane(master[1]), in_plane(master[2])};
-  const double twice_master_area = cross2(m2[0], m2[1], m2[2]);
-  // A master facing the slave projects clockwise; edge-on (no area) it covers nothing.
-  if (std::abs(twice_master_area) <= 1e-12 * twice_slave_area) return out;
-  std::array<size_t, 3> order{0, 1, 2};  // counter-clockwise corners of the projected master
-  if (twice_master_area < 0) std::swap(order[1], order[2]);
-  const std::array<Point2, 3> m2ccw{m2[order[0]], m2[order[1]], m2[order[2]]};
+  const double twice_slave_area = cross2(s2[0], s2[1], s2[2]);
+  // A slave facing the master projects clockwise; edge-on (no area) it covers nothing.
+  if (std::abs(twice_slave_area) <= 1e-12 * twice_master_area) return out;
+  out.normal = n;
+  std::array<size_t, 3> order{0, 1, 2};  // counter-clockwise corners of the projected slave
+  if (twice_slave_area < 0) std::swap(order[1], order[2]);
 
-  std::vector<Point2> overlap(s2.begin(), s2.end());
-  for (size_t e = 0; e < 3 && overlap.size() >= 3; ++e) overlap = clip_left_of(overlap, m2ccw[e], m2ccw[(e + 1) % 3]);
+  std::vector<Point2> overlap{s2[order[0]], s2[order[1]], s2[order[2]]};
+  for (size_t e = 0; e < 3 && overlap.size() >= 3; ++e) overlap = clip_left_of(overlap, m2[e], m2[(e + 1) % 3]);
   if (overlap.size() < 3) return out;
 
   constexpr double kInside = 2.0 / 3.0, kOutside = 1.0 / 6.0;  // the 3-point rule, degree 2
@@ -77,7 +78,7 @@ MortarIntegrals integrate_mortar_pair(const Triangle3& slave, const Triangle3& m
       const std::array<double, 3> w{q == 0 ? kInside : kOutside, q == 1 ? kInside : kOutside, q == 2 ? kInside : kOutside};
       const Point2 x{w[0] * p0[0] + w[1] * p1[0] + w[2] * p2[0], w[0] * p0[1] + w[1] * p1[1] + w[2] * p2[1]};
       const std::array<double, 3> phi = barycentric(s2, twice_slave_area, x);
-      const std::array<double, 3> psi = barycentric(m2, twice_master_area, x);
+      const std::array<double, 3> psi = barycentric(m2, twice_master_area, x);  // both signed
       Point3 on_slave{}, on_master{};
       for (size_t c = 0; c < 3; ++c)
         for (size_t d = 0; d < 3; ++d) {
