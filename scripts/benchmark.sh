@@ -17,7 +17,8 @@
 #   ./scripts/benchmark.sh friction        Cattaneo-Mindlin and a block on a slope: tractions, stick/slip,
 #                                          the Coulomb fixed point's cost against frictionless (~1 min)
 #   ./scripts/benchmark.sh three-dimensions  the model problem as two cubes up to 1.5 million unknowns,
-#                                          factor kinds in 3D, against 2D (~3 min)
+#                                          factor kinds in 3D, against 2D, Hertz for a sphere and its
+#                                          picture (~3 min; "three-dimensions --sphere": the sphere alone)
 #   ./scripts/benchmark.sh                 all
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -38,7 +39,7 @@ case "${1:-all}" in
   hard-cases) /usr/bin/python3 "$root/scripts/hard_cases_table.py" ;;
   accuracy) /usr/bin/python3 "$root/scripts/accuracy_benchmark.py" ;;
   friction) /usr/bin/python3 "$root/scripts/friction_benchmark.py" ;;
-  three-dimensions) /usr/bin/python3 "$root/scripts/three_dimensions_benchmark.py" ;;
+  three-dimensions) /usr/bin/python3 "$root/scripts/three_dimensions_benchmark.py" "${@:2}" ;;
   all) /usr/bin/python3 "$root/scripts/model_problem_benchmark.py"
        /usr/bin/python3 "$root/scripts/parallel_benchmark.py"
        /usr/bin/python3 "$root/scripts/hertz_benchmark.py"

@@ -3,18 +3,27 @@
 two cubes at fixed H/h against the undivided cubes' active set solution, the Hessian count
 and times as h falls to a problem above a million unknowns, CHOLMOD's simplicial against
 supernodal factors on 3D subdomains, and the 2D model problem of about the same size beside
-it. Writes docs/results/three-dimensions.md and its plot from one run on this machine."""
+it; Hertz for a sphere (edp/hertz-sphere.edp) with a picture of its stress and contact
+pressure. Writes docs/results/three-dimensions.md and its plots from one run on this machine
+(--sphere: the sphere's part alone, the other tables kept; --render: from the CSVs, no run)."""
 import argparse
+import datetime
+import math
 import os
 import tempfile
+import time
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.tri as mtri  # noqa: E402
+from matplotlib.collections import PolyCollection  # noqa: E402
+from matplotlib.colors import LogNorm  # noqa: E402
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
-from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, listing, machine_line, markdown_table, read_csv,  # noqa: E402
-                         run, save_page, span, write_csv)
+from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, listing, load_average, machine, machine_line,  # noqa: E402
+                         markdown_table, read_csv, run, save_page, span, write_csv)
 
 PAGE = "three-dimensions"
 HH = 8
@@ -23,6 +32,8 @@ REFERENCE_UP_TO = 16  # the undivided cubes' sparse factorization grows fast in 
 FACTOR_CASES = [(32, 16), (64, 16)]
 PLANE = (640, 64)  # the 2D model problem (n, H/h) of about the size of the 3D n = 64
 SPHERE_SIZES = [0.2, 0.1, 0.07]  # mesh size at the contact (mm), edp/hertz-sphere.edp
+PICTURE_H = 0.1  # the sphere run whose fields the picture draws (its gmsh file)
+NU = 0.3  # the sphere's Poisson ratio, for Hertz's stress below the contact
 
 CUBES = [("n", "n"), ("subdomains", "subdomains"), ("unknowns", "primal"), ("dual", "dual"), ("couples", "couples"),
          ("active", "active"), ("Hessian mult.", "hessian"), ("outer", "outer"),
@@ -41,6 +52,10 @@ SPHERE = [("h [mm]", "h"), ("unknowns", "unknowns"), ("couples", "couples"), ("a
           ("a [mm]", ("a", ".4f")), ("a Hertz", ("a_hertz", ".4f")), ("error a", ("a_relerr", ".2%")),
           ("p0 [MPa]", ("p0", ".2f")), ("p0 Hertz", ("p0_hertz", ".2f")), ("error p0", ("p0_relerr", ".2%")),
           ("L2 error of p", ("pressure_l2_relerr", ".1%")),
+          ("max von Mises [MPa]", ("von_mises_max", ".1f")),
+          ("/ p0 Hertz", lambda r: f"{f(r, 'von_mises_max') / f(r, 'p0_hertz'):.3f}"),
+          ("its depth z / a Hertz", lambda r: f"{f(r, 'von_mises_max_z') / f(r, 'a_hertz'):.2f}"),
+          ("its r / a Hertz", lambda r: f"{peak_radius(r) / f(r, 'a_hertz'):.2f}"),
           ("force balance", ("balance_error", ".0e")), ("Hessian mult.", "hessian"),
           ("solve [s]", ("time_solve", ".2f")), ("total [s]", ("time_total", ".2f")), ("status", "status")]
 PLANE_COLUMNS = [("problem", "problem"), ("unknowns", "primal"), ("subdomains", "subdomains"),
@@ -49,10 +64,82 @@ PLANE_COLUMNS = [("problem", "problem"), ("unknowns", "primal"), ("subdomains", 
                  ("peak MB", ("process_peak_mb", ".0f"))]
 
 
+def peak_radius(row):
+    """The distance from the axis of the centroid of a sphere run's most stressed tetrahedron."""
+    return math.hypot(f(row, "von_mises_max_x"), f(row, "von_mises_max_y"))
+
+
+def run_sphere():
+    """The Hertz sphere at each mesh size: its RESULT rows, the pressure per contact row, and
+    from the PICTURE_H run's gmsh file the body's surface for the picture; each into its CSV,
+    with the part's own run row (sphere-run.csv: --sphere re-runs this part alone)."""
+    begun = begin_run()
+    sphere, profile = [], []
+    with tempfile.TemporaryDirectory() as scratch:
+        for h in SPHERE_SIZES:
+            table = os.path.join(scratch, f"sphere-{h}.csv")
+            views = ["-gmsh", os.path.join(scratch, "sphere.msh")] if h == PICTURE_H else []
+            sphere.append(run("hertz-sphere.edp", "-h", h, "-meshes", os.path.join(ROOT, "meshes"),
+                              "-table", table, *views)["RESULT"][0])
+            with open(table) as rows:
+                header = rows.readline().strip().split(",")
+                profile += [dict(h=h, **dict(zip(header, line.strip().split(",")))) for line in rows]
+        nodes, faces = surface(os.path.join(scratch, "sphere.msh"))
+    write_csv(PAGE, "sphere", sphere)
+    write_csv(PAGE, "sphere-pressure", profile)
+    write_csv(PAGE, "sphere-surface-nodes", nodes)
+    write_csv(PAGE, "sphere-surface-faces", faces)
+    write_csv(PAGE, "sphere-run", [dict(machine(), date=datetime.datetime.now().isoformat(timespec="seconds"),
+                                        elapsed_s=repr(time.time() - begun["started"]),
+                                        load_at_start=begun["load_at_start"], load_at_end=load_average())])
+
+
+def surface(path):
+    """The body's surface from the gmsh file edp/hertz-sphere.edp writes (format 2.2, ASCII):
+    the faces of one tetrahedron only, each with its tetrahedron's von Mises stress, the 4th
+    vertex (to orient it outwards) and whether it is a contact-face triangle; the nodes they
+    use with their displacement and contact pressure. Returns (nodes, faces) as CSV rows."""
+    with open(path) as file:
+        lines = file.read().split("\n")
+    sections, k = {}, 0
+    while k < len(lines):  # each $Section's lines up to its $EndSection (the header lines included)
+        if lines[k].startswith("$") and not lines[k].startswith("$End"):
+            end = lines.index("$End" + lines[k][1:], k)
+            sections[lines[k][1:]] = lines[k + 1:end]
+            k = end
+        k += 1
+    coordinates = {int(w[0]): w[1:4] for w in (line.split() for line in sections["Nodes"][1:])}
+    tets, triangles = {}, {}
+    for w in (line.split() for line in sections["Elements"][1:]):
+        (tets if w[1] == "4" else triangles)[int(w[0])] = [int(v) for v in w[5:]]
+    data = lambda name: {int(w[0]): w[1:] for w in (line.split() for line in sections[name][8:])}  # noqa: E731
+    displacement, von_mises, corners = data("NodeData"), data("ElementData"), data("ElementNodeData")
+    pressure = {}
+    for element, values in corners.items():  # "3 p1 p2 p3": the corners' pressures
+        pressure.update(zip(triangles[element], values[1:]))
+    seen = {}
+    for element, vertices in tets.items():
+        for opposite in range(4):
+            face = tuple(sorted(vertices[:opposite] + vertices[opposite + 1:]))
+            seen[face] = None if face in seen else (element, vertices[opposite])
+    contact = {tuple(sorted(t)) for t in triangles.values()}
+    faces = [dict(n1=face[0], n2=face[1], n3=face[2], opposite=owner[1], von_mises=von_mises[owner[0]][0],
+                  contact=int(face in contact)) for face, owner in seen.items() if owner]
+    used = sorted({n for face in faces for n in (face["n1"], face["n2"], face["n3"], face["opposite"])})
+    nodes = [dict(node=n, x=coordinates[n][0], y=coordinates[n][1], z=coordinates[n][2], ux=displacement[n][0],
+                  uy=displacement[n][1], uz=displacement[n][2], pressure=pressure.get(n, "")) for n in used]
+    return nodes, faces
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--render", action="store_true", help="re-render the page from its CSVs, no run")
-    if not parser.parse_args().render:
+    parser.add_argument("--sphere", action="store_true",
+                        help="re-run only the Hertz sphere (tables and picture), keep the other tables")
+    options = parser.parse_args()
+    if options.sphere and not options.render:
+        run_sphere()
+    elif not options.render:
         begun = begin_run()
         cubes = [run("model-problem-3d.edp", "-n", n, "-Hh", HH, "-reference", 0)["RESULT"][0] for n in SIZES]
         reference = [run("model-problem-3d.edp", "-n", n, "-Hh", HH, "-tol", 1e-8)["RESULT"][0]
@@ -60,17 +147,7 @@ def main():
         factors = [run("model-problem-3d.edp", "-n", n, "-Hh", hh, "-reference", 0, "-factor", kind)["RESULT"][0]
                    for n, hh in FACTOR_CASES for kind in ("simplicial", "supernodal")]
         plane = run("model-problem.edp", "-n", PLANE[0], "-Hh", PLANE[1])["RESULT"][0]
-        sphere, profile = [], []
-        with tempfile.TemporaryDirectory() as scratch:
-            for h in SPHERE_SIZES:
-                table = os.path.join(scratch, f"sphere-{h}.csv")
-                sphere.append(run("hertz-sphere.edp", "-h", h, "-meshes", os.path.join(ROOT, "meshes"),
-                                  "-table", table)["RESULT"][0])
-                with open(table) as rows:
-                    header = rows.readline().strip().split(",")
-                    profile += [dict(h=h, **dict(zip(header, line.strip().split(",")))) for line in rows]
-        write_csv(PAGE, "sphere", sphere)
-        write_csv(PAGE, "sphere-pressure", profile)
+        run_sphere()
         three = next(r for r in cubes if r["n"] == "64")
         write_csv(PAGE, "cubes", cubes)
         write_csv(PAGE, "reference", reference)
@@ -122,10 +199,131 @@ def write_profile(sphere, profile):
     plt.close(fig)
 
 
+def hertz_axis_maximum(nu):
+    """Hertz's largest von Mises stress under a circular contact, over p0, and its depth over a:
+    on the axis sigma_r = sigma_theta, so the von Mises stress is |sigma_r - sigma_z| there, with
+    sigma_z / p0 = -1 / (1 + s^2), sigma_r / p0 = -(1 + nu) (1 - s atan(1/s)) + 1 / (2 (1 + s^2)),
+    s = z / a (Johnson, Contact Mechanics, eq. 3.45). Scanned at steps of 1e-4 a."""
+    best = (0.0, 0.0)
+    for i in range(1, 30001):
+        s = i / 10000
+        sz = -1 / (1 + s * s)
+        sr = -(1 + nu) * (1 - s * math.atan(1 / s)) + 0.5 / (1 + s * s)
+        best = max(best, (abs(sr - sz), s))
+    return best
+
+
+def write_fields(row, nodes, faces):
+    """The PICTURE_H run's fields, displacements at true scale: the quarter sphere's visible
+    surface coloured by the von Mises stress (log scale), the symmetry plane y = 0 near the
+    contact (linear scale) and the contact pressure on the contact face."""
+    a, p0 = f(row, "a_hertz"), f(row, "p0_hertz")
+    at = {n["node"]: n for n in nodes}
+
+    def moved(node):
+        n = at[node]
+        return [f(n, "x") + f(n, "ux"), f(n, "y") + f(n, "uy"), f(n, "z") + f(n, "uz")]
+
+    def minus(p, q):
+        return [p[i] - q[i] for i in range(3)]
+
+    def dot(p, q):
+        return sum(p[i] * q[i] for i in range(3))
+
+    vm_max = f(row, "von_mises_max")
+    fig = plt.figure(figsize=(18, 5.8))
+    # Left: the body is convex, so the faces turned towards the viewer are exactly the visible ones.
+    elev, azim = 15, -125
+    toward = [math.cos(math.radians(elev)) * math.cos(math.radians(azim)),
+              math.cos(math.radians(elev)) * math.sin(math.radians(azim)), math.sin(math.radians(elev))]
+    polygons, values = [], []
+    for face in faces:
+        p = [moved(face[k]) for k in ("n1", "n2", "n3")]
+        u, v = minus(p[1], p[0]), minus(p[2], p[0])
+        normal = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+        if dot(normal, minus(moved(face["opposite"]), p[0])) > 0:
+            normal = [-c for c in normal]
+        if dot(normal, toward) > 0:
+            polygons.append(p)
+            values.append(f(face, "von_mises"))
+    log_norm = LogNorm(vmin=min(values), vmax=vm_max)
+    ax = fig.add_subplot(1, 3, 1, projection="3d")
+    ax.add_collection3d(Poly3DCollection(polygons, facecolors=plt.cm.viridis(log_norm(values)), edgecolors="none"))
+    ax.set_xlim(0, 10)
+    ax.set_ylim(0, 10)
+    ax.set_zlim(0, 10)
+    ax.set_box_aspect((1, 1, 1))
+    ax.view_init(elev, azim)
+    ax.set_xlabel("x [mm]")
+    ax.set_ylabel("y [mm]")
+    ax.set_zlabel("z [mm]")
+    ax.set_title("The quarter sphere from the side of its symmetry planes:\nvon Mises stress, log scale",
+                 fontsize=10)
+    bar = fig.colorbar(plt.cm.ScalarMappable(norm=log_norm, cmap="viridis"), ax=ax, shrink=0.7, pad=0.1,
+                       label="von Mises stress [MPa]")
+    bar.set_ticks([t for t in (1, 2, 5, 10, 20, 50, 100) if min(values) <= t <= vm_max])
+    bar.set_ticklabels([t for t in (1, 2, 5, 10, 20, 50, 100) if min(values) <= t <= vm_max])
+    # Middle: the symmetry plane y = 0 near the contact, where Hertz's maximum lies.
+    ax = fig.add_subplot(1, 3, 2)
+    linear = plt.Normalize(0, vm_max)
+    plane = [face for face in faces if all(abs(f(at[face[k]], "y")) < 1e-9 for k in ("n1", "n2", "n3"))]
+    ax.add_collection(PolyCollection([[(moved(face[k])[0], moved(face[k])[2]) for k in ("n1", "n2", "n3")]
+                                      for face in plane],
+                                     facecolors=plt.cm.viridis(linear([f(face, "von_mises") for face in plane])),
+                                     edgecolors="face", linewidths=0.1))
+    xs = [2.5 * a * i / 200 for i in range(201)]
+    ax.plot(xs, [10 - math.sqrt(100 - x * x) for x in xs], "--", color="tab:orange", lw=1, label="undeformed surface")
+    peak, depth = hertz_axis_maximum(NU)
+    ax.plot([0], [depth * a], "P", color="white", mec="black", ms=10, clip_on=False,
+            label=f"Hertz: {peak:.2f} p0 at z = {depth:.2f} a")
+    r_max = peak_radius(row)
+    ax.plot([r_max], [f(row, "von_mises_max_z")], "X", color="red", mec="black", ms=9,
+            label=f"ffeti: {vm_max / p0:.2f} p0 (centroid at r, z)")
+    ax.set_xlim(0, 2.5 * a)
+    ax.set_ylim(0, 2 * a)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (r for the ffeti marker) [mm]")
+    ax.set_ylabel("z [mm]")
+    ax.legend(fontsize=8, loc="upper right", framealpha=0.9)
+    ax.set_title(f"The symmetry plane y = 0 near the contact: von Mises stress\n"
+                 f"(Hertz: a = {a:.2f} mm, p0 = {p0:.1f} MPa)", fontsize=10)
+    fig.colorbar(plt.cm.ScalarMappable(norm=linear, cmap="viridis"), ax=ax, label="von Mises stress [MPa]")
+    # Right: the contact pressure at the contact face's nodes, Hertz's contact circle over it.
+    ax = fig.add_subplot(1, 3, 3)
+    contact = [face for face in faces if face["contact"] == "1"]
+    index = {n: i for i, n in enumerate(sorted({face[k] for face in contact for k in ("n1", "n2", "n3")}))}
+    ordered = sorted(index, key=index.get)
+    triangulation = mtri.Triangulation([f(at[n], "x") for n in ordered], [f(at[n], "y") for n in ordered],
+                                       [[index[face[k]] for k in ("n1", "n2", "n3")] for face in contact])
+    shading = ax.tripcolor(triangulation, [f(at[n], "pressure") for n in ordered], shading="gouraud", cmap="viridis")
+    angles = [math.pi / 2 * i / 100 for i in range(101)]
+    ax.plot([a * math.cos(t) for t in angles], [a * math.sin(t) for t in angles], "--", color="tab:orange", lw=1,
+            label=f"Hertz's contact radius a = {a:.2f} mm")
+    ax.set_xlim(0, 1.5 * a)
+    ax.set_ylim(0, 1.5 * a)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [mm]")
+    ax.set_ylabel("y [mm]")
+    ax.legend(fontsize=8, loc="upper right")
+    ax.set_title("Contact pressure on the contact face\n(its nodes, projected on the plane z = 0)", fontsize=10)
+    fig.colorbar(shading, ax=ax, label="contact pressure [MPa]")
+    fig.suptitle(f"Sphere on a rigid plane, h = {row['h']} mm: the body drawn deformed, displacements at true scale "
+                 "(magnification 1)")
+    fig.subplots_adjust(left=0.02, right=0.97, bottom=0.1, top=0.84, wspace=0.25)
+    fig.savefig(os.path.join(OUT, "three-dimensions-sphere-fields.png"), dpi=110)
+    plt.close(fig)
+
+
 def render():
     cubes, reference, factors, plane, sphere, profile = (
         read_csv(PAGE, t) for t in ("cubes", "reference", "factors", "plane", "sphere", "sphere-pressure"))
     write_profile(sphere, profile)
+    pictured = next(r for r in sphere if float(r["h"]) == PICTURE_H)
+    write_fields(pictured, read_csv(PAGE, "sphere-surface-nodes"), read_csv(PAGE, "sphere-surface-faces"))
+    sphere_run = read_csv(PAGE, "sphere-run")[0]
+    peak, depth = hertz_axis_maximum(NU)
+    a_p, p0_p = f(pictured, "a_hertz"), f(pictured, "p0_hertz")
+    r_p = peak_radius(pictured)
     run_row = read_csv(PAGE, "run")[0]
     write_plot(cubes)
     counts = [f(r, "hessian") for r in cubes]
@@ -147,7 +345,8 @@ def render():
         "What exists in 3D so far: a third coordinate through the plugin (`fetiSetup(..., Z=)`), the six",
         "rigid modes of 3D elasticity among the kernel candidates, gluing, node-to-node contact on",
         "matching faces, node-to-face contact and rigid planes, sensitivities of node-to-node rows;",
-        "ffeti-solve's 3D meshes, VTK output and a mortar contact are not done (issue 29).",
+        "ffeti-solve's 3D meshes, VTK output and a mortar contact are not done (issue 29); the Hertz sphere",
+        "writes its fields for ParaView and gmsh when asked (`-vtk`, `-gmsh`).",
         "`edp/model-problem-3d.edp`: two unit cubes,",
         "−Δu = f with the 2D problem's data extruded along z (K = 2 × the P1 Laplacian, f = −3 for",
         "y > 0.75 in the first cube, −1 for y < 0.25 in the second), u = 0 on x = 0, the second cube",
@@ -205,6 +404,37 @@ def render():
         f"{listing([r['h'] for r in sphere])} mm: within the 5 % aimed at and falling with h; the profile's L2 error",
         f"is {listing([f(r, 'pressure_l2_relerr') for r in sphere], '.1%')}. The contact forces",
         f"balance the load to {span([f(r, 'balance_error') for r in sphere], '.0e')}.",
+        "",
+        f"The rows above and the picture below come from one run of this section "
+        f"(`three_dimensions_benchmark.py --sphere` runs it alone): {sphere_run['date']}, "
+        f"{float(sphere_run['elapsed_s']):.0f} s, load average {float(sphere_run['load_at_start']):.1f} as it started, "
+        f"{float(sphere_run['load_at_end']):.1f} as it ended.",
+        "",
+        "![sphere: von Mises stress and contact pressure](three-dimensions-sphere-fields.png)",
+        "",
+        f"The run at h = {pictured['h']} mm, drawn from the gmsh file it wrote (`-gmsh`; `-vtk` writes the same",
+        "fields for ParaView), the body deformed at true scale (magnification 1: the largest displacement is",
+        f"{max(math.hypot(f(n, 'ux'), f(n, 'uy'), f(n, 'uz')) for n in read_csv(PAGE, 'sphere-surface-nodes')):.2f} mm,"
+        " on a 10 mm radius).",
+        "Left, the von Mises stress per tetrahedron on the surface of the quarter sphere, seen from the",
+        "side of its two symmetry planes, on a log scale; middle, the symmetry plane y = 0 near the",
+        "contact on a linear scale, with Hertz's maximum (the white cross) and the largest stress of the",
+        "run (the red cross, at its tetrahedron's centroid's distance r from the axis and depth z); right,",
+        "the contact pressure at the contact face's nodes with Hertz's contact circle. Raw data: the",
+        f"surface's nodes and faces, [{PAGE}-sphere-surface-nodes.csv]({PAGE}-sphere-surface-nodes.csv),",
+        f"[{PAGE}-sphere-surface-faces.csv]({PAGE}-sphere-surface-faces.csv).",
+        "",
+        f"Reading: Hertz's von Mises stress (ν = {NU}) is largest on the axis, below the surface, at",
+        f"z = {depth:.2f} a with {peak:.3f} p0 (computed from his stresses on the axis, Johnson eq. 3.45). At",
+        f"h = {pictured['h']} mm the largest von Mises stress of the run is {f(pictured, 'von_mises_max'):.1f} MPa = "
+        f"{f(pictured, 'von_mises_max') / p0_p:.3f} p0, in the tetrahedron",
+        f"whose centroid lies at z = {f(pictured, 'von_mises_max_z'):.2f} mm = {f(pictured, 'von_mises_max_z') / a_p:.2f} a,"
+        f" r = {r_p:.2f} mm = {r_p / a_p:.2f} a from the axis",
+        f"(a and p0 Hertz's). Over h = {listing([r['h'] for r in sphere])} mm the largest value is",
+        f"{listing([f(r, 'von_mises_max') / f(r, 'p0_hertz') for r in sphere], '.3f')} p0 at depth",
+        f"{listing([f(r, 'von_mises_max_z') / f(r, 'a_hertz') for r in sphere], '.2f')} a and",
+        f"r = {listing([peak_radius(r) / f(r, 'a_hertz') for r in sphere], '.2f')} a:"
+        " a stress per tetrahedron, read at tetrahedra of size h.",
         "",
         "## Simplicial or supernodal factors for 3D subdomains",
         "",
