@@ -5,9 +5,10 @@
 // Sphere: the lower half of radius R centred at (0, 0, R), quarter x >= 0, y >= 0, touching
 // the block's top z = 0 at the origin; cut at z = zc: volumes 101 (below, the contact side),
 // 102. Surfaces: 1 its plane x = 0, 2 its plane y = 0, 3 the cut z = R (the load), 4 the
-// spherical surface below zc (the contact).
+// spherical surface below zc (the contact), 5 the rest of its surface (free).
 // Block [0, W] x [0, W] x [-D, 0], cut at x = W/2: volumes 201 (under the contact), 202.
-// Surfaces: 11 top (the contact), 12 x = 0, 13 y = 0, 14 bottom.
+// Surfaces: 11 top (the contact), 12 x = 0, 13 y = 0, 14 bottom, 15 x = W and y = W (free).
+// Every boundary face is in a physical surface: FreeFEM's gmshload3 needs the whole boundary.
 // The two bodies are built and fragmented apart, so that the sphere's lowest point and the
 // block's corner at the origin stay two nodes (bodies share no node).
 SetFactory("OpenCASCADE");
@@ -39,6 +40,10 @@ top[] = Surface In BoundingBox{-e, -e, -e, W + e, W + e, e};
 bx[] = Surface In BoundingBox{-e, -e, -D - e, e, W + e, e};
 by[] = Surface In BoundingBox{-e, -e, -D - e, W + e, e, e};
 bottom[] = Surface In BoundingBox{-e, -e, -D - e, W + e, W + e, -D + e};
+free[] = CombinedBoundary{ Volume{low[], high[]}; };
+free[] -= {sx[], sy[], st[], contact[]};
+sides[] = CombinedBoundary{ Volume{left[], right[]}; };
+sides[] -= {top[], bx[], by[], bottom[]};
 Physical Volume(101) = {low[]};
 Physical Volume(102) = {high[]};
 Physical Volume(201) = {left[]};
@@ -47,10 +52,12 @@ Physical Surface(1) = {sx[]};
 Physical Surface(2) = {sy[]};
 Physical Surface(3) = {st[]};
 Physical Surface(4) = {contact[]};
+Physical Surface(5) = {free[]};
 Physical Surface(11) = {top[]};
 Physical Surface(12) = {bx[]};
 Physical Surface(13) = {by[]};
 Physical Surface(14) = {bottom[]};
+Physical Surface(15) = {sides[]};
 // ---- mesh size: hc within `zone` of the contact point, growing with the distance to R/4 ----
 Field[1] = MathEval;
 Field[1].F = Sprintf("Min(%g, %g + 0.4 * Max(0, Sqrt(x * x + y * y + z * z) - %g))", R / 4, hc, zone);
