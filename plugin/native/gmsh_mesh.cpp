@@ -112,7 +112,8 @@ std::vector<Element> GmshMesh::elements(int dim, int group, int partition, int t
   }
   if (result.empty())
     throw InputError(path_ + ": physical " + dimension_word(dim) + " " + std::to_string(group) + " has no " +
-                     (type == kTriangle3 ? "triangles" : "tetrahedra") + (partition > 0 ? " in partition " + std::to_string(partition) : std::string()));
+                     (type == kTriangle3 ? "triangles" : "tetrahedra") +
+                     (partition > 0 ? " in partition " + std::to_string(partition) : std::string()));
   return result;
 }
 
