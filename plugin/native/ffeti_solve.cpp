@@ -54,11 +54,14 @@ void check_outputs_writable(const ProblemFile& problem) {
   }
 }
 
-/// The likeliest cause here of an inaccurate answer (a plane stiffness singular beyond the
-/// rigid modes its kernel check found): the rows' components taken in the other order (a
-/// .pro whose FunctionSpace declares the y displacement first), which leaves the rotation
-/// no rigid mode of the matrix. Empty for scalar problems.
+/// The likeliest cause here of an inaccurate answer (a stiffness singular beyond the rigid
+/// modes its kernel check found): the rows' components taken in another order (a .pro
+/// whose FunctionSpaces declare the y displacement first), which leaves the rotations no
+/// rigid modes of the matrix. Empty for scalar problems.
 std::string component_order_hint(const ProblemFile& problem) {
+  if (problem.components == 3)
+    return "; ffeti-solve takes components 0, 1, 2 (x, y, z) from a node's first, second and third basis functions: "
+           "a .pro declaring them in another order swaps them";
   return problem.components == 2 ? "; ffeti-solve takes component 0 (x) from a node's first basis function and 1 (y) "
                                    "from its second: a .pro declaring y before x swaps them"
                                  : "";
@@ -106,8 +109,8 @@ int run(const std::string& problem_path, const std::shared_ptr<const Communicato
     if (!converged) return;
     const NodalResults nodal = nodal_results(problem, *mesh, solution, contact);
     if (!out.views.empty()) write_views(resolve(problem, out.views), problem, *mesh, nodal);
-    if (!out.table.empty()) write_table(resolve(problem, out.table), *mesh, nodal);
-    if (!out.stress_table.empty()) write_stress_table(resolve(problem, out.stress_table), nodal);
+    if (!out.table.empty()) write_table(resolve(problem, out.table), problem, *mesh, nodal);
+    if (!out.stress_table.empty()) write_stress_table(resolve(problem, out.stress_table), problem, nodal);
     if (!out.getdp_solution.empty()) write_getdp_solution(resolve(problem, out.getdp_solution), problem, solution);
   });
   // The applied load per component, summed over every subdomain's right-hand side: a load
@@ -119,7 +122,7 @@ int run(const std::string& problem_path, const std::shared_ptr<const Communicato
       load[in.component.empty() ? 0 : static_cast<size_t>(in.component[static_cast<size_t>(i)])] += in.f[i];
   std::ostringstream load_report;
   load_report.precision(10);
-  for (size_t c = 0; c < load.size(); ++c) load_report << " load_" << (c == 0 ? "x" : "y") << "=" << comm->sum(load[c]);
+  for (size_t c = 0; c < load.size(); ++c) load_report << " load_" << "xyz"[c] << "=" << comm->sum(load[c]);
   const std::string rank_report = format_rank_report(feti);
   if (comm->rank() == 0) {
     std::cout << rank_report << "RESULT " << format_report(feti, &result) << load_report.str() << std::endl;

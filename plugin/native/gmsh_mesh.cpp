@@ -5,12 +5,14 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <sstream>
 
 namespace ffeti::native {
 namespace {
 
-constexpr int kLine2 = 1, kTriangle3 = 2;  // gmsh element types
+constexpr int kLine2 = 1, kTriangle3 = 2, kTetrahedron4 = 4;  // gmsh element types
 
 /// gmsh reports errors by throwing (its API), sometimes as std::string.
 template <class Step>
@@ -32,7 +34,11 @@ std::string group_list(int dim) {
   return list.empty() ? "none" : list;
 }
 
-const char* dimension_word(int dim) { return dim == 0 ? "point" : dim == 1 ? "curve" : "surface"; }
+const char* dimension_word(int dim) {
+  return dim == 0 ? "point" : dim == 1 ? "curve" : dim == 2 ? "surface" : "volume";
+}
+
+const char* element_word(int type) { return type == kTriangle3 ? "3-node triangles" : "4-node tetrahedra"; }
 
 }  // namespace
 
@@ -50,7 +56,11 @@ GmshMesh::GmshMesh(const std::string& path) : path_(path) {
     gmsh::model::mesh::getNodes(tags, coordinates, parametric, -1, -1, false, false);
     if (tags.empty()) throw InputError(path + ": the mesh has no nodes (not a mesh file, or not meshed)");
     positions_.reserve(tags.size());
-    for (size_t i = 0; i < tags.size(); ++i) positions_[tags[i]] = {coordinates[3 * i], coordinates[3 * i + 1]};
+    for (size_t i = 0; i < tags.size(); ++i)
+      positions_[tags[i]] = {coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2]};
+    gmsh::vectorpair groups;
+    gmsh::model::getPhysicalGroups(groups);
+    for (const auto& [dim, tag] : groups) dimension_ = std::max(dimension_, dim);
   } catch (...) {
     gmsh::finalize();  // the destructor does not run for a constructor that throws
     throw;
@@ -61,7 +71,7 @@ GmshMesh::~GmshMesh() {
   gmsh::finalize();
 }
 
-std::array<double, 2> GmshMesh::position(NodeTag node) const {
+std::array<double, 3> GmshMesh::position(NodeTag node) const {
   const auto found = positions_.find(node);
   if (found == positions_.end())
     throw InputError(path_ + ": node " + std::to_string(node) + " is not in the mesh");
@@ -76,33 +86,70 @@ void GmshMesh::require_group(int dim, int group) const {
                      " (the mesh has " + group_list(dim) + ")");
 }
 
-std::vector<Triangle> GmshMesh::triangles(int group, int partition) const {
-  require_group(2, group);
+std::vector<Element> GmshMesh::elements(int dim, int group, int partition, int type, int count) const {
+  require_group(dim, group);
   std::vector<int> entities;
-  gmsh::model::getEntitiesForPhysicalGroup(2, group, entities);
-  std::vector<Triangle> result;
+  gmsh::model::getEntitiesForPhysicalGroup(dim, group, entities);
+  std::vector<Element> result;
   for (int entity : entities) {
     if (partition > 0) {  // a partitioned mesh: keep the entities of that partition
       std::vector<int> partitions;
-      gmsh::model::getPartitions(2, entity, partitions);
+      gmsh::model::getPartitions(dim, entity, partitions);
       if (std::find(partitions.begin(), partitions.end(), partition) == partitions.end()) continue;
     }
     std::vector<int> types;
     std::vector<std::vector<std::size_t>> element_tags, node_tags;
-    gmsh::model::mesh::getElements(types, element_tags, node_tags, 2, entity);
+    gmsh::model::mesh::getElements(types, element_tags, node_tags, dim, entity);
     for (size_t t = 0; t < types.size(); ++t) {
-      if (types[t] != kTriangle3)
-        throw InputError(path_ + ": physical surface " + std::to_string(group) +
-                         " holds elements of gmsh type " + std::to_string(types[t]) +
-                         "; ffeti-solve reads 3-node triangles only");
+      if (types[t] != type)
+        throw InputError(path_ + ": physical " + dimension_word(dim) + " " + std::to_string(group) +
+                         " holds elements of gmsh type " + std::to_string(types[t]) + "; ffeti-solve reads " +
+                         element_word(type) + " only");
       for (size_t e = 0; e < element_tags[t].size(); ++e)
-        result.push_back({element_tags[t][e], {node_tags[t][3 * e], node_tags[t][3 * e + 1], node_tags[t][3 * e + 2]}});
+        result.push_back({element_tags[t][e], std::vector<NodeTag>(node_tags[t].begin() + static_cast<long>(count * e),
+                                                                   node_tags[t].begin() + static_cast<long>(count * (e + 1)))});
     }
   }
   if (result.empty())
-    throw InputError(path_ + ": physical surface " + std::to_string(group) + " has no triangles" +
+    throw InputError(path_ + ": physical " + dimension_word(dim) + " " + std::to_string(group) + " has no " +
+                     (type == kTriangle3 ? "triangles" : "tetrahedra") +
                      (partition > 0 ? " in partition " + std::to_string(partition) : std::string()));
   return result;
+}
+
+std::vector<Element> GmshMesh::cells(int dim, int group, int partition) const {
+  if (dim == 2) return elements(2, group, partition, kTriangle3, 3);
+  std::vector<Element> tetrahedra = elements(3, group, partition, kTetrahedron4, 4);
+  check_tetrahedra(group, tetrahedra);
+  return tetrahedra;
+}
+
+void GmshMesh::check_tetrahedra(int group, const std::vector<Element>& tetrahedra) const {
+  for (const Element& t : tetrahedra) {
+    std::array<std::array<double, 3>, 4> p;
+    for (size_t i = 0; i < 4; ++i) p[i] = position(t.nodes[i]);
+    const auto edge = [&](size_t i, size_t j) {
+      return std::array<double, 3>{p[j][0] - p[i][0], p[j][1] - p[i][1], p[j][2] - p[i][2]};
+    };
+    const auto a = edge(0, 1), b = edge(0, 2), c = edge(0, 3);
+    const double six_volume = std::abs(a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                                       a[2] * (b[0] * c[1] - b[1] * c[0]));
+    double longest = 0;
+    for (size_t i = 0; i < 4; ++i)
+      for (size_t j = i + 1; j < 4; ++j) {
+        const auto e = edge(i, j);
+        longest = std::max(longest, std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]));
+      }
+    const double ratio = longest > 0 ? six_volume / (longest * longest * longest) : 0.0;
+    if (!(ratio >= kFlatTetrahedron)) {
+      std::ostringstream message;
+      message << path_ << ": physical volume " << group << ": tetrahedron " << t.tag << " (nodes " << t.nodes[0] << ", "
+              << t.nodes[1] << ", " << t.nodes[2] << ", " << t.nodes[3] << ") is flat or degenerate: 6 |volume| / "
+              << "(longest edge)^3 = " << ratio << ", below " << kFlatTetrahedron
+              << " (a regular tetrahedron has 0.71): remesh or remove it";
+      throw InputError(message.str());
+    }
+  }
 }
 
 std::vector<std::array<NodeTag, 2>> GmshMesh::segments(int group) const {
@@ -122,6 +169,12 @@ std::vector<std::array<NodeTag, 2>> GmshMesh::segments(int group) const {
         result.push_back({node_tags[t][2 * e], node_tags[t][2 * e + 1]});
     }
   }
+  return result;
+}
+
+std::vector<std::array<NodeTag, 3>> GmshMesh::faces(int group) const {
+  std::vector<std::array<NodeTag, 3>> result;
+  for (const Element& e : elements(2, group, 0, kTriangle3, 3)) result.push_back({e.nodes[0], e.nodes[1], e.nodes[2]});
   return result;
 }
 

@@ -1,7 +1,8 @@
-// A 2D gmsh mesh as ffeti-solve needs it, read through gmsh's C++ API (libgmsh): node
-// coordinates, the triangles of physical surfaces, the segments of physical curves and the
-// nodes of any physical group. Only linear elements (3-node triangles, 2-node lines): the
-// node-to-segment contact and the P1 stress views assume them.
+// A gmsh mesh as ffeti-solve needs it, read through gmsh's C++ API (libgmsh): node
+// coordinates, the cells of physical surfaces (2D: triangles) or volumes (3D: tetrahedra),
+// the segments of physical curves, the triangles of physical surfaces and the nodes of any
+// physical group. Only linear elements (3-node triangles, 4-node tetrahedra, 2-node lines):
+// the node-to-segment and node-to-face contact and the P1 stress views assume them.
 #pragma once
 
 #include <array>
@@ -14,9 +15,11 @@ namespace ffeti::native {
 
 using NodeTag = std::size_t;
 
-struct Triangle {
+/// A mesh cell: a triangle (3 nodes) of a plane problem, a tetrahedron (4 nodes) of a
+/// solid one, or a boundary triangle.
+struct Element {
   std::size_t tag;
-  std::array<NodeTag, 3> nodes;
+  std::vector<NodeTag> nodes;
 };
 
 class GmshMesh {
@@ -30,22 +33,39 @@ class GmshMesh {
 
   const std::string& path() const { return path_; }
   const std::string& model_name() const { return model_; }
-  std::array<double, 2> position(NodeTag node) const;
+  /// x, y, z (z = 0 in a plane mesh).
+  std::array<double, 3> position(NodeTag node) const;
+  /// The largest dimension of the mesh's physical groups (2: surfaces, 3: volumes).
+  int dimension() const { return dimension_; }
 
-  /// The triangles of physical surface `group`; with partition > 0 only those of that mesh
-  /// partition. InputError naming the group (and listing the file's groups) if it does
-  /// not exist, or if it holds elements other than 3-node triangles.
-  std::vector<Triangle> triangles(int group, int partition = 0) const;
+  /// The cells of physical group `group` of dimension `dim` (2: 3-node triangles of a
+  /// surface, 3: 4-node tetrahedra of a volume); with partition > 0 only those of that mesh
+  /// partition. InputError naming the group (and listing the file's groups) if it does not
+  /// exist, holds other elements or none, or (volumes) holds a flat tetrahedron.
+  std::vector<Element> cells(int dim, int group, int partition = 0) const;
   /// The 2-node segments of physical curve `group`, in the curve's orientation.
   std::vector<std::array<NodeTag, 2>> segments(int group) const;
-  /// Every node of physical group `group` of dimension `dim` (0, 1 or 2), sorted.
+  /// The 3-node triangles of physical surface `group` (boundary faces of a solid).
+  std::vector<std::array<NodeTag, 3>> faces(int group) const;
+  /// Every node of physical group `group` of dimension `dim` (0 to 3), sorted.
   std::vector<NodeTag> nodes(int dim, int group) const;
 
  private:
   void require_group(int dim, int group) const;
+  /// The elements of `group` whose gmsh type must be `type` (`nodes` per element).
+  std::vector<Element> elements(int dim, int group, int partition, int type, int nodes) const;
+  void check_tetrahedra(int group, const std::vector<Element>& tetrahedra) const;
 
   std::string path_, model_;
-  std::unordered_map<NodeTag, std::array<double, 2>> positions_;
+  int dimension_ = 0;
+  std::unordered_map<NodeTag, std::array<double, 3>> positions_;
 };
+
+/// A tetrahedron whose 6 |V| / L^3 (L its longest edge) is below this is refused as flat: a
+/// regular one has 1/sqrt(2); one with its four nodes in a plane (up to round-off) has a
+/// P1 stiffness of order L^4 / V that swamps the rest of the matrix, and the answer means
+/// nothing. The bound is far below any element a mesher keeps on purpose: the smallest
+/// ratio in the sphere-on-block example's mesh (meshes/sphere-block.geo) is 0.08.
+constexpr double kFlatTetrahedron = 1e-8;
 
 }  // namespace ffeti::native

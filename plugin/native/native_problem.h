@@ -18,15 +18,15 @@ struct SubdomainLayout {
   int id = 0;                       ///< global index (position in the problem file)
   std::vector<DofLocation> dofs;    ///< node and component of each row
   std::map<std::pair<NodeTag, int>, int> rows;  ///< the row of each (node, component)
-  std::vector<Triangle> triangles;  ///< the mesh elements of the subdomain
+  std::vector<Element> cells;       ///< the mesh cells of the subdomain (triangles, or tetrahedra in 3D)
 };
 
 struct NativeInput {
   std::vector<SubdomainInput> subdomains;  ///< this rank's, in ascending global index
   std::vector<SubdomainLayout> layouts;    ///< the same subdomains
   ContactInput contact;                    ///< of this rank's subdomains
-  /// Master segments on this rank's subdomains, and on the master curves in all: every
-  /// segment must lie on some rank's subdomain (checked by the caller over the ranks).
+  /// Master segments (faces in 3D) on this rank's subdomains, and on the master groups in
+  /// all: every one must lie on some rank's subdomain (checked by the caller over the ranks).
   long master_segments_here = 0, master_segments_total = 0;
   std::vector<int> ids;                    ///< the subdomains of this rank, ascending
   FetiSetupSettings setup;
@@ -34,16 +34,17 @@ struct NativeInput {
   int verbosity = 0;                       ///< progress lines (solver.verbosity)
 };
 
-/// The subdomains of `rank` among `ranks` (ascending), balanced by triangles: the largest
+/// The subdomains of `rank` among `ranks` (ascending), balanced by cells: the largest
 /// first to the rank with the fewest so far.
-std::vector<int> balanced_subdomains(const std::vector<std::vector<Triangle>>& triangles, int rank, int ranks);
+std::vector<int> balanced_subdomains(const std::vector<std::vector<Element>>& cells, int rank, int ranks);
 
 /// Builds the input of this rank's subdomains (`ids`, balanced_subdomains). InputError naming the problem
 /// file entry and the data file for sizes that disagree (matrix, right-hand side, dof
-/// map), dofs at nodes outside the subdomain's triangles, triangle nodes without dofs,
-/// physical groups that do not exist, bad options, and (checked on every rank alike, from
-/// the whole mesh) a triangle in two subdomains, a node in two bodies, a Dirichlet group
-/// without a node in the subdomains or fixing a dof to two values, a contact pair on one body.
+/// map), dofs at nodes outside the subdomain's cells, cell nodes without dofs, physical
+/// groups that do not exist, a mesh of the wrong dimension for "components", flat
+/// tetrahedra, bad options, and (checked on every rank alike, from the whole mesh) a cell in
+/// two subdomains, a node in two bodies, a Dirichlet group without a node in the subdomains
+/// or fixing a dof to two values, a contact pair on one body.
 NativeInput build_input(const ProblemFile& problem, const GmshMesh& mesh, int rank, int ranks);
 
 }  // namespace ffeti::native

@@ -114,10 +114,13 @@ std::vector<T> read_list(ObjectReader& parent, const std::string& key, bool requ
   return items;
 }
 
-std::array<double, 2> pair_of_numbers(ObjectReader& reader, const std::string& key) {
+/// A point or a vector: [x, y] in a plane problem, [x, y, z] in a solid one.
+std::array<double, 3> coordinates(ObjectReader& reader, const std::string& key, int dimension) {
   const auto values = reader.required<std::vector<double>>(key);
-  if (values.size() != 2) reader.fail(reader.path(key), "needs two numbers [x, y]");
-  return {values[0], values[1]};
+  if (static_cast<int>(values.size()) != dimension)
+    reader.fail(reader.path(key), dimension == 2 ? "needs two numbers [x, y]"
+                                                 : "needs three numbers [x, y, z] (\"components\": 3)");
+  return {values[0], values[1], dimension == 3 ? values[2] : 0.0};
 }
 
 DofMapSpec read_dof_map(ObjectReader& r) {
@@ -131,10 +134,17 @@ DofMapSpec read_dof_map(ObjectReader& r) {
   return dofs;
 }
 
-SubdomainSpec read_subdomain(ObjectReader& r, int body_count) {
+SubdomainSpec read_subdomain(ObjectReader& r, int body_count, int components) {
   SubdomainSpec sub;
-  sub.surfaces = r.required<std::vector<int>>("surfaces");
-  if (sub.surfaces.empty()) r.fail(r.path("surfaces"), "needs at least one physical surface");
+  // Plane problems are cut into physical surfaces, solids into physical volumes: a key of
+  // the other kind means the mesh or "components" is not what the file's author thinks.
+  const bool solid = components == 3;
+  const std::string key = solid ? "volumes" : "surfaces", other = solid ? "surfaces" : "volumes";
+  if (r.has(other))
+    r.fail(r.path(other), solid ? "a solid (\"components\": 3) is cut into physical volumes: give \"volumes\""
+                                : "physical volumes need \"components\": 3 (a solid); a plane problem gives \"surfaces\"");
+  sub.regions = r.required<std::vector<int>>(key);
+  if (sub.regions.empty()) r.fail(r.path(key), solid ? "needs at least one physical volume" : "needs at least one physical surface");
   sub.partition = r.optional<int>("partition", 0);
   if (sub.partition < 0) r.fail(r.path("partition"), "must be >= 1 (0 or absent: every partition)");
   sub.body = r.optional<int>("body", 0);
@@ -149,7 +159,7 @@ SubdomainSpec read_subdomain(ObjectReader& r, int body_count) {
   return sub;
 }
 
-BodySpec read_body(ObjectReader& r) {
+BodySpec read_body(ObjectReader& r, int components) {
   BodySpec body;
   body.name = r.optional<std::string>("name", "");
   if (r.has("material")) {
@@ -157,6 +167,9 @@ BodySpec read_body(ObjectReader& r) {
     MaterialSpec material;
     material.young = m.required<double>("E");
     material.poisson = m.required<double>("nu");
+    if (components == 3 && m.has("model"))
+      m.fail(m.path("model"), "applies to plane problems only (a solid, \"components\": 3, has neither plane strain "
+                              "nor plane stress)");
     const std::string model = m.optional<std::string>("model", "plane strain");
     if (model != "plane strain" && model != "plane stress")
       m.fail(m.path("model"), "\"" + model + "\" is not one of \"plane strain\", \"plane stress\"");
@@ -172,8 +185,13 @@ BodySpec read_body(ObjectReader& r) {
 DirichletSpec read_dirichlet(ObjectReader& r, int components) {
   DirichletSpec d;
   d.group = r.required<int>("group");
-  d.dim = r.optional<int>("dim", 1);
-  if (d.dim != 0 && d.dim != 1) r.fail(r.path("dim"), "must be 1 (a physical curve) or 0 (a physical point)");
+  // Default: a group of the boundary's dimension (curves in 2D, surfaces in 3D).
+  const int boundary = components == 3 ? 2 : 1;
+  d.dim = r.optional<int>("dim", boundary);
+  if (boundary == 1 && d.dim != 0 && d.dim != 1)
+    r.fail(r.path("dim"), "must be 1 (a physical curve) or 0 (a physical point)");
+  if (boundary == 2 && (d.dim < 0 || d.dim > 2))
+    r.fail(r.path("dim"), "must be 2 (a physical surface), 1 (a curve) or 0 (a point)");
   d.components = r.optional<std::vector<int>>("components", {});
   if (r.has("components") && d.components.empty())
     r.fail(r.path("components"), "is empty: it would fix no component; leave the key out to fix every component");
@@ -187,6 +205,7 @@ DirichletSpec read_dirichlet(ObjectReader& r, int components) {
 
 ContactSpec read_contact(ObjectReader& r, int components) {
   ContactSpec c;
+  const int dimension = components == 3 ? 3 : 2;
   c.slave = r.required<int>("slave");
   c.obstacle = r.has("obstacle");
   if (c.obstacle) {
@@ -194,21 +213,25 @@ ContactSpec read_contact(ObjectReader& r, int components) {
     if (o.has("curve")) {
       c.obstacle_curve = o.required<int>("curve");
       if (o.has("point") || o.has("normal")) o.fail(o.path("curve"), "give a curve or a point and a normal, not both");
+      if (dimension == 3) o.fail(o.path("curve"), "a plane problem's obstacle line; a solid's plane takes \"point\" and \"normal\"");
     } else {
-      c.obstacle_point = pair_of_numbers(o, "point");
-      c.obstacle_normal = pair_of_numbers(o, "normal");
-      if (!(std::hypot(c.obstacle_normal[0], c.obstacle_normal[1]) > 0)) o.fail(o.path("normal"), "must not be zero");
+      c.obstacle_point = coordinates(o, "point", dimension);
+      c.obstacle_normal = coordinates(o, "normal", dimension);
+      const auto& n = c.obstacle_normal;
+      if (!(std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) > 0)) o.fail(o.path("normal"), "must not be zero");
     }
     o.finish();
-    if (components != 2) r.fail(r.path("obstacle"), "needs plane displacements (\"components\": 2)");
+    if (components < 2) r.fail(r.path("obstacle"), "needs displacements (\"components\": 2 or 3)");
     if (r.has("master")) r.fail(r.path("master"), "give a master curve or an obstacle, not both");
   } else {
     c.master = r.required<int>("master");
   }
-  // Each option only where it means something: node to segment searches, node to node has a gap.
-  const bool segments = components == 2 && !c.obstacle;
+  // Each option only where it means something: node to segment or face searches, node to node has a gap.
+  const bool projected = components >= 2 && !c.obstacle;
   if (r.has("search_distance")) {
-    if (!segments) r.fail(r.path("search_distance"), "applies to node-to-segment contact (2 components, a master curve) only");
+    if (!projected)
+      r.fail(r.path("search_distance"), "applies to node-to-segment or node-to-face contact (2 or 3 components, a master "
+                                        "group) only");
     c.search_distance = r.required<double>("search_distance");
     if (!(*c.search_distance > 0)) r.fail(r.path("search_distance"), "must be > 0");
   }
@@ -219,12 +242,15 @@ ContactSpec read_contact(ObjectReader& r, int components) {
   for (const auto& [key, law] : {std::pair<const char*, std::optional<double>*>{"friction", &c.friction},
                                  std::pair<const char*, std::optional<double>*>{"slip_bound", &c.slip_bound}}) {
     if (!r.has(key)) continue;
-    if (components != 2) r.fail(r.path(key), "applies to plane displacements (\"components\": 2) only");
+    if (components != 2)
+      r.fail(r.path(key), components == 3 ? "friction in three dimensions is not implemented (plane displacements, "
+                                            "\"components\": 2, only)"
+                                          : "applies to plane displacements (\"components\": 2) only");
     *law = r.required<double>(key);
     if (!(**law >= 0)) r.fail(r.path(key), "must be >= 0");
   }
   if (c.friction && c.slip_bound) r.fail(r.path("slip_bound"), "give one law, friction (Coulomb) or slip_bound (Tresca)");
-  if (c.slave == c.master) r.fail(r.path("master"), "is the slave curve");
+  if (c.slave == c.master) r.fail(r.path("master"), dimension == 3 ? "is the slave surface" : "is the slave curve");
   return c;
 }
 
@@ -357,15 +383,17 @@ ProblemFile read_problem_file(const std::string& path) {
   ObjectReader r(root, path, "");
   problem.mesh = r.required<std::string>("mesh");
   problem.components = r.optional<int>("components", 2);
-  if (problem.components != 1 && problem.components != 2)
-    r.fail("components", "must be 1 (scalar field) or 2 (plane displacements)");
+  if (problem.components < 1 || problem.components > 3)
+    r.fail("components", "must be 1 (scalar field), 2 (plane displacements) or 3 (displacements of a solid)");
   const bool bodies_given = r.has("bodies");
-  problem.bodies = read_list<BodySpec>(r, "bodies", false, read_body);
+  problem.bodies = read_list<BodySpec>(r, "bodies", false, [&](ObjectReader& b) {
+    return read_body(b, problem.components);
+  });
   if (bodies_given && problem.bodies.empty()) r.fail("bodies", "needs at least one body (or leave it out: one body)");
   if (problem.bodies.empty()) problem.bodies.resize(1);
   const int body_count = static_cast<int>(problem.bodies.size());
   problem.subdomains = read_list<SubdomainSpec>(r, "subdomains", true, [&](ObjectReader& s) {
-    return read_subdomain(s, body_count);
+    return read_subdomain(s, body_count, problem.components);
   });
   if (problem.subdomains.empty()) r.fail("subdomains", "needs at least one subdomain");
   problem.dirichlet = read_list<DirichletSpec>(r, "dirichlet", false, [&](ObjectReader& d) {
@@ -377,7 +405,8 @@ ProblemFile read_problem_file(const std::string& path) {
   for (size_t i = 0; i < problem.contact.size(); ++i)
     for (size_t j = 0; j < i; ++j)
       if (problem.contact[i].slave == problem.contact[j].slave)
-        r.fail("contact[" + std::to_string(i) + "].slave", "curve " + std::to_string(problem.contact[i].slave) +
+        r.fail("contact[" + std::to_string(i) + "].slave", std::string(problem.components == 3 ? "surface " : "curve ") +
+                                                             std::to_string(problem.contact[i].slave) +
                                                              " is already the slave of contact[" + std::to_string(j) + "]");
   if (r.has("solver")) {
     ObjectReader s(r.child("solver"), path, "solver");

@@ -20,14 +20,17 @@ struct DofMapSpec {
 };
 
 struct SubdomainSpec {
-  std::vector<int> surfaces;  ///< physical surfaces whose triangles form the subdomain
+  /// The physical groups whose cells form the subdomain: surfaces (key "surfaces", plane
+  /// problems: triangles) or volumes (key "volumes", "components": 3: tetrahedra).
+  std::vector<int> regions;
   int partition = 0;          ///< > 0: only the elements of this mesh partition
   int body = 0;
   std::string matrix, rhs;    ///< GetDP's Print[] output (.m) or Matrix Market (.mtx)
   DofMapSpec dofs;
 };
 
-/// Linear elastic material of a body (plane strain or plane stress): von Mises views.
+/// Linear elastic material of a body (plane strain or plane stress in 2D; a solid in 3D):
+/// von Mises views.
 struct MaterialSpec {
   double young = 0, poisson = 0;
   bool plane_stress = false;
@@ -40,18 +43,18 @@ struct BodySpec {
 
 struct DirichletSpec {
   int group = 0;                ///< physical group tag
-  int dim = 1;                  ///< its dimension: 1 curve (default), 0 point
+  int dim = 1;                  ///< its dimension: 0 point, 1 curve, 2 surface (3D); default the boundary's
   std::vector<int> components;  ///< fixed components (vector fields); empty: all
   double value = 0;
 };
 
 struct ContactSpec {
-  int slave = 0;      ///< physical curve of the slave nodes
-  int master = 0;     ///< physical curve of the master segments (0 with an obstacle)
-  std::optional<double> search_distance;  ///< node to segment only (default: no limit)
+  int slave = 0;      ///< physical curve (surface in 3D) of the slave nodes
+  int master = 0;     ///< physical curve of the master segments (surface of the master triangles in 3D; 0 with an obstacle)
+  std::optional<double> search_distance;  ///< node to segment or face only (default: no limit)
   std::optional<double> gap;              ///< node to node (scalar fields) only (default 0)
-  bool obstacle = false;  ///< a rigid straight obstacle: a point and a normal, or a curve
-  std::array<double, 2> obstacle_point{0, 0}, obstacle_normal{0, 1};
+  bool obstacle = false;  ///< a rigid straight obstacle (a plane in 3D): a point and a normal, or a curve
+  std::array<double, 3> obstacle_point{0, 0, 0}, obstacle_normal{0, 1, 0};  ///< z entries: 3D only
   int obstacle_curve = 0;  ///< > 0: a straight physical curve, its normal towards the slave
   std::optional<double> friction;    ///< Coulomb coefficient of this entry's rows (2 components only)
   std::optional<double> slip_bound;  ///< Tresca bound per row, a force (2 components only; one per problem)
@@ -70,13 +73,16 @@ struct ProblemFile {
   std::string path;       ///< of the problem file, for error messages
   std::string directory;  ///< relative paths inside are relative to it
   std::string mesh;
-  int components = 2;     ///< field components per node: 1 (membranes) or 2 (plane elasticity)
+  int components = 2;     ///< field components per node: 1 (membranes), 2 (plane elasticity) or 3 (solids)
   std::vector<BodySpec> bodies;
   std::vector<SubdomainSpec> subdomains;
   std::vector<DirichletSpec> dirichlet;
   std::vector<ContactSpec> contact;
   GivenOptions solver;  ///< the "solver" object: the options of fetiSetup and fetiSolve
   OutputSpec output;
+  /// Of the subdomains' cells: 3 (tetrahedra) with 3 components, else 2 (triangles). The
+  /// conditions sit on groups of one dimension less: curves in 2D, surfaces in 3D.
+  int dimension() const { return components == 3 ? 3 : 2; }
 };
 
 /// Reads and checks the problem file. InputError naming the file and the key for a missing

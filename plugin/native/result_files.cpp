@@ -4,6 +4,7 @@
 
 #include <gmsh.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -20,8 +21,27 @@ std::ofstream open_output(const std::string& path) {
   return out;
 }
 
+/// Each slave node's share of its slave surfaces (3D): a third of the area of each triangle
+/// at it, the integral of its P1 hat function there.
+std::map<NodeTag, double> tributary_areas(const ProblemFile& problem, const GmshMesh& mesh) {
+  std::map<NodeTag, double> share;
+  std::set<std::array<NodeTag, 3>> counted;  // a triangle of two slave surfaces counts once
+  for (const ContactSpec& c : problem.contact)
+    for (const auto& corners : mesh.faces(c.slave)) {
+      std::array<NodeTag, 3> key = corners;
+      std::sort(key.begin(), key.end());
+      if (!counted.insert(key).second) continue;
+      const auto a = mesh.position(corners[0]), b = mesh.position(corners[1]), d = mesh.position(corners[2]);
+      const Eigen::Vector3d u(b[0] - a[0], b[1] - a[1], b[2] - a[2]), v(d[0] - a[0], d[1] - a[1], d[2] - a[2]);
+      const double third = u.cross(v).norm() / 6;  // area / 3
+      for (NodeTag node : corners) share[node] += third;
+    }
+  return share;
+}
+
 /// Each slave node's share of its slave curves: half the length of each segment at it.
 std::map<NodeTag, double> tributary_lengths(const ProblemFile& problem, const GmshMesh& mesh) {
+  if (problem.dimension() == 3) return tributary_areas(problem, mesh);
   std::map<NodeTag, double> share;
   std::set<std::pair<NodeTag, NodeTag>> counted;  // a segment of two slave curves counts once
   for (const ContactSpec& c : problem.contact)
@@ -33,6 +53,25 @@ std::map<NodeTag, double> tributary_lengths(const ProblemFile& problem, const Gm
       share[b] += half;
     }
   return share;
+}
+
+/// Von Mises stress of one P1 tetrahedron (constant strain): grad u = [u_i - u_0] J^-1 with
+/// J = [p_i - p_0], i = 1..3 (columns).
+double von_mises_3d(const MaterialSpec& material, const std::array<std::array<double, 3>, 4>& p,
+                    const std::array<std::array<double, 3>, 4>& u) {
+  Eigen::Matrix3d J, D;
+  for (int i = 0; i < 3; ++i)
+    for (int r = 0; r < 3; ++r) {
+      J(r, i) = p[static_cast<size_t>(i + 1)][static_cast<size_t>(r)] - p[0][static_cast<size_t>(r)];
+      D(r, i) = u[static_cast<size_t>(i + 1)][static_cast<size_t>(r)] - u[0][static_cast<size_t>(r)];
+    }
+  const Eigen::Matrix3d gradient = D * J.inverse();  // (du_r / dx_c)
+  const Eigen::Matrix3d strain = 0.5 * (gradient + gradient.transpose());
+  const double E = material.young, nu = material.poisson;
+  const double mu = E / (2 * (1 + nu)), lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+  const Eigen::Matrix3d stress = lambda * strain.trace() * Eigen::Matrix3d::Identity() + 2 * mu * strain;
+  const Eigen::Matrix3d deviator = stress - stress.trace() / 3 * Eigen::Matrix3d::Identity();
+  return std::sqrt(1.5 * deviator.cwiseProduct(deviator).sum());  // sqrt(3/2 s:s)
 }
 
 /// Von Mises stress of one P1 triangle (constant strain).
@@ -61,24 +100,42 @@ double von_mises(const MaterialSpec& material, const std::array<std::array<doubl
                    3 * sxy * sxy);
 }
 
-/// Von Mises stress of each triangle of the bodies with a material (plane displacements).
+/// Von Mises stress of each cell of the bodies with a material (displacements: plane
+/// triangles, or tetrahedra of a solid).
 std::vector<ElementStress> element_stresses(const ProblemFile& problem, const GmshMesh& mesh,
                                             const NodalResults& results) {
   std::vector<ElementStress> stresses;
-  if (problem.components != 2) return stresses;
+  if (problem.components < 2) return stresses;
+  const int dimension = problem.dimension();
   for (const SubdomainSpec& sub : problem.subdomains) {
     const auto& material = problem.bodies[static_cast<size_t>(sub.body)].material;
     if (!material) continue;
-    for (int surface : sub.surfaces)
-      for (const Triangle& t : mesh.triangles(surface, sub.partition)) {
-        std::array<std::array<double, 2>, 3> points, displacements;
-        for (int i = 0; i < 3; ++i) {
-          points[i] = mesh.position(t.nodes[i]);
-          displacements[i] = results.displacement.at(t.nodes[i]);
+    for (int region : sub.regions)
+      for (const Element& t : mesh.cells(dimension, region, sub.partition)) {
+        std::array<double, 3> centroid{0, 0, 0};
+        for (NodeTag node : t.nodes)
+          for (size_t k = 0; k < 3; ++k) centroid[k] += mesh.position(node)[k];
+        for (double& c : centroid) c /= static_cast<double>(t.nodes.size());
+        double value = 0;
+        if (dimension == 3) {
+          std::array<std::array<double, 3>, 4> points, displacements;
+          for (size_t i = 0; i < 4; ++i) {
+            points[i] = mesh.position(t.nodes[i]);
+            displacements[i] = results.displacement.at(t.nodes[i]);
+          }
+          value = von_mises_3d(*material, points, displacements);
+        } else {
+          std::array<std::array<double, 2>, 3> points, displacements;
+          for (size_t i = 0; i < 3; ++i) {
+            const auto p = mesh.position(t.nodes[i]);
+            const auto& u = results.displacement.at(t.nodes[i]);
+            points[i] = {p[0], p[1]};
+            displacements[i] = {u[0], u[1]};
+          }
+          value = von_mises(*material, points, displacements);
+          centroid[2] = 0;
         }
-        const double cx = (points[0][0] + points[1][0] + points[2][0]) / 3;
-        const double cy = (points[0][1] + points[1][1] + points[2][1]) / 3;
-        stresses.push_back({t.tag, sub.body, cx, cy, von_mises(*material, points, displacements)});
+        stresses.push_back({t.tag, sub.body, centroid[0], centroid[1], centroid[2], value});
       }
   }
   return stresses;
@@ -131,12 +188,18 @@ NodalResults nodal_results(const ProblemFile& problem, const GmshMesh& mesh, con
     }
   for (const auto& [key, value] : sums) results.displacement[key.first][static_cast<size_t>(key.second)] = value.first / value.second;
 
-  std::map<std::array<double, 2>, NodeTag> slave_at;  // exact positions: the rows' came from the mesh
+  // Exact positions: the rows' came from the mesh (z = 0 in a plane problem, as the rows').
+  const bool solid = problem.dimension() == 3;
+  std::map<std::array<double, 3>, NodeTag> slave_at;
   for (const ContactSpec& c : problem.contact)
-    for (NodeTag node : mesh.nodes(1, c.slave)) slave_at[mesh.position(node)] = node;
+    for (NodeTag node : mesh.nodes(problem.dimension() - 1, c.slave)) {
+      auto p = mesh.position(node);
+      if (!solid) p[2] = 0;
+      slave_at[p] = node;
+    }
   const std::map<NodeTag, double> share = tributary_lengths(problem, mesh);
   for (const ContactMultiplier& row : contact) {
-    const auto node = slave_at.find({row.x, row.y});
+    const auto node = slave_at.find({row.x, row.y, solid ? row.z : 0.0});
     if (node == slave_at.end()) continue;  // a row of another kind at this position: none expected
     results.contact_force[node->second] += row.lambda;
     results.friction_force[node->second] += row.tangential;
@@ -171,7 +234,7 @@ void write_views(const std::string& path, const ProblemFile& problem, const Gmsh
     for (const auto& [node, u] : results.displacement) {
       tags.push_back(node);
       if (problem.components == 1) data.push_back(u[0]);
-      else data.insert(data.end(), {u[0], u[1], 0.0});
+      else data.insert(data.end(), {u[0], u[1], u[2]});  // u[2] = 0 in a plane problem
     }
     views.push_back(gmsh::view::add("displacement"));
     gmsh::view::addHomogeneousModelData(views.back(), 0, mesh.model_name(), "NodeData", tags, data, 0,
@@ -203,25 +266,34 @@ void write_views(const std::string& path, const ProblemFile& problem, const Gmsh
   }
 }
 
-void write_table(const std::string& path, const GmshMesh& mesh, const NodalResults& results) {
+void write_table(const std::string& path, const ProblemFile& problem, const GmshMesh& mesh, const NodalResults& results) {
   std::ofstream out = open_output(path);
-  out << "node,body,x,y,u_x,u_y,contact_row,contact_force,contact_pressure,active,friction_force,state\n";
+  const bool solid = problem.components == 3;
+  out << (solid ? "node,body,x,y,z,u_x,u_y,u_z," : "node,body,x,y,u_x,u_y,")
+      << "contact_row,contact_force,contact_pressure,active,friction_force,state\n";
   for (const auto& [node, u] : results.displacement) {
     const auto p = mesh.position(node);
     const auto force = results.contact_force.find(node);
     const bool slave = force != results.contact_force.end();
-    out << node << ',' << results.body.at(node) << ',' << p[0] << ',' << p[1] << ',' << u[0] << ',' << u[1] << ','
-        << slave << ',' << (slave ? force->second : 0.0) << ',' << (slave ? results.contact_pressure.at(node) : 0.0) << ','
+    out << node << ',' << results.body.at(node) << ',' << p[0] << ',' << p[1] << ',';
+    if (solid) out << p[2] << ',';
+    out << u[0] << ',' << u[1] << ',';
+    if (solid) out << u[2] << ',';
+    out << slave << ',' << (slave ? force->second : 0.0) << ',' << (slave ? results.contact_pressure.at(node) : 0.0) << ','
         << (slave && force->second > 0 ? 1 : 0) << ',' << (slave ? results.friction_force.at(node) : 0.0) << ','
         << (slave ? results.contact_state.at(node) : 0) << '\n';
   }
 }
 
-void write_stress_table(const std::string& path, const NodalResults& results) {
+void write_stress_table(const std::string& path, const ProblemFile& problem, const NodalResults& results) {
   std::ofstream out = open_output(path);
-  out << "element,body,x,y,von_mises\n";
-  for (const ElementStress& e : results.stresses)
-    out << e.tag << ',' << e.body << ',' << e.x << ',' << e.y << ',' << e.von_mises << '\n';
+  const bool solid = problem.components == 3;
+  out << (solid ? "element,body,x,y,z,von_mises\n" : "element,body,x,y,von_mises\n");
+  for (const ElementStress& e : results.stresses) {
+    out << e.tag << ',' << e.body << ',' << e.x << ',' << e.y << ',';
+    if (solid) out << e.z << ',';
+    out << e.von_mises << '\n';
+  }
 }
 
 void write_getdp_solution(const std::string& path, const ProblemFile& problem, const GatheredSolution& solution) {

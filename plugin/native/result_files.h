@@ -24,25 +24,26 @@ struct GatheredSolution {
 GatheredSolution gather_solution(const FetiResult& result, const std::vector<SubdomainLayout>& layouts,
                                  int subdomain_count, const Communicator& comm);
 
-/// Von Mises stress of one triangle of a body with a material, at its centroid.
+/// Von Mises stress of one cell (triangle, or tetrahedron in 3D) of a body with a material,
+/// at its centroid (z = 0 in a plane problem).
 struct ElementStress {
   std::size_t tag;
   int body;
-  double x, y;
+  double x, y, z;
   double von_mises;
 };
 
 /// Nodal values: displacement (averaged over the subdomain copies of a node, which agree
 /// to the solver's tolerance) and, at the slave nodes, the contact force (the multiplier),
-/// the pressure (force over the node's share of the slave curve) and the active flag; per
-/// triangle of a body with a material, the von Mises stress.
+/// the pressure (force over the node's share of the slave curve, or surface in 3D) and the
+/// active flag; per cell of a body with a material, the von Mises stress.
 struct NodalResults {
-  std::map<NodeTag, std::array<double, 2>> displacement;
+  std::map<NodeTag, std::array<double, 3>> displacement;  ///< the problem's components, the others 0
   std::map<NodeTag, int> body;
   std::map<NodeTag, double> contact_force, contact_pressure;
   std::map<NodeTag, double> friction_force;  ///< the friction row's multiplier (0 without friction)
   std::map<NodeTag, int> contact_state;      ///< 0 open, 1 stick, 2 slip (friction.h)
-  std::vector<ElementStress> stresses;  ///< plane displacements, bodies with a material
+  std::vector<ElementStress> stresses;  ///< displacements (2 or 3 components), bodies with a material
 };
 
 NodalResults nodal_results(const ProblemFile& problem, const GmshMesh& mesh, const GatheredSolution& solution,
@@ -54,11 +55,12 @@ void write_views(const std::string& path, const ProblemFile& problem, const Gmsh
 
 /// node,body,x,y,u_x,u_y,contact_row,contact_force,contact_pressure,active,friction_force,state
 /// (contact_row: 1 at the slave nodes that have a contact row; friction_force and state (0
-/// open, 1 stick, 2 slip) as fetiContact's tangential= and state=)
-void write_table(const std::string& path, const GmshMesh& mesh, const NodalResults& results);
+/// open, 1 stick, 2 slip) as fetiContact's tangential= and state=); a solid (3 components)
+/// adds z after y and u_z after u_y.
+void write_table(const std::string& path, const ProblemFile& problem, const GmshMesh& mesh, const NodalResults& results);
 
-/// element,body,x,y,von_mises (centroids), for the bodies with a material.
-void write_stress_table(const std::string& path, const NodalResults& results);
+/// element,body,x,y,von_mises (centroids; a solid adds z after y), for the bodies with a material.
+void write_stress_table(const std::string& path, const ProblemFile& problem, const NodalResults& results);
 
 /// GetDP's .res: one $Solution per subdomain system, numbered by its $DofData block, so that
 /// `getdp ... -pre <resolution> -res <file> -pos <post-operation>` post-processes it.
