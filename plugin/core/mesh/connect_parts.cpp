@@ -70,9 +70,10 @@ long connect_parts(const std::vector<std::vector<int>>& neighbours, std::vector<
     for (size_t k = 0; k < nt; ++k) {
       const int id = p.piece[k];
       if (main[static_cast<size_t>(id)]) continue;
-      for (int other : neighbours[k])
-        if (other >= 0 && static_cast<size_t>(other) != k && main[static_cast<size_t>(p.piece[static_cast<size_t>(other)])])
-          ++shared[id][part[static_cast<size_t>(other)]];
+      for (int other : neighbours[k]) {
+        if (other < 0 || static_cast<size_t>(other) == k) continue;
+        if (main[static_cast<size_t>(p.piece[static_cast<size_t>(other)])]) ++shared[id][part[static_cast<size_t>(other)]];
+      }
     }
     // None: every part is connected, or the strays left lie in a piece of the mesh that
     // holds no main piece (a mesh in several pieces), where nothing can join anything.
