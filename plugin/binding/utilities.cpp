@@ -4,14 +4,16 @@
 #include "binding/functions.h"
 #include "binding/handles.h"
 
+#include "base/errors.h"
 #include "feti/cholmod_factor.h"
 #include "feti/statistics.h"
 #include "mesh/connect_parts.h"
 
 #include <mpi.h>
 
-#include <array>
 #include <chrono>
+#include <string>
+#include <vector>
 
 namespace ffeti::binding {
 namespace {
@@ -27,23 +29,32 @@ long feti_indices(KN<double>* const& mask, KN<long>* const& indices) {
   return count;
 }
 
-/// Makes every part of a mesh partition (`part`: one entry per triangle of Th) connected
-/// through element edges: each edge-connected piece of a part other than its largest goes
-/// to the neighbouring part it shares most edges with, until no piece is left (METIS may
-/// give a part two pieces, e.g. both jaws of a spanner, and a disconnected subdomain has
-/// rigid modes no kernel candidate covers). Returns the number of triangles moved.
-long feti_connect_parts(pmesh const& mesh, KN<long>* const& part) {
+/// The element-to-node table of a triangle (n = 3) or tetrahedron (n = 4) mesh, for
+/// connect_element_parts.
+template <int n, class MeshType>
+std::vector<int> element_nodes(const MeshType& Th) {
+  std::vector<int> nodes(static_cast<size_t>(Th.nt) * n);
+  for (int k = 0; k < Th.nt; ++k)
+    for (int j = 0; j < n; ++j) nodes[static_cast<size_t>(k) * n + static_cast<size_t>(j)] = Th(k, j);
+  return nodes;
+}
+
+/// Makes every part of a mesh partition (`part`: one entry per element of Th, a mesh or a
+/// mesh3) connected through element facets (edges of triangles, faces of tetrahedra): each
+/// piece of a part other than its largest goes to the neighbouring part it shares most
+/// facets with, until no piece is left (METIS may give a part two pieces, e.g. both jaws of
+/// a spanner, and a disconnected subdomain has rigid modes no kernel candidate covers).
+/// Returns the number of elements moved.
+template <class MeshType, int n>
+long feti_connect_parts(const MeshType* const& mesh, KN<long>* const& part) {
   return guarded("fetiConnectParts", [&] {
-    const Mesh& Th = *mesh;
-    std::vector<std::array<int, 3>> neighbours(static_cast<size_t>(Th.nt));
-    for (int k = 0; k < Th.nt; ++k)
-      for (int e = 0; e < 3; ++e) {
-        int edge = e;  // ElementAdj changes it to the edge's number in the neighbour
-        neighbours[static_cast<size_t>(k)][static_cast<size_t>(e)] = Th.ElementAdj(k, edge);
-      }
+    const MeshType& Th = *mesh;
+    if (part->N() != Th.nt)
+      throw InputError("part: has " + std::to_string(part->N()) + " entries for the " + std::to_string(Th.nt) +
+                       " elements of Th (one part number per element)");
     std::vector<long> parts(static_cast<size_t>(part->N()));
     for (long k = 0; k < part->N(); ++k) parts[static_cast<size_t>(k)] = (*part)[k];
-    const long moved = connect_parts(neighbours, parts);
+    const long moved = connect_element_parts(element_nodes<n>(Th), n, parts);
     copy_to(parts, *part);
     return moved;
   });
@@ -101,7 +112,8 @@ void add_utility_functions() {
   Global.Add("fetiRankReport", "(", new OneOperator1s_<std::string*, long>(feti_rank_report));
   Global.Add("fetiWallTime", "(", new OneOperator0<double>(feti_wall_time));
   Global.Add("fetiFactorizations", "(", new OneOperator0<long>(feti_factorizations));
-  Global.Add("fetiConnectParts", "(", new OneOperator2_<long, pmesh, KN<long>*>(feti_connect_parts));
+  Global.Add("fetiConnectParts", "(", new OneOperator2_<long, pmesh, KN<long>*>(feti_connect_parts<Mesh, 3>));
+  Global.Add("fetiConnectParts", "(", new OneOperator2_<long, pmesh3, KN<long>*>(feti_connect_parts<Mesh3, 4>));
 }
 
 }  // namespace ffeti::binding

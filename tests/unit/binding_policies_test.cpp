@@ -10,15 +10,14 @@
 
 #include <gtest/gtest.h>
 
-#include <array>
 #include <map>
 
 namespace ffeti {
 namespace {
 
 /// A strip of `n` triangles, each the neighbour of the next across one edge.
-std::vector<std::array<int, 3>> strip(int n) {
-  std::vector<std::array<int, 3>> neighbours;
+std::vector<std::vector<int>> strip(int n) {
+  std::vector<std::vector<int>> neighbours;
   for (int k = 0; k < n; ++k) neighbours.push_back({k > 0 ? k - 1 : -1, k + 1 < n ? k + 1 : -1, -1});
   return neighbours;
 }
@@ -41,7 +40,7 @@ TEST(ConnectParts, ConnectedPartitionStaysAsItIs) {
 TEST(ConnectParts, SmallerPieceMovesWhereTheBorderIsLongest) {
   // Triangle 4 (part 0, apart from triangles 0-3) touches part 1 (triangles 5 and 6, one
   // piece) across two edges and part 2 across one.
-  std::vector<std::array<int, 3>> neighbours = {{1, -1, -1}, {0, 2, -1}, {1, 3, -1}, {2, -1, -1},
+  std::vector<std::vector<int>> neighbours = {{1, -1, -1}, {0, 2, -1}, {1, 3, -1}, {2, -1, -1},
                                                 {5, 6, 7},   {4, 6, -1}, {4, 5, -1}, {4, -1, -1}};
   std::vector<long> part = {0, 0, 0, 0, 0, 1, 1, 2};
   EXPECT_EQ(connect_parts(neighbours, part), 1);

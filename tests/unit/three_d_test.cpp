@@ -105,5 +105,46 @@ TEST(ThreeDimensions, ClosestPointOfATriangleInEveryRegion) {
   }
 }
 
+/// A 3D vector-field subdomain of the given nodes (dofs 3k + c); K is irrelevant to the
+/// constraints.
+SubdomainInput vector_nodes3(const std::vector<std::array<double, 3>>& nodes, int body) {
+  SubdomainInput s;
+  for (const auto& node : nodes)
+    for (int c = 0; c < 3; ++c)
+      s.x.push_back(node[0]), s.y.push_back(node[1]), s.z.push_back(node[2]), s.component.push_back(c);
+  const auto n = static_cast<Eigen::Index>(s.x.size());
+  s.K = SparseMatrix(n, n);
+  s.K.setIdentity();
+  s.f = Vec::Zero(n);
+  s.body = body;
+  return s;
+}
+
+TEST(ThreeDimensions, NodeToFaceSlaveOutOfReachGetsNoRow) {
+  // As node to segment in the plane: a slave node farther than contactRadius from every
+  // master face of another body gets no row (no contact possible there), not an error.
+  // Master face (0,0,0), (2,0,0), (0,2,0) of body 0, normal +z; slaves of body 1 at
+  // height 0.1 above it and at (5, 5, 0.1), 4.95 from its nearest point (1, 1, 0).
+  const std::vector<SubdomainInput> subs = {vector_nodes3({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}, 0),
+                                            vector_nodes3({{0.5, 0.5, 0.1}, {5, 5, 0.1}}, 1)};
+  ContactInput contact;
+  contact.slave_dofs = {{}, {0, 1, 2, 3, 4, 5}};
+  contact.master_faces = {{{0, 1, 2, 3, 4, 5, 6, 7, 8}}, {}};
+  const Constraints all = build_constraints(subs, contact, FetiVariant::tfeti);
+  ASSERT_EQ(all.count(RowKind::contact), 2);  // no reach given: every slave has a row
+  contact.search_distance = 1;
+  const Constraints near = build_constraints(subs, contact, FetiVariant::tfeti);
+  ASSERT_EQ(near.count(RowKind::contact), 1);
+  int row = 0;
+  while (near.kind[static_cast<size_t>(row)] != RowKind::contact) ++row;
+  EXPECT_NEAR(near.rhs[static_cast<size_t>(row)], 0.1, 1e-14);  // the near slave's gap
+  bool near_slave = false;
+  for (int k = near.row_start[static_cast<size_t>(row)]; k < near.row_start[static_cast<size_t>(row) + 1]; ++k)
+    near_slave |= near.entries[static_cast<size_t>(k)].subdomain == 1 && near.entries[static_cast<size_t>(k)].dof == 2;
+  EXPECT_TRUE(near_slave) << "the row is the near slave's (its z dof, 2)";
+  contact.search_distance = 0.05;  // both beyond: no contact row, and still no error
+  EXPECT_EQ(build_constraints(subs, contact, FetiVariant::tfeti).count(RowKind::contact), 0);
+}
+
 }  // namespace
 }  // namespace ffeti

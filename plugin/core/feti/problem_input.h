@@ -58,7 +58,7 @@ struct ContactInput {
   /// at its component-0 dof (node to segment, obstacle): a gap per contact row, e.g. the
   /// profile of a contact surface described by its gap rather than by its mesh.
   std::vector<std::vector<double>> gap_field;
-  double search_distance = 1e300;             ///< node to segment: farther slaves get no row
+  double search_distance = 1e300;             ///< node to segment and to face: farther slaves get no row
   bool obstacle = false;
   std::array<double, 3> obstacle_point{0, 0, 0}, obstacle_normal{0, 1, 0};  ///< z entries: 3D only
   /// Set by the set-up (not the caller): the subdomains have a third coordinate.

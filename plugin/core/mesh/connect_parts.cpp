@@ -1,6 +1,7 @@
 #include "mesh/connect_parts.h"
 
 #include "base/errors.h"
+#include "mesh/facet_neighbours.h"
 
 #include <algorithm>
 #include <map>
@@ -9,12 +10,12 @@
 namespace ffeti {
 namespace {
 
-/// Edge-connected pieces of the parts: piece[k] for each triangle, the size of each piece.
+/// Facet-connected pieces of the parts: piece[k] for each element, the size of each piece.
 struct Pieces {
   std::vector<int> piece, size;
 };
 
-Pieces find_pieces(const std::vector<std::array<int, 3>>& neighbours, const std::vector<long>& part) {
+Pieces find_pieces(const std::vector<std::vector<int>>& neighbours, const std::vector<long>& part) {
   const int nt = static_cast<int>(part.size());
   Pieces p;
   p.piece.assign(part.size(), -1);
@@ -42,28 +43,40 @@ Pieces find_pieces(const std::vector<std::array<int, 3>>& neighbours, const std:
 
 }  // namespace
 
-long connect_parts(const std::vector<std::array<int, 3>>& neighbours, std::vector<long>& part) {
+long connect_parts(const std::vector<std::vector<int>>& neighbours, std::vector<long>& part) {
   if (part.size() != neighbours.size())
     throw InputError("part: has " + std::to_string(part.size()) + " entries for " + std::to_string(neighbours.size()) +
-                     " triangles");
+                     " elements");
   const size_t nt = part.size();
-  long moved = 0;
-  for (int round = 0; round < 100; ++round) {
+  // Each part's main piece is the one holding its anchor, an element of its largest piece at
+  // the start. Main pieces never move, and stray pieces join main pieces only: moving
+  // strays into strays let two of them swap parts round after round (a partition dealt at
+  // random never settled), while this way every round shrinks the stray elements.
+  std::map<long, size_t> anchor;
+  {
     const Pieces p = find_pieces(neighbours, part);
-    std::map<long, int> largest;  // part -> its largest piece
+    for (size_t k = 0; k < nt; ++k) {
+      auto [it, inserted] = anchor.emplace(part[k], k);
+      if (!inserted && p.size[static_cast<size_t>(p.piece[k])] > p.size[static_cast<size_t>(p.piece[it->second])])
+        it->second = k;
+    }
+  }
+  long moved = 0;
+  for (;;) {
+    const Pieces p = find_pieces(neighbours, part);
+    std::vector<bool> main(p.size.size(), false);
+    for (const auto& [owner, k] : anchor) main[static_cast<size_t>(p.piece[k])] = true;
+    std::map<int, std::map<long, int>> shared;  // stray piece -> part of a main piece next to it -> shared facets
     for (size_t k = 0; k < nt; ++k) {
       const int id = p.piece[k];
-      auto [it, inserted] = largest.emplace(part[k], id);
-      if (!inserted && p.size[static_cast<size_t>(id)] > p.size[static_cast<size_t>(it->second)]) it->second = id;
+      if (main[static_cast<size_t>(id)]) continue;
+      for (int other : neighbours[k]) {
+        if (other < 0 || static_cast<size_t>(other) == k) continue;
+        if (main[static_cast<size_t>(p.piece[static_cast<size_t>(other)])]) ++shared[id][part[static_cast<size_t>(other)]];
+      }
     }
-    std::map<int, std::map<long, int>> shared;  // stray piece -> neighbouring part -> shared edges
-    for (size_t k = 0; k < nt; ++k) {
-      const int id = p.piece[k];
-      if (largest[part[k]] == id) continue;
-      for (int other : neighbours[k])
-        if (other >= 0 && static_cast<size_t>(other) != k && part[static_cast<size_t>(other)] != part[k])
-          ++shared[id][part[static_cast<size_t>(other)]];
-    }
+    // None: every part is connected, or the strays left lie in a piece of the mesh that
+    // holds no main piece (a mesh in several pieces), where nothing can join anything.
     if (shared.empty()) break;
     std::map<int, long> target;
     for (const auto& [id, counts] : shared)
@@ -76,6 +89,10 @@ long connect_parts(const std::vector<std::array<int, 3>>& neighbours, std::vecto
       }
   }
   return moved;
+}
+
+long connect_element_parts(const std::vector<int>& element_nodes, int nodes_per_element, std::vector<long>& part) {
+  return connect_parts(facet_neighbours(element_nodes, nodes_per_element), part);
 }
 
 }  // namespace ffeti
