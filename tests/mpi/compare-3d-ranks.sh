@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# The seed's model problem in three dimensions (edp/model-problem-3d.edp) in one process and
-# on 2 and 3 ranks: the same dimensions and counts, the energy to 1e-10.
+# Three dimensions in one process and on 2 and 3 ranks: the seed's model problem
+# (edp/model-problem-3d.edp, node to node) and the Hertz sphere on a block
+# (edp/hertz-sphere.edp -block 1, mortar contact): the same dimensions and counts, the
+# energy to 1e-10.
 # Usage: compare-3d-ranks.sh SOURCE_DIR   (run where freefem++.pref points at the build)
 set -euo pipefail
 source_dir=$1
@@ -16,5 +18,16 @@ for ranks in 2 3; do
   [ -n "$parallel" ] || { echo "no RESULT line with $ranks ranks"; exit 1; }
   same_keys "$ranks ranks" "$serial" "$parallel" status subdomains primal dual couples active floating outer hessian
   close_keys "$ranks ranks" "$serial" "$parallel" 1e-10 energy
+done
+
+sphere="$source_dir/edp/hertz-sphere.edp"
+sphere_args=(-h 0.2 -block 1 -meshes "$source_dir/meshes")
+serial=$(FreeFem++-nw -v 0 "$sphere" "${sphere_args[@]}" | result)
+[ -n "$serial" ] || { echo "no RESULT line from the serial sphere run"; exit 1; }
+for ranks in 2 3; do
+  parallel=$(mpirun --oversubscribe -np "$ranks" FreeFem++-mpi -v 0 "$sphere" "${sphere_args[@]}" | result)
+  [ -n "$parallel" ] || { echo "no RESULT line from the sphere with $ranks ranks"; exit 1; }
+  same_keys "sphere, $ranks ranks" "$serial" "$parallel" status subdomains unknowns couples active hessian
+  close_keys "sphere, $ranks ranks" "$serial" "$parallel" 1e-10 energy a p0
 done
 [ "$failures" -eq 0 ] && echo "all checks passed" || { echo "$failures check(s) failed"; exit 1; }

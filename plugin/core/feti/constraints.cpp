@@ -28,6 +28,9 @@ Constraints build_constraints(std::vector<DofRecord> records, const std::vector<
   if (!segments.empty()) add_node_to_segment_rows(records, segments, contact, snap, rows);
   if (contact.obstacle) add_obstacle_rows(records, contact, snap, rows);
   const bool mortar = std::any_of(faces.begin(), faces.end(), [](const FaceRecord& f) { return f.slave; });
+  // Checked here, on the faces of all ranks: one rank may hold slave faces and no master face.
+  if (mortar && std::all_of(faces.begin(), faces.end(), [](const FaceRecord& f) { return f.slave; }))
+    throw InputError("contactSlaveFaces: mortar contact needs the master faces too (contactFaces=)");
   if (mortar) add_mortar_rows(records, faces, contact, snap, rows);
   else if (!faces.empty()) add_node_to_face_rows(records, faces, contact, snap, rows);
   if (segments.empty() && faces.empty() && !contact.obstacle) add_node_to_node_rows(records, contact.gap, snap, rows);

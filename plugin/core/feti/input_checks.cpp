@@ -151,8 +151,6 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
       throw InputError(std::string(name) + ": contact on faces needs Z (three dimensions); a plane problem takes "
                        "contactSegments");
   }
-  if (any(contact.slave_faces) && !any(contact.master_faces))
-    throw InputError("contactSlaveFaces: mortar contact needs the master faces too (contactFaces=)");
   if (any(contact.slave_faces) && (any(contact.slave_dofs) || contact.obstacle))
     throw InputError("contactSlaveFaces: the slave nodes of mortar contact are the corners of these faces; give "
                      "contactSlave (node to face, obstacle) or contactSlaveFaces (mortar), not both");
