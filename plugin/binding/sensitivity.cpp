@@ -32,12 +32,12 @@ SensitivityProblem& sensitivity_problem(Handle& h, double threshold) {
 double default_threshold(const Handle& h) { return default_classification_threshold(h.tolerance); }
 
 /// Design directions from the script: for k directions, entry j * S + s of dK, dF (empty
-/// entries: zero), of the node velocities velocityX, velocityY (absent: the contact
+/// entries: zero), of the node velocities velocityX, velocityY, velocityZ (absent: the contact
 /// geometry does not move) and of the gap derivatives dGap (absent: the gaps do not change)
 /// belongs to direction j and subdomain s (S subdomains). Only this rank's subdomains are read.
 std::vector<DesignDerivative> design_directions(const FetiProblem& problem, KN<Matrice_Creuse<double>>* dK,
                                                 KN<KN<double>>* dF, KN<KN<double>>* vx, KN<KN<double>>* vy,
-                                                KN<KN<double>>* dgap) {
+                                                KN<KN<double>>* vz, KN<KN<double>>* dgap) {
   const long count = problem.subdomain_count();
   const long k = dK->N() / count;
   std::vector<DesignDerivative> directions(static_cast<size_t>(std::max(k, 0L)));
@@ -48,6 +48,7 @@ std::vector<DesignDerivative> design_directions(const FetiProblem& problem, KN<M
     const std::pair<const char*, long> sizes[] = {{"dF", dF->N()},
                                                   {"velocityX", vx ? vx->N() : k * count},
                                                   {"velocityY", vy ? vy->N() : k * count},
+                                                  {"velocityZ", vz ? vz->N() : k * count},
                                                   {"dGap", dgap ? dgap->N() : k * count}};
     for (const auto& [name, n] : sizes)
       if (n != k * count)
@@ -64,6 +65,7 @@ std::vector<DesignDerivative> design_directions(const FetiProblem& problem, KN<M
         d.df.push_back(to_vec((*dF)[e]));
         if (vx) d.velocity_x.push_back(to_std((*vx)[e]));
         if (vy) d.velocity_y.push_back(to_std((*vy)[e]));
+        if (vz) d.velocity_z.push_back(to_std((*vz)[e]));
         if (dgap) d.dgap.push_back(to_std((*dgap)[e]));
       }
     }
@@ -85,7 +87,7 @@ DualSolveSettings sensitivity_settings(const Handle& h, Expression tol, Expressi
   return settings;
 }
 
-// int status = fetiSensitivity(P, dK, dF, Z, velocityX=, velocityY=, tol=, maxit=, activeTol=, verbosity=,
+// int status = fetiSensitivity(P, dK, dF, Z, velocityX=, velocityY=, velocityZ=, tol=, maxit=, activeTol=, verbosity=,
 //                              dGap=, dLambda=): dLambda[j] receives lambda' of direction j per contact row
 // (fetiContact's order; 0 on inactive rows), on every rank.
 class FetiSensitivity : public WithNamedArguments {
@@ -113,7 +115,7 @@ class FetiSensitivity : public WithNamedArguments {
       const std::vector<DesignDerivative> directions = design_directions(
           *h.problem, GetAny<KN<Matrice_Creuse<double>>*>((*dK)(stack)), GetAny<KN<KN<double>>*>((*dF)(stack)),
           optional_pointer<KN<KN<double>>>(nargs[0], stack), optional_pointer<KN<KN<double>>>(nargs[1], stack),
-          optional_pointer<KN<KN<double>>>(nargs[6], stack));
+          optional_pointer<KN<KN<double>>>(nargs[8], stack), optional_pointer<KN<KN<double>>>(nargs[6], stack));
       const std::vector<SensitivityResult> r =
           sens.direct(directions, sensitivity_settings(h, nargs[2], nargs[3], nargs[5], stack));
       if (auto* dLambda = optional_pointer<KN<KN<double>>>(nargs[7], stack)) {
@@ -138,7 +140,8 @@ class FetiSensitivity : public WithNamedArguments {
 NamedParameters FetiSensitivity::name_param = {
     {"velocityX", &typeid(KN<KN<double>>*)}, {"velocityY", &typeid(KN<KN<double>>*)}, {"tol", &typeid(double)},
     {"maxit", &typeid(long)}, {"activeTol", &typeid(double)}, {"verbosity", &typeid(long)},
-    {"dGap", &typeid(KN<KN<double>>*)}, {"dLambda", &typeid(KN<KN<double>>*)}};
+    {"dGap", &typeid(KN<KN<double>>*)}, {"dLambda", &typeid(KN<KN<double>>*)},
+    {"velocityZ", &typeid(KN<KN<double>>*)}};
 
 // int status = fetiAdjoint(P, dJdu, tol=, maxit=, activeTol=, verbosity=, w=, dJdlambda=): 6
 // (weakly_active) when some contact row is weakly active: use fetiSensitivity then. w=
@@ -197,7 +200,7 @@ NamedParameters FetiAdjoint::name_param = {
     {"tol", &typeid(double)}, {"maxit", &typeid(long)}, {"activeTol", &typeid(double)}, {"verbosity", &typeid(long)},
     {"w", &typeid(KN<KN<double>>*)}, {"dJdlambda", &typeid(KN<double>*)}};
 
-// real dJ = fetiAdjointGradient(P, dK, dF, velocityX=, velocityY=, dGap=): w'fbar + mu'c~ for
+// real dJ = fetiAdjointGradient(P, dK, dF, velocityX=, velocityY=, velocityZ=, dGap=): w'fbar + mu'c~ for
 // one direction, after fetiAdjoint; no dual solve.
 class FetiAdjointGradient : public WithNamedArguments {
  public:
@@ -222,7 +225,7 @@ class FetiAdjointGradient : public WithNamedArguments {
       const std::vector<DesignDerivative> d = design_directions(
           *h.problem, GetAny<KN<Matrice_Creuse<double>>*>((*dK)(stack)), GetAny<KN<KN<double>>*>((*dF)(stack)),
           optional_pointer<KN<KN<double>>>(nargs[0], stack), optional_pointer<KN<KN<double>>>(nargs[1], stack),
-          optional_pointer<KN<KN<double>>>(nargs[2], stack));
+          optional_pointer<KN<KN<double>>>(nargs[3], stack), optional_pointer<KN<KN<double>>>(nargs[2], stack));
       if (d.size() != 1)  // the same on every rank: the sizes were checked collectively
         throw InputError("dK: " + std::to_string(d.size()) + " design directions: fetiAdjointGradient takes one (" +
                          std::to_string(h.problem->subdomain_count()) + " entries)");
@@ -233,7 +236,7 @@ class FetiAdjointGradient : public WithNamedArguments {
 
 NamedParameters FetiAdjointGradient::name_param = {
     {"velocityX", &typeid(KN<KN<double>>*)}, {"velocityY", &typeid(KN<KN<double>>*)},
-    {"dGap", &typeid(KN<KN<double>>*)}};
+    {"dGap", &typeid(KN<KN<double>>*)}, {"velocityZ", &typeid(KN<KN<double>>*)}};
 
 }  // namespace
 

@@ -28,11 +28,19 @@ struct ContactRowGeometry {
   Kind kind = Kind::node_to_node;
   /// Node to segment and obstacle: the slave node's x and y dofs (subdomain, dof); node to
   /// node: the slave dof in slave[0]. Node to segment: the segment's a_x, a_y, b_x, b_y.
-  /// Node to face and mortar (3D): the slave's x and y dofs only, s its x and y (no sensitivity yet).
-  /// Unused entries are {-1, -1}. slave[0] is the dof that carries the row's gap_field.
+  /// Node to face, 3D obstacle and mortar: the slave's x and y dofs, s its x and y, and
+  /// the three-dimensional data below. Unused entries are {-1, -1}. slave[0] is the dof
+  /// that carries the row's gap_field.
   std::array<std::array<int, 2>, 2> slave{{{-1, -1}, {-1, -1}}};
   std::array<std::array<int, 2>, 4> master{{{-1, -1}, {-1, -1}, {-1, -1}, {-1, -1}}};
   Point s{}, a{}, b{};  ///< slave position, segment ends (obstacle: a = point, b = normal)
+  /// Three dimensions (node to face, obstacle; not mortar): the slave's z dof and position;
+  /// node to face: the master triangle's x, y, z dofs and corners; obstacle: the plane's
+  /// point and unit normal in corners[0], corners[1].
+  std::array<int, 2> slave_z{-1, -1};
+  Point3 s3{};
+  std::array<std::array<int, 2>, 9> face{};
+  std::array<Point3, 3> corners{};
 };
 
 /// Rows in CSR form over (subdomain, dof) entries; equalities first, then the contact rows

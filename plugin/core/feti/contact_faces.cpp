@@ -16,6 +16,10 @@ void add_node_to_face_rows(const std::vector<DofRecord>& records, const std::vec
     geometry.kind = ContactRowGeometry::Kind::node_to_face;
     geometry.slave = {{{node.x_dof->subdomain, node.x_dof->dof}, {node.y_dof->subdomain, node.y_dof->dof}}};
     geometry.s = {s[0], s[1]};
+    geometry.slave_z = {node.z_dof->subdomain, node.z_dof->dof};
+    geometry.s3 = s;
+    for (size_t k = 0; k < 9; ++k) geometry.face[k] = {face->subdomain, face->dofs[k]};
+    geometry.corners = face->corners;
     const LinearizedFaceRow linear = node_to_face_row(s, face->corners[0], face->corners[1], face->corners[2]);
     Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction};
     const DofRecord* slave[3] = {node.x_dof, node.y_dof, node.z_dof};

@@ -64,12 +64,23 @@ std::array<double, 3> closest_point_weights(const Point3& s, const Point3& a, co
   return {1 - v - w, v, w};
 }
 
-LinearizedFaceRow node_to_face_row(const Point3& s, const Point3& a, const Point3& b, const Point3& c) {
+LinearizedFaceRow node_to_face_row(const Point3& s, const Point3& a, const Point3& b, const Point3& c,
+                                   bool clamp) {
   const Point3 ab = minus(b, a), ac = minus(c, a);
   Point3 n = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]};
   const double length = std::sqrt(dot(n, n));
   for (double& component : n) component /= length;
-  const std::array<double, 3> w = closest_point_weights(s, a, b, c);
+  std::array<double, 3> w{};
+  if (clamp) {
+    w = closest_point_weights(s, a, b, c);
+  } else {  // barycentric weights of the projection on the plane: areas of the sub-triangles
+    const Point3 as = minus(s, a);
+    const double d00 = dot(ab, ab), d01 = dot(ab, ac), d11 = dot(ac, ac), d20 = dot(as, ab), d21 = dot(as, ac);
+    const double denominator = d00 * d11 - d01 * d01;
+    w[1] = (d11 * d20 - d01 * d21) / denominator;
+    w[2] = (d00 * d21 - d01 * d20) / denominator;
+    w[0] = 1 - w[1] - w[2];
+  }
   Point3 p{};
   for (size_t i = 0; i < 3; ++i) p[i] = w[0] * a[i] + w[1] * b[i] + w[2] * c[i];
   LinearizedFaceRow row{};

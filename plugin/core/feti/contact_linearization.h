@@ -34,7 +34,10 @@ struct LinearizedFaceRow {
   std::array<double, 12> coefficients;
   double gap;
 };
-LinearizedFaceRow node_to_face_row(const Point3& s, const Point3& a, const Point3& b, const Point3& c);
+/// `clamp` keeps p on the triangle (the set-up); the derivative of a row keeps its pairing
+/// and differentiates the unclamped formula (p the projection on the triangle's plane).
+LinearizedFaceRow node_to_face_row(const Point3& s, const Point3& a, const Point3& b, const Point3& c,
+                                   bool clamp = true);
 /// The closest point of triangle a, b, c to s as barycentric weights (w_a, w_b, w_c).
 std::array<double, 3> closest_point_weights(const Point3& s, const Point3& a, const Point3& b, const Point3& c);
 LinearizedRow obstacle_slip(const Point& normal);

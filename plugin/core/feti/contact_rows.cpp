@@ -124,6 +124,10 @@ void add_obstacle_rows(const std::vector<DofRecord>& records, const ContactInput
     if (contact.three_d) {
       linear.coefficients[2] = -n[2];
       linear.gap += n[2] * (node.x_dof->z - contact.obstacle_point[2]);
+      geometry.slave_z = {node.z_dof->subdomain, node.z_dof->dof};
+      geometry.s3 = {node.x_dof->x, node.x_dof->y, node.x_dof->z};
+      geometry.corners[0] = contact.obstacle_point;
+      geometry.corners[1] = n;
     }
     Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction};
     const DofRecord* slave[3] = {node.x_dof, node.y_dof, node.z_dof};

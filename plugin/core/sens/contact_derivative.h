@@ -1,10 +1,11 @@
 // Derivatives of the contact rows (B'_I, c'_I) when the contact geometry moves with the
-// design: node-to-segment normals, projection weights and gaps, obstacle gaps.
+// design: node-to-segment and node-to-face normals, projection weights and gaps, obstacle gaps.
 #pragma once
 
 #include "feti/constraints.h"
 #include "parallel/communicator.h"
 
+#include <array>
 #include <vector>
 
 namespace ffeti {
@@ -15,18 +16,21 @@ struct RowDerivative {
   double rhs = 0;
 };
 
+/// Node velocities x, y, z: per local subdomain one value per dof, read at each node's x
+/// dof (empty lists or entries: zero; z: three dimensions only).
+using NodeVelocities = std::array<const std::vector<std::vector<double>>*, 3>;
+
 /// For every inequality row of `constraints` (index i - equality_rows), the derivative of
-/// the row under node velocities `velocity_x/_y` (this rank's subdomains, `global_ids`;
-/// empty: nothing moves). Each row keeps its pairing (segment and slave): the derivative
-/// of the linearized condition with the projection parameter xi unclamped. Computed by
-/// central differences of the row's closed form (node_to_segment_row, obstacle_row) with a
-/// step of 1e-6 of the segment length (truncation ~1e-12, round-off ~1e-10 relative): no
-/// assembly. Node-to-node rows do not depend on positions. Collective: the velocities of
-/// the contact nodes are gathered, so every rank gets every row.
+/// the row under the node velocities (this rank's subdomains, `global_ids`; empty: nothing
+/// moves). Each row keeps its pairing (segment or face, and slave): the derivative of the
+/// linearized condition with the projection unclamped. Computed by central differences of
+/// the row's closed form (node_to_segment_row, node_to_face_row, obstacle_row) with a step
+/// of 1e-6 of the segment's or the face's first edge's length (truncation ~1e-12,
+/// round-off ~1e-10 relative): no assembly. Node-to-node rows do not depend on positions;
+/// mortar rows are refused before. Collective: the velocities of the contact nodes are
+/// gathered, so every rank gets every row.
 std::vector<RowDerivative> contact_row_derivatives(const Constraints& constraints,
                                                    const std::vector<int>& global_ids,
-                                                   const std::vector<std::vector<double>>& velocity_x,
-                                                   const std::vector<std::vector<double>>& velocity_y,
-                                                   const Communicator& comm);
+                                                   const NodeVelocities& velocities, const Communicator& comm);
 
 }  // namespace ffeti

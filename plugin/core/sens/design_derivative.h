@@ -12,8 +12,9 @@ namespace ffeti {
 /// means zero: a subdomain the design does not move has an empty K' and f'.
 /// - dK: K'_s, symmetric, full storage, the same size as K_s;
 /// - df: f'_s;
-/// - velocity_x, velocity_y: the derivative of each dof's node position, which moves the
-///   contact geometry (normals, weights and gaps of node-to-segment and obstacle rows).
+/// - velocity_x, velocity_y, velocity_z (three dimensions): the derivative of each dof's
+///   node position, which moves the contact geometry (normals, weights and gaps of
+///   node-to-segment, node-to-face and obstacle rows).
 ///   Empty on every subdomain: the contact geometry does not move.
 /// - dgap: the derivative of ContactInput::gap_field (one value per dof, read where the
 ///   gap is read): a design that changes the gaps themselves, e.g. a contact profile
@@ -22,7 +23,7 @@ namespace ffeti {
 struct DesignDerivative {
   std::vector<SparseMatrix> dK;
   std::vector<Vec> df;
-  std::vector<std::vector<double>> velocity_x, velocity_y;
+  std::vector<std::vector<double>> velocity_x, velocity_y, velocity_z;
   std::vector<std::vector<double>> dgap;
 };
 

@@ -73,10 +73,9 @@ SensitivityProblem::SensitivityProblem(const FetiProblem& problem, const FetiRes
   if (state.lambda.size() != problem.dual_dimension() || state.u.size() != problem.inputs().size())
     throw InputError("P: the solution does not belong to this problem (call fetiSolve first)");
   for (const ContactRowGeometry& row : problem.constraints().geometry)
-    if (row.kind == ContactRowGeometry::Kind::node_to_face || row.kind == ContactRowGeometry::Kind::mortar ||
-        (row.kind == ContactRowGeometry::Kind::obstacle && problem.space_dimension() == 3))
-      throw InputError("P: has node-to-face, mortar or obstacle contact in three dimensions; the derivatives of those rows "
-                       "are not derived yet (node-to-node rows in 3D are)");
+    if (row.kind == ContactRowGeometry::Kind::mortar)
+      throw InputError("P: has mortar contact (contactSlaveFaces=); the derivatives of its rows are not derived yet "
+                       "(node-to-node, node-to-face and obstacle rows are)");
   if (problem.has_friction())
     throw InputError("P: has friction (friction= or slipBound=); the sensitivity analysis of a state with "
                      "friction is not derived yet (docs/reference.md), only of frictionless contact");
@@ -115,8 +114,11 @@ void SensitivityProblem::check(const DesignDerivative& d) const {
   collectively(problem_.communicator(), [&] {
     const auto count_ok = [&](size_t n) { return n == 0 || n == inputs.size(); };
     if (!count_ok(d.dK.size()) || !count_ok(d.df.size()) || !count_ok(d.velocity_x.size()) ||
-        !count_ok(d.velocity_y.size()) || !count_ok(d.dgap.size()))
-      throw InputError("dK, dF, velocityX, velocityY, dGap: need one entry per subdomain");
+        !count_ok(d.velocity_y.size()) || !count_ok(d.velocity_z.size()) || !count_ok(d.dgap.size()))
+      throw InputError("dK, dF, velocityX, velocityY, velocityZ, dGap: need one entry per subdomain");
+    if (problem_.space_dimension() != 3)
+      for (const auto& v : d.velocity_z)
+        if (!v.empty()) throw InputError("velocityZ: the problem is plane (fetiSetup without Z=); give velocityX, velocityY");
     for (size_t k = 0; k < inputs.size(); ++k) {
       const Eigen::Index n = inputs[k].K.rows();
       const int s = ids[k];
@@ -130,7 +132,7 @@ void SensitivityProblem::check(const DesignDerivative& d) const {
       if (!d.df.empty() && d.df[k].size() > 0)
         check_size(d.df[k].size() == n && d.df[k].allFinite(), "dF", s, "needs " + std::to_string(n) + " finite entries (or none)");
       const std::pair<const std::vector<std::vector<double>>*, const char*> fields[] = {
-          {&d.velocity_x, "velocityX"}, {&d.velocity_y, "velocityY"}, {&d.dgap, "dGap"}};
+          {&d.velocity_x, "velocityX"}, {&d.velocity_y, "velocityY"}, {&d.velocity_z, "velocityZ"}, {&d.dgap, "dGap"}};
       for (const auto& [v, name] : fields) {
         if (v->empty() || (*v)[k].empty()) continue;
         bool finite = true;
@@ -148,7 +150,7 @@ SensitivityProblem::DirectionData SensitivityProblem::direction_data(const Desig
   const auto& inputs = problem_.inputs();
   const auto& ids = problem_.global_ids();
   const std::vector<RowDerivative> rows =
-      contact_row_derivatives(full, ids, d.velocity_x, d.velocity_y, problem_.communicator());
+      contact_row_derivatives(full, ids, {&d.velocity_x, &d.velocity_y, &d.velocity_z}, problem_.communicator());
   std::map<int, size_t> local_index;
   for (size_t k = 0; k < ids.size(); ++k) local_index[ids[k]] = k;
 
