@@ -3,9 +3,11 @@
 two cubes at fixed H/h against the undivided cubes' active set solution, the Hessian count
 and times as h falls to a problem above a million unknowns, CHOLMOD's simplicial against
 supernodal factors on 3D subdomains, and the 2D model problem of about the same size beside
-it; Hertz for a sphere (edp/hertz-sphere.edp) with a picture of its stress and contact
-pressure. Writes docs/results/three-dimensions.md and its plots from one run on this machine
-(--sphere: the sphere's part alone, the other tables kept; --render: from the CSVs, no run)."""
+it; Hertz for a sphere (edp/hertz-sphere.edp) on a rigid plane and on an elastic block
+(mortar contact) with a picture of its stress and contact pressure; the contact patch test
+and the 3D gradient checks (tests/edp/). Writes docs/results/three-dimensions.md and its
+plots from one run on this machine (--sphere: the sphere's part alone, the other tables
+kept; --render: from the CSVs, no run)."""
 import argparse
 import datetime
 import math
@@ -40,6 +42,7 @@ CUBES = [("n", "n"), ("subdomains", "subdomains"), ("unknowns", "primal"), ("dua
          ("set-up [s]", ("time_setup", ".2f")), ("factor [s]", ("time_factor", ".2f")),
          ("solve [s]", ("time_solve", ".2f")), ("peak MB", ("process_peak_mb", ".0f")),
          ("MB per subdomain", lambda r: f"{f(r, 'process_peak_mb') / f(r, 'subdomains'):.2f}"),
+         ("factor nonzeros per subdomain", lambda r: f"{f(r, 'factor_nnz') / f(r, 'subdomains'):,.0f}"),
          ("energy", "energy"), ("status", "status")]
 REFERENCE = [("n", "n"), ("unknowns", "primal"), ("couples", "couples"), ("active", "active"),
              ("active set method: active", "active_reference"), ("its iterations", "pdas_iterations"),
@@ -48,7 +51,7 @@ REFERENCE = [("n", "n"), ("unknowns", "primal"), ("couples", "couples"), ("activ
 FACTORS = [("n", "n"), ("H/h", "Hh"), ("subdomains", "subdomains"), ("unknowns", "primal"), ("factor", "factor"),
            ("factor nonzeros", "factor_nnz"), ("factor [s]", ("time_factor", ".2f")), ("solve [s]", ("time_solve", ".2f")),
            ("Hessian mult.", "hessian"), ("peak MB", ("process_peak_mb", ".0f"))]
-SPHERE = [("h [mm]", "h"), ("unknowns", "unknowns"), ("couples", "couples"), ("active", "active"),
+SPHERE = [("support", "support"), ("h [mm]", "h"), ("unknowns", "unknowns"), ("subdomains", "subdomains"), ("couples", "couples"), ("active", "active"),
           ("a [mm]", ("a", ".4f")), ("a Hertz", ("a_hertz", ".4f")), ("error a", ("a_relerr", ".2%")),
           ("p0 [MPa]", ("p0", ".2f")), ("p0 Hertz", ("p0_hertz", ".2f")), ("error p0", ("p0_relerr", ".2%")),
           ("L2 error of p", ("pressure_l2_relerr", ".1%")),
@@ -58,6 +61,12 @@ SPHERE = [("h [mm]", "h"), ("unknowns", "unknowns"), ("couples", "couples"), ("a
           ("its r / a Hertz", lambda r: f"{peak_radius(r) / f(r, 'a_hertz'):.2f}"),
           ("force balance", ("balance_error", ".0e")), ("Hessian mult.", "hessian"),
           ("solve [s]", ("time_solve", ".2f")), ("total [s]", ("time_total", ".2f")), ("status", "status")]
+PATCH = [("meshes", "case"), ("contact", "formulation"), ("variant", "variant"), ("rows", "rows"),
+         ("active", "active"), ("Hessian mult.", "hessian"), ("Σ forces / p", ("force", ".12g")),
+         ("max |σ_zz + p| / p", ("stress_error", ".1e")), ("the same, z beyond ±0.5", ("stress_error_far", ".1e"))]
+GRADIENTS = [("scene", "scene"), ("contact rows", "case"), ("direct", ("direct", ".10g")),
+             ("finite differences", ("fd", ".10g")), ("direct vs differences", ("direct_vs_fd", ".1e")),
+             ("adjoint vs direct", ("adjoint_vs_direct", ".1e"))]
 PLANE_COLUMNS = [("problem", "problem"), ("unknowns", "primal"), ("subdomains", "subdomains"),
                  ("unknowns per subdomain", lambda r: f"{f(r, 'primal') / f(r, 'subdomains'):.0f}"),
                  ("Hessian mult.", "hessian"), ("factor [s]", ("time_factor", ".2f")), ("solve [s]", ("time_solve", ".2f")),
@@ -76,14 +85,16 @@ def run_sphere():
     begun = begin_run()
     sphere, profile = [], []
     with tempfile.TemporaryDirectory() as scratch:
-        for h in SPHERE_SIZES:
-            table = os.path.join(scratch, f"sphere-{h}.csv")
-            views = ["-gmsh", os.path.join(scratch, "sphere.msh")] if h == PICTURE_H else []
-            sphere.append(run("hertz-sphere.edp", "-h", h, "-meshes", os.path.join(ROOT, "meshes"),
-                              "-table", table, *views)["RESULT"][0])
-            with open(table) as rows:
-                header = rows.readline().strip().split(",")
-                profile += [dict(h=h, **dict(zip(header, line.strip().split(",")))) for line in rows]
+        for block in (0, 1):
+            for h in SPHERE_SIZES:
+                table = os.path.join(scratch, f"sphere-{h}.csv")
+                views = ["-gmsh", os.path.join(scratch, "sphere.msh")] if h == PICTURE_H and not block else []
+                sphere.append(run("hertz-sphere.edp", "-h", h, "-block", block, "-meshes", os.path.join(ROOT, "meshes"),
+                                  "-table", table, *views)["RESULT"][0])
+                with open(table) as rows:
+                    header = rows.readline().strip().split(",")
+                    profile += [dict(h=h, support=sphere[-1]["support"], **dict(zip(header, line.strip().split(","))))
+                                for line in rows]
         nodes, faces = surface(os.path.join(scratch, "sphere.msh"))
     write_csv(PAGE, "sphere", sphere)
     write_csv(PAGE, "sphere-pressure", profile)
@@ -147,11 +158,16 @@ def main():
         factors = [run("model-problem-3d.edp", "-n", n, "-Hh", hh, "-reference", 0, "-factor", kind)["RESULT"][0]
                    for n, hh in FACTOR_CASES for kind in ("simplicial", "supernodal")]
         plane = run("model-problem.edp", "-n", PLANE[0], "-Hh", PLANE[1])["RESULT"][0]
+        patch = run(os.path.join(ROOT, "tests", "edp", "patch-test-3d.edp"))["RESULT"]
+        gradients = [dict(scene=scene, **row) for scene in ("sensitivity-3d.edp", "sensitivity-3d-faces.edp")
+                     for row in run(os.path.join(ROOT, "tests", "edp", scene))["RESULT"]]
         run_sphere()
         three = next(r for r in cubes if r["n"] == "64")
         write_csv(PAGE, "cubes", cubes)
         write_csv(PAGE, "reference", reference)
         write_csv(PAGE, "factors", factors)
+        write_csv(PAGE, "patch", patch)
+        write_csv(PAGE, "gradients", gradients)
         write_csv(PAGE, "plane", [dict(problem=f"2D, n = {PLANE[0]}, H/h = {PLANE[1]}", **plane),
                                   dict(problem=f"3D, n = 64, H/h = {HH}", **three)])
         end_run(PAGE, begun)
@@ -181,19 +197,21 @@ def write_plot(cubes):
 
 
 def write_profile(sphere, profile):
-    fig, ax = plt.subplots(figsize=(6.5, 4.2))
-    finest = sphere[-1]
-    a, p0 = f(finest, "a_hertz"), f(finest, "p0_hertz")
-    rs = [1.5 * a * i / 300 for i in range(301)]
-    ax.plot(rs, [p0 * max(0.0, 1 - (r / a) ** 2) ** 0.5 for r in rs], "k-", label="Hertz")
-    for row, marker in zip(sphere[1:], ["s", "o"]):
-        points = [p for p in profile if float(p["h"]) == float(row["h"])]
-        ax.plot([f(p, "r") for p in points], [f(p, "pressure") for p in points], marker, ms=3,
-                label=f"ffeti, h = {row['h']} mm")
-    ax.set_xlabel("r [mm]")
-    ax.set_ylabel("contact pressure [MPa]")
-    ax.set_title("Sphere on a rigid plane: contact pressure per slave node")
-    ax.legend()
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for ax, support, title in zip(axes, ("plane", "block"), ("on a rigid plane", "on an elastic block (mortar)")):
+        rows = [r for r in sphere if r["support"] == support]
+        finest = rows[-1]
+        a, p0 = f(finest, "a_hertz"), f(finest, "p0_hertz")
+        rs = [1.5 * a * i / 300 for i in range(301)]
+        ax.plot(rs, [p0 * max(0.0, 1 - (r / a) ** 2) ** 0.5 for r in rs], "k-", label="Hertz")
+        for row, marker in zip(rows[1:], ["s", "o"]):
+            points = [p for p in profile if float(p["h"]) == float(row["h"]) and p["support"] == support]
+            ax.plot([f(p, "r") for p in points], [f(p, "pressure") for p in points], marker, ms=3,
+                    label=f"ffeti, h = {row['h']} mm")
+        ax.set_xlabel("r [mm]")
+        ax.set_ylabel("contact pressure [MPa]")
+        ax.set_title(f"Sphere {title}: pressure per slave node", fontsize=10)
+        ax.legend()
     fig.tight_layout()
     fig.savefig(os.path.join(OUT, "three-dimensions-sphere.png"), dpi=110)
     plt.close(fig)
@@ -315,10 +333,13 @@ def write_fields(row, nodes, faces):
 
 
 def render():
-    cubes, reference, factors, plane, sphere, profile = (
-        read_csv(PAGE, t) for t in ("cubes", "reference", "factors", "plane", "sphere", "sphere-pressure"))
+    cubes, reference, factors, plane, sphere, profile, patch, gradients = (
+        read_csv(PAGE, t) for t in ("cubes", "reference", "factors", "plane", "sphere", "sphere-pressure", "patch",
+                                    "gradients"))
     write_profile(sphere, profile)
-    pictured = next(r for r in sphere if float(r["h"]) == PICTURE_H)
+    on_plane = [r for r in sphere if r["support"] == "plane"]
+    on_block = [r for r in sphere if r["support"] == "block"]
+    pictured = next(r for r in on_plane if float(r["h"]) == PICTURE_H)
     write_fields(pictured, read_csv(PAGE, "sphere-surface-nodes"), read_csv(PAGE, "sphere-surface-faces"))
     sphere_run = read_csv(PAGE, "sphere-run")[0]
     peak, depth = hertz_axis_maximum(NU)
@@ -342,11 +363,13 @@ def render():
         "Generated by `scripts/benchmark.sh three-dimensions` (do not edit by hand) on:",
         machine_line(run_row),
         "",
-        "What exists in 3D so far: a third coordinate through the plugin (`fetiSetup(..., Z=)`), the six",
-        "rigid modes of 3D elasticity among the kernel candidates, gluing, node-to-node contact on",
-        "matching faces, node-to-face contact and rigid planes, sensitivities of node-to-node rows;",
-        "ffeti-solve's 3D meshes, VTK output and a mortar contact are not done (issue 29); the Hertz sphere",
-        "writes its fields for ParaView and gmsh when asked (`-vtk`, `-gmsh`).",
+        "What exists in 3D: a third coordinate through the plugin (`fetiSetup(..., Z=)`) and ffeti-solve",
+        "(gmsh volume meshes, [getdp.md](../getdp.md)), the six rigid modes of 3D elasticity among the",
+        "kernel candidates, gluing, node-to-node contact on matching faces, node-to-face and mortar contact",
+        "on non-matching ones, rigid planes, the sensitivities of node-to-node, node-to-face and plane",
+        "rows, METIS parts of a `mesh3` (`ffetiMetis3`). Not yet: P2 contact faces, friction, curved",
+        "rigid obstacles, the sensitivities of mortar rows. The Hertz sphere writes its fields for",
+        "ParaView and gmsh when asked (`-vtk`, `-gmsh`).",
         "`edp/model-problem-3d.edp`: two unit cubes,",
         "−Δu = f with the 2D problem's data extruded along z (K = 2 × the P1 Laplacian, f = −3 for",
         "y > 0.75 in the first cube, −1 for y < 0.25 in the second), u = 0 on x = 0, the second cube",
@@ -366,8 +389,8 @@ def render():
         f"Reading: the Hessian count is {listing([int(v) for v in counts])} for n = {listing([r['n'] for r in cubes])}.",
         f"At n = {HH} each cube is one subdomain (H/h = {HH} leaves nothing to split); from n = {2 * HH} on, with",
         f"H/h fixed, it stays between {min(decomposed):.0f} and {max(decomposed):.0f}: over the two refinements to n = 64",
-        f"at most {max(refined) / refined[0]:.2f} times its n = {2 * HH} value (the aim is 1.5 over three; the third,",
-        "n = 128, would take 8,192 subdomains and 6 million unknowns, not run here). The largest problem,",
+        f"at most {max(refined) / refined[0]:.2f} times its n = {2 * HH} value (the aim is 1.5 over three refinements,",
+        f"n = {2 * HH} to {int(max(f(r, 'n') for r in cubes))}). The largest problem,",
         f"{int(f(largest, 'primal')):,} unknowns in {largest['subdomains']} subdomains, is set up in",
         f"{f(largest, 'time_setup'):.1f} s (most of it FreeFEM's assembly of the subdomain matrices), factorized in",
         f"{f(largest, 'time_factor'):.1f} s and solved in {f(largest, 'time_solve'):.1f} s, in {f(largest, 'process_peak_mb') / 1024:.1f} GB.",
@@ -382,14 +405,18 @@ def render():
         f"Reading: the energies agree to {span([f(r, 'energy_error') for r in reference], '.0e')} and the contact",
         "sets are " + ("equal." if all(r["active"] == r["active_reference"] for r in reference) else "NOT equal."),
         "",
-        "## Hertz for a sphere on a rigid plane",
+        "## Hertz for a sphere on a rigid plane and on an elastic block",
         "",
         "`edp/hertz-sphere.edp`: an elastic sphere (R = 10 mm, E = 1000 MPa, ν = 0.3) pressed on a rigid",
         "plane, a quarter model (x ≥ 0, y ≥ 0, sliding on both symmetry planes) meshed by gmsh",
         "(`meshes/hertz-sphere.geo`, size h within 2.5 mm of the contact point), loaded by a pressure on",
         "its cut z = R (F about 500 N on the whole sphere: the mesh's polygonal cut applies a little",
-        "less, and the analytic values use what it applies), Total FETI over 4 bands of z, the rigid",
-        "plane as an obstacle, tol = 1e-6. Hertz: a = (3FR/(4E*))^(1/3), p0 = 3F/(2πa²), E* = E/(1 − ν²).",
+        "less, and the analytic values use what it applies), Total FETI over 4 connected METIS parts,",
+        "the rigid plane as an obstacle, tol = 1e-6. With `-block 1` the sphere presses on a block of",
+        "the same material (20 × 20 × 20 mm per quarter, held at its bottom, `meshes/hertz-sphere-block.geo`:",
+        "9 subdomains, size 0.75 h at the contact, so the meshes do not match), mortar contact with the",
+        "sphere's surface as the slave faces. Hertz: a = (3FR/(4E*))^(1/3), p0 = 3F/(2πa²), 1/E* = Σ (1 − ν²)/E",
+        "over the bodies (the rigid plane adds nothing; the block is taken as a half-space).",
         "a: halfway between the outermost closed row and the nearest open one, by radius; the pressure",
         "per slave node: its force over its share of the surface (`fetiContactPressure`), p0 the",
         "central node's; the L2 error over the rows within 1.2 a, weighted by their shares. Raw data",
@@ -399,11 +426,15 @@ def render():
         "",
         "![sphere](three-dimensions-sphere.png)",
         "",
-        f"Reading: a is within {span([f(r, 'a_relerr') for r in sphere], '.2%')} of Hertz's (read off the mesh, to",
-        f"about half a node spacing), p0 within {listing([f(r, 'p0_relerr') for r in sphere], '.1%')} for h =",
-        f"{listing([r['h'] for r in sphere])} mm: within the 5 % aimed at and falling with h; the profile's L2 error",
-        f"is {listing([f(r, 'pressure_l2_relerr') for r in sphere], '.1%')}. The contact forces",
-        f"balance the load to {span([f(r, 'balance_error') for r in sphere], '.0e')}.",
+        f"Reading: on the plane a is within {span([f(r, 'a_relerr') for r in on_plane], '.2%')} of Hertz's (read off the",
+        f"mesh, to about half a node spacing), p0 within {listing([f(r, 'p0_relerr') for r in on_plane], '.1%')} for h =",
+        f"{listing([r['h'] for r in on_plane])} mm; the profile's L2 error is",
+        f"{listing([f(r, 'pressure_l2_relerr') for r in on_plane], '.1%')}. On the block a is within",
+        f"{listing([f(r, 'a_relerr') for r in on_block], '.1%')} and p0 within {listing([f(r, 'p0_relerr') for r in on_block], '.1%')},",
+        f"the L2 error {listing([f(r, 'pressure_l2_relerr') for r in on_block], '.1%')}: falling with h, larger than on",
+        "the plane (two meshes at the contact, and the mortar multipliers vary from node to node: the",
+        "right panel's scatter). The contact forces",
+        f"balance the load to {span([f(r, 'balance_error') for r in sphere], '.0e')} on both supports.",
         "",
         f"The rows above and the picture below come from one run of this section "
         f"(`three_dimensions_benchmark.py --sphere` runs it alone): {sphere_run['date']}, "
@@ -430,11 +461,38 @@ def render():
         f"{f(pictured, 'von_mises_max') / p0_p:.3f} p0, in the tetrahedron",
         f"whose centroid lies at z = {f(pictured, 'von_mises_max_z'):.2f} mm = {f(pictured, 'von_mises_max_z') / a_p:.2f} a,"
         f" r = {r_p:.2f} mm = {r_p / a_p:.2f} a from the axis",
-        f"(a and p0 Hertz's). Over h = {listing([r['h'] for r in sphere])} mm the largest value is",
-        f"{listing([f(r, 'von_mises_max') / f(r, 'p0_hertz') for r in sphere], '.3f')} p0 at depth",
-        f"{listing([f(r, 'von_mises_max_z') / f(r, 'a_hertz') for r in sphere], '.2f')} a and",
-        f"r = {listing([peak_radius(r) / f(r, 'a_hertz') for r in sphere], '.2f')} a:"
+        f"(a and p0 Hertz's). Over h = {listing([r['h'] for r in on_plane])} mm the largest value is",
+        f"{listing([f(r, 'von_mises_max') / f(r, 'p0_hertz') for r in on_plane], '.3f')} p0 at depth",
+        f"{listing([f(r, 'von_mises_max_z') / f(r, 'a_hertz') for r in on_plane], '.2f')} a and",
+        f"r = {listing([peak_radius(r) / f(r, 'a_hertz') for r in on_plane], '.2f')} a:"
         " a stress per tetrahedron, read at tetrahedra of size h.",
+        "",
+        "## The contact patch test",
+        "",
+        "`tests/edp/patch-test-3d.edp`: a block pressed on another through a flat interface by a uniform",
+        "pressure p on top, both sliding on x = 0 and y = 0, the lower one on its bottom: the exact",
+        "solution is σ_zz = −p everywhere, which P1 elements hold. Matching meshes (6 cells across both)",
+        "and non-matching ones (6 above, 4 below); node to face (the upper block's bottom nodes against",
+        "the lower block's top faces) and mortar (its bottom faces as slave faces); then the upper block",
+        "alone on a rigid plane. tol = 1e-10.",
+        "",
+        *markdown_table(patch, PATCH),
+        "",
+        "Reading: node to face passes on matching meshes only: on non-matching ones the forces reach",
+        "the master nodes by the projection weights, and σ_zz is off by",
+        f"{f(next(r for r in patch if r['case'] == 'non-matching' and r['formulation'] == 'node-to-face'), 'stress_error'):.0%}"
+        " at the interface. Mortar passes on both, to",
+        f"{max(f(r, 'stress_error') for r in patch if r['formulation'] == 'mortar'):.0e}.",
+        "",
+        "## Gradients in three dimensions",
+        "",
+        "`tests/edp/sensitivity-3d.edp` (the cubes' shared face bulging: node-to-node rows, which do not",
+        "move) and `tests/edp/sensitivity-3d-faces.edp` (the patch-test blocks with the master top",
+        "tilting: node-to-face rows; the upper block's bottom bulging on a rigid plane): the compliance's",
+        "derivative by the direct sensitivity and by the adjoint against central differences of",
+        "re-solved moved meshes.",
+        "",
+        *markdown_table(gradients, GRADIENTS),
         "",
         "## Simplicial or supernodal factors for 3D subdomains",
         "",
