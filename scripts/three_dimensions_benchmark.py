@@ -61,7 +61,7 @@ SPHERE = [("support", "support"), ("h [mm]", "h"), ("unknowns", "unknowns"), ("s
           ("its r / a Hertz", lambda r: f"{peak_radius(r) / f(r, 'a_hertz'):.2f}"),
           ("force balance", ("balance_error", ".0e")), ("Hessian mult.", "hessian"),
           ("solve [s]", ("time_solve", ".2f")), ("total [s]", ("time_total", ".2f")), ("status", "status")]
-PATCH = [("meshes", "case"), ("contact", "formulation"), ("variant", "variant"), ("rows", "rows"),
+PATCH = [("element", "element"), ("meshes", "case"), ("contact", "formulation"), ("variant", "variant"), ("rows", "rows"),
          ("active", "active"), ("Hessian mult.", "hessian"), ("Σ forces / p", ("force", ".12g")),
          ("max |σ_zz + p| / p", ("stress_error", ".1e")), ("the same, z beyond ±0.5", ("stress_error_far", ".1e"))]
 GRADIENTS = [("scene", "scene"), ("contact rows", "case"), ("direct", ("direct", ".10g")),
@@ -158,7 +158,8 @@ def main():
         factors = [run("model-problem-3d.edp", "-n", n, "-Hh", hh, "-reference", 0, "-factor", kind)["RESULT"][0]
                    for n, hh in FACTOR_CASES for kind in ("simplicial", "supernodal")]
         plane = run("model-problem.edp", "-n", PLANE[0], "-Hh", PLANE[1])["RESULT"][0]
-        patch = run(os.path.join(ROOT, "tests", "edp", "patch-test-3d.edp"))["RESULT"]
+        patch = [dict(element=element, **row) for element, fe in (("P1", "P13d"), ("P2", "P23d"))
+                 for row in run(os.path.join(ROOT, "tests", "edp", "patch-test-3d.edp"), f"-DPk={fe}")["RESULT"]]
         gradients = [dict(scene=scene, **row) for scene in ("sensitivity-3d.edp", "sensitivity-3d-faces.edp")
                      for row in run(os.path.join(ROOT, "tests", "edp", scene))["RESULT"]]
         run_sphere()
@@ -482,7 +483,10 @@ def render():
         "the master nodes by the projection weights, and σ_zz is off by",
         f"{f(next(r for r in patch if r['case'] == 'non-matching' and r['formulation'] == 'node-to-face'), 'stress_error'):.0%}"
         " at the interface. Mortar passes on both, to",
-        f"{max(f(r, 'stress_error') for r in patch if r['formulation'] == 'mortar'):.0e}.",
+        f"{max(f(r, 'stress_error') for r in patch if r['formulation'] == 'mortar'):.0e}. With P2 elements the faces",
+        "come as 4 sub-triangles: node to face stays exact on matching meshes and on the plane (the",
+        "corner rows carry no force, P2's consistent loads of a pressure being 0 there); mortar on P2",
+        "sub-triangles fails the test (not run here; measured 2.6 % on matching meshes) and is documented as P1 only.",
         "",
         "## Gradients in three dimensions",
         "",
