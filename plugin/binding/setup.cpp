@@ -9,6 +9,8 @@
 #include "parallel/mpi_communicator.h"
 #include "parallel/ownership.h"
 
+#include <cmath>
+
 namespace ffeti::binding {
 namespace {
 
@@ -39,7 +41,7 @@ class FetiSetup : public WithNamedArguments {
  private:
   // Named parameters by position in name_param: these, then the set-up options.
   enum Named { kDirichlet, kDirichletValues, kSlave, kMaster, kGap, kComponent, kComm, kSegments, kObstacle,
-               kRadius, kContactGap, kFriction, kSlipBound, kFrictionField, kZ, kFaces, kSlaveFaces, kOptions };
+               kRadius, kContactGap, kFriction, kSlipBound, kFrictionField, kZ, kFaces, kSlaveFaces, kBall, kOptions };
 
   long setup(Stack stack) const {
     auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
@@ -178,6 +180,24 @@ class FetiSetup : public WithNamedArguments {
         contact.obstacle_normal = {(*obstacle)[2], (*obstacle)[3], 0.0};
       }
     }
+    if (const auto* ball = optional_pointer<KN<double>>(nargs[kBall], stack)) {
+      if (contact.obstacle) throw InputError("obstacle, obstacleBall: give one obstacle, a plane or a ball");
+      if (ball->N() != 3 && ball->N() != 4)
+        throw InputError("obstacleBall: needs [centre x, centre y, radius] (with Z: [cx, cy, cz, radius]), got " +
+                         std::to_string(ball->N()) + " entries");
+      const long n = ball->N();
+      const bool with_z = nargs[kZ] != nullptr;
+      if (with_z != (n == 4))
+        throw InputError(with_z ? "obstacleBall: with Z (three dimensions) needs [cx, cy, cz, radius], got 3 entries"
+                                : "obstacleBall: four entries (a ball) need Z (three dimensions); a plane problem takes "
+                                  "[cx, cy, radius] (a disc)");
+      const double radius = (*ball)[n - 1];
+      if (!(radius > 0 && std::isfinite(radius)))
+        throw InputError("obstacleBall: the radius must be finite and > 0, got " + std::to_string(radius));
+      contact.obstacle = true;
+      contact.obstacle_point = {(*ball)[0], (*ball)[1], n == 4 ? (*ball)[2] : 0.0};
+      contact.obstacle_radius = radius;
+    }
     contact.search_distance = optional_real(nargs[kRadius], stack, contact.search_distance);
     // Not given: -1, no friction rows (a given negative value is refused by the core).
     contact.friction = optional_real(nargs[kFriction], stack, -1.0);
@@ -216,7 +236,7 @@ NamedParameters FetiSetup::name_param = named_parameters(
      {"contactGap", &typeid(KN<KN<double>>*)},   {"friction", &typeid(double)},
      {"slipBound", &typeid(double)},             {"frictionField", &typeid(KN<KN<double>>*)},
      {"Z", &typeid(KN<KN<double>>*)},             {"contactFaces", &typeid(KN<KN<long>>*)},
-     {"contactSlaveFaces", &typeid(KN<KN<long>>*)}},
+     {"contactSlaveFaces", &typeid(KN<KN<long>>*)}, {"obstacleBall", &typeid(KN<double>*)}},
     OptionScope::setup);
 
 long feti_set_loads(const long& id, KN<KN<double>>* const& loads) {

@@ -18,6 +18,9 @@ Constraints build_constraints(std::vector<DofRecord> records, const std::vector<
   std::sort(records.begin(), records.end(), [](const DofRecord& a, const DofRecord& b) {
     return std::make_pair(a.subdomain, a.dof) < std::make_pair(b.subdomain, b.dof);
   });
+  if (contact.has_friction() && contact.obstacle_radius > 0)
+    throw InputError(std::string(contact.friction >= 0 ? "friction" : "slipBound") +
+                     ": not with a ball obstacle (obstacleBall=) yet; a straight obstacle (obstacle=) takes friction");
   if (contact.has_friction() && segments.empty() && !contact.obstacle)
     throw InputError(std::string(contact.friction >= 0 ? "friction" : "slipBound") +
                      ": needs node-to-segment (contactSegments=) or obstacle (obstacle=) contact, whose slave "

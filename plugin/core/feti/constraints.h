@@ -24,7 +24,7 @@ struct ConstraintEntry {
 /// One contact row's linearized condition as a function of the positions it was built
 /// from; the sensitivity analysis differentiates it when the geometry moves.
 struct ContactRowGeometry {
-  enum class Kind : std::uint8_t { node_to_node, node_to_segment, obstacle, node_to_face, mortar };
+  enum class Kind : std::uint8_t { node_to_node, node_to_segment, obstacle, node_to_face, mortar, ball };
   Kind kind = Kind::node_to_node;
   /// Node to segment and obstacle: the slave node's x and y dofs (subdomain, dof); node to
   /// node: the slave dof in slave[0]. Node to segment: the segment's a_x, a_y, b_x, b_y.
@@ -36,7 +36,8 @@ struct ContactRowGeometry {
   Point s{}, a{}, b{};  ///< slave position, segment ends (obstacle: a = point, b = normal)
   /// Three dimensions (node to face, obstacle; not mortar): the slave's z dof and position;
   /// node to face: the master triangle's x, y, z dofs and corners; obstacle: the plane's
-  /// point and unit normal in corners[0], corners[1].
+  /// point and unit normal in corners[0], corners[1]. A ball (in the plane too, z = 0): its
+  /// centre in corners[0], its radius in corners[1][0], the slave's position in s3.
   std::array<int, 2> slave_z{-1, -1};
   Point3 s3{};
   std::array<std::array<int, 2>, 9> face{};

@@ -106,8 +106,40 @@ void add_node_to_segment_rows(const std::vector<DofRecord>& records, const std::
   }
 }
 
+namespace {
+
+/// A rigid ball: each slave node against the tangent plane at its nearest point.
+void add_ball_rows(const std::vector<DofRecord>& records, const ContactInput& contact, double snap,
+                   std::vector<Row>& rows) {
+  const Point3& c = contact.obstacle_point;
+  for (const SlaveNode& node : slave_nodes(records, snap, contact.three_d ? 3 : 2)) {
+    const Point3 s{node.x_dof->x, node.x_dof->y, node.x_dof->z};
+    const double distance = std::hypot(s[0] - c[0], s[1] - c[1], s[2] - c[2]);
+    if (!(distance > 1e-12 * contact.obstacle_radius))
+      throw InputError("obstacleBall: the slave node at (" + std::to_string(s[0]) + ", " + std::to_string(s[1]) + ", " +
+                       std::to_string(s[2]) + ") is the ball's centre: it has no normal");
+    ContactRowGeometry geometry;
+    geometry.kind = ContactRowGeometry::Kind::ball;
+    geometry.slave = {{{node.x_dof->subdomain, node.x_dof->dof}, {node.y_dof->subdomain, node.y_dof->dof}}};
+    if (contact.three_d) geometry.slave_z = {node.z_dof->subdomain, node.z_dof->dof};
+    geometry.s = {s[0], s[1]};
+    geometry.s3 = s;
+    geometry.corners[0] = c;
+    geometry.corners[1] = {contact.obstacle_radius, 0, 0};
+    Row row{{}, distance - contact.obstacle_radius + node.x_dof->gap, RowKind::contact, false, geometry, -1,
+            node.x_dof->friction};
+    const DofRecord* slave[3] = {node.x_dof, node.y_dof, node.z_dof};
+    for (size_t k = 0; k < (contact.three_d ? 3u : 2u); ++k)
+      if (s[k] != c[k]) row.entries.push_back({slave[k]->subdomain, slave[k]->dof, -(s[k] - c[k]) / distance});
+    rows.push_back(std::move(row));
+  }
+}
+
+}  // namespace
+
 void add_obstacle_rows(const std::vector<DofRecord>& records, const ContactInput& contact, double snap,
                        std::vector<Row>& rows) {
+  if (contact.obstacle_radius > 0) return add_ball_rows(records, contact, snap, rows);
   const auto& normal = contact.obstacle_normal;
   const double norm = contact.three_d ? std::hypot(normal[0], normal[1], normal[2]) : std::hypot(normal[0], normal[1]);
   if (!(norm > 0)) throw InputError("obstacle: the normal must not be zero");

@@ -175,6 +175,9 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
   for (double v : {contact.obstacle_point[0], contact.obstacle_point[1], contact.obstacle_point[2],
                    contact.obstacle_normal[0], contact.obstacle_normal[1], contact.obstacle_normal[2]})
     if (contact.obstacle && !std::isfinite(v)) throw InputError("obstacle: the point and the normal must be finite");
+  if (contact.obstacle_radius != 0 && !(contact.obstacle_radius > 0 && std::isfinite(contact.obstacle_radius)))
+    throw InputError("obstacleBall: the radius must be finite and > 0, got " + std::to_string(contact.obstacle_radius));
+
 }
 
 }  // namespace ffeti

@@ -61,6 +61,10 @@ struct ContactInput {
   double search_distance = 1e300;             ///< node to segment and to face: farther slaves get no row
   bool obstacle = false;
   std::array<double, 3> obstacle_point{0, 0, 0}, obstacle_normal{0, 1, 0};  ///< z entries: 3D only
+  /// > 0: the obstacle is a rigid ball (a disc in the plane) of this radius centred at
+  /// obstacle_point instead, the bodies outside it; each slave node s gets the row of the
+  /// tangent plane at its nearest point, n = (s - c)/|s - c|: -n.u_s <= |s - c| - radius.
+  double obstacle_radius = 0;
   /// Set by the set-up (not the caller): the subdomains have a third coordinate.
   bool three_d = false;
   /// Friction (node to segment and obstacle; docs/algorithms.md, "Friction"): each contact

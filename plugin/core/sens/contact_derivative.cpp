@@ -16,7 +16,7 @@ bool three_d(const ContactRowGeometry& g) { return g.slave_z[0] >= 0; }
 /// The nodes whose motion moves a row, each named by its x dof: the slave, and the
 /// segment's ends (node to segment) or the face's corners (node to face).
 std::vector<std::array<int, 2>> moving_nodes(const ContactRowGeometry& g) {
-  if (g.kind == Kind::obstacle) return {g.slave[0]};
+  if (g.kind == Kind::obstacle || g.kind == Kind::ball) return {g.slave[0]};
   if (g.kind == Kind::node_to_segment) return {g.slave[0], g.master[0], g.master[2]};
   if (g.kind == Kind::node_to_face) return {g.slave[0], g.face[0], g.face[3], g.face[6]};
   return {};
@@ -37,7 +37,13 @@ struct RowAt {
 
 RowAt row_at(const ContactRowGeometry& g, const std::array<Point3, 4>& v, double t) {
   RowAt row;
-  if (g.kind == Kind::obstacle && three_d(g)) {  // -n.u_s <= n.(s - point): only the gap moves
+  if (g.kind == Kind::ball) {  // -n.u_s <= |s - c| - radius, n = (s - c)/|s - c|: n moves with s
+    const Point3 s = moved(g.s3, v[0], t), &c = g.corners[0];
+    const double distance = std::hypot(s[0] - c[0], s[1] - c[1], s[2] - c[2]);
+    row.dofs = {g.slave[0], g.slave[1], g.slave_z};
+    for (size_t i = 0; i < 3; ++i) row.coefficients.push_back(-(s[i] - c[i]) / distance);
+    row.gap = distance - g.corners[1][0];
+  } else if (g.kind == Kind::obstacle && three_d(g)) {  // -n.u_s <= n.(s - point): only the gap moves
     const Point3& n = g.corners[1];
     const Point3 s = moved(g.s3, v[0], t);
     row.dofs = {g.slave[0], g.slave[1], g.slave_z};
@@ -71,6 +77,7 @@ double row_length(const ContactRowGeometry& g) {
     const Point3 &a = g.corners[0], &b = g.corners[1];
     return std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
   }
+  if (g.kind == Kind::ball) return g.corners[1][0];
   return 1.0;  // the obstacle row is linear in the slave position: any step is exact
 }
 
