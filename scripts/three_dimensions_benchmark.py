@@ -61,6 +61,11 @@ SPHERE = [("support", "support"), ("h [mm]", "h"), ("unknowns", "unknowns"), ("s
           ("its r / a Hertz", lambda r: f"{peak_radius(r) / f(r, 'a_hertz'):.2f}"),
           ("force balance", ("balance_error", ".0e")), ("Hessian mult.", "hessian"),
           ("solve [s]", ("time_solve", ".2f")), ("total [s]", ("time_total", ".2f")), ("status", "status")]
+INDENTER = [("h [mm]", "h"), ("unknowns", "unknowns"), ("couples", "couples"), ("active", "active"),
+            ("F [N]", ("force", ".1f")), ("a [mm]", ("a", ".4f")), ("a Hertz", ("a_hertz", ".4f")),
+            ("error a", ("a_relerr", ".2%")), ("p0 [MPa]", ("p0", ".2f")), ("p0 Hertz", ("p0_hertz", ".2f")),
+            ("error p0", ("p0_relerr", ".2%")), ("L2 error of p", ("pressure_l2_relerr", ".1%")),
+            ("Hessian mult.", "hessian"), ("solve [s]", ("time_solve", ".2f")), ("status", "status")]
 PATCH = [("element", "element"), ("meshes", "case"), ("contact", "formulation"), ("variant", "variant"), ("rows", "rows"),
          ("active", "active"), ("Hessian mult.", "hessian"), ("Σ forces / p", ("force", ".12g")),
          ("max |σ_zz + p| / p", ("stress_error", ".1e")), ("the same, z beyond ±0.5", ("stress_error_far", ".1e"))]
@@ -96,7 +101,10 @@ def run_sphere():
                     profile += [dict(h=h, support=sphere[-1]["support"], **dict(zip(header, line.strip().split(","))))
                                 for line in rows]
         nodes, faces = surface(os.path.join(scratch, "sphere.msh"))
+    indenter = [run("hertz-indenter.edp", "-h", h, "-meshes", os.path.join(ROOT, "meshes"))["RESULT"][0]
+                for h in SPHERE_SIZES]
     write_csv(PAGE, "sphere", sphere)
+    write_csv(PAGE, "indenter", indenter)
     write_csv(PAGE, "sphere-pressure", profile)
     write_csv(PAGE, "sphere-surface-nodes", nodes)
     write_csv(PAGE, "sphere-surface-faces", faces)
@@ -334,9 +342,9 @@ def write_fields(row, nodes, faces):
 
 
 def render():
-    cubes, reference, factors, plane, sphere, profile, patch, gradients = (
+    cubes, reference, factors, plane, sphere, profile, patch, gradients, indenter = (
         read_csv(PAGE, t) for t in ("cubes", "reference", "factors", "plane", "sphere", "sphere-pressure", "patch",
-                                    "gradients"))
+                                    "gradients", "indenter"))
     write_profile(sphere, profile)
     on_plane = [r for r in sphere if r["support"] == "plane"]
     on_block = [r for r in sphere if r["support"] == "block"]
@@ -367,10 +375,11 @@ def render():
         "What exists in 3D: a third coordinate through the plugin (`fetiSetup(..., Z=)`) and ffeti-solve",
         "(gmsh volume meshes, [getdp.md](../getdp.md)), the six rigid modes of 3D elasticity among the",
         "kernel candidates, gluing, node-to-node contact on matching faces, node-to-face and mortar contact",
-        "on non-matching ones, rigid planes, the sensitivities of node-to-node, node-to-face and plane",
-        "rows, METIS parts of a `mesh3` (`ffetiMetis3`). Not yet: P2 contact faces, friction, curved",
-        "rigid obstacles, the sensitivities of mortar rows. The Hertz sphere writes its fields for",
-        "ParaView and gmsh when asked (`-vtk`, `-gmsh`).",
+        "on non-matching ones, rigid planes and balls, the sensitivities of node-to-node, node-to-face,",
+        "plane and ball rows, METIS parts of a `mesh3` (`ffetiMetis3`), P2 elements (node-to-face faces as",
+        "sub-triangles). Not yet: mortar on P2 faces, friction, rigid surfaces from gmsh, the",
+        "sensitivities of mortar rows. The Hertz sphere writes its fields for ParaView and gmsh when",
+        "asked (`-vtk`, `-gmsh`).",
         "`edp/model-problem-3d.edp`: two unit cubes,",
         "−Δu = f with the 2D problem's data extruded along z (K = 2 × the P1 Laplacian, f = −3 for",
         "y > 0.75 in the first cube, −1 for y < 0.25 in the second), u = 0 on x = 0, the second cube",
@@ -467,6 +476,19 @@ def render():
         f"{listing([f(r, 'von_mises_max_z') / f(r, 'a_hertz') for r in on_plane], '.2f')} a and",
         f"r = {listing([peak_radius(r) / f(r, 'a_hertz') for r in on_plane], '.2f')} a:"
         " a stress per tetrahedron, read at tetrahedra of size h.",
+        "",
+        "## Hertz for a rigid ball pressed into the block",
+        "",
+        "`edp/hertz-indenter.edp`: the block above pushed up by 0.23 mm at its bottom against a rigid ball",
+        "(R = 10 mm, `obstacleBall=`: each slave node against the tangent plane at its nearest point of",
+        "the ball), FETI-1 over its 9 subdomains, tol = 1e-6; Hertz for the force F the solve finds",
+        "(a rigid sphere on a half-space, E* = E/(1 − ν²)).",
+        "",
+        *markdown_table(indenter, INDENTER),
+        "",
+        f"Reading: a within {listing([f(r, 'a_relerr') for r in indenter], '.2%')} and p0 within",
+        f"{listing([f(r, 'p0_relerr') for r in indenter], '.2%')} of Hertz's for h = {listing([r['h'] for r in indenter])} mm;",
+        f"the profile's L2 error {listing([f(r, 'pressure_l2_relerr') for r in indenter], '.1%')}.",
         "",
         "## The contact patch test",
         "",
