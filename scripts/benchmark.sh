@@ -16,9 +16,11 @@
 #   ./scripts/benchmark.sh busy-machine    scenes idle and beside busy neighbour processes, threads (~2 min)
 #   ./scripts/benchmark.sh friction        Cattaneo-Mindlin and a block on a slope: tractions, stick/slip,
 #                                          the Coulomb fixed point's cost against frictionless (~1 min)
-#   ./scripts/benchmark.sh three-dimensions  the model problem as two cubes up to 1.5 million unknowns,
-#                                          factor kinds in 3D, against 2D, Hertz for a sphere and its
-#                                          picture (~3 min; "three-dimensions --sphere": the sphere alone)
+#   ./scripts/benchmark.sh three-dimensions  the model problem as two cubes up to 6 million unknowns,
+#                                          factor kinds in 3D, against 2D, Hertz for a sphere on a plane
+#                                          and on a block, a rigid ball, the patch test, 3D gradients and
+#                                          a picture (~12 min, 13 GB; "three-dimensions --sphere": the
+#                                          Hertz scenes alone)
 #   ./scripts/benchmark.sh                 all
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
