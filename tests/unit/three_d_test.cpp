@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <string>
 
 namespace ffeti {
 namespace {
@@ -122,7 +123,8 @@ SubdomainInput vector_nodes3(const std::vector<std::array<double, 3>>& nodes, in
 
 TEST(ThreeDimensions, NodeToFaceSlaveOutOfReachGetsNoRow) {
   // As node to segment in the plane: a slave node farther than contactRadius from every
-  // master face of another body gets no row (no contact possible there), not an error.
+  // master face of another body gets no row (no contact possible there), not an error;
+  // but no row for any slave is one.
   // Master face (0,0,0), (2,0,0), (0,2,0) of body 0, normal +z; slaves of body 1 at
   // height 0.1 above it and at (5, 5, 0.1), 4.95 from its nearest point (1, 1, 0).
   const std::vector<SubdomainInput> subs = {vector_nodes3({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}, 0),
@@ -142,8 +144,16 @@ TEST(ThreeDimensions, NodeToFaceSlaveOutOfReachGetsNoRow) {
   for (int k = near.row_start[static_cast<size_t>(row)]; k < near.row_start[static_cast<size_t>(row) + 1]; ++k)
     near_slave |= near.entries[static_cast<size_t>(k)].subdomain == 1 && near.entries[static_cast<size_t>(k)].dof == 2;
   EXPECT_TRUE(near_slave) << "the row is the near slave's (its z dof, 2)";
-  contact.search_distance = 0.05;  // both beyond: no contact row, and still no error
-  EXPECT_EQ(build_constraints(subs, contact, FetiVariant::tfeti).count(RowKind::contact), 0);
+  // Both beyond: no contact row at all, the contact asked for cannot happen: an error that
+  // names the faces and the radius.
+  contact.search_distance = 0.05;
+  try {
+    build_constraints(subs, contact, FetiVariant::tfeti);
+    ADD_FAILURE() << "no error for a contact without any row";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("contactFaces"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("contactRadius"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -36,6 +36,16 @@ Constraints build_constraints(std::vector<DofRecord> records, const std::vector<
     throw InputError("contactSlaveFaces: mortar contact needs the master faces too (contactFaces=)");
   if (mortar) add_mortar_rows(records, faces, contact, snap, rows);
   else if (!faces.empty()) add_node_to_face_rows(records, faces, contact, snap, rows);
+  // A slave far from every master gets no row (no contact possible there); none at all
+  // means the contact asked for cannot happen: most likely a radius or a surface mislaid.
+  const bool searched = !segments.empty() || !faces.empty();
+  const bool has_slaves = std::any_of(records.begin(), records.end(), [](const DofRecord& r) { return r.slave; });
+  if (searched && has_slaves &&
+      std::none_of(rows.begin(), rows.end(), [](const Row& r) { return r.kind == RowKind::contact; }))
+    throw InputError(std::string(segments.empty() ? (mortar ? "contactSlaveFaces" : "contactFaces") : "contactSegments") +
+                     ": no slave node has a master " + (segments.empty() ? "face" : "segment") +
+                     " of another body within contactRadius = " + std::to_string(contact.search_distance) +
+                     " (no contact row at all): check the radius and which surfaces are slave and master");
   if (segments.empty() && faces.empty() && !contact.obstacle) add_node_to_node_rows(records, contact.gap, snap, rows);
   if (variant == FetiVariant::feti1) substitute_dirichlet(records, rows);
 
