@@ -19,7 +19,8 @@ if ! command -v valgrind >/dev/null; then
 fi
 # Scenes: contact through FETI-1 and Total FETI, node-to-segment contact, obstacles,
 # sensitivities and adjoints, bad input caught by try, friction (Coulomb, Tresca, load
-# steps), three dimensions (elasticity, the cubes).
+# steps), three dimensions (elasticity, the cubes, node to face and mortar, the ball, their
+# sensitivities).
 scenes=("$root/edp/example.edp"
         "$root/tests/edp/elastic-contact.edp"
         "$root/tests/edp/bad-input.edp"
@@ -31,7 +32,11 @@ scenes=("$root/edp/example.edp"
         "$root/edp/block-on-slope.edp -law tresca -check 1"
         "$root/edp/cattaneo-mindlin.edp -h 0.4 -meshes $root/meshes -check 0.05"
         "$root/tests/edp/elasticity-3d.edp"
-        "$root/edp/model-problem-3d.edp -n 8 -Hh 4 -tol 1e-8 -check 1e-8")
+        "$root/edp/model-problem-3d.edp -n 8 -Hh 4 -tol 1e-8 -check 1e-8"
+        "$root/tests/edp/patch-test-3d.edp"
+        "$root/tests/edp/sensitivity-3d-faces.edp"
+        "$root/edp/hertz-sphere.edp -h 0.2 -block 1 -meshes $root/meshes -check 0.1"
+        "$root/edp/hertz-indenter.edp -h 0.2 -meshes $root/meshes -check 0.05")
 label() { local script=${1%% *}; echo "$(basename "$script")${1#"$script"}"; }
 failures=0
 log=$(mktemp)

@@ -40,4 +40,7 @@ exercise "lesson 9: -mu 0.2" "$lessons/09-friction.edp" -mu 0.2
 exercise "lesson 10: -n 8" "$lessons/10-three-dimensions.edp" -n 8
 exercise "lesson 10: -n 32" "$lessons/10-three-dimensions.edp" -n 32
 exercise "lesson 10: -n 16 -Hh 4" "$lessons/10-three-dimensions.edp" -n 16 -Hh 4
+exercise "lesson 11: -m2 6" "$lessons/11-solids-in-contact.edp" -m2 6
+exercise "lesson 11: -swap 1" "$lessons/11-solids-in-contact.edp" -swap 1
+exercise "lesson 11: -m 12 -m2 8" "$lessons/11-solids-in-contact.edp" -m 12 -m2 8
 [ "$failures" -eq 0 ] && echo "all checks passed" || { echo "$failures exercise(s) failed"; exit 1; }
