@@ -60,12 +60,20 @@ SPHERE = [("support", "support"), ("h [mm]", "h"), ("unknowns", "unknowns"), ("s
           ("its depth z / a Hertz", lambda r: f"{f(r, 'von_mises_max_z') / f(r, 'a_hertz'):.2f}"),
           ("its r / a Hertz", lambda r: f"{peak_radius(r) / f(r, 'a_hertz'):.2f}"),
           ("force balance", ("balance_error", ".0e")), ("Hessian mult.", "hessian"),
+          ("slave / master faces", lambda r: f"{r['slave_faces']} / {r['master_faces']}" if r["support"] == "block" else "-"),
+          ("constraints [s]", ("time_constraints", ".2f")),
           ("solve [s]", ("time_solve", ".2f")), ("total [s]", ("time_total", ".2f")), ("status", "status")]
 INDENTER = [("h [mm]", "h"), ("unknowns", "unknowns"), ("couples", "couples"), ("active", "active"),
             ("F [N]", ("force", ".1f")), ("a [mm]", ("a", ".4f")), ("a Hertz", ("a_hertz", ".4f")),
             ("error a", ("a_relerr", ".2%")), ("p0 [MPa]", ("p0", ".2f")), ("p0 Hertz", ("p0_hertz", ".2f")),
             ("error p0", ("p0_relerr", ".2%")), ("L2 error of p", ("pressure_l2_relerr", ".1%")),
             ("Hessian mult.", "hessian"), ("solve [s]", ("time_solve", ".2f")), ("status", "status")]
+SEARCH_SIZES = [25, 50, 100, 200]  # edp/contact-search.edp: m x m cells on the slave side
+SEARCH = [("contact", "contact"), ("m", "m"), ("slave faces", "slave_faces"), ("master faces", "master_faces"),
+          ("rows", "couples"), ("unknowns", "unknowns"), ("constraints [s]", ("time_constraints", ".3f")),
+          ("µs per slave face", lambda r: f"{1e6 * f(r, 'time_constraints') / f(r, 'slave_faces'):.1f}"),
+          ("factor [s]", ("time_factor", ".2f")), ("solve [s]", ("time_solve", ".2f")), ("Hessian mult.", "hessian"),
+          ("largest σ_zz error / p", ("stress_error", ".1e")), ("status", "status")]
 PATCH = [("element", "element"), ("meshes", "case"), ("contact", "formulation"), ("variant", "variant"), ("rows", "rows"),
          ("active", "active"), ("Hessian mult.", "hessian"), ("Σ forces / p", ("force", ".12g")),
          ("largest σ_zz error / p", ("stress_error", ".1e")), ("the same, z beyond ±0.5", ("stress_error_far", ".1e"))]
@@ -170,12 +178,15 @@ def main():
                  for row in run(os.path.join(ROOT, "tests", "edp", "patch-test-3d.edp"), f"-DPk={fe}")["RESULT"]]
         gradients = [dict(scene=scene, **row) for scene in ("sensitivity-3d.edp", "sensitivity-3d-faces.edp")
                      for row in run(os.path.join(ROOT, "tests", "edp", scene))["RESULT"]]
+        search = [run("contact-search.edp", "-m", m, "-mortar", mortar)["RESULT"][0]
+                  for mortar in (1, 0) for m in SEARCH_SIZES]
         run_sphere()
         three = next(r for r in cubes if r["n"] == "64")
         write_csv(PAGE, "cubes", cubes)
         write_csv(PAGE, "reference", reference)
         write_csv(PAGE, "factors", factors)
         write_csv(PAGE, "patch", patch)
+        write_csv(PAGE, "search", search)
         write_csv(PAGE, "gradients", gradients)
         write_csv(PAGE, "plane", [dict(problem=f"2D, n = {PLANE[0]}, H/h = {PLANE[1]}", **plane),
                                   dict(problem=f"3D, n = 64, H/h = {HH}", **three)])
@@ -342,9 +353,10 @@ def write_fields(row, nodes, faces):
 
 
 def render():
-    cubes, reference, factors, plane, sphere, profile, patch, gradients, indenter = (
+    cubes, reference, factors, plane, sphere, profile, patch, gradients, indenter, search = (
         read_csv(PAGE, t) for t in ("cubes", "reference", "factors", "plane", "sphere", "sphere-pressure", "patch",
-                                    "gradients", "indenter"))
+                                    "gradients", "indenter", "search"))
+    mortar_search = [r for r in search if r["contact"] == "mortar"]
     write_profile(sphere, profile)
     on_plane = [r for r in sphere if r["support"] == "plane"]
     on_block = [r for r in sphere if r["support"] == "block"]
@@ -443,7 +455,9 @@ def render():
         f"{listing([f(r, 'a_relerr') for r in on_block], '.1%')} and p0 within {listing([f(r, 'p0_relerr') for r in on_block], '.1%')},",
         f"the L2 error {listing([f(r, 'pressure_l2_relerr') for r in on_block], '.1%')}: falling with h, larger than on",
         "the plane (two meshes at the contact, and the mortar multipliers vary from node to node: the",
-        "right panel's scatter). The contact forces",
+        "right panel's scatter). Constraints [s]: building B, with the mortar's search and integration",
+        f"over {on_block[-1]['slave_faces']} slave and {on_block[-1]['master_faces']} master faces at h = {on_block[-1]['h']} mm",
+        f"in {f(on_block[-1], 'time_constraints'):.2f} s. The contact forces",
         f"balance the load to {span([f(r, 'balance_error') for r in sphere], '.0e')} on both supports.",
         "",
         f"The rows above and the picture below come from one run of this section "
@@ -509,6 +523,23 @@ def render():
         "come as 4 sub-triangles: node to face stays exact on matching meshes and on the plane (the",
         "corner rows carry no force, P2's consistent loads of a pressure being 0 there). Mortar on P2",
         "sub-triangles fails the test ([log](../log.md)) and is not run: the reference offers mortar on P1 faces.",
+        "",
+        "## The contact search as the faces grow",
+        "",
+        "`edp/contact-search.edp`: two thin plates (1 × 1 × 0.1) pressed together by a uniform pressure, the",
+        "upper one of m × m × 1 cells on the lower one of 0.9 m × 0.9 m × 1 (non-matching), one subdomain",
+        "each, tol = 1e-8; mortar (the upper plate's bottom faces) and node to face (its bottom nodes)",
+        "against the lower plate's top faces. Constraints [s]: building B, the search through the",
+        "master faces' grid and, for mortar, the clipping and integration of every overlapping pair.",
+        "",
+        *markdown_table(search, SEARCH),
+        "",
+        f"Reading: from {mortar_search[0]['slave_faces']} to {mortar_search[-1]['slave_faces']} slave faces the mortar rows take",
+        f"{listing([f(r, 'time_constraints') for r in mortar_search], '.2f')} s,",
+        f"{listing([1e6 * f(r, 'time_constraints') / f(r, 'slave_faces') for r in mortar_search], '.0f')} µs per slave face:",
+        "about linear in the faces (the grid's cells hold a bounded number of faces), and a small part",
+        "of the set-up beside the factorization. Mortar stays exact on the patch test at every size;",
+        "node to face's error falls with h on these plates, whose meshes differ only slightly.",
         "",
         "## Gradients in three dimensions",
         "",
