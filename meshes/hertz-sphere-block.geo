@@ -2,8 +2,8 @@
 // its top touching the sphere at the origin. Mesh size 0.75 hc within `zone` of the origin,
 // growing to R/4 like the sphere's: the two meshes of the contact zone do not match, and the
 // block's (the master's) is the finer, since mortar multipliers on the coarser side
-// oscillate less (measured: the central pressure 2.6 % off Hertz at hc = 0.1 with the block
-// at 0.75 hc, 5.9 % with it at 1.3 hc).
+// oscillate less (with the block at 1.3 hc the pressure per node scattered by about ±10 %
+// at hc = 0.1; docs/log.md).
 // The block comes in FETI subdomains with conforming interfaces: the cube [0, c]^2 x [-c, 0]
 // at the contact (c = zone) as 2 x 2 x 2 boxes, physical volumes 1-8, and the rest of the
 // block, physical volume 9 (a split of the mesh by element centroids left tetrahedra
