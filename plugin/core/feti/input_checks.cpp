@@ -49,6 +49,36 @@ void check_per_subdomain_lists(const std::vector<std::vector<int>>& lists, const
   for (size_t k = 0; k < lists.size(); ++k) check_dofs(lists[k], subdomains[k].K.rows(), indexed(name, ids[k]));
 }
 
+/// Contact triangles (9 dofs each, indices already checked): each corner's three dofs are
+/// its x, y and z (component 0, 1, 2) at one node, and the corners are distinct nodes. Rows
+/// built from a face listed otherwise would push along the wrong axes without a word.
+void check_face_corners(const std::vector<std::vector<std::array<int, 9>>>& faces, const std::vector<size_t>& ids,
+                        const std::vector<SubdomainInput>& subdomains, const char* name) {
+  for (size_t k = 0; k < faces.size(); ++k) {
+    const SubdomainInput& sub = subdomains[k];
+    if (sub.z.empty()) continue;  // refused elsewhere: faces need Z
+    for (size_t f = 0; f < faces[k].size(); ++f) {
+      const auto& dofs = faces[k][f];
+      const auto at = [&](int corner, int i) { return static_cast<size_t>(dofs[static_cast<size_t>(3 * corner + i)]); };
+      const auto where = [&] { return indexed(name, ids[k]) + ": face " + std::to_string(f) + " "; };
+      for (int corner = 0; corner < 3; ++corner)
+        for (int i = 0; i < 3; ++i) {
+          if (!sub.component.empty() && sub.component[at(corner, i)] != i)
+            throw InputError(where() + "lists dof " + std::to_string(at(corner, i)) + " as its corner " +
+                             std::to_string(corner) + "'s component " + std::to_string(i) + ", but it is component " +
+                             std::to_string(sub.component[at(corner, i)]) + " (list x, y, z of each corner)");
+          if (sub.x[at(corner, i)] != sub.x[at(corner, 0)] || sub.y[at(corner, i)] != sub.y[at(corner, 0)] ||
+              sub.z[at(corner, i)] != sub.z[at(corner, 0)])
+            throw InputError(where() + "corner " + std::to_string(corner) + ": its dofs lie at different nodes");
+        }
+      for (int a = 0; a < 3; ++a)
+        for (int b = a + 1; b < 3; ++b)
+          if (sub.x[at(a, 0)] == sub.x[at(b, 0)] && sub.y[at(a, 0)] == sub.y[at(b, 0)] && sub.z[at(a, 0)] == sub.z[at(b, 0)])
+            throw InputError(where() + "has two corners at one node (no area)");
+    }
+  }
+}
+
 /// A field of one value per dof and subdomain (empty entries allowed), each finite and at
 /// least `lowest`.
 void check_dof_field(const std::vector<std::vector<double>>& field, const std::vector<size_t>& ids,
@@ -147,6 +177,7 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
       for (const auto& face : list) face_dofs.back().insert(face_dofs.back().end(), face.begin(), face.end());
     }
     check_per_subdomain_lists(face_dofs, ids, subdomains, name);
+    check_face_corners(*faces, ids, subdomains, name);
     if (any(*faces) && !three_d)
       throw InputError(std::string(name) + ": contact on faces needs Z (three dimensions); a plane problem takes "
                        "contactSegments");
