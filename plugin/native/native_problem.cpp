@@ -269,9 +269,15 @@ long add_master_segments(const std::vector<std::array<NodeTag, 2>>& segments, co
   return found;
 }
 
-/// Each tetrahedron face of the local subdomains (its nodes sorted): (subdomain position,
-/// the opposite vertex).
-using FaceMap = std::map<std::array<NodeTag, 3>, std::pair<size_t, NodeTag>>;
+/// Each tetrahedron face of the local subdomains (its nodes sorted): the subdomain position
+/// and the opposite vertex of a tetrahedron it bounds, and how many of the local
+/// tetrahedra it bounds (2: an inner face).
+struct FaceOwner {
+  size_t subdomain;
+  NodeTag opposite;
+  int tetrahedra;
+};
+using FaceMap = std::map<std::array<NodeTag, 3>, FaceOwner>;
 
 FaceMap faces_of(const std::vector<SubdomainLayout>& layouts) {
   FaceMap faces;
@@ -282,7 +288,8 @@ FaceMap faces_of(const std::vector<SubdomainLayout>& layouts) {
         for (size_t i = 0, j = 0; i < 4; ++i)
           if (i != opposite) face[j++] = t.nodes[i];
         std::sort(face.begin(), face.end());
-        faces[face] = {k, t.nodes[opposite]};
+        const auto [it, added] = faces.try_emplace(face, FaceOwner{k, t.nodes[opposite], 0});
+        ++it->second.tetrahedra;
       }
   return faces;
 }
@@ -300,7 +307,14 @@ long add_master_faces(const std::vector<std::array<NodeTag, 3>>& triangles, cons
     std::sort(key.begin(), key.end());
     const auto face = faces.find(key);
     if (face == faces.end()) continue;
-    const auto [k, d] = face->second;
+    // Between two tetrahedra the face has no outside to point to (checked where both are
+    // on this rank).
+    if (face->second.tetrahedra > 1)
+      throw InputError("contact master: the triangle (" + std::to_string(corners[0]) + ", " + std::to_string(corners[1]) +
+                       ", " + std::to_string(corners[2]) + ") lies between two tetrahedra: master faces must be on "
+                       "a body's boundary");
+    const size_t k = face->second.subdomain;
+    const NodeTag d = face->second.opposite;
     const auto pa = mesh.position(corners[0]), pb = mesh.position(corners[1]), pc = mesh.position(corners[2]);
     const auto pd = mesh.position(d);
     const std::array<double, 3> u{pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]}, v{pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};

@@ -121,6 +121,26 @@ SubdomainInput vector_nodes3(const std::vector<std::array<double, 3>>& nodes, in
   return s;
 }
 
+TEST(ThreeDimensions, MortarRowsSeeTheNearestMasterLayerOnly) {
+  // A slave triangle (body 0, edges 1 and 1.4) on the top face of body 1, with body 2's top
+  // face three units further down, facing it too, and no search distance given: the rows take body 1's face
+  // alone (they once averaged both layers' constraints), with the gap 0 of touching faces.
+  const std::vector<SubdomainInput> subs = {vector_nodes3({{0, 0, 1}, {0, 1, 1}, {1, 0, 1}}, 0),
+                                            vector_nodes3({{-1, -1, 1}, {3, -1, 1}, {-1, 3, 1}}, 1),
+                                            vector_nodes3({{-1, -1, -2}, {3, -1, -2}, {-1, 3, -2}}, 2)};
+  ContactInput contact;
+  contact.slave_faces = {{{0, 1, 2, 3, 4, 5, 6, 7, 8}}, {}, {}};  // (b - a) x (c - a) = -z: out of body 0
+  contact.master_faces = {{}, {{0, 1, 2, 3, 4, 5, 6, 7, 8}}, {{0, 1, 2, 3, 4, 5, 6, 7, 8}}};
+  const Constraints c = build_constraints(subs, contact, FetiVariant::tfeti);
+  ASSERT_EQ(c.count(RowKind::contact), 3);
+  for (int row = 0; row < c.rows(); ++row) {
+    if (c.kind[static_cast<size_t>(row)] != RowKind::contact) continue;
+    EXPECT_NEAR(c.rhs[static_cast<size_t>(row)], 0.0, 1e-14);
+    for (int k = c.row_start[static_cast<size_t>(row)]; k < c.row_start[static_cast<size_t>(row) + 1]; ++k)
+      EXPECT_NE(c.entries[static_cast<size_t>(k)].subdomain, 2) << "row " << row << " reaches the far layer";
+  }
+}
+
 TEST(ThreeDimensions, NodeToFaceSlaveOutOfReachGetsNoRow) {
   // As node to segment in the plane: a slave node farther than contactRadius from every
   // master face of another body gets no row (no contact possible there), not an error;

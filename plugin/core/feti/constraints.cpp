@@ -45,7 +45,8 @@ Constraints build_constraints(std::vector<DofRecord> records, const std::vector<
     throw InputError(std::string(segments.empty() ? (mortar ? "contactSlaveFaces" : "contactFaces") : "contactSegments") +
                      ": no slave node has a master " + (segments.empty() ? "face" : "segment") +
                      " of another body within contactRadius = " + std::to_string(contact.search_distance) +
-                     " (no contact row at all): check the radius and which surfaces are slave and master");
+                     " (no contact row at all): check the radius, which surfaces are slave and master, and that "
+                     "each face is ordered with (b - a) x (c - a) out of its body (ffetiBoundaryFaces)");
   if (segments.empty() && faces.empty() && !contact.obstacle) add_node_to_node_rows(records, contact.gap, snap, rows);
   if (variant == FetiVariant::feti1) substitute_dirichlet(records, rows);
 

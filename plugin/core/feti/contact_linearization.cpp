@@ -73,7 +73,7 @@ LinearizedFaceRow node_to_face_row(const Point3& s, const Point3& a, const Point
   std::array<double, 3> w{};
   if (clamp) {
     w = closest_point_weights(s, a, b, c);
-  } else {  // barycentric weights of the projection on the plane: areas of the sub-triangles
+  } else {  // barycentric weights of the projection on the plane (the normal equations of ab, ac)
     const Point3 as = minus(s, a);
     const double d00 = dot(ab, ab), d01 = dot(ab, ac), d11 = dot(ac, ac), d20 = dot(as, ab), d21 = dot(as, ac);
     const double denominator = d00 * d11 - d01 * d01;

@@ -4,6 +4,8 @@
 #include "feti/face_grid.h"
 #include "feti/mortar_integration.h"
 
+#include "base/errors.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -24,12 +26,23 @@ struct MortarRow {
 
 double dot(const Point3& p, const Point3& q) { return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]; }
 
-Point3 unit_normal(const Triangle3& t) {
+/// (b - a) x (c - a): twice the area times the unit normal.
+Point3 area_normal(const Triangle3& t) {
   Point3 n{};
   for (size_t d = 0; d < 3; ++d) {
     const size_t d1 = (d + 1) % 3, d2 = (d + 2) % 3;
     n[d] = (t[1][d1] - t[0][d1]) * (t[2][d2] - t[0][d2]) - (t[1][d2] - t[0][d2]) * (t[2][d1] - t[0][d1]);
   }
+  return n;
+}
+
+double face_area(const Triangle3& t) {
+  const Point3 n = area_normal(t);
+  return std::sqrt(dot(n, n)) / 2;
+}
+
+Point3 unit_normal(const Triangle3& t) {
+  const Point3 n = area_normal(t);
   const double length = std::sqrt(dot(n, n));
   return {n[0] / length, n[1] / length, n[2] / length};
 }
@@ -73,39 +86,58 @@ void add_mortar_rows(const std::vector<DofRecord>& records, const std::vector<Fa
   };
   for (size_t j = 0; j < nodes.size(); ++j)
     node_at[key(nodes[j].x_dof->body, {nodes[j].x_dof->x, nodes[j].x_dof->y, nodes[j].x_dof->z})] = j;
+  // Checked on all ranks' data: a slave node of contactSlave= on one rank beside slave faces
+  // on another would get no row without a word.
+  std::vector<char> is_corner(nodes.size(), 0);
+  for (const FaceRecord& f : slaves)
+    for (const Point3& p : f.corners) is_corner[node_at.at(key(f.body, p))] = 1;
+  for (size_t j = 0; j < nodes.size(); ++j)
+    if (!is_corner[j])
+      throw InputError("contactSlave, contactSlaveFaces: the slave node at (" + std::to_string(nodes[j].x_dof->x) + ", " +
+                       std::to_string(nodes[j].x_dof->y) + ", " + std::to_string(nodes[j].x_dof->z) +
+                       ") is no corner of a slave face: mortar's slave nodes are those of contactSlaveFaces; give "
+                       "one or the other on every rank");
 
-  // The master faces a slave face may see lie in the prism it sweeps along its normal
-  // within the search distance (no farther than the diagonal of all contact faces).
-  Point3 lo_all{INFINITY, INFINITY, INFINITY}, hi_all{-INFINITY, -INFINITY, -INFINITY};
-  for (const FaceRecord& f : faces)
-    for (const Point3& p : f.corners)
-      for (size_t d = 0; d < 3; ++d) lo_all[d] = std::min(lo_all[d], p[d]), hi_all[d] = std::max(hi_all[d], p[d]);
-  const double reach =
-      std::min(contact.search_distance, std::hypot(hi_all[0] - lo_all[0], hi_all[1] - lo_all[1], hi_all[2] - lo_all[2]));
   std::vector<MortarRow> pending(nodes.size());
+  std::vector<double> full_weight(nodes.size(), 0.0);  // int phi_j over all of its slave faces
   for (const FaceRecord& f : slaves) {
     std::array<size_t, 3> corner_rows{};
     for (size_t c = 0; c < 3; ++c) corner_rows[c] = node_at.at(key(f.body, f.corners[c]));  // corners are slave dofs
     const Point3 n = unit_normal(f.corners);
+    double longest = 0;
+    Point3 centroid{};
+    for (size_t c = 0; c < 3; ++c) {
+      const Point3 &p = f.corners[c], &q = f.corners[(c + 1) % 3];
+      longest = std::max(longest, std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]));
+      for (size_t d = 0; d < 3; ++d) centroid[d] += p[d] / 3;
+    }
+    for (size_t c = 0; c < 3; ++c) full_weight[corner_rows[c]] += face_area(f.corners) / 3;
+    // The face looks as far as the nearest master face of another body plus its longest
+    // edge (the gap varies across a tilted face by less), within the search distance: a
+    // master layer farther than that, a body beyond the one it touches, stays out of its
+    // rows. Every direction, since the pairs are projected along the masters' normals.
+    double nearest = 0;
+    if (!grid.nearest(centroid, f.body, contact.search_distance, &nearest)) continue;
+    const double reach = std::min(contact.search_distance, nearest + longest);
     Point3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
     for (const Point3& p : f.corners)
-      for (const double side : {-reach, reach})
-        for (size_t d = 0; d < 3; ++d)
-          lo[d] = std::min({lo[d], p[d], p[d] + side * n[d]}), hi[d] = std::max({hi[d], p[d], p[d] + side * n[d]});
+      for (size_t d = 0; d < 3; ++d) lo[d] = std::min(lo[d], p[d] - reach), hi[d] = std::max(hi[d], p[d] + reach);
     grid.for_each_in_box(lo, hi, [&](const FaceRecord& m) {
       if (m.body == f.body || dot(unit_normal(m.corners), n) >= 0) return;  // only masters facing the slave
       const MortarIntegrals in = integrate_mortar_pair(f.corners, m.corners);
       if (!(in.area > 0)) return;
       double gap = 0;
       for (const Point3& g : in.G) gap += dot(in.normal, g);
-      if (std::abs(gap / in.area) > contact.search_distance) return;  // its mean normal gap
+      if (std::abs(gap / in.area) > reach) return;  // its mean normal gap
       add_pair(f, m, in, corner_rows, pending);
     });
   }
 
   for (size_t j = 0; j < nodes.size(); ++j) {
     const MortarRow& pending_row = pending[j];
-    if (!(pending_row.weight > 0)) continue;  // no master covers its faces: no contact possible
+    // No master covers its faces (or a sliver far from the node, whose row would nearly
+    // repeat its neighbours'): no contact possible here.
+    if (!(pending_row.weight > 1e-3 * full_weight[j])) continue;
     const SlaveNode& node = nodes[j];
     ContactRowGeometry geometry;
     geometry.kind = ContactRowGeometry::Kind::mortar;

@@ -27,6 +27,14 @@ FaceGrid::FaceGrid(const std::vector<FaceRecord>& faces) : faces_(faces) {
   cell_ = size / static_cast<double>(std::max<size_t>(faces.size(), 1));
   for (size_t i = 0; i < 3; ++i) cell_ = std::max(cell_, (hi[i] - lo_[i]) / kMaxCellsPerSide);
   cell_ = std::max(cell_, 1e-300);
+  // At most about 8 cells per face: faces spread over a box's volume (a sphere's surface)
+  // would otherwise fill up to 257^3 cells, most of them empty.
+  const auto cells = [&] {
+    double product = 1;
+    for (size_t i = 0; i < 3; ++i) product *= std::floor((hi[i] - lo_[i]) / cell_) + 1;
+    return product;
+  };
+  while (cells() > 8.0 * static_cast<double>(faces.size()) + 64) cell_ *= 1.25;
   for (size_t i = 0; i < 3; ++i) count_[i] = static_cast<int>((hi[i] - lo_[i]) / cell_) + 1;
   cells_.resize(static_cast<size_t>(count_[0]) * static_cast<size_t>(count_[1]) * static_cast<size_t>(count_[2]));
   for (size_t k = 0; k < faces.size(); ++k) {
@@ -42,7 +50,7 @@ FaceGrid::FaceGrid(const std::vector<FaceRecord>& faces) : faces_(faces) {
   }
 }
 
-const FaceRecord* FaceGrid::nearest(const Point3& s, int body, double reach) const {
+const FaceRecord* FaceGrid::nearest(const Point3& s, int body, double reach, double* distance) const {
   const FaceRecord* best = nullptr;
   double best_distance = reach;
   const auto visit = [&](int x, int y, int z) {
@@ -68,6 +76,7 @@ const FaceRecord* FaceGrid::nearest(const Point3& s, int body, double reach) con
       for (int y = cy - r; y <= cy + r; ++y)
         for (int x = cx - r; x <= cx + r; ++x)
           if (std::max({std::abs(x - cx), std::abs(y - cy), std::abs(z - cz)}) == r) visit(x, y, z);
+  if (distance) *distance = best_distance;
   return best;
 }
 
@@ -97,7 +106,9 @@ void FaceGrid::for_each_in_box(const Point3& lo, const Point3& hi,
 }
 
 int FaceGrid::index_of(double v, size_t axis) const {
-  return std::clamp(static_cast<int>(std::floor((v - lo_[axis]) / cell_)), 0, count_[axis] - 1);
+  // Clamped before the conversion: a point far from small faces would overflow an int.
+  const double cell = std::floor((v - lo_[axis]) / cell_);
+  return static_cast<int>(std::clamp(cell, 0.0, static_cast<double>(count_[axis] - 1)));
 }
 
 size_t FaceGrid::flat(int x, int y, int z) const {

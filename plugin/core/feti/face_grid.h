@@ -20,7 +20,8 @@ class FaceGrid {
 
   /// The face of a body other than `body` nearest to s, closer than `reach`; of equally near
   /// ones the smallest (subdomain, dofs), independent of the ranks' order. nullptr if none.
-  const FaceRecord* nearest(const Point3& s, int body, double reach) const;
+  /// `distance` (if given) receives its distance to s.
+  const FaceRecord* nearest(const Point3& s, int body, double reach, double* distance = nullptr) const;
 
   /// Calls `visit` once for each face whose box meets the box [lo, hi] (face indices in
   /// increasing order, so that sums over them do not depend on the cells' order).

@@ -3,6 +3,7 @@
 #include "base/errors.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -75,6 +76,13 @@ void check_face_corners(const std::vector<std::vector<std::array<int, 9>>>& face
         for (int b = a + 1; b < 3; ++b)
           if (sub.x[at(a, 0)] == sub.x[at(b, 0)] && sub.y[at(a, 0)] == sub.y[at(b, 0)] && sub.z[at(a, 0)] == sub.z[at(b, 0)])
             throw InputError(where() + "has two corners at one node (no area)");
+      const std::array<double, 3> u{sub.x[at(1, 0)] - sub.x[at(0, 0)], sub.y[at(1, 0)] - sub.y[at(0, 0)],
+                                    sub.z[at(1, 0)] - sub.z[at(0, 0)]};
+      const std::array<double, 3> v{sub.x[at(2, 0)] - sub.x[at(0, 0)], sub.y[at(2, 0)] - sub.y[at(0, 0)],
+                                    sub.z[at(2, 0)] - sub.z[at(0, 0)]};
+      const double cross = std::hypot(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]);
+      if (!(cross > 1e-12 * std::hypot(u[0], u[1], u[2]) * std::hypot(v[0], v[1], v[2])))
+        throw InputError(where() + "has collinear corners (no area, no normal)");
     }
   }
 }

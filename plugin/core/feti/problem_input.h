@@ -46,11 +46,13 @@ struct ContactInput {
   std::vector<std::vector<std::array<int, 9>>> master_faces;
   /// Mortar contact (three dimensions): per subdomain the slave triangles, ordered like the
   /// master faces (outward normal). Their corners are the slave nodes (slave_dofs then stays
-  /// empty), each with one row: the gap weighted by its shape function phi_j and integrated
-  /// over the slave surface that master faces of another body cover (projected along the
-  /// slave's normal, within search_distance), n_j the slave's mean normal reversed:
-  /// int phi_j n_j.(u_m - u_s) <= int phi_j n_j.(x_s - x_m), divided by int phi_j so that
-  /// the multiplier is a force as in the other rows. A uniform pressure passes exactly.
+  /// empty), each with one row: the normal gap weighted by its shape function phi_j and
+  /// integrated over the overlap of its slave faces with the master faces of another body
+  /// facing them (each slave face projected on a master face's plane along that face's
+  /// normal n, within search_distance and the nearest master's distance plus two edges):
+  /// sum over the pairs of int phi_j n.(u_m - u_s) <= int phi_j n.(x_s - x_m), divided by
+  /// int phi_j so that the multiplier is a force as in the other rows. A uniform pressure
+  /// passes exactly (docs/algorithms.md, "Mortar").
   std::vector<std::vector<std::array<int, 9>>> slave_faces;
   double gap = 0;                             ///< node to node only
   /// Per subdomain, one value per dof (empty: none): a clearance added to the right-hand

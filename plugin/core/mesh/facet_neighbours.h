@@ -11,8 +11,9 @@ namespace ffeti {
 /// `nodes_per_element` node numbers per element (3: triangles, 4: tetrahedra), one element
 /// after another. Two elements are neighbours when they share a facet, i.e. all but one of
 /// their nodes (two for triangles, three for tetrahedra); elements sharing only a vertex or
-/// (in 3D) an edge are not. Result[k] lists element k's neighbours in ascending order (at
-/// most nodes_per_element; fewer on the boundary). InputError when nodes_per_element is
+/// (in 3D) an edge are not. Result[k] lists element k's neighbours in ascending order
+/// (nodes_per_element in a conforming mesh, fewer on the boundary; more where a facet is
+/// shared by more than two elements, each pair of them linked). InputError when nodes_per_element is
 /// not 3 or 4, the table's size is not a multiple of it or a node number is negative.
 std::vector<std::vector<int>> facet_neighbours(const std::vector<int>& element_nodes, int nodes_per_element);
 

@@ -132,8 +132,10 @@ std::vector<RowDerivative> contact_row_derivatives(const Constraints& constraint
     for (int subdomain : missing[row])
       if (moving && subdomain >= 0) {
         const ContactRowGeometry& g = constraints.geometry[row];
-        throw InputError("velocityX, velocityY: the contact row of the slave node at (" + std::to_string(g.s[0]) +
-                         ", " + std::to_string(g.s[1]) + ") moves, but subdomain " + std::to_string(subdomain) +
+        throw InputError(std::string(three_d(g) ? "velocityX, velocityY, velocityZ" : "velocityX, velocityY") +
+                         ": the contact row of the slave node at (" + std::to_string(g.s[0]) + ", " +
+                         std::to_string(g.s[1]) + (three_d(g) ? ", " + std::to_string(g.s3[2]) : std::string()) +
+                         ") moves, but subdomain " + std::to_string(subdomain) +
                          ", which holds one of its nodes, has no velocity: give velocities for every subdomain "
                          "holding nodes of moving contact rows (zeros where they stand still)");
       }
