@@ -27,11 +27,6 @@ LinearizedRow node_to_segment_slip(const Point& s, const Point& a, const Point& 
 
 LinearizedRow obstacle_slip(const Point& normal) { return {{-normal[1], normal[0], 0, 0, 0, 0}, 0.0}; }
 
-namespace {
-Point3 minus(const Point3& p, const Point3& q) { return {p[0] - q[0], p[1] - q[1], p[2] - q[2]}; }
-double dot(const Point3& p, const Point3& q) { return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]; }
-}  // namespace
-
 std::array<double, 3> closest_point_weights(const Point3& s, const Point3& a, const Point3& b, const Point3& c) {
   // The Voronoi regions of the triangle's corners, edges and face, in turn (the classic
   // region test; weights of the point p = w_a a + w_b b + w_c c).
@@ -67,7 +62,7 @@ std::array<double, 3> closest_point_weights(const Point3& s, const Point3& a, co
 LinearizedFaceRow node_to_face_row(const Point3& s, const Point3& a, const Point3& b, const Point3& c,
                                    bool clamp) {
   const Point3 ab = minus(b, a), ac = minus(c, a);
-  Point3 n = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]};
+  Point3 n = cross(ab, ac);
   const double length = std::sqrt(dot(n, n));
   for (double& component : n) component /= length;
   std::array<double, 3> w{};

@@ -2,6 +2,8 @@
 // set-up builds its rows from it and the sensitivity analysis differentiates it.
 #pragma once
 
+#include "feti/point3.h"
+
 #include <array>
 
 namespace ffeti {
@@ -29,7 +31,6 @@ LinearizedRow node_to_segment_slip(const Point& s, const Point& a, const Point& 
 /// Node to face (three dimensions): slave s against triangle a, b, c with outward normal
 /// n = (b - a) x (c - a) / |.|, p its closest point, w its barycentric weights:
 /// n.(sum_i w_i u_i - u_s) <= n.(s - p). Coefficients of (s_x, s_y, s_z, a_x, ..., c_z).
-using Point3 = std::array<double, 3>;
 struct LinearizedFaceRow {
   std::array<double, 12> coefficients;
   double gap;

@@ -24,17 +24,8 @@ struct MortarRow {
   double weight = 0;  ///< int phi_j over the covered part
 };
 
-double dot(const Point3& p, const Point3& q) { return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]; }
-
 /// (b - a) x (c - a): twice the area times the unit normal.
-Point3 area_normal(const Triangle3& t) {
-  Point3 n{};
-  for (size_t d = 0; d < 3; ++d) {
-    const size_t d1 = (d + 1) % 3, d2 = (d + 2) % 3;
-    n[d] = (t[1][d1] - t[0][d1]) * (t[2][d2] - t[0][d2]) - (t[1][d2] - t[0][d2]) * (t[2][d1] - t[0][d1]);
-  }
-  return n;
-}
+Point3 area_normal(const Triangle3& t) { return cross(minus(t[1], t[0]), minus(t[2], t[0])); }
 
 double face_area(const Triangle3& t) {
   const Point3 n = area_normal(t);

@@ -7,9 +7,7 @@
 namespace ffeti {
 namespace {
 
-double squared_distance(const Point3& p, const Point3& q) {
-  return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
-}
+double squared_distance(const Point3& p, const Point3& q) { return dot(minus(p, q), minus(p, q)); }
 
 }  // namespace
 
