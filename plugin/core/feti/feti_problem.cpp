@@ -31,6 +31,7 @@ FetiProblem::FetiProblem(std::vector<SubdomainInput> local, std::vector<int> glo
 
 void FetiProblem::set_up(const ContactInput& local_contact) {
   if (settings_.factor == FactorKind::supernodal) settings_.threads = 1;
+  const ThreadLimit limit(settings_.threads);
   const Communicator& comm = *comm_;
   Stopwatch constraints_clock;
   collectively(comm, [&] {
@@ -175,6 +176,7 @@ void FetiProblem::gather_rank_statistics(double solve_seconds) const {
 }
 
 void FetiProblem::set_loads(const std::vector<Vec>& loads) {
+  const ThreadLimit limit(settings_.threads);
   collectively(*comm_, [&] {
     if (loads.size() != inputs_.size())
       throw InputError("F: has " + std::to_string(loads.size()) + " entries for " +
@@ -215,6 +217,7 @@ void FetiProblem::start_load_step(const FetiResult& last) {
                        ", so its state cannot start the next load step (friction depends on the load path)");
   });
   if (!has_friction()) return;
+  const ThreadLimit limit(settings_.threads);
   Vec Bu;
   dual_->F().apply_B(last.u, Bu);
   rhs_.tail(constraints().friction_rows) = Bu.tail(constraints().friction_rows);  // slip measured from here
@@ -223,6 +226,7 @@ void FetiProblem::start_load_step(const FetiResult& last) {
 }
 
 FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
+  const ThreadLimit limit(settings_.threads);
   FetiResult result;
   if (has_friction()) {
     FrictionSolution friction = solve_with_friction(*dual_, data_, friction_, settings, step_start_);

@@ -20,6 +20,22 @@ int resolve_thread_count(int requested) {
 #endif
 }
 
+ThreadLimit::ThreadLimit(int threads) {
+#ifdef _OPENMP
+  if (threads <= 0) return;
+  previous_ = omp_get_max_threads();
+  omp_set_num_threads(threads);
+#else
+  (void)threads;
+#endif
+}
+
+ThreadLimit::~ThreadLimit() {
+#ifdef _OPENMP
+  if (previous_ > 0) omp_set_num_threads(previous_);
+#endif
+}
+
 double peak_memory_mb() {
   std::ifstream status("/proc/self/status");
   std::string key;

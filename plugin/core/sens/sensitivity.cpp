@@ -2,6 +2,7 @@
 
 #include "base/errors.h"
 #include "base/stopwatch.h"
+#include "parallel/process.h"
 
 #include <algorithm>
 #include <cmath>
@@ -69,6 +70,7 @@ ContactClassification classify_contact(const FetiProblem& problem, const FetiRes
 
 SensitivityProblem::SensitivityProblem(const FetiProblem& problem, const FetiResult& state, double threshold)
     : problem_(problem), u_(state.u), lambda_(state.lambda) {
+  const ThreadLimit limit(problem.settings().threads);
   Stopwatch clock;
   if (state.lambda.size() != problem.dual_dimension() || state.u.size() != problem.inputs().size())
     throw InputError("P: the solution does not belong to this problem (call fetiSolve first)");
@@ -210,6 +212,7 @@ SensitivityResult SensitivityProblem::direct(const DesignDerivative& direction, 
 
 std::vector<SensitivityResult> SensitivityProblem::direct(const std::vector<DesignDerivative>& directions,
                                                           const DualSolveSettings& settings) {
+  const ThreadLimit limit(problem_.settings().threads);
   Stopwatch clock;
   std::vector<DirectionData> d;
   std::vector<DualData> dual;
@@ -255,6 +258,7 @@ std::vector<SensitivityResult> SensitivityProblem::direct(const std::vector<Desi
 
 AdjointResult SensitivityProblem::adjoint(const std::vector<Vec>& dJdu, const DualSolveSettings& settings,
                                           const Vec& dJdlambda) {
+  const ThreadLimit limit(problem_.settings().threads);
   Stopwatch clock;
   adjoint_.reset();
   AdjointResult result;
@@ -298,6 +302,7 @@ AdjointResult SensitivityProblem::adjoint(const std::vector<Vec>& dJdu, const Du
 
 double SensitivityProblem::adjoint_gradient(const DesignDerivative& direction) {
   if (!adjoint_) throw InputError("P: no converged adjoint solution (call fetiAdjoint first)");
+  const ThreadLimit limit(problem_.settings().threads);
   Stopwatch clock;
   const DirectionData d = direction_data(direction);
   std::vector<double> local;  // (subdomain, w_s'fbar_s)
