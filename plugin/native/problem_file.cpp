@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -75,18 +77,29 @@ class ObjectReader {
   static bool has_type(const json& value) {
     if constexpr (std::is_same_v<T, std::string>) return value.is_string();
     else if constexpr (std::is_same_v<T, bool>) return value.is_boolean();
-    else if constexpr (std::is_integral_v<T>) return value.is_number_integer();
+    else if constexpr (std::is_integral_v<T>) return value.is_number_integer() && fits<T>(value);
     else if constexpr (std::is_floating_point_v<T>) return value.is_number();
     else return value.is_array() && std::all_of(value.begin(), value.end(), has_type<typename T::value_type>);
+  }
+
+  /// An integer of the file within T's range: nlohmann keeps 64 bits, and get<int>() of a
+  /// larger value wraps (a group 4294967297 was read as group 1).
+  template <class T>
+  static bool fits(const json& value) {
+    if (value.is_number_unsigned())
+      return value.get<std::uint64_t>() <= static_cast<std::uint64_t>(std::numeric_limits<T>::max());
+    const auto v = value.get<std::int64_t>();  // signed: within int64's range already
+    return v >= std::numeric_limits<T>::min() && v <= std::numeric_limits<T>::max();
   }
 
   template <class T>
   static const char* type_name() {
     if constexpr (std::is_same_v<T, std::string>) return "a string";
     else if constexpr (std::is_same_v<T, bool>) return "true or false";
-    else if constexpr (std::is_integral_v<T>) return "an integer";
+    else if constexpr (std::is_integral_v<T>) return sizeof(T) < 8 ? "an integer between -2^31 and 2^31 - 1" : "an integer";
     else if constexpr (std::is_floating_point_v<T>) return "a number";
-    else if constexpr (std::is_integral_v<typename T::value_type>) return "a list of integers";
+    else if constexpr (std::is_integral_v<typename T::value_type>)
+      return sizeof(typename T::value_type) < 8 ? "a list of integers between -2^31 and 2^31 - 1" : "a list of integers";
     else return "a list of numbers";
   }
 
