@@ -12,7 +12,7 @@ build=${FFETI_BUILD:-$root/build}
 
 packages=(build-essential cmake freefem++ libfreefem++-dev gmsh libeigen3-dev
           libsuitesparse-dev liblapack-dev libopenmpi-dev openmpi-bin libgtest-dev getdp libgmsh-dev nlohmann-json3-dev
-          ghostscript gnuplot-nox)
+          ghostscript gnuplot-nox xvfb)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
