@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """The option tables of docs/reference.md, printed from the option registry
 (plugin/core/feti/options.cpp) by `ffeti-solve --options setup|solve`: rewrites the blocks
-between <!-- options:SCOPE begin --> and <!-- options:SCOPE end -->. With --check, changes
-nothing and fails when the page differs from the registry (ctest docs_option_tables).
+between <!-- options:SCOPE begin --> and <!-- options:SCOPE end -->; and the capability table
+(plugin/core/constraints/capabilities.cpp) by `ffeti-solve --capabilities`, the block between
+<!-- capabilities begin --> and <!-- capabilities end -->. With --check, changes nothing and
+fails when the page differs from the registry or the table (ctest docs_option_tables).
 Usage: option-tables.py [--check] FFETI_SOLVE [REFERENCE_MD]"""
 import argparse
 import pathlib
@@ -29,10 +31,22 @@ for scope in ("setup", "solve"):
         sys.exit(f"{page}: no <!-- options:{scope} begin --> ... end block")
     updated = block.sub(lambda m: m.group(1) + HEADER + rows + m.group(2), updated)
 
+
+def with_capabilities(page_text):
+    """The page with its capability block rewritten from ffeti-solve --capabilities."""
+    table = subprocess.run([args.ffeti_solve, "--capabilities"], check=True, capture_output=True, text=True).stdout
+    block = re.compile(r"(<!-- capabilities begin -->\n).*?(<!-- capabilities end -->)", re.S)
+    if not block.search(page_text):
+        sys.exit(f"{page}: no <!-- capabilities begin --> ... end block")
+    return block.sub(lambda m: m.group(1) + table + m.group(2), page_text)
+
+
+updated = with_capabilities(updated)
+
 if updated == text:
     print(f"ok: the option tables of {page} are the registry's")
 elif args.check:
-    print(f"FAILED: the option tables of {page} differ from the registry; run\n"
+    print(f"FAILED: the option or capability tables of {page} differ from the code; run\n"
           f"  scripts/option-tables.py {args.ffeti_solve}")
     sys.exit(1)
 else:

@@ -7,7 +7,7 @@
 #include "binding/handles.h"
 
 #include "base/errors.h"
-#include "feti/constraint_triplets.h"
+#include "constraints/constraint_triplets.h"
 #include "feti/contact_pressure.h"
 #include "feti/contact_transfer.h"
 
@@ -173,7 +173,9 @@ class FetiConstraints : public E_F0mps {
   static E_F0* f(const basicAC_F0& args) { return new FetiConstraints(args); }
   AnyType operator()(Stack stack) const {
     return SetAny<long>(guarded("fetiConstraints", [&] {
-      const ConstraintTriplets t = constraint_triplets(*handle(GetAny<long>((*id)(stack))).problem);
+      const FetiProblem& problem = *handle(GetAny<long>((*id)(stack))).problem;
+      const ConstraintTriplets t = constraint_triplets(problem.constraints(), problem.inputs(), problem.variant(),
+                                                       problem.communicator().size());
       copy_to(t.rows, *GetAny<KN<long>*>((*rows_out)(stack)));
       copy_to(t.columns, *GetAny<KN<long>*>((*columns_out)(stack)));
       copy_to(t.values, *GetAny<KN<double>*>((*values_out)(stack)));

@@ -3,7 +3,7 @@
 
 #include "ff++.hpp"
 
-#include "feti/problem_input.h"
+#include "constraints/problem_input.h"
 
 #include <string>
 #include <vector>

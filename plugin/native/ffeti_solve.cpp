@@ -7,6 +7,7 @@
 // input (the message names the file and what is wrong), 3 another failure (out of memory).
 #include "feti/convergence_history.h"
 #include "base/errors.h"
+#include "constraints/capabilities.h"
 #include "feti/options.h"
 #include "feti/feti_problem.h"
 #include "feti/progress_monitor.h"
@@ -36,9 +37,11 @@ constexpr int kConverged = 0, kNotConverged = 1, kBadInput = 2, kFailure = 3;
 const char* const kUsage =
     "usage: ffeti-solve PROBLEM.json\n"
     "       ffeti-solve --options setup|solve\n"
+    "       ffeti-solve --capabilities\n"
     "  Solves the contact problem described by PROBLEM.json (docs/reference.md, \"ffeti-solve\").\n"
     "  Under mpirun -np P, the subdomains are spread over the ranks by size.\n"
-    "  --options: prints the reference's table of the solver options (the \"solver\" object).\n";
+    "  --options: prints the reference's table of the solver options (the \"solver\" object).\n"
+    "  --capabilities: prints the reference's table of what each contact kind supports.\n";
 
 /// Every output file can be written: found out before the solve, not after. A file the
 /// check creates is removed again, so that a solve that writes nothing leaves nothing.
@@ -148,6 +151,9 @@ int main(int argc, char** argv) {
     if (rank == 0)
       std::fputs(ffeti::option_table(argv[2][1] == 'e' ? ffeti::OptionScope::setup : ffeti::OptionScope::solve).c_str(),
                  stdout);
+    status = 0;
+  } else if (argc == 2 && std::strcmp(argv[1], "--capabilities") == 0) {
+    if (rank == 0) std::fputs(ffeti::capability_table_markdown().c_str(), stdout);
     status = 0;
   } else if (argc != 2 || std::strcmp(argv[1], "-h") == 0 || std::strcmp(argv[1], "--help") == 0) {
     if (rank == 0) std::fputs(ffeti::native::kUsage, argc == 2 ? stdout : stderr);

@@ -1,6 +1,7 @@
 #include "native/problem_file.h"
 
 #include "base/errors.h"
+#include "constraints/capabilities.h"
 
 #include <nlohmann/json.hpp>
 
@@ -255,10 +256,13 @@ ContactSpec read_contact(ObjectReader& r, int components) {
   for (const auto& [key, law] : {std::pair<const char*, std::optional<double>*>{"friction", &c.friction},
                                  std::pair<const char*, std::optional<double>*>{"slip_bound", &c.slip_bound}}) {
     if (!r.has(key)) continue;
-    if (components != 2)
-      r.fail(r.path(key), components == 3 ? "friction in three dimensions is not implemented (plane displacements, "
-                                            "\"components\": 2, only)"
-                                          : "applies to plane displacements (\"components\": 2) only");
+    // The kind this entry makes: node to node for a scalar field, else an obstacle or the
+    // master group's segments (faces in a solid).
+    const ContactKind kind = components == 1 ? ContactKind::node_to_node
+                             : c.obstacle    ? ContactKind::obstacle
+                             : dimension == 3 ? ContactKind::node_to_face
+                                              : ContactKind::node_to_segment;
+    if (!supports(kind, Feature::friction, dimension)) r.fail(r.path(key), unsupported(kind, Feature::friction, dimension));
     *law = r.required<double>(key);
     if (!(**law >= 0)) r.fail(r.path(key), "must be >= 0");
   }

@@ -1,7 +1,7 @@
 // What the FreeFEM binding hands to the core besides conversions: connected partitions,
 // which rank owns a subdomain, and the constraint rows as triplets.
 #include "base/errors.h"
-#include "feti/constraint_triplets.h"
+#include "constraints/constraint_triplets.h"
 #include "feti/feti_problem.h"
 #include "membrane_model.h"
 #include "mesh/connect_parts.h"
@@ -69,7 +69,8 @@ TEST(ConstraintTriplets, RowsMatchTheConstraints) {
   FetiSetupSettings setup;
   setup.variant = FetiVariant::tfeti;
   const FetiProblem problem(subs, test::membrane_contact(subs), setup);
-  const ConstraintTriplets t = constraint_triplets(problem);
+  const ConstraintTriplets t =
+      constraint_triplets(problem.constraints(), problem.inputs(), problem.variant(), problem.communicator().size());
   const Constraints& c = problem.constraints();
   ASSERT_EQ(t.rhs.size(), static_cast<size_t>(c.rows()));
   ASSERT_EQ(t.rows.size(), c.entries.size());
@@ -96,7 +97,7 @@ TEST(ConstraintTriplets, RefusesFeti1) {
   test::MembraneOptions o = test::membrane_options(8, 2);
   auto subs = test::membrane_subdomains(o);
   const FetiProblem problem(subs, test::membrane_contact(subs), FetiSetupSettings{});
-  EXPECT_THROW(constraint_triplets(problem), InputError);
+  EXPECT_THROW(constraint_triplets(problem.constraints(), problem.inputs(), problem.variant(), 1), InputError);
 }
 
 }  // namespace

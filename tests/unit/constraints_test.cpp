@@ -1,4 +1,5 @@
-#include "feti/constraints.h"
+#include "constraints/constraints.h"
+#include "constraints/contact/node_to_segment.h"
 #include "base/errors.h"
 #include "membrane_model.h"
 
@@ -148,7 +149,10 @@ TEST(Constraints, NodeToSegmentPicksTheNearestSegmentAsAFullSearchWould) {
     contact.search_distance = reach;
     const Constraints c = build_constraints(subs, contact, FetiVariant::tfeti);
     std::map<int, int> master_of_slave;  // slave node -> the first node of its segment's b end
-    for (const ContactRowGeometry& g : c.geometry) master_of_slave[g.slave[0][1] / 2] = g.master[2][1] / 2;
+    for (const auto& row : c.geometry) {
+      const auto& g = dynamic_cast<const NodeToSegmentGeometry&>(*row);
+      master_of_slave[g.slave[0][1] / 2] = g.master[2][1] / 2;
+    }
     int rows = 0;
     for (size_t k = 0; k < slaves.size(); ++k) {
       // Segment i runs from node i + 1 to node i.

@@ -51,7 +51,7 @@ TEST_P(GapSensitivity, RowsCarryTheGapsAndLambdaRateMatchesFiniteDifferences) {
   const Constraints& c = problem.constraints();
   const auto profile = design.profile();
   for (int i = c.equality_rows; i < c.rows(); ++i) {  // each row's right-hand side is its slave's gap
-    const auto& [s, dof] = c.geometry[static_cast<size_t>(i - c.equality_rows)].slave[0];
+    const auto [s, dof] = c.geometry[static_cast<size_t>(i - c.equality_rows)]->slave_dof();
     EXPECT_NEAR(c.rhs[static_cast<size_t>(i)], alpha * profile[static_cast<size_t>(s)][static_cast<size_t>(dof)], 1e-15);
   }
   const FetiResult state = problem.solve(tight());

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "feti/dual_system.h"
-#include "feti/problem_input.h"
+#include "constraints/problem_input.h"
 
 #include <functional>
 #include <vector>

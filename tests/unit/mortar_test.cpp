@@ -1,6 +1,6 @@
 // The mortar integrals of one slave and one master triangle (feti/mortar_integration.h)
 // against closed forms: the mass matrix, linear fields reproduced, clipped areas.
-#include "feti/mortar_integration.h"
+#include "constraints/contact/mortar_integration.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // Three dimensions: the rigid modes of 3D elasticity, and constraints that tell nodes apart
 // by their third coordinate.
 #include "base/errors.h"
-#include "feti/constraints.h"
-#include "feti/contact_linearization.h"
+#include "constraints/constraints.h"
+#include "constraints/contact/contact_linearization.h"
 #include "feti/kernel.h"
 
 #include <gtest/gtest.h>

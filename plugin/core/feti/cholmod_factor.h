@@ -3,15 +3,11 @@
 // solve (many times, on preallocated workspace).
 #pragma once
 
-#include <Eigen/Core>
-#include <Eigen/SparseCore>
+#include "base/linear_algebra.h"
 
 #include <cholmod.h>
 
 namespace ffeti {
-
-using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
-using Vec = Eigen::VectorXd;
 
 /// Simplicial is the default: for 2D subdomains of a few thousand dofs it factors and
 /// solves several times faster than supernodal here (docs/results/model-problem.md).

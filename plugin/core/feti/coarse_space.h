@@ -4,7 +4,7 @@
 // rank builds it whole from the blocks B_s R_s of all ranks and factors GG' redundantly.
 #pragma once
 
-#include "feti/constraints.h"
+#include "constraints/constraints.h"
 #include "feti/subdomain.h"
 #include "parallel/communicator.h"
 

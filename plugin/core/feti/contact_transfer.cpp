@@ -57,9 +57,9 @@ std::vector<double> transfer_contact_forces(const std::vector<ContactMultiplier>
 }
 
 Vec start_from_contact_forces(const FetiProblem& problem, const std::vector<ContactMultiplier>& from) {
-  if (problem.space_dimension() != 2)
-    throw InputError("P: fetiContactStart takes plane problems only so far (it pairs rows along a contact curve)");
   const Constraints& c = problem.constraints();
+  // It pairs rows along a contact curve: plane problems.
+  for (ContactKind kind : c.contact_kinds) require(kind, Feature::contact_start, problem.space_dimension(), "P");
   Vec start = Vec::Zero(c.rows());
   const std::vector<double> forces = transfer_contact_forces(from, problem.contact_positions());
   for (size_t k = 0; k < forces.size(); ++k) start[c.equality_rows + static_cast<Eigen::Index>(k)] = forces[k];

@@ -1,7 +1,7 @@
 // FETI-1 treatment of Dirichlet conditions: elimination inside K_s.
 #pragma once
 
-#include "feti/problem_input.h"
+#include "constraints/problem_input.h"
 
 namespace ffeti {
 

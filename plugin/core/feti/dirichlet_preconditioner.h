@@ -12,7 +12,7 @@
 #pragma once
 
 #include "feti/cholmod_factor.h"
-#include "feti/constraints.h"
+#include "constraints/constraints.h"
 #include "parallel/subdomain_sum.h"
 
 #include <Eigen/SparseCholesky>

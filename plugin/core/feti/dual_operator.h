@@ -3,7 +3,7 @@
 
 #include "parallel/process.h"
 
-#include "feti/constraints.h"
+#include "constraints/constraints.h"
 #include "feti/subdomain.h"
 #include "parallel/subdomain_sum.h"
 

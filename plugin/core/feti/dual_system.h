@@ -8,7 +8,7 @@
 #pragma once
 
 #include "feti/coarse_space.h"
-#include "feti/constraints.h"
+#include "constraints/constraints.h"
 #include "feti/dirichlet_preconditioner.h"
 #include "feti/dual_operator.h"
 #include "feti/dual_qp.h"

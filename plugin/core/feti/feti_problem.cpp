@@ -2,7 +2,7 @@
 
 #include "feti/dirichlet.h"
 #include "base/errors.h"
-#include "feti/input_checks.h"
+#include "constraints/input_checks.h"
 #include "feti/kernel.h"
 #include "base/stopwatch.h"
 #include "parallel/process.h"
@@ -89,8 +89,8 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   std::sort(records.begin(), records.end(), [](const DofRecord& a, const DofRecord& b) {
     return std::make_pair(a.subdomain, a.dof) < std::make_pair(b.subdomain, b.dof);
   });
-  for (const ContactRowGeometry& row : constraints.geometry) {
-    const auto it = std::lower_bound(records.begin(), records.end(), std::make_pair(row.slave[0][0], row.slave[0][1]),
+  for (const auto& row : constraints.geometry) {
+    const auto it = std::lower_bound(records.begin(), records.end(), std::make_pair(row->slave_dof()[0], row->slave_dof()[1]),
                                      [](const DofRecord& r, const std::pair<int, int>& key) {
                                        return std::make_pair(r.subdomain, r.dof) < key;
                                      });

@@ -5,7 +5,7 @@
 #include "feti/dual_system.h"
 #include "feti/friction.h"
 #include "feti/primal.h"
-#include "feti/problem_input.h"
+#include "constraints/problem_input.h"
 #include "feti/subdomain.h"
 #include "parallel/communicator.h"
 

@@ -2,10 +2,9 @@
 // design: node-to-segment and node-to-face normals, projection weights and gaps, obstacle gaps.
 #pragma once
 
-#include "feti/constraints.h"
+#include "constraints/constraints.h"
 #include "parallel/communicator.h"
 
-#include <array>
 #include <vector>
 
 namespace ffeti {
@@ -24,10 +23,10 @@ using NodeVelocities = std::array<const std::vector<std::vector<double>>*, 3>;
 /// the row under the node velocities (this rank's subdomains, `global_ids`; empty: nothing
 /// moves). Each row keeps its pairing (segment or face, and slave): the derivative of the
 /// linearized condition with the projection unclamped. Computed by central differences of
-/// the row's closed form (node_to_segment_row, node_to_face_row, obstacle_row) with a step
-/// of 1e-6 of the segment's or the face's first edge's length (truncation ~1e-12,
-/// round-off ~1e-10 relative): no assembly. Node-to-node rows do not depend on positions;
-/// mortar rows are refused before. Collective: the velocities of the contact nodes are
+/// the row's closed form (ContactRowGeometry::row_at of its kind) with a step of 1e-6 of
+/// its length() (truncation ~1e-12, round-off ~1e-10 relative): no assembly. Rows without
+/// moving nodes (node to node) do not depend on positions; kinds without a derivative are
+/// refused before (capability_table()). Collective: the velocities of the contact nodes are
 /// gathered, so every rank gets every row.
 std::vector<RowDerivative> contact_row_derivatives(const Constraints& constraints,
                                                    const std::vector<int>& global_ids,

@@ -2,7 +2,7 @@
 // directional derivatives of the assembled data (seed eq. 12), for this rank's subdomains.
 #pragma once
 
-#include "feti/problem_input.h"
+#include "constraints/problem_input.h"
 
 #include <vector>
 

@@ -74,13 +74,10 @@ SensitivityProblem::SensitivityProblem(const FetiProblem& problem, const FetiRes
   Stopwatch clock;
   if (state.lambda.size() != problem.dual_dimension() || state.u.size() != problem.inputs().size())
     throw InputError("P: the solution does not belong to this problem (call fetiSolve first)");
-  for (const ContactRowGeometry& row : problem.constraints().geometry)
-    if (row.kind == ContactRowGeometry::Kind::mortar)
-      throw InputError("P: has mortar contact (contactSlaveFaces=); the derivatives of its rows are not derived yet "
-                       "(node-to-node, node-to-face and obstacle rows are)");
-  if (problem.has_friction())
-    throw InputError("P: has friction (friction= or slipBound=); the sensitivity analysis of a state with "
-                     "friction is not derived yet (docs/reference.md), only of frictionless contact");
+  for (ContactKind kind : problem.constraints().contact_kinds) {
+    require(kind, Feature::sensitivity, problem.space_dimension(), "P");
+    if (problem.has_friction()) require(kind, Feature::sensitivity_with_friction, problem.space_dimension(), "P");
+  }
   classification_ = classify_contact(problem, state, threshold);
   const Constraints& full = problem.constraints();
   Constraints rows;  // E, then S as equalities, then W as inequalities; right-hand sides per direction
@@ -187,7 +184,7 @@ SensitivityProblem::DirectionData SensitivityProblem::direction_data(const Desig
     for (size_t k = 0; k < entries.size(); ++k)
       if (const auto it = local_index.find(entries[k].subdomain); it != local_index.end())
         products.insert(products.end(), {double(j), double(k), entries[k].coefficient * u_[it->second][entries[k].dof]});
-    const auto& [gap_subdomain, gap_dof] = full.geometry[row].slave[0];
+    const auto [gap_subdomain, gap_dof] = full.geometry[row]->slave_dof();
     if (const auto it = local_index.find(gap_subdomain); it != local_index.end() && !d.dgap.empty() &&
                                                           !d.dgap[it->second].empty())
       products.insert(products.end(), {double(j), -1.0, -d.dgap[it->second][static_cast<size_t>(gap_dof)]});

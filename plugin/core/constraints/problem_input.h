@@ -1,7 +1,7 @@
 // What a front end (the FreeFEM binding, a test) hands to the core for one problem.
 #pragma once
 
-#include "feti/cholmod_factor.h"
+#include "base/linear_algebra.h"
 
 #include <array>
 #include <vector>

@@ -1,17 +1,17 @@
-#include "feti/constraint_triplets.h"
+#include "constraints/constraint_triplets.h"
 
 #include "base/errors.h"
 
 namespace ffeti {
 
-ConstraintTriplets constraint_triplets(const FetiProblem& problem) {
-  if (problem.communicator().size() > 1) throw InputError("P: fetiConstraints runs in one process only");
-  if (problem.variant() == FetiVariant::feti1)
+ConstraintTriplets constraint_triplets(const Constraints& c, const std::vector<SubdomainInput>& inputs,
+                                       FetiVariant variant, int processes) {
+  if (processes > 1) throw InputError("P: fetiConstraints runs in one process only");
+  if (variant == FetiVariant::feti1)
     throw InputError("P: fetiConstraints needs variant=\"tfeti\" (FETI-1 eliminates the Dirichlet dofs, "
                      "so their conditions are no rows)");
   std::vector<long> offset(1, 0);
-  for (const SubdomainInput& in : problem.inputs()) offset.push_back(offset.back() + in.K.rows());
-  const Constraints& c = problem.constraints();
+  for (const SubdomainInput& in : inputs) offset.push_back(offset.back() + in.K.rows());
   ConstraintTriplets t;
   t.rhs = c.rhs;
   for (int row = 0; row < c.rows(); ++row) {

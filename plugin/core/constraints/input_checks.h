@@ -2,7 +2,7 @@
 // ranges. Each failure is an InputError naming the argument as the FreeFEM functions do.
 #pragma once
 
-#include "feti/problem_input.h"
+#include "constraints/problem_input.h"
 
 #include <vector>
 

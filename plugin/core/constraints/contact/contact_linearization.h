@@ -2,7 +2,7 @@
 // set-up builds its rows from it and the sensitivity analysis differentiates it.
 #pragma once
 
-#include "feti/point3.h"
+#include "constraints/contact/point3.h"
 
 #include <array>
 

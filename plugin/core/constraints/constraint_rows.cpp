@@ -1,4 +1,4 @@
-#include "feti/constraint_rows.h"
+#include "constraints/constraint_rows.h"
 
 #include "base/errors.h"
 
@@ -74,12 +74,13 @@ void add_dirichlet_rows(const std::vector<DofRecord>& records, std::vector<Row>&
     if (r.fixed) rows.push_back({{{r.subdomain, r.dof, 1.0}}, r.value, RowKind::dirichlet, true});
 }
 
-void add_node_to_node_rows(const std::vector<DofRecord>& records, double gap, double snap, std::vector<Row>& rows) {
+std::vector<SlaveMaster> node_to_node_pairs(const std::vector<DofRecord>& records, double snap) {
   const std::vector<Located> slaves = unique_slaves(records, snap);
   std::vector<Located> masters = locate(records, snap, [](const DofRecord& r) { return r.master; });
   std::stable_sort(masters.begin(), masters.end(),
                    [](const Located& a, const Located& b) { return a.position() < b.position(); });
   const auto by_position = [](const Located& a, const Located& b) { return a.position() < b.position(); };
+  std::vector<SlaveMaster> pairs;
   for (const Located& slave : slaves) {
     auto range = std::equal_range(masters.begin(), masters.end(), slave, by_position);
     auto master = std::find_if(range.first, range.second,
@@ -90,12 +91,9 @@ void add_node_to_node_rows(const std::vector<DofRecord>& records, double gap, do
                        ", " + std::to_string(slave.record->y) +
                        ") has no master dof of another body at the same position "
                        "(node-to-node contact needs matching meshes)");
-    ContactRowGeometry geometry;
-    geometry.slave[0] = {slave.record->subdomain, slave.record->dof};
-    rows.push_back({{{slave.record->subdomain, slave.record->dof, 1.0},
-                     {master->record->subdomain, master->record->dof, -1.0}},
-                    gap + slave.record->gap, RowKind::contact, false, geometry});
+    pairs.push_back({slave.record, master->record});
   }
+  return pairs;
 }
 
 std::vector<SlaveNode> slave_nodes(const std::vector<DofRecord>& records, double snap, int components) {
@@ -148,6 +146,28 @@ void substitute_dirichlet(const std::vector<DofRecord>& records, std::vector<Row
     }
   }
   rows = std::move(kept);
+}
+
+void add_friction_rows(const std::vector<DofRecord>& records, std::vector<Row>& rows) {
+  const size_t count = rows.size();
+  for (size_t i = 0; i < count; ++i) {
+    if (rows[i].kind != RowKind::contact) continue;
+    const RowAt slip = rows[i].geometry->slip_row();
+    Row row{{}, 0.0, RowKind::friction, false, rows[i].geometry, static_cast<int>(i), rows[i].friction};
+    for (size_t k = 0; k < slip.dofs.size(); ++k) {
+      if (slip.coefficients[k] == 0) continue;
+      const auto& [subdomain, dof] = slip.dofs[k];
+      // A fixed dof leaves the row, its prescribed motion moving to the right-hand side
+      // (it is there from the first load step on and adds nothing to later increments). In
+      // Total FETI too: its Dirichlet row already holds it, and a row on it alone would
+      // repeat that row (B would lose full rank).
+      if (const DofRecord* fixed = fixed_record(records, subdomain, dof))
+        row.rhs -= slip.coefficients[k] * fixed->value;
+      else
+        row.entries.push_back({subdomain, dof, slip.coefficients[k]});
+    }
+    if (!row.entries.empty()) rows.push_back(std::move(row));
+  }
 }
 
 }  // namespace ffeti

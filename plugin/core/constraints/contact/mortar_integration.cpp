@@ -1,4 +1,4 @@
-#include "feti/mortar_integration.h"
+#include "constraints/contact/mortar_integration.h"
 
 #include <cmath>
 #include <vector>

@@ -4,8 +4,8 @@
 // may overlap each slave face.
 #pragma once
 
-#include "feti/constraint_records.h"
-#include "feti/contact_linearization.h"
+#include "constraints/constraint_records.h"
+#include "constraints/contact/contact_linearization.h"
 
 #include <array>
 #include <functional>

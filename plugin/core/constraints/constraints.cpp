@@ -1,6 +1,7 @@
-#include "feti/constraints.h"
+#include "constraints/constraints.h"
 
-#include "feti/constraint_rows.h"
+#include "constraints/constraint_rows.h"
+#include "constraints/contact/contact_discretization.h"
 
 #include "base/errors.h"
 
@@ -18,41 +19,37 @@ Constraints build_constraints(std::vector<DofRecord> records, const std::vector<
   std::sort(records.begin(), records.end(), [](const DofRecord& a, const DofRecord& b) {
     return std::make_pair(a.subdomain, a.dof) < std::make_pair(b.subdomain, b.dof);
   });
-  if (contact.has_friction() && contact.obstacle_radius > 0)
-    throw InputError(std::string(contact.friction >= 0 ? "friction" : "slipBound") +
-                     ": not with a ball obstacle (obstacleBall=) yet; a straight obstacle (obstacle=) takes friction");
-  if (contact.has_friction() && segments.empty() && !contact.obstacle)
-    throw InputError(std::string(contact.friction >= 0 ? "friction" : "slipBound") +
-                     ": needs node-to-segment (contactSegments=) or obstacle (obstacle=) contact, whose slave "
-                     "nodes list both components; a node-to-node row has no tangent");
+  const ContactRecords in{records, segments, faces, contact, snap};
+  const int dimension = contact.three_d ? 3 : 2;
+  std::vector<const ContactDiscretization*> selected;
+  const ContactDiscretization* searched = nullptr;
+  for (const auto& unit : contact_discretizations()) {
+    if (!unit->selected(in)) continue;
+    if (contact.has_friction())
+      require(unit->kind(), Feature::friction, dimension, contact.friction >= 0 ? "friction" : "slipBound");
+    selected.push_back(unit.get());
+    if (unit->searched_argument()) searched = unit.get();
+  }
   std::vector<Row> rows;
   add_gluing_rows(records, snap, rows);
   if (variant == FetiVariant::tfeti) add_dirichlet_rows(records, rows);
-  if (!segments.empty()) add_node_to_segment_rows(records, segments, contact, snap, rows);
-  if (contact.obstacle) add_obstacle_rows(records, contact, snap, rows);
-  const bool mortar = std::any_of(faces.begin(), faces.end(), [](const FaceRecord& f) { return f.slave; });
-  // Checked here, on the faces of all ranks: one rank may hold slave faces and no master face.
-  if (mortar && std::all_of(faces.begin(), faces.end(), [](const FaceRecord& f) { return f.slave; }))
-    throw InputError("contactSlaveFaces: mortar contact needs the master faces too (contactFaces=)");
-  if (mortar) add_mortar_rows(records, faces, contact, snap, rows);
-  else if (!faces.empty()) add_node_to_face_rows(records, faces, contact, snap, rows);
+  for (const ContactDiscretization* unit : selected) unit->add_rows(in, rows);
   // A slave far from every master gets no row (no contact possible there); none at all
   // means the contact asked for cannot happen: most likely a radius or a surface mislaid.
-  const bool searched = !segments.empty() || !faces.empty();
   const bool has_slaves = std::any_of(records.begin(), records.end(), [](const DofRecord& r) { return r.slave; });
   if (searched && has_slaves &&
       std::none_of(rows.begin(), rows.end(), [](const Row& r) { return r.kind == RowKind::contact; }))
-    throw InputError(std::string(segments.empty() ? (mortar ? "contactSlaveFaces" : "contactFaces") : "contactSegments") +
-                     ": no slave node has a master " + (segments.empty() ? "face" : "segment") +
-                     " of another body within contactRadius = " + std::to_string(contact.search_distance) +
+    throw InputError(std::string(searched->searched_argument()) + ": no slave node has a master " +
+                     searched->master_word() + " of another body within contactRadius = " +
+                     std::to_string(contact.search_distance) +
                      " (no contact row at all): check the radius, which surfaces are slave and master, and that "
                      "each face is ordered with (b - a) x (c - a) out of its body (ffetiBoundaryFaces)");
-  if (segments.empty() && faces.empty() && !contact.obstacle) add_node_to_node_rows(records, contact.gap, snap, rows);
   if (variant == FetiVariant::feti1) substitute_dirichlet(records, rows);
 
   std::stable_partition(rows.begin(), rows.end(), [](const Row& r) { return r.equality; });
   if (contact.has_friction()) add_friction_rows(records, rows);
   Constraints result;
+  for (const ContactDiscretization* unit : selected) result.contact_kinds.push_back(unit->kind());
   for (const Row& row : rows) {
     result.entries.insert(result.entries.end(), row.entries.begin(), row.entries.end());
     result.row_start.push_back(static_cast<int>(result.entries.size()));

@@ -2,7 +2,7 @@
 // solver of the undivided problem (the peers of the benchmarks, fetiConstraints).
 #pragma once
 
-#include "feti/feti_problem.h"
+#include "constraints/constraints.h"
 
 #include <vector>
 
@@ -17,8 +17,10 @@ struct ConstraintTriplets {
   std::vector<long> kind;     ///< per row: 0 gluing, 1 Dirichlet, 2 contact (RowKind)
 };
 
-/// InputError unless the problem runs in one process with Total FETI (FETI-1 eliminates the
-/// Dirichlet dofs, so their conditions are no rows).
-ConstraintTriplets constraint_triplets(const FetiProblem& problem);
+/// The rows of a problem over `inputs` (all its subdomains, in order) set up with `variant`
+/// on `processes` ranks. InputError unless it runs in one process with Total FETI (FETI-1
+/// eliminates the Dirichlet dofs, so their conditions are no rows).
+ConstraintTriplets constraint_triplets(const Constraints& c, const std::vector<SubdomainInput>& inputs,
+                                       FetiVariant variant, int processes);
 
 }  // namespace ffeti

@@ -1,14 +1,15 @@
-// Mortar contact rows (three dimensions): one row per slave node, its normal gap weighted by
-// its shape function over the slave faces that master faces cover (ContactInput::slave_faces).
-#include "feti/constraint_rows.h"
-#include "feti/face_grid.h"
-#include "feti/mortar_integration.h"
+#include "constraints/contact/mortar.h"
+
+#include "constraints/constraint_rows.h"
+#include "constraints/contact/face_grid.h"
+#include "constraints/contact/mortar_integration.h"
 
 #include "base/errors.h"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <tuple>
 
 namespace ffeti {
@@ -61,8 +62,23 @@ void add_pair(const FaceRecord& slave, const FaceRecord& master, const MortarInt
 
 }  // namespace
 
-void add_mortar_rows(const std::vector<DofRecord>& records, const std::vector<FaceRecord>& faces,
-                     const ContactInput& contact, double snap, std::vector<Row>& rows) {
+RowAt MortarGeometry::row_at(const NodeMotion&, double) const {
+  // No caller: moving_nodes() is empty and the capability table refuses mortar's sensitivity.
+  throw std::logic_error("mortar rows have no motion derivative yet");
+}
+
+bool Mortar::selected(const ContactRecords& in) const {
+  return std::any_of(in.faces.begin(), in.faces.end(), [](const FaceRecord& f) { return f.slave; });
+}
+
+void Mortar::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
+  const std::vector<DofRecord>& records = in.records;
+  const std::vector<FaceRecord>& faces = in.faces;
+  const ContactInput& contact = in.contact;
+  const double snap = in.snap;
+  // Checked here, on the faces of all ranks: one rank may hold slave faces and no master face.
+  if (std::all_of(faces.begin(), faces.end(), [](const FaceRecord& f) { return f.slave; }))
+    throw InputError("contactSlaveFaces: mortar contact needs the master faces too (contactFaces=)");
   // Sorted, so that the sums and the rows do not depend on how faces are spread over ranks.
   std::vector<FaceRecord> slaves, masters;
   for (const FaceRecord& f : faces) (f.slave ? slaves : masters).push_back(f);
@@ -130,10 +146,8 @@ void add_mortar_rows(const std::vector<DofRecord>& records, const std::vector<Fa
     // repeat its neighbours'): no contact possible here.
     if (!(pending_row.weight > 1e-3 * full_weight[j])) continue;
     const SlaveNode& node = nodes[j];
-    ContactRowGeometry geometry;
-    geometry.kind = ContactRowGeometry::Kind::mortar;
-    geometry.slave = {{{node.x_dof->subdomain, node.x_dof->dof}, {node.y_dof->subdomain, node.y_dof->dof}}};
-    geometry.s = {node.x_dof->x, node.x_dof->y};
+    const auto geometry = std::make_shared<const MortarGeometry>(DofRef{node.x_dof->subdomain, node.x_dof->dof},
+                                                                 Point3{node.x_dof->x, node.x_dof->y, node.x_dof->z});
     // Divided by int phi_j, so that the multiplier is a force like the other rows'.
     Row row{{}, pending_row.gap / pending_row.weight + node.x_dof->gap, RowKind::contact, false, geometry,
             -1, node.x_dof->friction};

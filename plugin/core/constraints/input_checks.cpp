@@ -1,4 +1,6 @@
-#include "feti/input_checks.h"
+#include "constraints/input_checks.h"
+
+#include "constraints/capabilities.h"
 
 #include "base/errors.h"
 
@@ -6,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <tuple>
 
 namespace ffeti {
 namespace {
@@ -158,12 +161,10 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
         throw InputError(indexed("dirichletValues", s) + ": entry " + std::to_string(i) + " is not finite");
   }
   const bool three_d = !subdomains.empty() && !subdomains.front().z.empty();
-  if (three_d && std::any_of(contact.master_segments.begin(), contact.master_segments.end(),
-                             [](const auto& list) { return !list.empty(); }))
-    throw InputError("contactSegments: plane problems only; with Z (three dimensions) use contactFaces (node to face)");
-  if (three_d && contact.has_friction())
-    throw InputError(std::string(contact.friction >= 0 ? "friction" : "slipBound") +
-                     ": plane problems only so far (no tangential rows in three dimensions)");
+  const int dimension = three_d ? 3 : 2;
+  if (std::any_of(contact.master_segments.begin(), contact.master_segments.end(),
+                  [](const auto& list) { return !list.empty(); }))
+    require(ContactKind::node_to_segment, Feature::rows, dimension, "contactSegments");
   if (!three_d && contact.obstacle && (contact.obstacle_point[2] != 0 || contact.obstacle_normal[2] != 0))
     throw InputError("obstacle: six entries (a plane) need Z (three dimensions); a plane problem takes four");
   check_per_subdomain_lists(contact.slave_dofs, ids, subdomains, "contactSlave");
@@ -177,8 +178,8 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
   const auto any = [](const auto& lists) {
     return std::any_of(lists.begin(), lists.end(), [](const auto& list) { return !list.empty(); });
   };
-  for (const auto& [faces, name] : {std::pair{&contact.master_faces, "contactFaces"},
-                                    std::pair{&contact.slave_faces, "contactSlaveFaces"}}) {
+  for (const auto& [faces, name, kind] : {std::tuple{&contact.master_faces, "contactFaces", ContactKind::node_to_face},
+                                          std::tuple{&contact.slave_faces, "contactSlaveFaces", ContactKind::mortar}}) {
     std::vector<std::vector<int>> face_dofs;
     for (const auto& list : *faces) {
       face_dofs.emplace_back();
@@ -186,9 +187,7 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
     }
     check_per_subdomain_lists(face_dofs, ids, subdomains, name);
     check_face_corners(*faces, ids, subdomains, name);
-    if (any(*faces) && !three_d)
-      throw InputError(std::string(name) + ": contact on faces needs Z (three dimensions); a plane problem takes "
-                       "contactSegments");
+    if (any(*faces)) require(kind, Feature::rows, dimension, name);
   }
   if (any(contact.slave_faces) && (any(contact.slave_dofs) || contact.obstacle))
     throw InputError("contactSlaveFaces: the slave nodes of mortar contact are the corners of these faces; give "

@@ -6,7 +6,7 @@
 // pass a uniform pressure exactly (the patch test).
 #pragma once
 
-#include "feti/contact_linearization.h"
+#include "constraints/contact/contact_linearization.h"
 
 #include <array>
 

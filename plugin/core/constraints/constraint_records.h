@@ -4,7 +4,7 @@
 // comparable.
 #pragma once
 
-#include "feti/problem_input.h"
+#include "constraints/problem_input.h"
 
 #include <array>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "feti/face_grid.h"
+#include "constraints/contact/face_grid.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "feti/contact_linearization.h"
+#include "constraints/contact/contact_linearization.h"
 
 #include <algorithm>
 #include <cmath>

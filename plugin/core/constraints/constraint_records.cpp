@@ -1,4 +1,4 @@
-#include "feti/constraint_records.h"
+#include "constraints/constraint_records.h"
 
 #include <algorithm>
 #include <cmath>

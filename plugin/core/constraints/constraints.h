@@ -1,14 +1,15 @@
 // The constraint matrix B = [B_E; B_I] and right-hand side c: gluing of duplicated
-// interface dofs, Dirichlet rows (Total FETI) and contact rows (node to node, node to
-// segment, obstacle), built from the records of constraint_records.h.
+// interface dofs, Dirichlet rows (Total FETI), the contact rows of the discretizations in
+// contact/ and the friction rows, built from the records of constraint_records.h.
 #pragma once
 
-#include "feti/constraint_records.h"
-#include "feti/contact_linearization.h"
-#include "feti/problem_input.h"
+#include "constraints/capabilities.h"
+#include "constraints/constraint_records.h"
+#include "constraints/contact/contact_row_geometry.h"
+#include "constraints/problem_input.h"
 
-#include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace ffeti {
@@ -19,29 +20,6 @@ struct ConstraintEntry {
   int subdomain;
   int dof;
   double coefficient;
-};
-
-/// One contact row's linearized condition as a function of the positions it was built
-/// from; the sensitivity analysis differentiates it when the geometry moves.
-struct ContactRowGeometry {
-  enum class Kind : std::uint8_t { node_to_node, node_to_segment, obstacle, node_to_face, mortar, ball };
-  Kind kind = Kind::node_to_node;
-  /// Node to segment and obstacle: the slave node's x and y dofs (subdomain, dof); node to
-  /// node: the slave dof in slave[0]. Node to segment: the segment's a_x, a_y, b_x, b_y.
-  /// Node to face, 3D obstacle and mortar: the slave's x and y dofs, s its x and y, and
-  /// the three-dimensional data below. Unused entries are {-1, -1}. slave[0] is the dof
-  /// that carries the row's gap_field.
-  std::array<std::array<int, 2>, 2> slave{{{-1, -1}, {-1, -1}}};
-  std::array<std::array<int, 2>, 4> master{{{-1, -1}, {-1, -1}, {-1, -1}, {-1, -1}}};
-  Point s{}, a{}, b{};  ///< slave position, segment ends (obstacle: a = point, b = normal)
-  /// Three dimensions (node to face, obstacle; not mortar): the slave's z dof and position;
-  /// node to face: the master triangle's x, y, z dofs and corners; obstacle: the plane's
-  /// point and unit normal in corners[0], corners[1]. A ball (in the plane too, z = 0): its
-  /// centre in corners[0], its radius in corners[1][0], the slave's position in s3.
-  std::array<int, 2> slave_z{-1, -1};
-  Point3 s3{};
-  std::array<std::array<int, 2>, 9> face{};
-  std::array<Point3, 3> corners{};
 };
 
 /// Rows in CSR form over (subdomain, dof) entries; equalities first, then the contact rows
@@ -55,7 +33,10 @@ struct Constraints {
   std::vector<RowKind> kind;
   int equality_rows = 0;
   int friction_rows = 0;
-  std::vector<ContactRowGeometry> geometry;  ///< one per contact row, in row order
+  /// One per contact row, in row order; shared with the friction rows and the sensitivity
+  /// problem's rows (immutable).
+  std::vector<std::shared_ptr<const ContactRowGeometry>> geometry;
+  std::vector<ContactKind> contact_kinds;    ///< the kinds the input selected (rows or not)
   std::vector<int> normal_row;               ///< per friction row: the row of its contact row
   std::vector<double> friction_coefficient;  ///< per friction row: Coulomb's mu (its slave node's)
 
@@ -71,7 +52,8 @@ struct Constraints {
 /// B does not depend on how subdomains are spread over ranks). For FETI-1 the Dirichlet
 /// values are substituted into the rows instead of adding rows (rows left empty are
 /// dropped; a violated one is an InputError). Throws InputError for a contact slave
-/// without a master at its position.
+/// without a master at its position, and for friction where a selected kind has none
+/// (capability_table()).
 /// `contact` supplies the scalar parameters (gap, search distance, obstacle), the same on
 /// every rank; its per-subdomain lists are not read.
 Constraints build_constraints(std::vector<DofRecord> records, const std::vector<SegmentRecord>& segments,

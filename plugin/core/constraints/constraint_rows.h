@@ -1,0 +1,52 @@
+// Inside build_constraints and the contact units (not for other users): the rows of B in the
+// making and the functions that match dofs by their snapped position (gluing, Dirichlet,
+// node to node, the slave nodes), substitute Dirichlet values and add friction rows.
+#pragma once
+
+#include "constraints/constraints.h"
+
+#include <memory>
+#include <vector>
+
+namespace ffeti {
+
+/// A row of B in the making; `geometry` only for a contact row.
+struct Row {
+  std::vector<ConstraintEntry> entries;
+  double rhs = 0;
+  RowKind kind = RowKind::gluing;
+  bool equality = true;
+  std::shared_ptr<const ContactRowGeometry> geometry{};
+  int normal_row = -1;  ///< a friction row's contact row
+  double friction = 0;  ///< a contact or friction row's Coulomb coefficient (its slave node's)
+};
+
+/// A slave node of the contact kinds that take every component: its dofs.
+struct SlaveNode {
+  const DofRecord* x_dof;
+  const DofRecord* y_dof;
+  const DofRecord* z_dof = nullptr;  ///< three dimensions (node to face) only
+};
+
+// In all of these `records` are sorted by (subdomain, dof).
+/// `components` = 3: each slave node also needs its z dof (node to face).
+std::vector<SlaveNode> slave_nodes(const std::vector<DofRecord>& records, double snap, int components = 2);
+void add_gluing_rows(const std::vector<DofRecord>& records, double snap, std::vector<Row>& rows);
+void add_dirichlet_rows(const std::vector<DofRecord>& records, std::vector<Row>& rows);
+/// Node to node: each slave dof (one copy per physical dof) and the master dof of another
+/// body at its position and component; InputError for a slave without one.
+struct SlaveMaster {
+  const DofRecord* slave;
+  const DofRecord* master;
+};
+std::vector<SlaveMaster> node_to_node_pairs(const std::vector<DofRecord>& records, double snap);
+/// The record of a fixed dof, nullptr if the dof is not fixed.
+const DofRecord* fixed_record(const std::vector<DofRecord>& records, int subdomain, int dof);
+/// FETI-1: known Dirichlet values move to the right-hand side.
+void substitute_dirichlet(const std::vector<DofRecord>& records, std::vector<Row>& rows);
+/// Appends a friction row for each contact row of `rows` (its index there as normal_row),
+/// the slip row of its geometry; fixed dofs leave the row (their values to its right-hand
+/// side), and a row left empty (a slave that cannot slip) is dropped.
+void add_friction_rows(const std::vector<DofRecord>& records, std::vector<Row>& rows);
+
+}  // namespace ffeti

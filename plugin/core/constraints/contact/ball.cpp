@@ -1,0 +1,41 @@
+#include "constraints/contact/ball.h"
+
+#include "constraints/constraint_rows.h"
+
+#include "base/errors.h"
+
+#include <cmath>
+
+namespace ffeti {
+
+RowAt BallGeometry::row_at(const NodeMotion& v, double t) const {
+  const Point3 s = moved(slave_position(), v[0], t), &c = centre;
+  const double distance = std::hypot(s[0] - c[0], s[1] - c[1], s[2] - c[2]);
+  RowAt row{{slave[0], slave[1], slave[2]}, {}, distance - radius};
+  for (size_t i = 0; i < 3; ++i) row.coefficients.push_back(-(s[i] - c[i]) / distance);
+  return row;
+}
+
+void Ball::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
+  const ContactInput& contact = in.contact;
+  const Point3& c = contact.obstacle_point;
+  for (const SlaveNode& node : slave_nodes(in.records, in.snap, contact.three_d ? 3 : 2)) {
+    const Point3 s{node.x_dof->x, node.x_dof->y, node.x_dof->z};
+    const double distance = std::hypot(s[0] - c[0], s[1] - c[1], s[2] - c[2]);
+    if (!(distance > 1e-12 * contact.obstacle_radius))
+      throw InputError("obstacleBall: the slave node at (" + std::to_string(s[0]) + ", " + std::to_string(s[1]) + ", " +
+                       std::to_string(s[2]) + ") is the ball's centre: it has no normal");
+    const std::array<DofRef, 3> dofs{{{node.x_dof->subdomain, node.x_dof->dof},
+                                      {node.y_dof->subdomain, node.y_dof->dof},
+                                      contact.three_d ? DofRef{node.z_dof->subdomain, node.z_dof->dof} : DofRef{-1, -1}}};
+    const auto geometry = std::make_shared<const BallGeometry>(dofs, s, c, contact.obstacle_radius, contact.three_d);
+    Row row{{}, distance - contact.obstacle_radius + node.x_dof->gap, RowKind::contact, false, geometry, -1,
+            node.x_dof->friction};
+    const DofRecord* slave[3] = {node.x_dof, node.y_dof, node.z_dof};
+    for (size_t k = 0; k < (contact.three_d ? 3u : 2u); ++k)
+      if (s[k] != c[k]) row.entries.push_back({slave[k]->subdomain, slave[k]->dof, -(s[k] - c[k]) / distance});
+    rows.push_back(std::move(row));
+  }
+}
+
+}  // namespace ffeti

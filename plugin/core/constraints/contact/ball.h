@@ -1,0 +1,35 @@
+// A rigid ball (a disc in the plane) of ContactInput::obstacle_radius centred at
+// obstacle_point, the bodies outside it: each slave node s against the tangent plane at its
+// nearest point, n = (s - c)/|s - c|: -n.u_s <= |s - c| - radius.
+#pragma once
+
+#include "constraints/contact/contact_discretization.h"
+#include "constraints/contact/contact_row_geometry.h"
+
+namespace ffeti {
+
+class BallGeometry final : public ContactRowGeometry {
+ public:
+  /// `slave`: the slave's x, y and z dofs (z {-1, -1} in a plane problem, where s and the
+  /// centre have z = 0).
+  BallGeometry(std::array<DofRef, 3> slave, const Point3& s, const Point3& centre, double radius, bool three_d)
+      : ContactRowGeometry(ContactKind::ball, slave[0], s, three_d), slave(slave), centre(centre), radius(radius) {}
+
+  std::vector<DofRef> moving_nodes() const override { return {slave[0]}; }
+  /// n moves with s.
+  RowAt row_at(const NodeMotion& v, double t) const override;
+  double length() const override { return radius; }
+
+  const std::array<DofRef, 3> slave;
+  const Point3 centre;
+  const double radius;
+};
+
+class Ball final : public ContactDiscretization {
+ public:
+  ContactKind kind() const override { return ContactKind::ball; }
+  bool selected(const ContactRecords& in) const override { return in.contact.obstacle && in.contact.obstacle_radius > 0; }
+  void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;
+};
+
+}  // namespace ffeti

@@ -1,0 +1,13 @@
+#include "constraints/contact/contact_row_geometry.h"
+
+#include <stdexcept>
+
+namespace ffeti {
+
+RowAt ContactRowGeometry::slip_row() const {
+  // Reached only if the capability table says friction where the kind has no tangent.
+  throw std::logic_error(std::string(capability_table()[static_cast<size_t>(kind_)].name) +
+                         " contact has no slip row; the capability table must refuse friction for it");
+}
+
+}  // namespace ffeti

@@ -1,0 +1,63 @@
+// A contact row's linearized condition as a function of the positions it was built from,
+// one type per contact kind: the sensitivity analysis moves its nodes and differentiates
+// it, friction asks it for the tangential row.
+#pragma once
+
+#include "constraints/capabilities.h"
+#include "constraints/contact/point3.h"
+
+#include <array>
+#include <vector>
+
+namespace ffeti {
+
+/// A dof as (global subdomain, local dof); {-1, -1}: none.
+using DofRef = std::array<int, 2>;
+
+/// A row's condition over `dofs`: sum coefficients[k] u(dofs[k]) <= gap. Entries whose dof
+/// is {-1, -1} are none (a plane problem's z).
+struct RowAt {
+  std::vector<DofRef> dofs;
+  std::vector<double> coefficients;
+  double gap = 0;
+};
+
+/// The velocities of a row's moving nodes, in moving_nodes() order (at most four).
+using NodeMotion = std::array<Point3, 4>;
+
+class ContactRowGeometry {
+ public:
+  ContactRowGeometry(ContactKind kind, DofRef slave_dof, const Point3& slave_position, bool three_d)
+      : kind_(kind), slave_dof_(slave_dof), slave_position_(slave_position), three_d_(three_d) {}
+  virtual ~ContactRowGeometry() = default;
+
+  ContactKind kind() const { return kind_; }
+  /// The slave dof that carries the row's gap_field entry (its component 0).
+  DofRef slave_dof() const { return slave_dof_; }
+  const Point3& slave_position() const { return slave_position_; }  ///< z = 0 in a plane problem
+  bool three_d() const { return three_d_; }
+
+  /// The nodes whose motion moves the row, each named by its x dof (empty: the row does
+  /// not depend on positions).
+  virtual std::vector<DofRef> moving_nodes() const = 0;
+  /// The row with its nodes moved by t times `velocities`, keeping its pairing (segment or
+  /// face, and slave): the projection is not clamped.
+  virtual RowAt row_at(const NodeMotion& velocities, double t) const = 0;
+  /// The length the geometry is measured in: the step of the differences scales with it.
+  virtual double length() const = 0;
+  /// The tangential row of friction: the slip t.(u_slave - u_master) from the last load
+  /// step's state (gap 0). Kinds whose capability has no friction are refused before.
+  virtual RowAt slip_row() const;
+
+ private:
+  ContactKind kind_;
+  DofRef slave_dof_;
+  Point3 slave_position_;
+  bool three_d_;
+};
+
+inline Point3 moved(const Point3& p, const Point3& velocity, double t) {
+  return {p[0] + t * velocity[0], p[1] + t * velocity[1], p[2] + t * velocity[2]};
+}
+
+}  // namespace ffeti

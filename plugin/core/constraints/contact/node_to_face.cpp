@@ -1,0 +1,53 @@
+#include "constraints/contact/node_to_face.h"
+
+#include "constraints/constraint_rows.h"
+#include "constraints/contact/contact_linearization.h"
+#include "constraints/contact/face_grid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ffeti {
+
+RowAt FaceGeometry::row_at(const NodeMotion& v, double t) const {
+  const LinearizedFaceRow r = node_to_face_row(moved(slave_position(), v[0], t), moved(corners[0], v[1], t),
+                                               moved(corners[1], v[2], t), moved(corners[2], v[3], t), false);
+  RowAt row{{slave[0], slave[1], slave[2]}, {r.coefficients.begin(), r.coefficients.end()}, r.gap};
+  row.dofs.insert(row.dofs.end(), face.begin(), face.end());
+  return row;
+}
+
+double FaceGeometry::length() const {
+  const Point3 &a = corners[0], &b = corners[1];
+  return std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+}
+
+bool NodeToFace::selected(const ContactRecords& in) const {
+  return !in.faces.empty() && std::none_of(in.faces.begin(), in.faces.end(), [](const FaceRecord& f) { return f.slave; });
+}
+
+void NodeToFace::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
+  const FaceGrid grid(in.faces);
+  for (const SlaveNode& node : slave_nodes(in.records, in.snap, 3)) {
+    const Point3 s{node.x_dof->x, node.x_dof->y, node.x_dof->z};
+    const FaceRecord* face = grid.nearest(s, node.x_dof->body, in.contact.search_distance);
+    if (!face) continue;  // no master face within reach: no contact possible here
+    std::array<DofRef, 9> face_dofs;
+    for (size_t k = 0; k < 9; ++k) face_dofs[k] = {face->subdomain, face->dofs[k]};
+    const auto geometry = std::make_shared<const FaceGeometry>(
+        std::array<DofRef, 3>{{{node.x_dof->subdomain, node.x_dof->dof},
+                               {node.y_dof->subdomain, node.y_dof->dof},
+                               {node.z_dof->subdomain, node.z_dof->dof}}},
+        s, face_dofs, face->corners);
+    const LinearizedFaceRow linear = node_to_face_row(s, face->corners[0], face->corners[1], face->corners[2]);
+    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction};
+    const DofRecord* slave[3] = {node.x_dof, node.y_dof, node.z_dof};
+    for (size_t i = 0; i < 3; ++i)
+      if (linear.coefficients[i] != 0) row.entries.push_back({slave[i]->subdomain, slave[i]->dof, linear.coefficients[i]});
+    for (size_t k = 0; k < 9; ++k)
+      if (linear.coefficients[3 + k] != 0) row.entries.push_back({face->subdomain, face->dofs[k], linear.coefficients[3 + k]});
+    rows.push_back(std::move(row));
+  }
+}
+
+}  // namespace ffeti

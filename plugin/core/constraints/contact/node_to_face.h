@@ -1,0 +1,39 @@
+// Node to face (three dimensions): each slave node against the nearest master triangle of
+// another body within the search distance (ContactInput::master_faces), found through the
+// faces' grid.
+#pragma once
+
+#include "constraints/contact/contact_discretization.h"
+#include "constraints/contact/contact_row_geometry.h"
+
+namespace ffeti {
+
+/// n.(sum_i w_i u_i - u_s) <= n.(s - p), p the slave's projection on the triangle
+/// (node_to_face_row).
+class FaceGeometry final : public ContactRowGeometry {
+ public:
+  FaceGeometry(std::array<DofRef, 3> slave, const Point3& s, std::array<DofRef, 9> face,
+               const std::array<Point3, 3>& corners)
+      : ContactRowGeometry(ContactKind::node_to_face, slave[0], s, true), slave(slave), face(face), corners(corners) {}
+
+  std::vector<DofRef> moving_nodes() const override { return {slave[0], face[0], face[3], face[6]}; }
+  RowAt row_at(const NodeMotion& v, double t) const override;
+  /// The face's first edge.
+  double length() const override;
+
+  const std::array<DofRef, 3> slave;  ///< the slave's x, y, z dofs
+  const std::array<DofRef, 9> face;   ///< the triangle's x, y, z dofs of corners a, b, c
+  const std::array<Point3, 3> corners;
+};
+
+class NodeToFace final : public ContactDiscretization {
+ public:
+  ContactKind kind() const override { return ContactKind::node_to_face; }
+  /// Master faces without slave faces (those make mortar).
+  bool selected(const ContactRecords& in) const override;
+  void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;
+  const char* searched_argument() const override { return "contactFaces"; }
+  const char* master_word() const override { return "face"; }
+};
+
+}  // namespace ffeti

@@ -1,0 +1,41 @@
+// Node to segment (plane problems): each slave node against the nearest master segment of
+// another body within the search distance (ContactInput::master_segments).
+#pragma once
+
+#include "constraints/contact/contact_discretization.h"
+#include "constraints/contact/contact_linearization.h"
+#include "constraints/contact/contact_row_geometry.h"
+
+namespace ffeti {
+
+/// n.(u_p - u_s) <= n.(s - p), p the slave's projection on segment a-b (node_to_segment_row).
+class NodeToSegmentGeometry final : public ContactRowGeometry {
+ public:
+  NodeToSegmentGeometry(std::array<DofRef, 2> slave, std::array<DofRef, 4> master, const Point& s, const Point& a,
+                        const Point& b)
+      : ContactRowGeometry(ContactKind::node_to_segment, slave[0], {s[0], s[1], 0.0}, false),
+        slave(slave), master(master), s(s), a(a), b(b) {}
+
+  std::vector<DofRef> moving_nodes() const override { return {slave[0], master[0], master[2]}; }
+  RowAt row_at(const NodeMotion& v, double t) const override;
+  double length() const override;
+  RowAt slip_row() const override;
+
+  const std::array<DofRef, 2> slave;   ///< the slave's x and y dofs
+  const std::array<DofRef, 4> master;  ///< the segment's a_x, a_y, b_x, b_y
+  const Point s, a, b;                 ///< slave position, segment ends
+
+  /// The dofs of the row's coefficients (node_to_segment_row's order).
+  std::vector<DofRef> dofs() const { return {slave[0], slave[1], master[0], master[1], master[2], master[3]}; }
+};
+
+class NodeToSegment final : public ContactDiscretization {
+ public:
+  ContactKind kind() const override { return ContactKind::node_to_segment; }
+  bool selected(const ContactRecords& in) const override { return !in.segments.empty(); }
+  void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;
+  const char* searched_argument() const override { return "contactSegments"; }
+  const char* master_word() const override { return "segment"; }
+};
+
+}  // namespace ffeti

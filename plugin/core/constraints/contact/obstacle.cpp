@@ -1,0 +1,56 @@
+#include "constraints/contact/obstacle.h"
+
+#include "constraints/constraint_rows.h"
+#include "constraints/contact/contact_linearization.h"
+
+#include "base/errors.h"
+
+#include <cmath>
+
+namespace ffeti {
+
+RowAt ObstacleGeometry::row_at(const NodeMotion& v, double t) const {
+  const Point3 s = moved(slave_position(), v[0], t);
+  if (three_d()) {  // only the gap moves
+    RowAt row{{slave[0], slave[1], slave[2]}, {-normal[0], -normal[1], -normal[2]}, 0.0};
+    for (size_t i = 0; i < 3; ++i) row.gap += normal[i] * (s[i] - point[i]);
+    return row;
+  }
+  const LinearizedRow r = obstacle_row({s[0], s[1]}, {point[0], point[1]}, {normal[0], normal[1]});
+  return {{slave[0], slave[1]}, {r.coefficients[0], r.coefficients[1]}, r.gap};
+}
+
+RowAt ObstacleGeometry::slip_row() const {
+  const LinearizedRow slip = obstacle_slip({normal[0], normal[1]});
+  return {{slave[0], slave[1]}, {slip.coefficients[0], slip.coefficients[1]}, slip.gap};
+}
+
+void Obstacle::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
+  const ContactInput& contact = in.contact;
+  const auto& normal = contact.obstacle_normal;
+  const double norm = contact.three_d ? std::hypot(normal[0], normal[1], normal[2]) : std::hypot(normal[0], normal[1]);
+  if (!(norm > 0)) throw InputError("obstacle: the normal must not be zero");
+  const Point3 n{normal[0] / norm, normal[1] / norm, normal[2] / norm};
+  for (const SlaveNode& node : slave_nodes(in.records, in.snap, contact.three_d ? 3 : 2)) {
+    const DofRecord* slave[3] = {node.x_dof, node.y_dof, node.z_dof};
+    const std::array<DofRef, 3> dofs{{{node.x_dof->subdomain, node.x_dof->dof},
+                                      {node.y_dof->subdomain, node.y_dof->dof},
+                                      contact.three_d ? DofRef{node.z_dof->subdomain, node.z_dof->dof} : DofRef{-1, -1}}};
+    // -n.u_s <= n.(s - point): in the plane the row the sensitivity analysis differentiates,
+    // in 3D the same with z.
+    LinearizedRow linear = obstacle_row({node.x_dof->x, node.x_dof->y}, {contact.obstacle_point[0], contact.obstacle_point[1]},
+                                        {n[0], n[1]});
+    if (contact.three_d) {
+      linear.coefficients[2] = -n[2];
+      linear.gap += n[2] * (node.x_dof->z - contact.obstacle_point[2]);
+    }
+    const auto geometry = std::make_shared<const ObstacleGeometry>(
+        dofs, Point3{node.x_dof->x, node.x_dof->y, node.x_dof->z}, contact.obstacle_point, n, contact.three_d);
+    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction};
+    for (size_t k = 0; k < (contact.three_d ? 3u : 2u); ++k)
+      if (linear.coefficients[k] != 0) row.entries.push_back({slave[k]->subdomain, slave[k]->dof, linear.coefficients[k]});
+    rows.push_back(std::move(row));
+  }
+}
+
+}  // namespace ffeti

@@ -1,0 +1,38 @@
+// A rigid obstacle (ContactInput::obstacle): a line in the plane, a plane in three
+// dimensions, with its outward unit normal n; each slave node s gets
+// -n.u_s <= n.(s - point).
+#pragma once
+
+#include "constraints/contact/contact_discretization.h"
+#include "constraints/contact/contact_row_geometry.h"
+
+namespace ffeti {
+
+class ObstacleGeometry final : public ContactRowGeometry {
+ public:
+  /// `slave`: the slave's x, y and z dofs (z {-1, -1} in a plane problem).
+  ObstacleGeometry(std::array<DofRef, 3> slave, const Point3& s, const Point3& point, const Point3& normal, bool three_d)
+      : ContactRowGeometry(ContactKind::obstacle, slave[0], s, three_d), slave(slave), point(point), normal(normal) {}
+
+  std::vector<DofRef> moving_nodes() const override { return {slave[0]}; }
+  RowAt row_at(const NodeMotion& v, double t) const override;
+  /// The row is linear in the slave position: any step is exact.
+  double length() const override { return 1.0; }
+  /// Along the line's direction (-n_y, n_x), the turn from the outward normal a segment's
+  /// tangent makes (plane problems).
+  RowAt slip_row() const override;
+
+  const std::array<DofRef, 3> slave;
+  const Point3 point, normal;
+};
+
+class Obstacle final : public ContactDiscretization {
+ public:
+  ContactKind kind() const override { return ContactKind::obstacle; }
+  bool selected(const ContactRecords& in) const override {
+    return in.contact.obstacle && !(in.contact.obstacle_radius > 0);
+  }
+  void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;
+};
+
+}  // namespace ffeti

@@ -1,0 +1,223 @@
+// The contact entries of a problem file as the core's ContactInput, for this rank's
+// subdomains: slave nodes, master segments (faces in a solid) oriented out of their body,
+// obstacles, friction coefficients.
+#include "native/contact_input.h"
+
+#include "native/mesh_groups.h"
+
+#include "base/errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace ffeti::native {
+namespace {
+
+/// Each triangle edge of the local subdomains: (subdomain position, opposite vertex).
+using EdgeMap = std::map<std::pair<NodeTag, NodeTag>, std::pair<size_t, NodeTag>>;
+
+EdgeMap edges_of(const std::vector<SubdomainLayout>& layouts) {
+  EdgeMap edges;
+  for (size_t k = 0; k < layouts.size(); ++k)
+    for (const Element& t : layouts[k].cells)
+      for (int e = 0; e < 3; ++e) {
+        const NodeTag a = t.nodes[e], b = t.nodes[(e + 1) % 3];
+        edges[{std::min(a, b), std::max(a, b)}] = {k, t.nodes[(e + 2) % 3]};
+      }
+  return edges;
+}
+
+/// The master segments of curve `group` that lie on the local subdomains, as dofs of the
+/// subdomain holding the segment's triangle, oriented with that triangle on the left (the
+/// core's convention, whatever the curve's orientation in the mesh). Returns how many of
+/// the curve's segments are here; the caller checks that every rank together found all.
+long add_master_segments(const std::vector<std::array<NodeTag, 2>>& segments, const GmshMesh& mesh,
+                         const std::vector<SubdomainLayout>& layouts, const EdgeMap& edges, ContactInput& contact) {
+  long found = 0;
+  for (const auto& [a, b] : segments) {
+    const auto edge = edges.find({std::min(a, b), std::max(a, b)});
+    if (edge == edges.end()) continue;
+    const auto [k, c] = edge->second;
+    const auto pa = mesh.position(a), pb = mesh.position(b), pc = mesh.position(c);
+    const double left = (pb[0] - pa[0]) * (pc[1] - pa[1]) - (pb[1] - pa[1]) * (pc[0] - pa[0]);
+    const NodeTag first = left > 0 ? a : b, second = left > 0 ? b : a;
+    const auto& rows = layouts[k].rows;
+    contact.master_segments[k].push_back(
+        {rows.at({first, 0}), rows.at({first, 1}), rows.at({second, 0}), rows.at({second, 1})});
+    ++found;
+  }
+  return found;
+}
+
+/// Each tetrahedron face of the local subdomains (its nodes sorted): the subdomain position
+/// and the opposite vertex of a tetrahedron it bounds, and how many of the local
+/// tetrahedra it bounds (2: an inner face).
+struct FaceOwner {
+  size_t subdomain;
+  NodeTag opposite;
+  int tetrahedra;
+};
+using FaceMap = std::map<std::array<NodeTag, 3>, FaceOwner>;
+
+FaceMap faces_of(const std::vector<SubdomainLayout>& layouts) {
+  FaceMap faces;
+  for (size_t k = 0; k < layouts.size(); ++k)
+    for (const Element& t : layouts[k].cells)
+      for (size_t opposite = 0; opposite < 4; ++opposite) {
+        std::array<NodeTag, 3> face{};
+        for (size_t i = 0, j = 0; i < 4; ++i)
+          if (i != opposite) face[j++] = t.nodes[i];
+        std::sort(face.begin(), face.end());
+        const auto [it, added] = faces.try_emplace(face, FaceOwner{k, t.nodes[opposite], 0});
+        ++it->second.tetrahedra;
+      }
+  return faces;
+}
+
+/// The master triangles of surface `group` that lie on the local subdomains, as the 9 dofs
+/// of the subdomain holding the triangle's tetrahedron, ordered so that (b - a) x (c - a)
+/// points away from that tetrahedron (out of its body: the core's convention, whatever the
+/// surface's orientation in the mesh). Returns how many are here; the caller checks that
+/// every rank together found all.
+long add_master_faces(const std::vector<std::array<NodeTag, 3>>& triangles, const GmshMesh& mesh,
+                      const std::vector<SubdomainLayout>& layouts, const FaceMap& faces, ContactInput& contact) {
+  long found = 0;
+  for (std::array<NodeTag, 3> corners : triangles) {
+    std::array<NodeTag, 3> key = corners;
+    std::sort(key.begin(), key.end());
+    const auto face = faces.find(key);
+    if (face == faces.end()) continue;
+    // Between two tetrahedra the face has no outside to point to (checked where both are
+    // on this rank).
+    if (face->second.tetrahedra > 1)
+      throw InputError("contact master: the triangle (" + std::to_string(corners[0]) + ", " + std::to_string(corners[1]) +
+                       ", " + std::to_string(corners[2]) + ") lies between two tetrahedra: master faces must be on "
+                       "a body's boundary");
+    const size_t k = face->second.subdomain;
+    const NodeTag d = face->second.opposite;
+    const auto pa = mesh.position(corners[0]), pb = mesh.position(corners[1]), pc = mesh.position(corners[2]);
+    const auto pd = mesh.position(d);
+    const std::array<double, 3> u{pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]}, v{pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
+    const std::array<double, 3> n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    if (n[0] * (pd[0] - pa[0]) + n[1] * (pd[1] - pa[1]) + n[2] * (pd[2] - pa[2]) > 0) std::swap(corners[1], corners[2]);
+    const auto& rows = layouts[k].rows;
+    std::array<int, 9> dofs{};
+    for (size_t corner = 0; corner < 3; ++corner)
+      for (int c = 0; c < 3; ++c) dofs[3 * corner + static_cast<size_t>(c)] = rows.at({corners[corner], c});
+    contact.master_faces[k].push_back(dofs);
+    ++found;
+  }
+  return found;
+}
+
+/// The line of a straight obstacle curve, its normal pointing to the slave nodes' side.
+/// InputError if the curve is not straight or the slave nodes' centroid lies on it.
+void obstacle_from_curve(const ProblemFile& problem, const GmshMesh& mesh, const ContactSpec& c, const std::string& key,
+                         ContactInput& contact) {
+  const auto nodes = from_group(problem, key + ".obstacle.curve", [&] { return mesh.nodes(1, c.obstacle_curve); });
+  const auto p0 = mesh.position(nodes.front());
+  std::array<double, 3> far = p0;
+  for (NodeTag node : nodes) {
+    const auto p = mesh.position(node);
+    if (std::hypot(p[0] - p0[0], p[1] - p0[1]) > std::hypot(far[0] - p0[0], far[1] - p0[1])) far = p;
+  }
+  const double length = std::hypot(far[0] - p0[0], far[1] - p0[1]);
+  if (!(length > 0)) throw InputError(problem.path + ": " + key + ".obstacle.curve: the curve has no length");
+  std::array<double, 2> normal{-(far[1] - p0[1]) / length, (far[0] - p0[0]) / length};
+  auto offset = [&](const std::array<double, 3>& p) { return normal[0] * (p[0] - p0[0]) + normal[1] * (p[1] - p0[1]); };
+  for (NodeTag node : nodes)
+    if (std::abs(offset(mesh.position(node))) > 1e-9 * length)
+      throw InputError(problem.path + ": " + key + ".obstacle.curve: curve " + std::to_string(c.obstacle_curve) +
+                       " is not straight (node " + std::to_string(node) + " lies off the line): a rigid obstacle is a line");
+  std::array<double, 3> centroid{0, 0, 0};  // z unused: a plane problem
+  const auto slaves = mesh.nodes(1, c.slave);
+  for (NodeTag node : slaves)
+    for (int k = 0; k < 2; ++k) centroid[k] += mesh.position(node)[k] / static_cast<double>(slaves.size());
+  const double side = offset(centroid);
+  if (std::abs(side) <= 1e-9 * length)
+    throw InputError(problem.path + ": " + key + ".obstacle.curve: the slave nodes' centroid lies on the obstacle's "
+                     "line: give \"point\" and \"normal\" instead");
+  if (side < 0) normal = {-normal[0], -normal[1]};
+  contact.obstacle_point = {p0[0], p0[1], 0.0};
+  contact.obstacle_normal = {normal[0], normal[1], 0.0};
+}
+
+/// Dofs of the local subdomains at `nodes` (sorted; all components).
+void add_node_dofs(const std::vector<NodeTag>& nodes, const std::vector<SubdomainLayout>& layouts,
+                   std::vector<std::vector<int>>& dofs) {
+  for (size_t k = 0; k < layouts.size(); ++k)
+    for (size_t i = 0; i < layouts[k].dofs.size(); ++i)
+      if (std::binary_search(nodes.begin(), nodes.end(), layouts[k].dofs[i].node))
+        dofs[k].push_back(static_cast<int>(i));
+}
+
+/// Coulomb's coefficient `mu` at the dofs of `nodes` (sorted: a contact entry's slave curve),
+/// 0 at the other dofs: one coefficient per contact entry.
+void set_friction(const std::vector<NodeTag>& nodes, double mu, const std::vector<SubdomainLayout>& layouts,
+                  std::vector<std::vector<double>>& field) {
+  field.resize(layouts.size());
+  for (size_t k = 0; k < layouts.size(); ++k) {
+    if (field[k].empty()) field[k].assign(layouts[k].dofs.size(), 0.0);
+    for (size_t i = 0; i < layouts[k].dofs.size(); ++i)
+      if (std::binary_search(nodes.begin(), nodes.end(), layouts[k].dofs[i].node)) field[k][i] = mu;
+  }
+}
+
+}  // namespace
+
+ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, const std::vector<SubdomainLayout>& layouts,
+                           long& segments_here, long& segments_total) {
+  ContactInput contact;
+  if (problem.contact.empty()) return contact;
+  const bool solid = problem.dimension() == 3;
+  const EdgeMap edges = problem.components == 2 ? edges_of(layouts) : EdgeMap();
+  const FaceMap faces = solid ? faces_of(layouts) : FaceMap();
+  const int boundary = problem.dimension() - 1;  // slave and master groups: curves, surfaces in 3D
+  const size_t n = layouts.size();
+  contact.slave_dofs.resize(n);
+  const ContactSpec& first = problem.contact.front();
+  if (first.search_distance) contact.search_distance = *first.search_distance;
+  contact.gap = first.gap.value_or(0.0);
+  // Coulomb: a coefficient per entry (0 for an entry without one); Tresca: one bound.
+  const bool coulomb = std::any_of(problem.contact.begin(), problem.contact.end(),
+                                   [](const ContactSpec& c) { return c.friction.has_value(); });
+  if (coulomb) contact.friction = 0.0;
+  contact.slip_bound = first.slip_bound.value_or(-1.0);
+  for (size_t i = 0; i < problem.contact.size(); ++i) {
+    const ContactSpec& c = problem.contact[i];
+    const std::string key = "contact[" + std::to_string(i) + "]";
+    if (c.search_distance != first.search_distance || c.gap != first.gap || c.slip_bound != first.slip_bound)
+      throw InputError(problem.path + ": " + key +
+                       ": search_distance, gap and slip_bound must be those of contact[0] (one value per problem)");
+    const std::vector<NodeTag> slaves =
+        from_group(problem, key + ".slave", [&] { return mesh.nodes(boundary, c.slave); });
+    add_node_dofs(slaves, layouts, contact.slave_dofs);
+    if (c.friction) set_friction(slaves, *c.friction, layouts, contact.friction_field);
+    if (c.obstacle) {
+      if (contact.obstacle)
+        throw InputError(problem.path + ": " + key + ": a second obstacle (one rigid obstacle per problem)");
+      contact.obstacle = true;
+      contact.obstacle_point = c.obstacle_point;  // z entries 0 in a plane problem
+      contact.obstacle_normal = c.obstacle_normal;
+      if (c.obstacle_curve > 0) obstacle_from_curve(problem, mesh, c, key, contact);
+    } else if (problem.components == 1) {  // node to node, matching meshes
+      contact.master_dofs.resize(n);
+      add_node_dofs(from_group(problem, key + ".master", [&] { return mesh.nodes(boundary, c.master); }), layouts,
+                    contact.master_dofs);
+    } else if (solid) {  // node to face
+      contact.master_faces.resize(n);
+      const auto triangles = from_group(problem, key + ".master", [&] { return mesh.faces(c.master); });
+      segments_total += static_cast<long>(triangles.size());
+      segments_here += add_master_faces(triangles, mesh, layouts, faces, contact);
+    } else {
+      contact.master_segments.resize(n);
+      const auto segments = from_group(problem, key + ".master", [&] { return mesh.segments(c.master); });
+      segments_total += static_cast<long>(segments.size());
+      segments_here += add_master_segments(segments, mesh, layouts, edges, contact);
+    }
+  }
+  return contact;
+}
+
+}  // namespace ffeti::native

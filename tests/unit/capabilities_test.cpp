@@ -1,0 +1,85 @@
+// The capability table (constraints/capabilities.h): one entry per contact kind and per
+// registered discretization, one message form, and the refusals of both set-up paths
+// (build_constraints, validate_input) and of the sensitivity analysis worded by it.
+#include "constraints/capabilities.h"
+#include "constraints/constraints.h"
+#include "constraints/contact/contact_discretization.h"
+#include "constraints/input_checks.h"
+#include "base/errors.h"
+#include "membrane_model.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <string>
+
+namespace ffeti {
+namespace {
+
+std::string refusal(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no InputError)";
+}
+
+std::vector<SubdomainInput> membranes() { return test::membrane_subdomains(test::membrane_options(4, 2)); }
+
+TEST(Capabilities, OneEntryPerKindAndPerRegisteredDiscretization) {
+  const auto& table = capability_table();
+  for (size_t k = 0; k < table.size(); ++k) EXPECT_EQ(static_cast<size_t>(table[k].kind), k) << table[k].name;
+  ASSERT_EQ(contact_discretizations().size(), table.size());
+  for (const auto& unit : contact_discretizations())
+    EXPECT_LT(static_cast<size_t>(unit->kind()), table.size());
+}
+
+TEST(Capabilities, OneMessageFormNamingTheDimensionWhereTheFeatureWorksInTheOther) {
+  EXPECT_EQ(unsupported(ContactKind::ball, Feature::friction, 2),
+            "ball contact does not support friction yet (see the capability table in docs/reference.md)");
+  EXPECT_EQ(unsupported(ContactKind::obstacle, Feature::friction, 3),
+            "obstacle contact does not support friction in three dimensions yet (see the capability table in "
+            "docs/reference.md)");
+  EXPECT_EQ(unsupported(ContactKind::node_to_face, Feature::rows, 2),
+            "node-to-face contact does not support plane problems yet (see the capability table in docs/reference.md)");
+  EXPECT_TRUE(supports(ContactKind::node_to_segment, Feature::friction, 2));
+  EXPECT_FALSE(supports(ContactKind::node_to_segment, Feature::rows, 3));
+  EXPECT_FALSE(supports(ContactKind::mortar, Feature::sensitivity, 3));
+  EXPECT_NO_THROW(require(ContactKind::obstacle, Feature::friction, 2, "friction"));
+  EXPECT_EQ(refusal([] { require(ContactKind::mortar, Feature::sensitivity, 3, "P"); }),
+            "P: " + unsupported(ContactKind::mortar, Feature::sensitivity, 3));
+}
+
+TEST(Capabilities, TheSetUpRefusesFrictionWhereTheSelectedKindHasNone) {
+  const auto subdomains = membranes();
+  ContactInput contact = test::membrane_contact(subdomains);  // node to node
+  contact.friction = 0.3;
+  EXPECT_EQ(refusal([&] { build_constraints(subdomains, contact, FetiVariant::tfeti); }),
+            "friction: " + unsupported(ContactKind::node_to_node, Feature::friction, 2));
+  contact.master_dofs.clear();
+  contact.friction = -1, contact.slip_bound = 1;
+  contact.obstacle = true, contact.obstacle_radius = 0.5;
+  EXPECT_EQ(refusal([&] { build_constraints(subdomains, contact, FetiVariant::tfeti); }),
+            "slipBound: " + unsupported(ContactKind::ball, Feature::friction, 2));
+}
+
+TEST(Capabilities, TheInputChecksRefuseAKindInADimensionItLacks) {
+  auto subdomains = membranes();
+  for (SubdomainInput& s : subdomains) s.z.assign(s.x.size(), 0.0);
+  ContactInput contact;
+  contact.master_segments = {{{0, 1, 2, 3}}, {}};
+  EXPECT_EQ(refusal([&] { validate_input(subdomains, contact); }),
+            "contactSegments: " + unsupported(ContactKind::node_to_segment, Feature::rows, 3));
+}
+
+TEST(Capabilities, TheMarkdownTableHasARowPerKindAndSaysWhereAFeatureWorksInOneDimension) {
+  const std::string table = capability_table_markdown();
+  EXPECT_EQ(table.rfind("| contact | selected by | plane (2D) | solid (3D) | friction", 0), 0u) << table;
+  for (const KindCapabilities& k : capability_table())
+    EXPECT_NE(table.find(std::string("\n| ") + k.name + " | "), std::string::npos) << k.name;
+  EXPECT_NE(table.find("| obstacle | `contactSlave, obstacle` | yes | yes | plane only |"), std::string::npos) << table;
+}
+
+}  // namespace
+}  // namespace ffeti
