@@ -3,7 +3,6 @@
 #include "base/errors.h"
 #include "feti/primal.h"
 #include "base/stopwatch.h"
-#include "qp/conjugate_gradient.h"
 #include "qp/norm_estimate.h"
 
 #include <algorithm>
@@ -187,46 +186,6 @@ void DualSystem::recover(const DualData& data, Vec lambda, DualSolution& result)
   result.u = recover_primal(*F_, coarse_.get(), constraints_, data.loads, data.c, lambda, data.slip_bound);
   result.lambda = std::move(lambda);
   result.times.recovery = recovery_clock.seconds();
-}
-
-std::vector<DualSolution> DualSystem::solve(const std::vector<DualData>& data,
-                                            const DualSolveSettings& settings) const {
-  std::vector<DualSolution> results;
-  // Lockstep runs share the seed's test (a reference per run known in advance); the
-  // relative_kkt test needs u of each run, so those solve one after the other.
-  if (data.size() < 2 || settings.stopping != StoppingTest::seed ||
-      (path() != DualPath::cg && path() != DualPath::projected_cg)) {
-    for (const DualData& d : data) results.push_back(solve(d, settings));
-    return results;
-  }
-  settings.validate();
-  std::vector<Vec> b, mu(data.size(), Vec::Zero(rows()));
-  std::vector<StopTest> stop;
-  for (const DualData& d : data) {
-    results.push_back(prepared(d, settings));
-    b.push_back(d.b);
-    const double b_tol = settings.tolerance * results.back().gradient_reference;
-    stop.push_back([b_tol](const Vec&, const Vec&, double norm) { return norm <= b_tol; });
-  }
-  Stopwatch solve_clock;
-  const double operator_start = F_->application_seconds();
-  const std::vector<CgResult> cg_results = conjugate_gradient_block(
-      [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) {
-        if (coarse_) apply_PFP(x, y);
-        else F_->apply(x, y);
-      },
-      b, mu, CgSettings{}, qp::Budget(settings.max_hessian), stop);
-  const double seconds = solve_clock.seconds() / static_cast<double>(data.size());
-  const double operator_seconds = (F_->application_seconds() - operator_start) / static_cast<double>(data.size());
-  for (size_t j = 0; j < data.size(); ++j) {
-    results[j].times.dual_operator = operator_seconds;
-    results[j].status = cg_results[j].status;
-    results[j].counts = cg_results[j].counts;
-    results[j].gradient_norm = cg_results[j].gradient_norm;
-    results[j].times.solve = seconds;
-    recover(data[j], mu[j] + data[j].lambda_tilde, results[j]);
-  }
-  return results;
 }
 
 const FreeRowProjector& DualSystem::free_rows() const {

@@ -3,8 +3,9 @@
 // the constraints call for (ALGORITHMS.md section 6). The state problem has one; the
 // sensitivity problem of a design step (seed eq. 12: a subset of the rows) has another
 // over the same factorizations. Its parts: dual_system.cpp (the operators, the right-hand
-// side, the primal check and recovery), dual_formulations.cpp (one qp::Problem per
-// formulation), dual_solve.cpp (the dispatcher onto qp/).
+// side, the constraint set, the primal check and recovery), dual_formulations.cpp (one
+// qp::Problem per formulation), dual_solve.cpp (the dispatcher onto qp/ by the path, both
+// solve overloads).
 #pragma once
 
 #include "feti/coarse_space.h"
@@ -12,13 +13,13 @@
 #include "feti/dirichlet_preconditioner.h"
 #include "feti/dual_operator.h"
 #include "feti/free_row_projector.h"
-#include "feti/phase_times.h"
 #include "feti/stopping_test.h"
 #include "parallel/subdomain_sum.h"
 #include "qp/norm_estimate.h"
 #include "qp/problem.h"
 #include "qp/smalbe.h"
 
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
@@ -74,6 +75,28 @@ struct DualSolveSettings {
   /// Coulomb friction: Tresca solves of the fixed point at most (feti/friction.h).
   int friction_iterations = 50;
   void validate() const;  ///< throws InputError naming the setting
+};
+
+/// Where the time of a set-up and a solve went, phase by phase.
+struct PhaseTimes {  ///< wall-clock seconds; in a problem's result over several ranks, the slowest rank's
+  double constraints = 0, factorization = 0, coarse_space = 0, dual_data = 0;  ///< set-up
+  double norm_estimate = 0;   ///< estimating ||H|| (first solve of a system only)
+  double free_rows = 0;       ///< building T of coarse "free-rows" (first solve of a system only)
+  double solve = 0, recovery = 0, kkt = 0;
+  double dual_operator = 0;   ///< the part of solve spent applying F
+  double preconditioner = 0;  ///< the part of solve spent applying the preconditioner
+  double primal_checks = 0;   ///< the part of solve spent in the stopping test's primal checks
+
+  /// Several solves of one problem (friction's fixed point) add up phase by phase.
+  PhaseTimes& operator+=(const PhaseTimes& o) {
+    double* mine[] = {&constraints, &factorization, &coarse_space, &dual_data, &norm_estimate, &free_rows, &solve,
+                      &recovery, &kkt, &dual_operator, &preconditioner, &primal_checks};
+    const double* theirs[] = {&o.constraints, &o.factorization, &o.coarse_space, &o.dual_data, &o.norm_estimate,
+                              &o.free_rows, &o.solve, &o.recovery, &o.kkt, &o.dual_operator, &o.preconditioner,
+                              &o.primal_checks};
+    for (size_t k = 0; k < sizeof(mine) / sizeof(mine[0]); ++k) *mine[k] += *theirs[k];
+    return *this;
+  }
 };
 
 /// The right-hand side of one dual problem, for loads f (as the operators see them) and
@@ -206,11 +229,18 @@ class DualSystem {
   std::unique_ptr<CoarseSpace> coarse_;
   std::unique_ptr<DirichletPreconditioner> preconditioner_;
   DualPreconditioner preconditioner_kind_ = DualPreconditioner::none;
+  // What solve() (const: it changes no part of the system a caller sees) keeps from call to
+  // call. Each depends only on the system, never on a right-hand side or the settings, so a
+  // later solve may reuse it; none is safe to share between threads (a DualSystem solves one
+  // problem at a time, collectively). Work vectors, reused so that each application of an
+  // operator allocates nothing:
   mutable Vec projected_, applied_;                   // buffers of apply_PFP and the preconditioner
   mutable Eigen::MatrixXd block_projected_, block_applied_;  // of the block apply_PFP
+  // Built at first use, as only some paths need them (10-20 applications of the operator for
+  // a norm estimate; a factorization of C C' for T):
   mutable CachedNorm norm_F_, norm_PFP_, norm_reduced_;  // ||F||, ||PFP||, ||T'PFPT||
   mutable std::unique_ptr<FreeRowProjector> free_rows_;
-  mutable double check_seconds_ = 0;  // spent in primal_check so far
+  mutable double check_seconds_ = 0;  // spent in primal_check so far (a solve reports its difference)
 };
 
 }  // namespace ffeti
