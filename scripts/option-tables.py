@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """The option tables of docs/reference.md, printed from the option registry
-(plugin/core/feti/options.cpp) by `ffeti-solve --options setup|solve`: rewrites the blocks
-between <!-- options:SCOPE begin --> and <!-- options:SCOPE end -->; and the capability table
-(plugin/core/constraints/capabilities.cpp) by `ffeti-solve --capabilities`, the block between
-<!-- capabilities begin --> and <!-- capabilities end -->. With --check, changes nothing and
-fails when the page differs from the registry or the table (ctest docs_option_tables).
+(plugin/core/feti/options.cpp) by `ffeti-solve --options setup|solve|sensitivity`: rewrites the
+blocks between <!-- options:SCOPE begin --> and <!-- options:SCOPE end -->; and the capability
+table (plugin/core/constraints/capabilities.cpp) by `ffeti-solve --capabilities`, the block
+between <!-- capabilities begin --> and <!-- capabilities end -->. With --check, changes
+nothing and fails when the page differs from the registry or the table (ctest docs_option_tables).
 Usage: option-tables.py [--check] FFETI_SOLVE [REFERENCE_MD]"""
 import argparse
 import pathlib
@@ -24,7 +24,7 @@ args = parser.parse_args()
 page = pathlib.Path(args.reference)
 text = page.read_text()
 updated = text
-for scope in ("setup", "solve"):
+for scope in ("setup", "solve", "sensitivity"):
     rows = subprocess.run([args.ffeti_solve, "--options", scope], check=True, capture_output=True, text=True).stdout
     block = re.compile(rf"(<!-- options:{scope} begin -->\n).*?(<!-- options:{scope} end -->)", re.S)
     if not block.search(updated):

@@ -73,18 +73,22 @@ std::vector<DesignDerivative> design_directions(const FetiProblem& problem, KN<M
   return directions;
 }
 
-DualSolveSettings sensitivity_settings(const Handle& h, Expression tol, Expression maxit, Expression verbosity,
-                                       Stack stack) {
-  GivenOptions given;  // checked as fetiSolve's; the default tol is the state's
-  given.set("tol", optional_real(tol, stack, h.tolerance));
-  if (maxit) given.set("maxit", GetAny<long>((*maxit)(stack)));
-  if (verbosity) given.set("verbosity", GetAny<long>((*verbosity)(stack)));
-  const SolverSettings solver = given.solve(h.problem->variant());
-  DualSolveSettings settings;  // the sensitivity's own path and test: only these three from the script
-  settings.tolerance = solver.solve.tolerance;
-  settings.max_hessian = solver.solve.max_hessian;
-  settings.monitor = progress_monitor(solver.verbosity, h.problem->communicator());
-  return settings;
+/// The sensitivity functions' options (scope sensitivity of the registry, named_parameters'
+/// order from `options_nargs`), with the defaults that follow the state's solve.
+struct SensitivityCall {
+  DualSolveSettings settings;  // the sensitivity's own path and test: only tol, maxit, verbosity from the script
+  double threshold = 0;        // activeTol
+};
+
+SensitivityCall sensitivity_call(const Handle& h, const Expression* options_nargs, Stack stack) {
+  const GivenOptions options = given_options(OptionScope::sensitivity, options_nargs, stack);
+  const SolverSettings given = options.sensitivity();
+  SensitivityCall call;
+  call.settings.tolerance = options.has("tol") ? given.solve.tolerance : h.tolerance;
+  call.settings.max_hessian = given.solve.max_hessian;
+  call.settings.monitor = progress_monitor(given.verbosity, h.problem->communicator());
+  call.threshold = given.active_tolerance > 0 ? given.active_tolerance : default_threshold(h);
+  return call;
 }
 
 // int status = fetiSensitivity(P, dK, dF, Z, velocityX=, velocityY=, velocityZ=, tol=, maxit=, activeTol=, verbosity=,
@@ -94,6 +98,7 @@ class FetiSensitivity : public WithNamedArguments {
  public:
   typedef long Result;
   static NamedParameters name_param;
+  enum Named { kVelocityX, kVelocityY, kDGap, kDLambda, kVelocityZ, kOptions };
   Expression id, dK, dF, Z;
 
   explicit FetiSensitivity(const basicAC_F0& args) : WithNamedArguments(args, name_param) {
@@ -111,14 +116,15 @@ class FetiSensitivity : public WithNamedArguments {
   AnyType operator()(Stack stack) const {
     return SetAny<long>(guarded("fetiSensitivity", [&] {
       Handle& h = handle(GetAny<long>((*id)(stack)));
-      SensitivityProblem& sens = sensitivity_problem(h, optional_real(nargs[4], stack, default_threshold(h)));
+      const SensitivityCall call = sensitivity_call(h, &nargs[kOptions], stack);
+      SensitivityProblem& sens = sensitivity_problem(h, call.threshold);
       const std::vector<DesignDerivative> directions = design_directions(
           *h.problem, GetAny<KN<Matrice_Creuse<double>>*>((*dK)(stack)), GetAny<KN<KN<double>>*>((*dF)(stack)),
-          optional_pointer<KN<KN<double>>>(nargs[0], stack), optional_pointer<KN<KN<double>>>(nargs[1], stack),
-          optional_pointer<KN<KN<double>>>(nargs[8], stack), optional_pointer<KN<KN<double>>>(nargs[6], stack));
-      const std::vector<SensitivityResult> r =
-          sens.direct(directions, sensitivity_settings(h, nargs[2], nargs[3], nargs[5], stack));
-      if (auto* dLambda = optional_pointer<KN<KN<double>>>(nargs[7], stack)) {
+          optional_pointer<KN<KN<double>>>(nargs[kVelocityX], stack),
+          optional_pointer<KN<KN<double>>>(nargs[kVelocityY], stack),
+          optional_pointer<KN<KN<double>>>(nargs[kVelocityZ], stack), optional_pointer<KN<KN<double>>>(nargs[kDGap], stack));
+      const std::vector<SensitivityResult> r = sens.direct(directions, call.settings);
+      if (auto* dLambda = optional_pointer<KN<KN<double>>>(nargs[kDLambda], stack)) {
         dLambda->resize(static_cast<long>(r.size()));
         for (size_t j = 0; j < r.size(); ++j) copy_to(r[j].contact_multipliers, (*dLambda)[static_cast<long>(j)]);
       }
@@ -137,11 +143,11 @@ class FetiSensitivity : public WithNamedArguments {
   }
 };
 
-NamedParameters FetiSensitivity::name_param = {
-    {"velocityX", &typeid(KN<KN<double>>*)}, {"velocityY", &typeid(KN<KN<double>>*)}, {"tol", &typeid(double)},
-    {"maxit", &typeid(long)}, {"activeTol", &typeid(double)}, {"verbosity", &typeid(long)},
-    {"dGap", &typeid(KN<KN<double>>*)}, {"dLambda", &typeid(KN<KN<double>>*)},
-    {"velocityZ", &typeid(KN<KN<double>>*)}};
+NamedParameters FetiSensitivity::name_param = named_parameters(
+    {{"velocityX", &typeid(KN<KN<double>>*)}, {"velocityY", &typeid(KN<KN<double>>*)},
+     {"dGap", &typeid(KN<KN<double>>*)}, {"dLambda", &typeid(KN<KN<double>>*)},
+     {"velocityZ", &typeid(KN<KN<double>>*)}},
+    OptionScope::sensitivity);
 
 // int status = fetiAdjoint(P, dJdu, tol=, maxit=, activeTol=, verbosity=, w=, dJdlambda=): 6
 // (weakly_active) when some contact row is weakly active: use fetiSensitivity then. w=
@@ -151,6 +157,7 @@ class FetiAdjoint : public WithNamedArguments {
  public:
   typedef long Result;
   static NamedParameters name_param;
+  enum Named { kW, kDJdlambda, kOptions };
   Expression id, dJdu;
 
   explicit FetiAdjoint(const basicAC_F0& args) : WithNamedArguments(args, name_param) {
@@ -163,7 +170,8 @@ class FetiAdjoint : public WithNamedArguments {
   AnyType operator()(Stack stack) const {
     return SetAny<long>(guarded("fetiAdjoint", [&] {
       Handle& h = handle(GetAny<long>((*id)(stack)));
-      SensitivityProblem& sens = sensitivity_problem(h, optional_real(nargs[2], stack, default_threshold(h)));
+      const SensitivityCall call = sensitivity_call(h, &nargs[kOptions], stack);
+      SensitivityProblem& sens = sensitivity_problem(h, call.threshold);
       const auto& g = *GetAny<KN<KN<double>>*>((*dJdu)(stack));
       std::vector<Vec> gradient;
       collectively(h.problem->communicator(), [&] {
@@ -172,10 +180,8 @@ class FetiAdjoint : public WithNamedArguments {
                            std::to_string(h.problem->subdomain_count()) + " subdomains");
         for (int s : h.problem->global_ids()) gradient.push_back(to_vec(g[s]));
       });
-      const Vec dJdlambda =
-          nargs[5] ? to_vec(*GetAny<KN<double>*>((*nargs[5])(stack))) : Vec();
-      const AdjointResult r =
-          sens.adjoint(gradient, sensitivity_settings(h, nargs[0], nargs[1], nargs[3], stack), dJdlambda);
+      const Vec dJdlambda = nargs[kDJdlambda] ? to_vec(*GetAny<KN<double>*>((*nargs[kDJdlambda])(stack))) : Vec();
+      const AdjointResult r = sens.adjoint(gradient, call.settings, dJdlambda);
       if (r.status == SolveStatus::weakly_active && h.problem->communicator().rank() == 0) {
         // A script that ignores status 6 would lose the contact part of its gradient.
         std::printf("ffeti: WARNING fetiAdjoint: %zu contact rows are weakly active (force and gap both about 0): "
@@ -184,7 +190,7 @@ class FetiAdjoint : public WithNamedArguments {
                     sens.classification().weak.size());
         std::fflush(stdout);
       }
-      if (auto* w = optional_pointer<KN<KN<double>>>(nargs[4], stack)) {
+      if (auto* w = optional_pointer<KN<KN<double>>>(nargs[kW], stack)) {
         const std::vector<int>& ids = h.problem->global_ids();
         w->resize(h.problem->subdomain_count());
         for (long s = 0; s < w->N(); ++s) (*w)[s].resize(0);
@@ -196,9 +202,8 @@ class FetiAdjoint : public WithNamedArguments {
   }
 };
 
-NamedParameters FetiAdjoint::name_param = {
-    {"tol", &typeid(double)}, {"maxit", &typeid(long)}, {"activeTol", &typeid(double)}, {"verbosity", &typeid(long)},
-    {"w", &typeid(KN<KN<double>>*)}, {"dJdlambda", &typeid(KN<double>*)}};
+NamedParameters FetiAdjoint::name_param = named_parameters(
+    {{"w", &typeid(KN<KN<double>>*)}, {"dJdlambda", &typeid(KN<double>*)}}, OptionScope::sensitivity);
 
 // real dJ = fetiAdjointGradient(P, dK, dF, velocityX=, velocityY=, velocityZ=, dGap=): w'fbar + mu'c~ for
 // one direction, after fetiAdjoint; no dual solve.

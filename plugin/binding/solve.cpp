@@ -62,7 +62,7 @@ class FetiSolve : public WithNamedArguments {
     if (verbosity >= 1 && h.problem->communicator().rank() == 0)
       std::printf("ffeti: %s after %d Hessian multiplications (%d outer), path %s, ||gP||/||b|| %.2e, "
                   "KKT check %.2e\n",
-                  to_string(r.status).c_str(), r.counts.hessian, r.counts.outer, r.path.c_str(),
+                  to_string(r.status).c_str(), r.counts.hessian, r.counts.outer, path_name(r.path),
                   r.gradient_norm / r.gradient_reference, r.violation);
     if (verbosity >= 1 && h.problem->communicator().rank() == 0 && r.friction_iterations > 0)
       std::printf("ffeti: friction: %d Tresca solves (Hessian multiplications %s), last change of the bounds %.2e\n",

@@ -20,6 +20,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -36,11 +37,12 @@ constexpr int kConverged = 0, kNotConverged = 1, kBadInput = 2, kFailure = 3;
 
 const char* const kUsage =
     "usage: ffeti-solve PROBLEM.json\n"
-    "       ffeti-solve --options setup|solve\n"
+    "       ffeti-solve --options setup|solve|sensitivity\n"
     "       ffeti-solve --capabilities\n"
     "  Solves the contact problem described by PROBLEM.json (docs/reference.md, \"ffeti-solve\").\n"
     "  Under mpirun -np P, the subdomains are spread over the ranks by size.\n"
-    "  --options: prints the reference's table of the solver options (the \"solver\" object).\n"
+    "  --options: prints the reference's table of the solver options (the \"solver\" object; sensitivity:\n"
+    "  fetiSensitivity's and fetiAdjoint's).\n"
     "  --capabilities: prints the reference's table of what each contact kind supports.\n";
 
 /// Every output file can be written: found out before the solve, not after. A file the
@@ -146,11 +148,15 @@ int main(int argc, char** argv) {
   int status = ffeti::native::kBadInput;
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  if (argc == 3 && std::strcmp(argv[1], "--options") == 0 &&
-      (std::strcmp(argv[2], "setup") == 0 || std::strcmp(argv[2], "solve") == 0)) {
-    if (rank == 0)
-      std::fputs(ffeti::option_table(argv[2][1] == 'e' ? ffeti::OptionScope::setup : ffeti::OptionScope::solve).c_str(),
-                 stdout);
+  const std::pair<const char*, ffeti::OptionScope> scopes[] = {
+      {"setup", ffeti::OptionScope::setup}, {"solve", ffeti::OptionScope::solve},
+      {"sensitivity", ffeti::OptionScope::sensitivity}};
+  const auto* scope = argc == 3 && std::strcmp(argv[1], "--options") == 0
+                          ? std::find_if(std::begin(scopes), std::end(scopes),
+                                         [&](const auto& s) { return std::strcmp(argv[2], s.first) == 0; })
+                          : std::end(scopes);
+  if (scope != std::end(scopes)) {
+    if (rank == 0) std::fputs(ffeti::option_table(scope->second).c_str(), stdout);
     status = 0;
   } else if (argc == 2 && std::strcmp(argv[1], "--capabilities") == 0) {
     if (rank == 0) std::fputs(ffeti::capability_table_markdown().c_str(), stdout);

@@ -104,8 +104,8 @@ TEST(BoxBounds, MprgpFindsTheEnumeratedSolution) {
       MprgpSettings settings;
       settings.expansion = expansion;
       const double tol = 1e-12 * qp.b.norm();
-      const MprgpResult r = mprgp(test::dense_operator(qp.A), qp.b, Bounds{qp.lower, &qp.upper}, 1.05 * 50.0, x, g,
-                                  false, settings, [&](const Vec&, const Vec&, double norm) { return norm <= tol; });
+      const MprgpResult r = mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 1.05 * 50.0, qp.upper), settings, x, g, false,
+                                  test::kLargeBudget, [&](const Vec&, const Vec&, double norm) { return norm <= tol; });
       ASSERT_EQ(r.status, SolveStatus::converged) << "seed " << seed;
       EXPECT_LT((x - reference).norm(), 1e-8 * reference.norm()) << "seed " << seed;
       for (int i = 0; i < 7; ++i) {
@@ -126,8 +126,8 @@ TEST(BoxBounds, PinnedComponentsStayAndTheRestIsSolved) {
     const Vec reference = reference_solution(qp);
     Vec x = Vec::Zero(7), g;
     const double tol = 1e-12 * qp.b.norm();
-    const MprgpResult r = mprgp(test::dense_operator(qp.A), qp.b, Bounds{qp.lower, &qp.upper}, 1.05 * 50.0, x, g,
-                                false, MprgpSettings{}, [&](const Vec&, const Vec&, double norm) { return norm <= tol; });
+    const MprgpResult r = mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 1.05 * 50.0, qp.upper), MprgpSettings{}, x, g, false,
+                                  test::kLargeBudget, [&](const Vec&, const Vec&, double norm) { return norm <= tol; });
     ASSERT_EQ(r.status, SolveStatus::converged) << "seed " << seed;
     EXPECT_LT(r.counts.hessian, 200) << "seed " << seed;
     EXPECT_LT((x - reference).norm(), 1e-8 * reference.norm()) << "seed " << seed;
@@ -157,9 +157,10 @@ TEST(BoxBounds, PreconditionedMprgpAgrees) {
   const Eigen::MatrixXd jacobi = qp.A.diagonal().cwiseInverse().asDiagonal();
   Vec x = Vec::Zero(7), g;
   const double tol = 1e-12 * qp.b.norm();
-  const MprgpResult r = mprgp(test::dense_operator(qp.A), qp.b, Bounds{qp.lower, &qp.upper}, 105.0, x, g, false,
-                              MprgpSettings{}, [&](const Vec&, const Vec&, double norm) { return norm <= tol; }, {},
-                              test::dense_operator(jacobi));
+  const MprgpResult r = mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 105.0, qp.upper,
+                                                                test::dense_operator(jacobi)),
+                            MprgpSettings{}, x, g, false, test::kLargeBudget,
+                            [&](const Vec&, const Vec&, double norm) { return norm <= tol; });
   ASSERT_EQ(r.status, SolveStatus::converged);
   EXPECT_GT(r.counts.preconditioner, 0);
   EXPECT_LT((x - reference).norm(), 1e-8 * reference.norm());
@@ -173,9 +174,9 @@ TEST(BoxBounds, InfiniteUpperBoundsChangeNoIterate) {
   const double tol = 1e-10 * qp.b.norm();
   const auto stop = [&](const Vec&, const Vec&, double norm) { return norm <= tol; };
   Vec x1 = Vec::Zero(40), g1, x2 = Vec::Zero(40), g2;
-  const MprgpResult a = mprgp(test::dense_operator(qp.A), qp.b, qp.lower, 1.05e3, x1, g1, false, MprgpSettings{}, stop);
+  const MprgpResult a = mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 1.05e3), MprgpSettings{}, x1, g1, false, test::kLargeBudget, stop);
   const MprgpResult b =
-      mprgp(test::dense_operator(qp.A), qp.b, Bounds{qp.lower, &upper}, 1.05e3, x2, g2, false, MprgpSettings{}, stop);
+      mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 1.05e3, upper), MprgpSettings{}, x2, g2, false, test::kLargeBudget, stop);
   EXPECT_EQ(a.counts.hessian, b.counts.hessian);
   EXPECT_EQ(a.counts.expansion, b.counts.expansion);
   EXPECT_EQ(a.counts.proportioning, b.counts.proportioning);
@@ -191,17 +192,12 @@ TEST(BoxBounds, SmalbeWithAnEqualityFindsTheEnumeratedSolution) {
   qp.lower.head(3).setConstant(-5), qp.upper.head(3).setConstant(5);  // the equality can be met inside the box
   const Vec reference = reference_solution(qp, C);
   const Eigen::MatrixXd Q = C.transpose() * (C * C.transpose()).inverse() * C;
-  SmalbeProblem problem;
-  problem.hessian = test::dense_operator(qp.A);
+  qp::Problem problem = test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 31.5, qp.upper);
   problem.range_projector = test::dense_operator(Q);
-  problem.b = &qp.b;
-  problem.lower = &qp.lower;
-  problem.upper = &qp.upper;
-  problem.hessian_norm = 31.5;
   Vec x = Vec::Zero(n);
   const double tol = 1e-11 * qp.b.norm();
-  const SmalbeResult r = smalbe(problem, x, SmalbeSettings{}, [&](const Vec&, const Vec& gP, const Vec& Qx) {
-    return gP.norm() <= tol && Qx.norm() <= tol;
+  const SmalbeResult r = smalbe(problem, SmalbeSettings{}, x, test::kLargeBudget, [&](const Vec& xi, const Vec&, double gP) {
+    return gP <= tol && (Q * xi).norm() <= tol;
   });
   ASSERT_EQ(r.status, SolveStatus::converged);
   EXPECT_LT((x - reference).norm(), 1e-8 * reference.norm());

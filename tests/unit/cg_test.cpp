@@ -10,8 +10,8 @@ TEST(ConjugateGradient, SolvesAnSpdSystem) {
   const Eigen::MatrixXd A = test::random_spd(50, 100, 3);
   const Vec x_star = Vec::LinSpaced(50, -1, 1);
   const Vec b = A * x_star;
-  Vec x = Vec::Zero(50), g;
-  const CgResult result = conjugate_gradient(test::dense_operator(A), b, x, g, {},
+  Vec x = Vec::Zero(50);
+  const CgResult result = conjugate_gradient(test::free_problem(test::dense_operator(A), b), CgSettings{}, x, test::kLargeBudget,
       [&](const Vec&, const Vec&, double norm) { return norm <= 1e-12 * b.norm(); });
   ASSERT_EQ(result.status, SolveStatus::converged);
   EXPECT_LT((x - x_star).norm(), 1e-9 * x_star.norm());
@@ -24,8 +24,8 @@ TEST(ConjugateGradient, SolvesAnSpdSystem) {
 TEST(ConjugateGradient, ToleranceBelowRoundOffIsStagnationNotConvergence) {
   const Eigen::MatrixXd A = test::random_spd(50, 1e8, 5);
   const Vec b = A * Vec::LinSpaced(50, -1, 1);
-  Vec x = Vec::Zero(50), g;
-  const CgResult result = conjugate_gradient(test::dense_operator(A), b, x, g, {},
+  Vec x = Vec::Zero(50);
+  const CgResult result = conjugate_gradient(test::free_problem(test::dense_operator(A), b), CgSettings{}, x, test::kLargeBudget,
       [&](const Vec&, const Vec&, double norm) { return norm <= 1e-20 * b.norm(); });
   EXPECT_EQ(result.status, SolveStatus::stagnated);
   EXPECT_NEAR(result.gradient_norm, (A * x - b).norm(), 1e-12 * b.norm());  // the true gradient
@@ -41,8 +41,8 @@ TEST(ConjugateGradient, ProjectedOperatorStaysInTheSubspace) {
                             C.transpose() * (C * C.transpose()).inverse() * C;
   const Eigen::MatrixXd A = P * M * P;
   const Vec b = P * Vec::LinSpaced(40, 0, 3);
-  Vec x = Vec::Zero(40), g;
-  const CgResult result = conjugate_gradient(test::dense_operator(A), b, x, g, {},
+  Vec x = Vec::Zero(40);
+  const CgResult result = conjugate_gradient(test::free_problem(test::dense_operator(A), b), CgSettings{}, x, test::kLargeBudget,
       [&](const Vec&, const Vec&, double norm) { return norm <= 1e-11 * b.norm(); });
   ASSERT_EQ(result.status, SolveStatus::converged);
   EXPECT_LT((C * x).norm(), 1e-10);
@@ -53,8 +53,8 @@ TEST(ConjugateGradient, IndefiniteOperatorIsReported) {
   Eigen::MatrixXd A = Eigen::MatrixXd::Identity(3, 3);
   A(1, 1) = -2;
   const Vec b = Vec::Ones(3);
-  Vec x = Vec::Zero(3), g;
-  const CgResult result = conjugate_gradient(test::dense_operator(A), b, x, g, {},
+  Vec x = Vec::Zero(3);
+  const CgResult result = conjugate_gradient(test::free_problem(test::dense_operator(A), b), CgSettings{}, x, test::kLargeBudget,
       [](const Vec&, const Vec&, double norm) { return norm <= 1e-14; });
   EXPECT_EQ(result.status, SolveStatus::not_positive_definite);
 }
@@ -68,7 +68,7 @@ TEST(ConjugateGradient, BlockRunsEachSystemAsOnItsOwn) {
   std::vector<StopTest> stop;
   for (size_t j = 0; j < b.size(); ++j)
     stop.push_back([&, j](const Vec&, const Vec&, double norm) { return norm <= tolerance[j] * b[j].norm(); });
-  std::vector<Vec> x(b.size(), Vec::Zero(60)), g;
+  std::vector<Vec> x(b.size(), Vec::Zero(60));
   int applications = 0, block_columns = 0;
   const std::vector<CgResult> block = conjugate_gradient_block(
       [&](const Eigen::MatrixXd& X, Eigen::MatrixXd& Y) {
@@ -76,11 +76,12 @@ TEST(ConjugateGradient, BlockRunsEachSystemAsOnItsOwn) {
         block_columns += static_cast<int>(X.cols());
         Y = A * X;
       },
-      b, x, g, {}, stop);
+      b, x, CgSettings{}, test::kLargeBudget, stop);
   int longest = 0, total = 0;
   for (size_t j = 0; j < b.size(); ++j) {
-    Vec alone = Vec::Zero(60), g_alone;
-    const CgResult single = conjugate_gradient(test::dense_operator(A), b[j], alone, g_alone, {}, stop[j]);
+    Vec alone = Vec::Zero(60);
+    const CgResult single = conjugate_gradient(test::free_problem(test::dense_operator(A), b[j]), CgSettings{}, alone, test::kLargeBudget,
+      stop[j]);
     EXPECT_EQ(block[j].status, single.status) << "system " << j;
     EXPECT_EQ(block[j].counts.hessian, single.counts.hessian) << "system " << j;
     EXPECT_EQ(block[j].counts.cg, single.counts.cg) << "system " << j;

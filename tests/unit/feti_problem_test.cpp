@@ -170,7 +170,7 @@ TEST(FetiProblem, MembraneMatchesMonolithicActiveSetReference) {
     settings.tolerance = 1e-10;
     const FetiResult result = problem.solve(settings);
     ASSERT_EQ(result.status, SolveStatus::converged) << to_string(result.status);
-    EXPECT_EQ(result.path, "smalbe");
+    EXPECT_EQ(result.path, DualPath::smalbe);
     EXPECT_NEAR(result.energy, reference.energy, 1e-8 * std::abs(reference.energy));
     EXPECT_EQ(active_contact_y(problem, result, subs), reference.active_y);
     EXPECT_LT(result.kkt.max(), 1e-7) << result.kkt.equilibrium << " " << result.kkt.equality << " "
@@ -194,7 +194,7 @@ TEST(FetiProblem, PreconditionersGiveTheSameSolutionInFewerSteps) {
     const FetiResult a = plain.solve(settings), b = preconditioned.solve(settings);
     ASSERT_EQ(a.status, SolveStatus::converged);
     ASSERT_EQ(b.status, SolveStatus::converged);
-    EXPECT_EQ(b.path, "projected_cg");
+    EXPECT_EQ(b.path, DualPath::projected_cg);
     EXPECT_NEAR(b.energy, a.energy, 1e-10 * std::abs(a.energy));
     double difference = 0, size = 0;
     for (size_t s = 0; s < a.u.size(); ++s) {
@@ -229,7 +229,7 @@ TEST(FetiProblem, PreconditionersInFaceKeepTheContactSolution) {
     const FetiResult b = membrane_problem(o, FetiVariant::feti1, 0, kind).solve(settings);
     ASSERT_EQ(a.status, SolveStatus::converged);
     ASSERT_EQ(b.status, SolveStatus::converged);
-    EXPECT_EQ(b.path, fix_right ? "mprgp" : "smalbe");
+    EXPECT_EQ(b.path, fix_right ? DualPath::mprgp : DualPath::smalbe);
     EXPECT_NEAR(b.energy, a.energy, 1e-10 * std::abs(a.energy));
     EXPECT_EQ(b.active_contact, a.active_contact);
     EXPECT_LT(b.kkt.max(), 1e-7);
@@ -256,7 +256,7 @@ TEST(FetiProblem, FreeRowsAndPenaltyGiveTheSameSolution) {
     const FetiResult penalty = problem.solve(settings);
     ASSERT_EQ(free_rows.status, SolveStatus::converged);
     ASSERT_EQ(penalty.status, SolveStatus::converged);
-    EXPECT_EQ(free_rows.path, "smalbe");
+    EXPECT_EQ(free_rows.path, DualPath::smalbe);
     EXPECT_NEAR(free_rows.energy, penalty.energy, 1e-10 * std::abs(penalty.energy));
     EXPECT_EQ(free_rows.active_contact, penalty.active_contact);
     EXPECT_LT(free_rows.kkt.max(), 1e-8);
@@ -277,7 +277,7 @@ TEST(FetiProblem, DefaultStopBoundsTheRelativeKktResidualsByTol) {
       settings.tolerance = tol;
       const FetiResult r = problem.solve(settings);
       ASSERT_EQ(r.status, SolveStatus::converged) << "tol " << tol;
-      EXPECT_EQ(r.path, fix_right ? "mprgp" : "smalbe");
+      EXPECT_EQ(r.path, fix_right ? DualPath::mprgp : DualPath::smalbe);
       EXPECT_LE(r.violation, tol);
       EXPECT_GE(r.scale_evaluations, 1);
       EXPECT_LE(r.scale_evaluations, 6);
@@ -321,34 +321,34 @@ TEST(FetiProblem, PathFollowsTheScene) {
   test::MembraneOptions single = test::membrane_options(8, 1);
   single.body2 = false;
   single.with_contact = false;
-  EXPECT_EQ(membrane_problem(single, FetiVariant::feti1).path(), "cholesky");
+  EXPECT_EQ(membrane_problem(single, FetiVariant::feti1).path(), DualPath::cholesky);
 
   // Body 0 split 2 x 2 without contact: the right column floats -> projected CG.
   test::MembraneOptions glued = test::membrane_options(8, 2);
   glued.body2 = false;
   glued.with_contact = false;
   const FetiProblem projected = membrane_problem(glued, FetiVariant::feti1);
-  EXPECT_EQ(projected.path(), "projected_cg");
+  EXPECT_EQ(projected.path(), DualPath::projected_cg);
   EXPECT_GT(projected.coarse_dimension(), 0);
 
   // Both bodies fixed, one subdomain each: coercive contact -> MPRGP, no coarse space.
   test::MembraneOptions coercive = test::membrane_options(8, 1);
   coercive.fix_right_body = true;
   const FetiProblem mprgp_scene = membrane_problem(coercive, FetiVariant::feti1);
-  EXPECT_EQ(mprgp_scene.path(), "mprgp");
+  EXPECT_EQ(mprgp_scene.path(), DualPath::mprgp);
   EXPECT_EQ(mprgp_scene.coarse_dimension(), 0);
   const FetiResult r = mprgp_scene.solve();
   EXPECT_EQ(r.status, SolveStatus::converged);
   EXPECT_EQ(r.phases.find("coarse"), std::string::npos);
   EXPECT_GT(r.counts.hessian_norm_estimate, 0);
 
-  EXPECT_EQ(membrane_problem(test::membrane_options(8, 2), FetiVariant::feti1).path(), "smalbe");
+  EXPECT_EQ(membrane_problem(test::membrane_options(8, 2), FetiVariant::feti1).path(), DualPath::smalbe);
 
   // Each path's solution satisfies the primal KKT conditions.
   for (const test::MembraneOptions& o : {single, glued, coercive}) {
     const FetiResult result = membrane_problem(o, FetiVariant::feti1).solve();
     EXPECT_EQ(result.status, SolveStatus::converged);
-    EXPECT_LT(result.kkt.max(), 1e-3) << result.path;
+    EXPECT_LT(result.kkt.max(), 1e-3) << path_name(result.path);
   }
 }
 
@@ -403,12 +403,12 @@ TEST(FetiProblem, AStartAtTheSolutionCostsAFewMultiplicationsAndAnyStartConverge
     test::MembraneOptions options;
     double gap;
     CoarseConstraints coarse;
-    const char* path;
+    DualPath path;
   };
-  for (const Case& c : {Case{glued, 0.0, CoarseConstraints::free_rows, "projected_cg"},
-                        Case{coercive, -0.2, CoarseConstraints::free_rows, "mprgp"},
-                        Case{floating, 0.0, CoarseConstraints::free_rows, "smalbe"},
-                        Case{floating, 0.0, CoarseConstraints::penalty, "smalbe"}}) {
+  for (const Case& c : {Case{glued, 0.0, CoarseConstraints::free_rows, DualPath::projected_cg},
+                        Case{coercive, -0.2, CoarseConstraints::free_rows, DualPath::mprgp},
+                        Case{floating, 0.0, CoarseConstraints::free_rows, DualPath::smalbe},
+                        Case{floating, 0.0, CoarseConstraints::penalty, DualPath::smalbe}}) {
     auto subs = test::membrane_subdomains(c.options);
     ContactInput contact = c.options.with_contact ? test::membrane_contact(subs) : ContactInput{};
     contact.gap = c.gap;
@@ -418,21 +418,21 @@ TEST(FetiProblem, AStartAtTheSolutionCostsAFewMultiplicationsAndAnyStartConverge
     settings.coarse_constraints = c.coarse;
     settings.tolerance = 1e-8;
     const FetiResult cold = problem.solve(settings);
-    ASSERT_EQ(cold.status, SolveStatus::converged) << c.path;
-    EXPECT_GE(cold.counts.hessian, 10) << c.path;  // a start that saves something
-    if (c.options.with_contact) EXPECT_GT(cold.active_contact, 0) << c.path;
+    ASSERT_EQ(cold.status, SolveStatus::converged) << path_name(c.path);
+    EXPECT_GE(cold.counts.hessian, 10) << path_name(c.path);  // a start that saves something
+    if (c.options.with_contact) EXPECT_GT(cold.active_contact, 0) << path_name(c.path);
     settings.start = cold.lambda;
     const FetiResult warm = problem.solve(settings);
-    ASSERT_EQ(warm.status, SolveStatus::converged) << c.path;
-    EXPECT_LE(warm.counts.hessian, 3) << c.path << " cold: " << cold.counts.hessian;
-    EXPECT_NEAR(warm.energy, cold.energy, 1e-10 * std::abs(cold.energy)) << c.path;
+    ASSERT_EQ(warm.status, SolveStatus::converged) << path_name(c.path);
+    EXPECT_LE(warm.counts.hessian, 3) << path_name(c.path) << " cold: " << cold.counts.hessian;
+    EXPECT_NEAR(warm.energy, cold.energy, 1e-10 * std::abs(cold.energy)) << path_name(c.path);
     // A start off the feasible set (pulling contact forces, G lambda != e) is moved onto it.
     settings.start = Vec::Random(cold.lambda.size()) * cold.lambda.lpNorm<Eigen::Infinity>();
     const FetiResult any = problem.solve(settings);
-    ASSERT_EQ(any.status, SolveStatus::converged) << c.path;
-    EXPECT_NEAR(any.energy, cold.energy, 1e-7 * std::abs(cold.energy)) << c.path;
-    EXPECT_LT(any.kkt.max(), 1e-7) << c.path;
-    EXPECT_EQ(any.active_contact, cold.active_contact) << c.path;
+    ASSERT_EQ(any.status, SolveStatus::converged) << path_name(c.path);
+    EXPECT_NEAR(any.energy, cold.energy, 1e-7 * std::abs(cold.energy)) << path_name(c.path);
+    EXPECT_LT(any.kkt.max(), 1e-7) << path_name(c.path);
+    EXPECT_EQ(any.active_contact, cold.active_contact) << path_name(c.path);
   }
 }
 

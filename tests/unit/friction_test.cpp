@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
+
 #include <Eigen/Dense>
 
 #include <cmath>
@@ -197,6 +199,15 @@ void expect_matches(const FetiProblem& p, const FetiResult& r, const Reference& 
   }
 }
 
+/// The block dragged on the plane with Coulomb friction, mu = 0.3.
+std::unique_ptr<FetiProblem> dragged_coulomb(FetiVariant variant) {
+  ContactInput contact = on_plane(two_subdomains(kDrag));
+  contact.friction = 0.3;
+  FetiSetupSettings setup;
+  setup.variant = variant;
+  return std::make_unique<FetiProblem>(two_subdomains(kDrag), contact, setup);
+}
+
 class Tresca : public ::testing::TestWithParam<FetiVariant> {};
 
 TEST_P(Tresca, MatchesTheEnumeratedDualOfTheUndividedBlock) {
@@ -256,17 +267,35 @@ TEST_P(Tresca, CoulombFixedPointMeetsTheLawAndTheReference) {
 TEST_P(Tresca, AnUnsettledFixedPointIsReportedAsSuch) {
   // The same Coulomb problem allowed one Tresca solve (frictionit = 1): the bounds of the
   // first, sticking solve are not the law's, and the status says so.
-  ContactInput contact = on_plane(two_subdomains(kDrag));
-  contact.friction = 0.3;
-  FetiSetupSettings setup;
-  setup.variant = GetParam();
-  const FetiProblem p(two_subdomains(kDrag), contact, setup);
+  const auto problem = dragged_coulomb(GetParam());
+  const FetiProblem& p = *problem;
   DualSolveSettings one = tight();
   one.friction_iterations = 1;
   const FetiResult r = p.solve(one);
   EXPECT_EQ(r.status, SolveStatus::max_iterations);
   EXPECT_EQ(r.friction_iterations, 1);
   EXPECT_GT(r.friction_bound_change, 1e-3);
+}
+
+TEST_P(Tresca, MaxitBoundsTheWholeFixedPoint) {
+  // maxit holds over all Tresca solves of the fixed point: with the multiplications of the
+  // first two solves as the budget, the third finds none left and the status says so.
+  const auto problem = dragged_coulomb(GetParam());
+  const FetiProblem& p = *problem;
+  const FetiResult full = p.solve(tight());
+  ASSERT_EQ(full.status, SolveStatus::converged);
+  ASSERT_GE(full.friction_iterations, 3);
+  DualSolveSettings limited = tight();
+  limited.max_hessian = full.friction_hessian[0] + full.friction_hessian[1];
+  const FetiResult r = p.solve(limited);
+  EXPECT_EQ(r.status, SolveStatus::max_iterations);
+  EXPECT_EQ(r.friction_iterations, 2);
+  EXPECT_EQ(r.counts.hessian, limited.max_hessian);  // the same two solves, nothing beyond
+  // A budget that runs out inside a solve stops that solve, not only the fixed point.
+  limited.max_hessian = full.friction_hessian[0] + 1;
+  const FetiResult cut = p.solve(limited);
+  EXPECT_EQ(cut.status, SolveStatus::max_iterations);
+  EXPECT_LE(cut.counts.hessian, limited.max_hessian + 2);  // a step in progress may finish (<= 2 products)
 }
 
 TEST_P(Tresca, CoulombWithACoefficientPerRow) {

@@ -38,7 +38,7 @@ void record(const std::string& scene, const FetiResult& r, double error, const s
                                       << ", violation seen by the stop " << r.violation;
   std::ostringstream row;
   row.precision(3);
-  row << "status=" << to_string(r.status) << ";path=" << r.path << ";outer=" << r.counts.outer
+  row << "status=" << to_string(r.status) << ";path=" << path_name(r.path) << ";outer=" << r.counts.outer
       << ";hessian=" << r.counts.hessian << ";kkt=" << r.kkt.max() << ";error=" << error << ";check=" << check
       << ";active=" << r.active_contact << ";seconds=" << r.times.solve + r.times.norm_estimate;
   ::testing::Test::RecordProperty("row " + scene, row.str());

@@ -87,11 +87,26 @@ TEST(Options, StatedDefaultsAreTheSettingsDefaults) {
   // The core's structs default to what a user who passes nothing gets.
   EXPECT_EQ(FetiSetupSettings{}.preconditioner, setup.preconditioner);
   EXPECT_EQ(SmalbeSettings{}.M_factor, defaults.solve.smalbe.M_factor);
+  // The sensitivity functions' maxit and verbosity default as fetiSolve's.
+  EXPECT_EQ(GivenOptions().sensitivity().solve.max_hessian, defaults.solve.max_hessian);
+  EXPECT_EQ(GivenOptions().sensitivity().verbosity, defaults.verbosity);
+}
+
+TEST(Options, SensitivityOptionsAreTheirOwnScope) {
+  // activeTol is the sensitivity functions', not a "solver" key of ffeti-solve.
+  EXPECT_EQ(find_option("activeTol"), nullptr);
+  GivenOptions given;
+  for (const Option& o : options())
+    if (o.scope == OptionScope::sensitivity && std::string(o.name) == "activeTol") given.set(o, 0.05);
+  EXPECT_EQ(given.sensitivity().active_tolerance, 0.05);
 }
 
 TEST(Options, TablesListEveryOptionOnce) {
-  const std::string table = option_table(OptionScope::setup) + option_table(OptionScope::solve);
   for (const Option& o : options()) {
+    // The sensitivity functions' table is apart: it repeats tol, maxit and verbosity.
+    const std::string table = o.scope == OptionScope::sensitivity
+                                  ? option_table(OptionScope::sensitivity)
+                                  : option_table(OptionScope::setup) + option_table(OptionScope::solve);
     const std::string cell = "| `" + std::string(o.name) + "` |";
     ASSERT_NE(table.find(cell), std::string::npos) << o.name;
     EXPECT_EQ(table.find(cell, table.find(cell) + 1), std::string::npos) << o.name;

@@ -83,4 +83,23 @@ LinearOperator dense_operator(const Eigen::MatrixXd& A) {
   return [A](const Vec& x, Vec& y) { y = A * x; };
 }
 
+qp::Problem bound_problem(const LinearOperator& A, const Vec& b, const Vec& lower, double norm, const Vec& upper,
+                          const LinearOperator& preconditioner) {
+  qp::Problem problem;
+  problem.hessian = A;
+  problem.b = b;
+  problem.hessian_norm = norm;
+  problem.preconditioner = preconditioner;
+  problem.constraints = qp::ConstraintSet::from_bounds(lower, upper);
+  return problem;
+}
+
+qp::Problem free_problem(const LinearOperator& A, const Vec& b) {
+  qp::Problem problem;
+  problem.hessian = A;
+  problem.b = b;
+  problem.constraints.add_free(b.size());
+  return problem;
+}
+
 }  // namespace ffeti::test

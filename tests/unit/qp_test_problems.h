@@ -1,7 +1,7 @@
 // Manufactured QPs with known KKT solutions (fixed seeds) for the solver unit tests.
 #pragma once
 
-#include "qp/qp_types.h"
+#include "qp/problem.h"
 
 #include <Eigen/Dense>
 
@@ -27,5 +27,14 @@ struct BoundEqualityQp {
 BoundEqualityQp manufactured_bound_equality_qp(int n, int k, double condition, unsigned seed);
 
 LinearOperator dense_operator(const Eigen::MatrixXd& A);
+
+/// The qp::Problem min 1/2 x'Ax - b'x over `bounds` (kUnbounded in `lower`: free; `upper`
+/// empty or +infinity: no upper bound), with the norm estimate and optional preconditioner.
+qp::Problem bound_problem(const LinearOperator& A, const Vec& b, const Vec& lower, double norm,
+                          const Vec& upper = Vec(), const LinearOperator& preconditioner = {});
+/// The same without bounds (all components free).
+qp::Problem free_problem(const LinearOperator& A, const Vec& b);
+/// A budget larger than any unit test's solve needs.
+inline const qp::Budget kLargeBudget(1000000);
 
 }  // namespace ffeti::test

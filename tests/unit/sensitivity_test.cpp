@@ -99,7 +99,7 @@ TEST_P(MembraneSensitivity, DirectMatchesFiniteDifferencesAndAdjointMatchesDirec
   SensitivityProblem sensitivity(problem, state, 1e-8);
   EXPECT_GT(sensitivity.classification().strong.size(), 10u);
   EXPECT_TRUE(sensitivity.classification().weak.empty());
-  EXPECT_EQ(sensitivity.path(), "projected_cg");  // no weak row: equality constrained
+  EXPECT_EQ(sensitivity.path(), DualPath::projected_cg);  // no weak row: equality constrained
   const SensitivityResult direct = sensitivity.direct(design.derivative(), tight());
   ASSERT_EQ(direct.status, SolveStatus::converged);
   EXPECT_LT(direct.kkt.max(), 1e-8);
@@ -164,7 +164,7 @@ TEST(Sensitivity, WeaklyActiveRowsStayInequalitiesAndMatchOneSidedDifferences) {
   SensitivityProblem sensitivity(problem, state, 1e-8);
   EXPECT_TRUE(sensitivity.classification().strong.empty());
   EXPECT_EQ(sensitivity.classification().weak.size(), 9u);
-  EXPECT_EQ(sensitivity.path(), "mprgp");
+  EXPECT_EQ(sensitivity.path(), DualPath::mprgp);
 
   // f(alpha) = alpha p with p pushing the bodies into each other: u(alpha) = alpha u(1)
   // for alpha > 0, the unconstrained -alpha u_free(1)... for alpha < 0.

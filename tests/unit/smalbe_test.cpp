@@ -27,19 +27,15 @@ class SmalbeManufactured : public ::testing::TestWithParam<Case> {};
 TEST_P(SmalbeManufactured, FindsTheKnownSolution) {
   const Case c = GetParam();
   const test::BoundEqualityQp qp = test::manufactured_bound_equality_qp(c.n, c.k, c.condition, c.seed);
-  SmalbeProblem problem;
-  problem.hessian = test::dense_operator(qp.H);
+  qp::Problem problem = test::bound_problem(test::dense_operator(qp.H), qp.b, qp.lower, 1.05 * c.condition);
   problem.range_projector = test::dense_operator(qp.Q);
-  problem.b = &qp.b;
-  problem.lower = &qp.lower;
-  problem.hessian_norm = 1.05 * c.condition;
   SmalbeSettings settings;
   settings.variant = c.variant;
-  settings.max_hessian = 5000;
   Vec x = Vec::Zero(c.n);
   const double tol = 1e-10 * qp.b.norm();
-  const SmalbeResult result = smalbe(problem, x, settings,
-      [&](const Vec&, const Vec& gp, const Vec& Qx) { return gp.norm() <= tol && Qx.norm() <= 1e-10; });
+  const SmalbeResult result = smalbe(problem, settings, x, qp::Budget(5000), [&](const Vec& xi, const Vec&, double gp) {
+    return gp <= tol && (qp.Q * xi).norm() <= 1e-10;
+  });
   ASSERT_EQ(result.status, SolveStatus::converged) << to_string(result.status);
   EXPECT_LT((x - qp.x_star).norm(), 1e-6 * qp.x_star.norm());
   EXPECT_LT((qp.C * x).norm(), 1e-8 * qp.C.norm() * qp.x_star.norm());
@@ -61,12 +57,11 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(Smalbe, IterationLimitIsAStatus) {
   const test::BoundEqualityQp qp = test::manufactured_bound_equality_qp(60, 5, 1e3, 9);
-  SmalbeProblem problem{test::dense_operator(qp.H), test::dense_operator(qp.Q), &qp.b, &qp.lower, 1.05e3};
-  SmalbeSettings settings;
-  settings.max_hessian = 10;
+  qp::Problem problem = test::bound_problem(test::dense_operator(qp.H), qp.b, qp.lower, 1.05e3);
+  problem.range_projector = test::dense_operator(qp.Q);
   Vec x = Vec::Zero(60);
   const SmalbeResult result =
-      smalbe(problem, x, settings, [](const Vec&, const Vec& gp, const Vec&) { return gp.norm() <= 0; });
+      smalbe(problem, SmalbeSettings{}, x, qp::Budget(10), [](const Vec&, const Vec&, double gp) { return gp <= 0; });
   EXPECT_EQ(result.status, SolveStatus::max_iterations);
   EXPECT_LE(result.counts.hessian, 10 + 2);  // a step in progress may finish (<= 2 products)
 }

@@ -141,29 +141,31 @@ Vec CoarseSpace::least_norm_solution(const Vec& e) const {
   return G_.transpose() * GGt_.solve(e);
 }
 
-double CoarseSpace::feasibility_residual(const Vec& e, const Vec& lower, const Vec& upper, double enough) const {
+double CoarseSpace::feasibility_residual(const Vec& e, const qp::ConstraintSet& bounds, double enough) const {
   const double e_norm = e.norm();
   if (empty() || !(e_norm > 0)) return 0.0;
   const Eigen::Index m = G_.cols();
-  const Bounds bounds{lower, upper.size() ? &upper : nullptr};
+  const Vec& lower = bounds.lower;
   Vec lambda = least_norm_solution(e);
   bool within = true;
   for (Eigen::Index i = 0; i < m; ++i)
-    within = within && (lower[i] == kUnbounded || lambda[i] >= lower[i]) && (!bounds.has_upper(i) || lambda[i] <= upper[i]);
+    within = within && (lower[i] == kUnbounded || lambda[i] >= lower[i]) && (!bounds.has_upper(i) || lambda[i] <= bounds.upper[i]);
   if (within) return 0.0;  // G lambda = e already
   // min 1/2 ||G lambda - e||^2 = 1/2 lambda'G'G lambda - (G'e)'lambda + const, within the bounds.
   Vec Gv;
-  const LinearOperator GtG = [&](const Vec& v, Vec& y) {
+  qp::Problem distance_qp;
+  distance_qp.hessian = [&](const Vec& v, Vec& y) {
     Gv = G_ * v;
-    y = G_.transpose() * Gv;
+    y = G_.transpose() * Gv;  // y = G'G v
   };
-  const Vec b = G_.transpose() * e;
-  const double norm = estimate_norm(GtG, m).norm, stop_at = 1e-12 * b.norm();
-  MprgpSettings settings;
-  settings.max_hessian = 20000;
-  Vec g;
+  distance_qp.b = G_.transpose() * e;
+  distance_qp.hessian_norm = estimate_norm(distance_qp.hessian, m).norm;
+  distance_qp.constraints = bounds;
+  const double stop_at = 1e-12 * distance_qp.b.norm();
   double distance = -1.0;  // of the last iterate, relative
-  const MprgpResult r = mprgp(GtG, b, bounds, norm, lambda, g, false, settings, [&](const Vec& x, const Vec&, double gp) {
+  // G'G is small (r x m, r the rigid modes): a generous fixed budget, whatever maxit.
+  const qp::Budget budget(20000);
+  const MprgpResult r = mprgp(distance_qp, MprgpSettings{}, lambda, budget, [&](const Vec& x, const Vec&, double gp) {
     distance = (G_ * x - e).norm() / e_norm;
     return distance <= enough || gp <= stop_at;
   });

@@ -7,6 +7,7 @@
 #include "constraints/constraints.h"
 #include "feti/subdomain.h"
 #include "parallel/communicator.h"
+#include "qp/problem.h"
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
@@ -47,8 +48,8 @@ class CoarseSpace {
   /// The least-norm solution of G lambda = e: G'(GG')^{-1} e.
   Vec least_norm_solution(const Vec& e) const;
 
-  /// min ||G lambda - e|| over lower <= lambda <= upper (kUnbounded in lower where a row has
-  /// no bound; upper empty: none has an upper one), relative to ||e||; 0 when no bound is
+  /// min ||G lambda - e|| over lambda in `bounds` (the multipliers' constraint set),
+  /// relative to ||e||; 0 when no bound is
   /// active at the minimum or e = 0. Positive: no multipliers within their bounds balance the
   /// loads on the floating bodies (a body pulled off the contacts that could hold it, or
   /// pushed along them harder than friction holds), so the problem has no solution. Found by MPRGP on G'G (cheap: G
@@ -56,7 +57,7 @@ class CoarseSpace {
   /// first iterate within `enough` (returning that distance): feasibility needs no more, and
   /// resolving the minimum to round-off took 306 multiplications, 0.7 s, at 2016 floating
   /// subdomains. Same on every rank.
-  double feasibility_residual(const Vec& e, const Vec& lower, const Vec& upper, double enough) const;
+  double feasibility_residual(const Vec& e, const qp::ConstraintSet& bounds, double enough) const;
 
  private:
   Eigen::SparseMatrix<double, Eigen::RowMajor, int> G_;

@@ -1,5 +1,6 @@
 // The dual QP of each formulation (docs/algorithms.md): what the solver minimizes, its
-// preconditioner and, where something floats, how the balance G lambda = e is kept.
+// constraint set, its preconditioner and, where something floats, how the balance
+// G lambda = e is kept.
 #include "feti/dual_system.h"
 
 #include "base/errors.h"
@@ -23,20 +24,28 @@ Vec shifted_start(const DualSolveSettings& settings, const DualData& data, Eigen
 
 }  // namespace
 
-DualQp DualSystem::plain_qp(const DualData& data, const DualSolveSettings& settings, DualSolution& result,
-                            bool bounded) const {
-  DualQp qp;
+DualSystem::Formulation DualSystem::plain_qp(const DualData& data, const DualSolveSettings& settings,
+                                             DualSolution& result, const qp::ConstraintSet* bounds) const {
+  Formulation f;
+  qp::Problem& qp = f.qp;
   qp.hessian = [this](const Vec& x, Vec& y) { F_->apply(x, y); };
   qp.b = data.b;
-  if (bounded) qp.hessian_norm = estimated_norm(norm_F_, qp.hessian, {}, settings.norm_estimate, result);
+  if (bounds) {
+    qp.hessian_norm = estimated_norm(norm_F_, qp.hessian, {}, settings.norm_estimate, result);
+    qp.constraints = *bounds;
+  } else {
+    qp.constraints.add_free(rows());
+  }
   qp.preconditioner = preconditioner_operator();
-  qp.start = shifted_start(settings, data, rows());
-  return qp;
+  f.start = shifted_start(settings, data, rows());
+  return f;
 }
 
-DualQp DualSystem::projected_qp(const DualData& data, const DualSolveSettings& settings) const {
+DualSystem::Formulation DualSystem::projected_qp(const DualData& data, const DualSolveSettings& settings) const {
   // CG on P F P: every iterate stays in Ker G, where the balance holds (docs/algorithms.md).
-  DualQp qp;
+  Formulation f;
+  qp::Problem& qp = f.qp;
+  qp.constraints.add_free(rows());
   qp.hessian = [this](const Vec& x, Vec& y) { apply_PFP(x, y); };
   qp.b = data.b;
   if (preconditioner_)  // P M^{-1} P on Ker G
@@ -45,9 +54,9 @@ DualQp DualSystem::projected_qp(const DualData& data, const DualSolveSettings& s
       preconditioner_->apply(projected_, applied_);
       coarse_->project(applied_, y);
     };
-  qp.start = shifted_start(settings, data, rows());
-  if (settings.start.size() > 0) coarse_->project(Vec(qp.start), qp.start);  // G mu = 0
-  return qp;
+  f.start = shifted_start(settings, data, rows());
+  if (settings.start.size() > 0) coarse_->project(Vec(f.start), f.start);  // G mu = 0
+  return f;
 }
 
 void DualSystem::set_equality_reference(DualSolution& result, double hessian_norm) const {
@@ -56,9 +65,12 @@ void DualSystem::set_equality_reference(DualSolution& result, double hessian_nor
   if (!(result.equality_reference > 0)) result.equality_reference = result.gradient_reference / hessian_norm;
 }
 
-DualQp DualSystem::penalty_qp(const DualData& data, const DualSolveSettings& settings, DualSolution& result) const {
+DualSystem::Formulation DualSystem::penalty_qp(const DualData& data, const DualSolveSettings& settings,
+                                               DualSolution& result, const qp::ConstraintSet& bounds) const {
   // The seed's formulation: SMALBE keeps all of G lambda = e by its augmented Lagrangian.
-  DualQp qp;
+  Formulation f;
+  qp::Problem& qp = f.qp;
+  qp.constraints = bounds;
   qp.hessian = [this](const Vec& x, Vec& y) { apply_PFP(x, y); };
   qp.hessian_norm = estimated_norm(norm_PFP_, qp.hessian, [this](Vec& v) { coarse_->project(Vec(v), v); },
                                    settings.norm_estimate, result);
@@ -66,12 +78,13 @@ DualQp DualSystem::penalty_qp(const DualData& data, const DualSolveSettings& set
   qp.range_projector = [this](const Vec& x, Vec& y) { coarse_->project_range(x, y); };
   qp.b = data.b;
   qp.preconditioner = preconditioner_operator();
-  qp.equality_norm = [this](const Vec& mu) { return (coarse_->G() * mu).norm(); };  // G lambda - e = G mu
-  qp.start = shifted_start(settings, data, rows());
-  return qp;
+  f.equality_norm = [this](const Vec& mu) { return (coarse_->G() * mu).norm(); };  // G lambda - e = G mu
+  f.start = shifted_start(settings, data, rows());
+  return f;
 }
 
-DualQp DualSystem::free_rows_qp(const DualData& data, const DualSolveSettings& settings, DualSolution& result) const {
+DualSystem::Formulation DualSystem::free_rows_qp(const DualData& data, const DualSolveSettings& settings,
+                                                 DualSolution& result, const qp::ConstraintSet& bounds) const {
   // mu = T nu: every iterate meets G mu = 0 but for the rows of C (docs/algorithms.md).
   Stopwatch projector_clock;
   const FreeRowProjector& T = free_rows();  // built at the first solve: its time is reported apart
@@ -85,7 +98,10 @@ DualQp DualSystem::free_rows_qp(const DualData& data, const DualSolveSettings& s
     T.apply_transpose((*work)[1], y);
   };
   const double norm = estimated_norm(norm_reduced_, reduced, {}, settings.norm_estimate, result);
-  DualQp qp;
+  Formulation f;
+  qp::Problem& qp = f.qp;
+  // mu = T x changes only free components (gluing and Dirichlet rows): x has mu's bounds.
+  qp.constraints = bounds;
   // T'PFPT vanishes on Ker T (free multipliers only, orthogonal to b, to the bounds and to
   // C), which the iterates never enter in exact arithmetic; in floating point they drift
   // into it unseen, and T x then cancels large components: at tol = 1e-12 the model problem
@@ -112,12 +128,12 @@ DualQp DualSystem::free_rows_qp(const DualData& data, const DualSolveSettings& s
     };
   if (T.remaining() > 0)  // bodies float as a whole: their balance is left to SMALBE
     qp.range_projector = [&T](const Vec& v, Vec& y) { T.project_remaining_range(v, y); };
-  qp.to_multipliers = [&T](const Vec& x, Vec& mu) { T.apply(x, mu); };
-  qp.equality_norm = [this](const Vec& mu) { return (coarse_->G() * mu).norm(); };  // G lambda - e = G mu
+  f.to_multipliers = [&T](const Vec& x, Vec& mu) { T.apply(x, mu); };
+  f.equality_norm = [this](const Vec& mu) { return (coarse_->G() * mu).norm(); };  // G lambda - e = G mu
   // The start without its part in Ker T, which T'PFPT does not see (free rows only: bounds kept).
-  qp.start.resize(m);
-  T.project_out_kernel(shifted_start(settings, data, m), qp.start);
-  return qp;
+  f.start.resize(m);
+  T.project_out_kernel(shifted_start(settings, data, m), f.start);
+  return f;
 }
 
 }  // namespace ffeti

@@ -1,13 +1,16 @@
 // The dual solve: the path the constraints call for, its formulation's QP, the solver of
-// qp/ that fits it, one stopping test for all, and the primal solution recovered.
+// qp/ that fits it, one stopping test for all, and the primal solution recovered; for one
+// right-hand side or several (sharing each application of F on the CG paths).
 #include "feti/dual_system.h"
 
 #include "base/errors.h"
 #include "base/stopwatch.h"
 #include "qp/conjugate_gradient.h"
 #include "qp/mprgp.h"
+#include "qp/smalbe.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace ffeti {
 namespace {
@@ -18,18 +21,16 @@ namespace {
 /// that round-off into "infeasible"; infeasible scenes are off by far more (docs/algorithms.md).
 constexpr double kFeasibilityResolution = 1e-8;
 
-/// The inner solvers' settings, limited by the whole solve's multiplications.
-MprgpSettings mprgp_within(const DualSolveSettings& settings) {
+/// MPRGP's settings on this solve: the start, if given, is settled first.
+MprgpSettings mprgp_for(const DualSolveSettings& settings) {
   MprgpSettings mprgp = settings.mprgp;
-  mprgp.max_hessian = settings.max_hessian;
   mprgp.settle_rounds = settings.start.size() > 0 ? settings.settle : 0;  // nothing to settle from zero
   return mprgp;
 }
 
-SmalbeSettings smalbe_within(const DualSolveSettings& settings) {
+SmalbeSettings smalbe_for(const DualSolveSettings& settings) {
   SmalbeSettings smalbe = settings.smalbe;
-  smalbe.max_hessian = settings.max_hessian;
-  smalbe.inner = mprgp_within(settings);  // its first inner solve settles the start
+  smalbe.inner = mprgp_for(settings);  // its first inner solve settles the start
   return smalbe;
 }
 
@@ -55,56 +56,63 @@ const char* path_name(DualPath path) {
   return "smalbe";
 }
 
-Vec DualSystem::run(const DualQp& qp, const Bounds* bounds, const DualStop& stop, const DualSolveSettings& settings,
-                    DualSolution& result) const {
+Vec DualSystem::run(DualPath route, Formulation formulation, const DualStop& stop, const DualSolveSettings& settings,
+                    const DualWarmStart& warm, DualSolution& result) const {
+  const qp::Problem& qp = formulation.qp;
   Vec mu_of_x;
   const auto multipliers = [&](const Vec& x) -> const Vec& {
-    if (!qp.to_multipliers) return x;
-    qp.to_multipliers(x, mu_of_x);
+    if (!formulation.to_multipliers) return x;
+    formulation.to_multipliers(x, mu_of_x);
     return mu_of_x;
   };
   // The stopping test at the solver's iterate x with projected gradient gP (inf- and 2-norm).
   const auto converged = [&](const Vec& x, double gradient_inf, double gradient_norm) {
     const Vec& mu = multipliers(x);
-    if (!qp.equality_norm) return stop(mu, gradient_inf, gradient_norm);
-    result.equality_norm = qp.equality_norm(mu);
+    if (!formulation.equality_norm) return stop(mu, gradient_inf, gradient_norm);
+    result.equality_norm = formulation.equality_norm(mu);
     return stop(mu, gradient_inf, gradient_norm, result.equality_norm, result.equality_reference);
   };
-  Vec x = qp.start, g;
-  if (!bounds) {  // equality rows only: CG
-    CgSettings cg;
-    cg.max_hessian = settings.max_hessian;
-    const CgResult r = conjugate_gradient(
-        qp.hessian, qp.b, x, g, cg,
-        [&](const Vec& xi, const Vec& gi, double norm) { return converged(xi, gi.lpNorm<Eigen::Infinity>(), norm); },
-        settings.monitor, qp.preconditioner);
-    record(result, r);
-  } else if (!qp.range_projector) {  // bounds only: MPRGP
-    const MprgpResult r = mprgp(
-        qp.hessian, qp.b, *bounds, qp.hessian_norm, x, g, false, mprgp_within(settings),
-        [&](const Vec& xi, const Vec& gi, double norm) {
-          return converged(xi, projected_gradient_max(xi, gi, *bounds), norm);
-        },
-        settings.monitor, qp.preconditioner);
-    record(result, r);
-  } else {  // bounds and an equality part: SMALBE
-    SmalbeProblem problem;
-    problem.hessian = qp.hessian;
-    problem.range_projector = qp.range_projector;
-    problem.b = &qp.b;
-    problem.lower = &bounds->lower;
-    problem.upper = bounds->upper;
-    problem.hessian_norm = qp.hessian_norm;
-    problem.preconditioner = qp.preconditioner;
-    problem.multiplier = settings.equality_multiplier;
-    const SmalbeResult r = smalbe(
-        problem, x, smalbe_within(settings),
-        [&](const Vec& xi, const Vec& gP, const Vec&) { return converged(xi, gP.lpNorm<Eigen::Infinity>(), gP.norm()); },
-        settings.monitor);
-    record(result, r);
+  const qp::Budget budget(settings.max_hessian);
+  Vec& x = formulation.start;
+  switch (route) {
+    case DualPath::cholesky: throw std::logic_error("run: the cholesky path has no dual QP");
+    case DualPath::cg:
+    case DualPath::projected_cg:
+      record(result, conjugate_gradient(
+                         qp, CgSettings{}, x, budget,
+                         [&](const Vec& xi, const Vec& gi, double norm) {
+                           return converged(xi, gi.lpNorm<Eigen::Infinity>(), norm);
+                         },
+                         settings.monitor));
+      break;
+    case DualPath::smalbe:
+      // The free-rows form may leave no equality part (no body floats as a whole): then
+      // its QP has bounds only, and MPRGP is SMALBE without a multiplier to update.
+      if (qp.range_projector) {
+        qp::Problem warm_started = std::move(formulation.qp);
+        warm_started.equality_multiplier = warm.equality_multiplier;
+        SmalbeResult r = smalbe(
+            warm_started, smalbe_for(settings), x, budget,
+            [&](const Vec& xi, const Vec& gP, double norm) {
+              return converged(xi, gP.lpNorm<Eigen::Infinity>(), norm);
+            },
+            settings.monitor);
+        result.equality_multiplier = std::move(r.multiplier);
+        record(result, r);
+        break;
+      }
+      [[fallthrough]];
+    case DualPath::mprgp:
+      record(result, mprgp(
+                         qp, mprgp_for(settings), x, budget,
+                         [&](const Vec& xi, const Vec& gi, double norm) {
+                           return converged(xi, projected_gradient_max(xi, gi, qp.constraints), norm);
+                         },
+                         settings.monitor));
+      break;
   }
   Vec mu = multipliers(x);
-  if (qp.equality_norm) result.equality_norm = qp.equality_norm(mu);
+  if (formulation.equality_norm) result.equality_norm = formulation.equality_norm(mu);
   return mu;
 }
 
@@ -118,7 +126,8 @@ DualSolution DualSystem::solved_by_subdomains(const DualData& data, DualSolution
   return result;
 }
 
-DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& settings) const {
+DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& settings,
+                               const DualWarmStart& warm) const {
   settings.validate();
   DualSolution result = prepared(data, settings);
   const DualPath route = path();
@@ -130,11 +139,8 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
   if (data.slip_bound.size() != constraints_.friction_rows)
     throw InputError("slipBound: needs one bound per friction row (" + std::to_string(constraints_.friction_rows) +
                      "), got " + std::to_string(data.slip_bound.size()));
-  const Vec multiplier_lower = lower_bounds(data), multiplier_upper = upper_bounds(data);
-  // Of mu = lambda - lambda~, the solvers' variable (-inf stays -inf).
-  const Vec lower = multiplier_lower - data.lambda_tilde;
-  const Vec upper = multiplier_upper.size() ? Vec(multiplier_upper - data.lambda_tilde) : Vec();
-  const Bounds bounds{lower, upper.size() ? &upper : nullptr};
+  const qp::ConstraintSet multiplier_bounds = multiplier_constraints(data);
+  const qp::ConstraintSet bounds = multiplier_bounds.shifted(data.lambda_tilde);  // of mu = lambda - lambda~
   // The primal check of the stopping test at shifted multipliers mu (lambda = mu + lambda~,
   // multipliers at a bound exactly there).
   RelativeKktStop kkt_stop(settings.tolerance, [&](const Vec& mu) {
@@ -146,13 +152,13 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
 
   Vec lambda;
   if (route == DualPath::cg || route == DualPath::projected_cg) {
-    const DualQp qp = route == DualPath::cg ? plain_qp(data, settings, result, false) : projected_qp(data, settings);
-    lambda = run(qp, nullptr, stop_for(result), settings, result) + data.lambda_tilde;
+    Formulation qp = route == DualPath::cg ? plain_qp(data, settings, result, nullptr) : projected_qp(data, settings);
+    lambda = run(route, std::move(qp), stop_for(result), settings, warm, result) + data.lambda_tilde;
   } else if (route == DualPath::mprgp) {
-    const DualQp qp = plain_qp(data, settings, result, true);
-    lambda = lambda_from_shifted(run(qp, &bounds, stop_for(result), settings, result), bounds, data);
+    Formulation qp = plain_qp(data, settings, result, &bounds);
+    lambda = lambda_from_shifted(run(route, std::move(qp), stop_for(result), settings, warm, result), bounds, data);
   } else if (const double resolution = std::max(settings.tolerance, kFeasibilityResolution),
-             distance = coarse_->feasibility_residual(data.e, multiplier_lower, multiplier_upper, resolution);
+             distance = coarse_->feasibility_residual(data.e, multiplier_bounds, resolution);
              distance > resolution) {
     // No multipliers within their bounds balance the loads on the floating bodies (Farkas):
     // no equilibrium, and SMALBE could only iterate until maxit. The least-norm lambda~
@@ -162,10 +168,10 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     result.equality_norm = distance * result.equality_reference;
     lambda = data.lambda_tilde;
   } else {
-    const DualQp qp = settings.coarse_constraints == CoarseConstraints::free_rows
-                          ? free_rows_qp(data, settings, result)
-                          : penalty_qp(data, settings, result);
-    lambda = lambda_from_shifted(run(qp, &bounds, stop_for(result), settings, result), bounds, data);
+    Formulation qp = settings.coarse_constraints == CoarseConstraints::free_rows
+                         ? free_rows_qp(data, settings, result, bounds)
+                         : penalty_qp(data, settings, result, bounds);
+    lambda = lambda_from_shifted(run(route, std::move(qp), stop_for(result), settings, warm, result), bounds, data);
   }
   result.violation = kkt_stop.measure();
   result.scale_evaluations = kkt_stop.evaluations();
@@ -175,6 +181,46 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
   result.times.primal_checks = check_seconds_ - check_start;
   recover(data, std::move(lambda), result);
   return result;
+}
+
+std::vector<DualSolution> DualSystem::solve(const std::vector<DualData>& data,
+                                            const DualSolveSettings& settings) const {
+  std::vector<DualSolution> results;
+  // Lockstep runs share the seed's test (a reference per run known in advance); the
+  // relative_kkt test needs u of each run, so those solve one after the other.
+  if (data.size() < 2 || settings.stopping != StoppingTest::seed ||
+      (path() != DualPath::cg && path() != DualPath::projected_cg)) {
+    for (const DualData& d : data) results.push_back(solve(d, settings));
+    return results;
+  }
+  settings.validate();
+  std::vector<Vec> b, mu(data.size(), Vec::Zero(rows()));
+  std::vector<StopTest> stop;
+  for (const DualData& d : data) {
+    results.push_back(prepared(d, settings));
+    b.push_back(d.b);
+    const double b_tol = settings.tolerance * results.back().gradient_reference;
+    stop.push_back([b_tol](const Vec&, const Vec&, double norm) { return norm <= b_tol; });
+  }
+  Stopwatch solve_clock;
+  const double operator_start = F_->application_seconds();
+  const std::vector<CgResult> cg_results = conjugate_gradient_block(
+      [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) {
+        if (coarse_) apply_PFP(x, y);
+        else F_->apply(x, y);
+      },
+      b, mu, CgSettings{}, qp::Budget(settings.max_hessian), stop);
+  const double seconds = solve_clock.seconds() / static_cast<double>(data.size());
+  const double operator_seconds = (F_->application_seconds() - operator_start) / static_cast<double>(data.size());
+  for (size_t j = 0; j < data.size(); ++j) {
+    results[j].times.dual_operator = operator_seconds;
+    results[j].status = cg_results[j].status;
+    results[j].counts = cg_results[j].counts;
+    results[j].gradient_norm = cg_results[j].gradient_norm;
+    results[j].times.solve = seconds;
+    recover(data[j], mu[j] + data[j].lambda_tilde, results[j]);
+  }
+  return results;
 }
 
 }  // namespace ffeti

@@ -3,7 +3,6 @@
 #include "base/errors.h"
 #include "feti/primal.h"
 #include "base/stopwatch.h"
-#include "qp/conjugate_gradient.h"
 #include "qp/norm_estimate.h"
 
 #include <algorithm>
@@ -14,7 +13,11 @@ namespace ffeti {
 
 void DualSolveSettings::validate() const {
   if (!(tolerance > 0 && tolerance < 1)) throw InputError("tol: must lie in (0, 1)");
-  if (max_hessian < 1) throw InputError("maxit: must be >= 1");
+  try {
+    const qp::Budget budget(max_hessian);  // its check, once
+  } catch (const std::invalid_argument& error) {
+    throw InputError(error.what());
+  }
   const std::pair<const char*, double> positive[] = {
       {"rho", smalbe.rho_factor}, {"M", smalbe.M_factor}, {"eta", smalbe.eta_factor}, {"gamma", mprgp.gamma}};
   for (const auto& [name, value] : positive)
@@ -131,7 +134,7 @@ void DualSystem::apply_PFP(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
 
 DualSolution DualSystem::prepared(const DualData& data, const DualSolveSettings& settings) const {
   DualSolution result;
-  result.path = path_name(path());
+  result.path = path();
   result.gradient_reference = std::max(data.b.norm(), settings.reference_includes_data ? data.data_norm : 0.0);
   if (!(result.gradient_reference > 0)) result.gradient_reference = 1.0;
   result.equality_reference = data.e.norm() > 0 ? data.e.norm() : 0.0;
@@ -185,69 +188,20 @@ void DualSystem::recover(const DualData& data, Vec lambda, DualSolution& result)
   result.times.recovery = recovery_clock.seconds();
 }
 
-std::vector<DualSolution> DualSystem::solve(const std::vector<DualData>& data,
-                                            const DualSolveSettings& settings) const {
-  std::vector<DualSolution> results;
-  // Lockstep runs share the seed's test (a reference per run known in advance); the
-  // relative_kkt test needs u of each run, so those solve one after the other.
-  if (data.size() < 2 || settings.stopping != StoppingTest::seed ||
-      (path() != DualPath::cg && path() != DualPath::projected_cg)) {
-    for (const DualData& d : data) results.push_back(solve(d, settings));
-    return results;
-  }
-  settings.validate();
-  std::vector<Vec> b, mu(data.size(), Vec::Zero(rows())), g;
-  std::vector<StopTest> stop;
-  for (const DualData& d : data) {
-    results.push_back(prepared(d, settings));
-    b.push_back(d.b);
-    const double b_tol = settings.tolerance * results.back().gradient_reference;
-    stop.push_back([b_tol](const Vec&, const Vec&, double norm) { return norm <= b_tol; });
-  }
-  CgSettings cg;
-  cg.max_hessian = settings.max_hessian;
-  Stopwatch solve_clock;
-  const double operator_start = F_->application_seconds();
-  const std::vector<CgResult> cg_results = conjugate_gradient_block(
-      [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) {
-        if (coarse_) apply_PFP(x, y);
-        else F_->apply(x, y);
-      },
-      b, mu, g, cg, stop);
-  const double seconds = solve_clock.seconds() / static_cast<double>(data.size());
-  const double operator_seconds = (F_->application_seconds() - operator_start) / static_cast<double>(data.size());
-  for (size_t j = 0; j < data.size(); ++j) {
-    results[j].times.dual_operator = operator_seconds;
-    results[j].status = cg_results[j].status;
-    results[j].counts = cg_results[j].counts;
-    results[j].gradient_norm = cg_results[j].gradient_norm;
-    results[j].times.solve = seconds;
-    recover(data[j], mu[j] + data[j].lambda_tilde, results[j]);
-  }
-  return results;
-}
-
 const FreeRowProjector& DualSystem::free_rows() const {
   if (!free_rows_) free_rows_ = std::make_unique<FreeRowProjector>(coarse_->G(), constraints_.equality_rows);
   return *free_rows_;
 }
 
-Vec DualSystem::lower_bounds(const DualData& data) const {
-  Vec lower = Vec::Constant(rows(), kUnbounded);
-  const int first_friction = constraints_.first_friction_row();
-  for (int i = constraints_.equality_rows; i < first_friction; ++i) lower[i] = 0.0;  // lambda_I >= 0
-  for (int i = first_friction; i < rows(); ++i) lower[i] = -data.slip_bound[i - first_friction];
-  return lower;
+qp::ConstraintSet DualSystem::multiplier_constraints(const DualData& data) const {
+  qp::ConstraintSet set;
+  set.add_free(constraints_.equality_rows);
+  set.add_half_line(Vec::Zero(constraints_.contact_rows()));  // lambda_I >= 0
+  if (constraints_.friction_rows > 0) set.add_box(-data.slip_bound, data.slip_bound);  // |lambda_t| <= g
+  return set;
 }
 
-Vec DualSystem::upper_bounds(const DualData& data) const {
-  if (constraints_.friction_rows == 0) return Vec();
-  Vec upper = Vec::Constant(rows(), std::numeric_limits<double>::infinity());
-  upper.tail(constraints_.friction_rows) = data.slip_bound;
-  return upper;
-}
-
-Vec DualSystem::lambda_from_shifted(const Vec& mu, const Bounds& bounds, const DualData& data) const {
+Vec DualSystem::lambda_from_shifted(const Vec& mu, const qp::ConstraintSet& bounds, const DualData& data) const {
   // Multipliers at a bound are the bound exactly (0, or -g, g), not the bound plus the
   // round-off of lambda~.
   Vec lambda = mu + data.lambda_tilde;
@@ -257,7 +211,7 @@ Vec DualSystem::lambda_from_shifted(const Vec& mu, const Bounds& bounds, const D
   for (Eigen::Index i = first_friction; i < mu.size(); ++i) {
     const double g = data.slip_bound[i - first_friction];
     if (mu[i] <= bounds.lower[i]) lambda[i] = -g;
-    else if (mu[i] >= (*bounds.upper)[i]) lambda[i] = g;
+    else if (mu[i] >= bounds.upper[i]) lambda[i] = g;
   }
   return lambda;
 }

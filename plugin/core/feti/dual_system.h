@@ -3,28 +3,41 @@
 // the constraints call for (ALGORITHMS.md section 6). The state problem has one; the
 // sensitivity problem of a design step (seed eq. 12: a subset of the rows) has another
 // over the same factorizations. Its parts: dual_system.cpp (the operators, the right-hand
-// side, the primal check and recovery), dual_formulations.cpp (one DualQp per formulation),
-// dual_solve.cpp (the dispatcher onto qp/).
+// side, the constraint set, the primal check and recovery), dual_formulations.cpp (one
+// qp::Problem per formulation), dual_solve.cpp (the dispatcher onto qp/ by the path, both
+// solve overloads).
 #pragma once
 
 #include "feti/coarse_space.h"
 #include "constraints/constraints.h"
 #include "feti/dirichlet_preconditioner.h"
 #include "feti/dual_operator.h"
-#include "feti/dual_qp.h"
 #include "feti/free_row_projector.h"
-#include "feti/phase_times.h"
 #include "feti/stopping_test.h"
 #include "parallel/subdomain_sum.h"
 #include "qp/norm_estimate.h"
+#include "qp/problem.h"
 #include "qp/smalbe.h"
 
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace ffeti {
+
+/// The solver path the constraints call for (ALGORITHMS.md section 6).
+enum class DualPath {
+  cholesky,      ///< no constraint rows: one subdomain solve each
+  cg,            ///< equality rows only, nothing floats: CG on F
+  projected_cg,  ///< equality rows only, something floats: CG on P F P
+  mprgp,         ///< contact rows, nothing floats: MPRGP on F
+  smalbe,        ///< contact rows, something floats: SMALBE-M (MPRGP where the free-rows form leaves no equality part)
+};
+
+/// The path's name in reports and statistics ("projected_cg"); paths are compared as enums.
+const char* path_name(DualPath path);
 
 /// How the SMALBE path meets the coarse constraints G lambda = e (docs/algorithms.md).
 enum class CoarseConstraints {
@@ -42,8 +55,8 @@ struct DualSolveSettings {
   double tolerance = 1e-4;
   CoarseConstraints coarse_constraints = CoarseConstraints::free_rows;
   StoppingTest stopping = StoppingTest::relative_kkt;
-  int max_hessian = 10000;          ///< over the whole solve
-  SmalbeSettings smalbe{};          ///< used on the SMALBE path (its max_hessian is overridden)
+  int max_hessian = 10000;          ///< over the whole solve (friction: over all its Tresca solves)
+  SmalbeSettings smalbe{};          ///< used on the SMALBE path
   MprgpSettings mprgp{};            ///< used on the MPRGP path and inside SMALBE
   NormEstimateSettings norm_estimate{};
   Monitor monitor{};
@@ -61,12 +74,29 @@ struct DualSolveSettings {
   int settle = 2;
   /// Coulomb friction: Tresca solves of the fixed point at most (feti/friction.h).
   int friction_iterations = 50;
-  /// SMALBE path: in/out the solver's multiplier term of the equality part (qp/smalbe.h),
-  /// for a sequence of solves of one system that each start from the last (friction's fixed
-  /// point); null: each solve starts it at 0.
-  Vec* equality_multiplier = nullptr;
-
   void validate() const;  ///< throws InputError naming the setting
+};
+
+/// Where the time of a set-up and a solve went, phase by phase.
+struct PhaseTimes {  ///< wall-clock seconds; in a problem's result over several ranks, the slowest rank's
+  double constraints = 0, factorization = 0, coarse_space = 0, dual_data = 0;  ///< set-up
+  double norm_estimate = 0;   ///< estimating ||H|| (first solve of a system only)
+  double free_rows = 0;       ///< building T of coarse "free-rows" (first solve of a system only)
+  double solve = 0, recovery = 0, kkt = 0;
+  double dual_operator = 0;   ///< the part of solve spent applying F
+  double preconditioner = 0;  ///< the part of solve spent applying the preconditioner
+  double primal_checks = 0;   ///< the part of solve spent in the stopping test's primal checks
+
+  /// Several solves of one problem (friction's fixed point) add up phase by phase.
+  PhaseTimes& operator+=(const PhaseTimes& o) {
+    double* mine[] = {&constraints, &factorization, &coarse_space, &dual_data, &norm_estimate, &free_rows, &solve,
+                      &recovery, &kkt, &dual_operator, &preconditioner, &primal_checks};
+    const double* theirs[] = {&o.constraints, &o.factorization, &o.coarse_space, &o.dual_data, &o.norm_estimate,
+                              &o.free_rows, &o.solve, &o.recovery, &o.kkt, &o.dual_operator, &o.preconditioner,
+                              &o.primal_checks};
+    for (size_t k = 0; k < sizeof(mine) / sizeof(mine[0]); ++k) *mine[k] += *theirs[k];
+    return *this;
+  }
 };
 
 /// The right-hand side of one dual problem, for loads f (as the operators see them) and
@@ -79,9 +109,15 @@ struct DualData {
   Vec slip_bound;        ///< per friction row: g >= 0 of |lambda_t| <= g (empty without friction)
 };
 
+/// What a solve of a sequence (friction's fixed point: one system, other bounds) carries
+/// over from the last, besides its multipliers (DualSolveSettings::start).
+struct DualWarmStart {
+  Vec equality_multiplier;  ///< DualSolution::equality_multiplier of the last solve (empty: 0)
+};
+
 struct DualSolution {
   SolveStatus status = SolveStatus::invalid_input;
-  std::string path;              ///< path_name of the path taken
+  DualPath path = DualPath::cholesky;  ///< the path taken
   IterationCounts counts;
   double gradient_norm = 0;      ///< final ||gP|| (absolute) and its reference ||b||
   double gradient_reference = 0;
@@ -90,6 +126,10 @@ struct DualSolution {
   double violation = -1;         ///< relative_kkt: the last check's measure (-1: no check ran)
   int scale_evaluations = 0;     ///< relative_kkt: primal checks (a K^+ application each)
   Vec lambda;                    ///< multipliers, rows ordered as constraints()
+  /// SMALBE path: the solver's final multiplier term of the equality part (qp/smalbe.h);
+  /// empty on the other paths. The next solve of the same system with other bounds starts
+  /// from it (DualWarmStart).
+  Vec equality_multiplier;
   std::vector<Vec> u;            ///< primal solution per subdomain of this rank
   PhaseTimes times;              ///< this rank's: norm_estimate, free_rows, solve (and its parts), recovery
 };
@@ -127,7 +167,7 @@ class DualSystem {
 
   /// Solves the dual problem and recovers u. Never throws for non-convergence: see status.
   /// Collective.
-  DualSolution solve(const DualData& data, const DualSolveSettings& settings) const;
+  DualSolution solve(const DualData& data, const DualSolveSettings& settings, const DualWarmStart& warm = {}) const;
 
   /// Solves the dual problems of several right-hand sides. On the CG paths their CG runs go
   /// in lockstep and share each application of F (a block of vectors, one pass over each
@@ -149,23 +189,35 @@ class DualSystem {
   void recover(const DualData& data, Vec lambda, DualSolution& result) const;
   const FreeRowProjector& free_rows() const;  // built at first use
   PrimalCheck primal_check(const DualData& data, const Vec& lambda) const;  // of the recovered u(lambda)
-  // Of lambda: lambda_I >= 0 on contact rows, |lambda_t| <= g on friction rows; upper_bounds
-  // is empty without friction rows.
-  Vec lower_bounds(const DualData& data) const;
-  Vec upper_bounds(const DualData& data) const;
-  Vec lambda_from_shifted(const Vec& mu, const Bounds& bounds, const DualData& data) const;
+  // Of lambda: free on equality rows, lambda_I >= 0 on contact rows, |lambda_t| <= g on
+  // friction rows.
+  qp::ConstraintSet multiplier_constraints(const DualData& data) const;
+  Vec lambda_from_shifted(const Vec& mu, const qp::ConstraintSet& bounds, const DualData& data) const;
 
-  // The formulations (dual_formulations.cpp), each the QP of one path.
-  DualQp plain_qp(const DualData& data, const DualSolveSettings& settings, DualSolution& result,
-                  bool bounded) const;  // F: CG, or MPRGP (bounded: with the norm estimate)
-  DualQp projected_qp(const DualData& data, const DualSolveSettings& settings) const;  // P F P: projected CG
-  DualQp penalty_qp(const DualData& data, const DualSolveSettings& settings, DualSolution& result) const;
-  DualQp free_rows_qp(const DualData& data, const DualSolveSettings& settings, DualSolution& result) const;
+  /// One formulation's QP over the solver's variable x, and how x maps back to the shifted
+  /// multipliers mu = lambda - lambda~.
+  struct Formulation {
+    qp::Problem qp;
+    /// mu of a solver iterate x (empty: mu = x).
+    std::function<void(const Vec& x, Vec& mu)> to_multipliers;
+    /// ||G mu||, which the stopping test weighs (empty: the iterates meet G mu = 0 by
+    /// construction, or nothing floats).
+    std::function<double(const Vec& mu)> equality_norm;
+    Vec start;  ///< the solver's first iterate
+  };
+  // The formulations (dual_formulations.cpp), each the QP of one path; `bounds` are mu's.
+  Formulation plain_qp(const DualData& data, const DualSolveSettings& settings, DualSolution& result,
+                       const qp::ConstraintSet* bounds) const;  // F: CG, or MPRGP (bounded: with the norm estimate)
+  Formulation projected_qp(const DualData& data, const DualSolveSettings& settings) const;  // P F P: projected CG
+  Formulation penalty_qp(const DualData& data, const DualSolveSettings& settings, DualSolution& result,
+                         const qp::ConstraintSet& bounds) const;
+  Formulation free_rows_qp(const DualData& data, const DualSolveSettings& settings, DualSolution& result,
+                           const qp::ConstraintSet& bounds) const;
   void set_equality_reference(DualSolution& result, double hessian_norm) const;
 
   // The dispatcher's pieces (dual_solve.cpp).
-  Vec run(const DualQp& qp, const Bounds* bounds, const DualStop& stop, const DualSolveSettings& settings,
-          DualSolution& result) const;  // CG, MPRGP or SMALBE on qp; returns mu
+  Vec run(DualPath route, Formulation formulation, const DualStop& stop, const DualSolveSettings& settings,
+          const DualWarmStart& warm, DualSolution& result) const;  // the route's solver on the formulation; returns mu
   DualSolution solved_by_subdomains(const DualData& data, DualSolution result) const;  // the cholesky path
 
   const SubdomainList& subdomains_;
@@ -177,11 +229,18 @@ class DualSystem {
   std::unique_ptr<CoarseSpace> coarse_;
   std::unique_ptr<DirichletPreconditioner> preconditioner_;
   DualPreconditioner preconditioner_kind_ = DualPreconditioner::none;
+  // What solve() (const: it changes no part of the system a caller sees) keeps from call to
+  // call. Each depends only on the system, never on a right-hand side or the settings, so a
+  // later solve may reuse it; none is safe to share between threads (a DualSystem solves one
+  // problem at a time, collectively). Work vectors, reused so that each application of an
+  // operator allocates nothing:
   mutable Vec projected_, applied_;                   // buffers of apply_PFP and the preconditioner
   mutable Eigen::MatrixXd block_projected_, block_applied_;  // of the block apply_PFP
+  // Built at first use, as only some paths need them (10-20 applications of the operator for
+  // a norm estimate; a factorization of C C' for T):
   mutable CachedNorm norm_F_, norm_PFP_, norm_reduced_;  // ||F||, ||PFP||, ||T'PFPT||
   mutable std::unique_ptr<FreeRowProjector> free_rows_;
-  mutable double check_seconds_ = 0;  // spent in primal_check so far
+  mutable double check_seconds_ = 0;  // spent in primal_check so far (a solve reports its difference)
 };
 
 }  // namespace ffeti

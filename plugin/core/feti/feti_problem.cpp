@@ -240,9 +240,9 @@ FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
   }
   result.phases = "constraints,factorization";
   if (dual_->coarse()) result.phases += ",coarse_space";
-  if (result.path != "cholesky") result.phases += ",dual_data";
-  if (result.path == "mprgp" || result.path == "smalbe") result.phases += ",norm_estimate";
-  if (result.path != "cholesky") result.phases += "," + result.path;
+  if (result.path != DualPath::cholesky) result.phases += ",dual_data";
+  if (result.path == DualPath::mprgp || result.path == DualPath::smalbe) result.phases += ",norm_estimate";
+  if (result.path != DualPath::cholesky) result.phases += std::string(",") + path_name(result.path);
   if (has_friction()) result.phases += ",friction";
   result.phases += ",recovery,kkt";
 

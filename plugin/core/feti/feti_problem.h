@@ -121,7 +121,7 @@ class FetiProblem {
   FetiVariant variant() const { return settings_.variant; }
   double factor_nonzeros() const { return factor_nonzeros_; }
   /// The solver path the data call for (ALGORITHMS.md section 6).
-  std::string path() const { return path_name(dual_->path()); }
+  DualPath path() const { return dual_->path(); }
 
   /// The loads as the dual operators see them: FETI-1 eliminates the Dirichlet dofs of
   /// `loads` (with the prescribed values, or zero if `homogeneous`). This rank's.

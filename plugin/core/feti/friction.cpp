@@ -30,11 +30,15 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
   Vec g = law.coulomb() ? coulomb_bounds(c, settings.start) : Vec::Constant(c.friction_rows, law.slip_bound);
   IterationCounts counts;
   PhaseTimes times;
-  Vec equality_multiplier;  // carried from solve to solve with the multipliers
-  settings.equality_multiplier = &equality_multiplier;
+  // maxit holds over the whole fixed point: each Tresca solve gets what the ones before left.
+  settings.validate();
+  const qp::Budget budget(settings.max_hessian);
+  DualWarmStart warm;  // SMALBE's multiplier term, carried from solve to solve with the multipliers
   for (;;) {
     data.slip_bound = g;
-    DualSolution solved = dual.solve(data, settings);
+    settings.max_hessian = budget.remaining(counts.hessian);
+    DualSolution solved = dual.solve(data, settings, warm);
+    warm.equality_multiplier = solved.equality_multiplier;
     ++out.iterations;
     out.hessian.push_back(solved.counts.hessian);
     const int estimate = counts.hessian_norm_estimate;  // estimated once: the later solves reuse it
@@ -49,7 +53,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
     const double change = next.size() ? (next - g).lpNorm<Eigen::Infinity>() : 0.0;
     out.bound_change = scale > 0 ? change / scale : change;
     if (out.bound_change <= settings.tolerance) break;
-    if (out.iterations >= settings.friction_iterations) {
+    if (out.iterations >= settings.friction_iterations || budget.remaining(counts.hessian) == 0) {
       out.dual.status = SolveStatus::max_iterations;
       break;
     }

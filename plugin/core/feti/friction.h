@@ -18,7 +18,9 @@ struct FrictionLaw {
 
 /// The Coulomb fixed point stops at  ||g_new - g||_inf <= tolerance ||g_new||_inf  with the
 /// user's tol: each Tresca solve is accurate to about tol, so the bounds cannot settle finer.
-/// Beyond DualSolveSettings::friction_iterations Tresca solves it reports max_iterations.
+/// Beyond DualSolveSettings::friction_iterations Tresca solves, or once their Hessian
+/// multiplications together reach DualSolveSettings::max_hessian (maxit holds over the
+/// whole solve), it reports max_iterations.
 
 /// A solve with friction: the last Tresca solve (its lambda, u and status; counts and times
 /// summed over all of them) and what the fixed point adds.

@@ -94,8 +94,8 @@ std::vector<Option> make_options() {
          s.solve.stopping = pick(v, {StoppingTest::relative_kkt, StoppingTest::seed}, kStops);
        }},
       {"maxit", S::solve, K::integer, {}, 1, kIntMax, false, false, "10000",
-       "limit on Hessian multiplications (dual operator applications), checked before narrowing: a larger value is "
-       "an error, not wrapped",
+       "limit on Hessian multiplications (dual operator applications) over the whole solve, all Tresca solves of "
+       "Coulomb friction's fixed point together; checked before narrowing: a larger value is an error, not wrapped",
        [](SolverSettings& s, const OptionValue& v) { s.solve.max_hessian = integer(v); }},
       {"algorithm", S::solve, K::word, {kAlgorithms[0], kAlgorithms[1]}, 0, 0, false, false, "`\"smalbe-m\"`",
        "`\"smalbe-m\"` (fixed penalty, adaptive M) or `\"seed\"` (the seed's Algorithm 3.1, growing penalty)",
@@ -131,8 +131,8 @@ std::vector<Option> make_options() {
        "start as given. Ignored without a start",
        [](SolverSettings& s, const OptionValue& v) { s.solve.settle = integer(v); }},
       {"frictionit", S::solve, K::integer, {}, 1, kIntMax, false, false, "50",
-       "with Coulomb friction: Tresca solves the fixed point may take; beyond them the status is `max_iterations` "
-       "(1), the last iterate returned ([algorithms](algorithms.md#friction)). Without friction: ignored",
+       "with Coulomb friction: Tresca solves the fixed point may take; beyond them, or once they have spent `maxit` "
+       "multiplications together, the status is `max_iterations` (1), the last iterate returned ([algorithms](algorithms.md#friction)). Without friction: ignored",
        [](SolverSettings& s, const OptionValue& v) { s.solve.friction_iterations = integer(v); }},
       {"verbosity", S::solve, K::integer, {}, 0, kIntMax, false, false, "0",
        "1: a line per outer iteration (Hessian multiplications so far, `‖gP‖`, `‖Qμ‖` — the part of the iterate "
@@ -150,6 +150,20 @@ std::vector<Option> make_options() {
        [](SolverSettings& s, const OptionValue& v) { s.solve.smalbe.eta_factor = number(v); }},
       {"gamma", S::solve, K::real, {}, 0, HUGE_VAL, true, true, "1", "MPRGP proportioning threshold Γ",
        [](SolverSettings& s, const OptionValue& v) { s.solve.mprgp.gamma = number(v); }},
+      {"tol", S::sensitivity, K::real, {}, 0, 1, true, true, "the last `fetiSolve`'s",
+       "relative stopping tolerance of the sensitivity problem: the seed's test of `fetiSolve` (`stop=\"seed\"`) "
+       "with ‖b‖ replaced by max(‖b‖, ‖B K⁺ fbar‖) (see [algorithms](algorithms.md)); not the KKT test of the "
+       "state's solve, so the same value means a different thing here",
+       [](SolverSettings& s, const OptionValue& v) { s.solve.tolerance = number(v); }},
+      {"maxit", S::sensitivity, K::integer, {}, 1, kIntMax, false, false, "10000",
+       "limit on Hessian multiplications of each sensitivity or adjoint solve",
+       [](SolverSettings& s, const OptionValue& v) { s.solve.max_hessian = integer(v); }},
+      {"activeTol", S::sensitivity, K::real, {}, 0, 1, true, true, "min(1e-2, 10 × the last solve's `tol`)",
+       "the classification threshold t, relative to the multipliers' and displacements' scales: a multiplier "
+       "known to `tol` is zero below about 10 `tol` max λ",
+       [](SolverSettings& s, const OptionValue& v) { s.active_tolerance = number(v); }},
+      {"verbosity", S::sensitivity, K::integer, {}, 0, kIntMax, false, false, "0", "as for `fetiSolve`",
+       [](SolverSettings& s, const OptionValue& v) { s.verbosity = integer(v); }},
   };
 }
 
@@ -208,12 +222,11 @@ const std::vector<Option>& options() {
 
 const Option* find_option(const std::string& name) {
   for (const Option& o : options())
-    if (name == o.name) return &o;
+    if (name == o.name && o.scope != OptionScope::sensitivity) return &o;
   return nullptr;
 }
 
-void GivenOptions::set(const std::string& name, OptionValue value) {
-  const Option* o = find_option(name);
+void GivenOptions::set(const Option* o, const std::string& name, OptionValue value) {
   if (!o) throw InputError(name + ": not a solver option");
   check(*o, value);
   given_[name] = std::move(value);
@@ -243,6 +256,13 @@ SolverSettings GivenOptions::solve(FetiVariant variant) const {
     s.solve.smalbe.M_factor = seed ? (variant == FetiVariant::feti1 ? 10.0 : 1.0) : (penalty ? 100.0 : 1.0);
   }
   s.solve.validate();
+  return s;
+}
+
+SolverSettings GivenOptions::sensitivity() const {
+  SolverSettings s;
+  for (const Option& o : options())
+    if (o.scope == OptionScope::sensitivity && has(o.name)) o.apply(s, given_.at(o.name));
   return s;
 }
 

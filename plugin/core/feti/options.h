@@ -15,8 +15,9 @@
 
 namespace ffeti {
 
-/// Where an option acts: the set-up (factorizations, preconditioner) or each solve.
-enum class OptionScope { setup, solve };
+/// Where an option acts: the set-up (factorizations, preconditioner), each solve, or the
+/// sensitivity functions' solves (fetiSensitivity, fetiAdjoint).
+enum class OptionScope { setup, solve, sensitivity };
 enum class OptionKind { real, integer, word };
 
 /// What a front end hands over: a number as the user wrote it (integers as long, before any
@@ -28,6 +29,9 @@ struct SolverSettings {
   FetiSetupSettings setup;
   DualSolveSettings solve;
   int verbosity = 0;  ///< progress lines: 0 none, 1 per outer iteration, 2 per inner one
+  /// Sensitivity: activeTol, the contact rows' classification threshold (0: not given, the
+  /// default follows the state's tol).
+  double active_tolerance = 0;
 };
 
 struct Option {
@@ -45,14 +49,18 @@ struct Option {
 
 /// Every option, in the order of the reference's tables.
 const std::vector<Option>& options();
-/// The option named `name`, or nullptr.
+/// The set-up or solve option named `name` (fetiSetup's, fetiSolve's, ffeti-solve's "solver"
+/// keys), or nullptr.
 const Option* find_option(const std::string& name);
 
 /// Options a user gave, each checked when given (kind, range or word; numbers before they
 /// are narrowed): InputError "<name>: <what is wrong>".
 class GivenOptions {
  public:
-  void set(const std::string& name, OptionValue value);
+  /// A set-up or solve option.
+  void set(const std::string& name, OptionValue value) { set(find_option(name), name, std::move(value)); }
+  /// An option of the registry (any scope).
+  void set(const Option& option, OptionValue value) { set(&option, option.name, std::move(value)); }
   bool has(const std::string& name) const { return given_.count(name) > 0; }
 
   /// The set-up's settings: given values, else the defaults; the variant's default is
@@ -61,8 +69,11 @@ class GivenOptions {
   /// A solve's settings for a problem of `variant`: given values, else the defaults (M's
   /// depends on the algorithm, the variant and coarse). Validated.
   SolverSettings solve(FetiVariant variant) const;
+  /// The sensitivity functions' settings: the given options of scope sensitivity.
+  SolverSettings sensitivity() const;
 
  private:
+  void set(const Option* option, const std::string& name, OptionValue value);
   std::map<std::string, OptionValue> given_;
 };
 

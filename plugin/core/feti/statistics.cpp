@@ -112,7 +112,7 @@ std::string format_report(const FetiProblem& problem, const FetiResult* result) 
   std::ostringstream out;
   out.precision(10);
   out << "variant=" << (problem.variant() == FetiVariant::feti1 ? "feti1" : "tfeti")
-      << " path=" << problem.path()
+      << " path=" << path_name(problem.path())
       << " preconditioner=" << preconditioner_name(problem.dual().preconditioner_kind());
   if (result) out << " status_name=" << to_string(result->status) << " phases=" << result->phases;
   for (const auto& [key, value] : statistics(problem, result)) out << ' ' << key << '=' << value;

@@ -5,15 +5,14 @@
 
 namespace ffeti {
 namespace {
-constexpr int kMaxResidualReplacements = 2;
-
 /// One CG run advanced one multiplication at a time: next() is the vector A must multiply,
 /// take() receives the product. Lets several runs share each application of A.
 class CgRun {
  public:
-  CgRun(const Vec& b, Vec& x, Vec& g, const CgSettings& settings, const StopTest& stop, const Monitor& monitor,
-        const LinearOperator& preconditioner)
-      : b_(b), x_(x), g_(g), settings_(settings), stop_(stop), monitor_(monitor), preconditioner_(preconditioner) {
+  CgRun(const Vec& b, Vec& x, const CgSettings& settings, const qp::Budget& budget, const StopTest& stop,
+        const Monitor& monitor, const LinearOperator& preconditioner)
+      : b_(b), x_(x), settings_(settings), budget_(budget), stop_(stop), monitor_(monitor),
+        preconditioner_(preconditioner) {
     if (x.size() != b.size()) throw std::invalid_argument("CG: x and b differ in size");
     state_ = State::initial;  // next: A x, for g = A x - b
   }
@@ -44,7 +43,7 @@ class CgRun {
       result_.gradient_norm = std::sqrt(g_sq_);
       if (monitor_) monitor_({"cg", iteration_, result_.gradient_norm, 0.0, result_.counts.hessian, 0});
       if (stop_(x_, g_, result_.gradient_norm)) return finish(SolveStatus::converged);
-      if (++replacements_ > kMaxResidualReplacements) return finish(SolveStatus::stagnated);
+      if (++replacements_ > settings_.residual_replacements) return finish(SolveStatus::stagnated);
       ++iteration_;
     }
     gz_ = precondition();
@@ -83,14 +82,15 @@ class CgRun {
       state_ = State::verify;
       return;
     }
-    if (result_.counts.hessian >= settings_.max_hessian) return finish(SolveStatus::max_iterations);
+    if (result_.counts.hessian >= budget_.max_hessian()) return finish(SolveStatus::max_iterations);
     state_ = State::step;
   }
 
   const Vec& b_;
   Vec& x_;
-  Vec& g_;
+  Vec g_;  // A x - b
   const CgSettings& settings_;
+  const qp::Budget& budget_;
   const StopTest& stop_;
   const Monitor& monitor_;
   const LinearOperator& preconditioner_;
@@ -104,14 +104,17 @@ class CgRun {
 }  // namespace
 
 void CgSettings::validate() const {
-  if (max_hessian < 1) throw std::invalid_argument("CG max_hessian must be >= 1");
+  if (residual_replacements < 0) throw std::invalid_argument("CG residual_replacements must be >= 0");
 }
 
-CgResult conjugate_gradient(const LinearOperator& A, const Vec& b, Vec& x, Vec& g,
-                            const CgSettings& settings, const StopTest& stop,
-                            const Monitor& monitor, const LinearOperator& preconditioner) {
+CgResult conjugate_gradient(const qp::Problem& problem, const CgSettings& settings, Vec& x, const qp::Budget& budget,
+                            const StopTest& stop, const Monitor& monitor) {
   settings.validate();
-  CgRun run(b, x, g, settings, stop, monitor, preconditioner);
+  if (problem.constraints.bounded() || problem.range_projector)
+    throw std::invalid_argument("CG: the problem has constraints (MPRGP's or SMALBE's)");
+  const LinearOperator& A = problem.hessian;
+  const Vec& b = problem.b;
+  CgRun run(b, x, settings, budget, stop, monitor, problem.preconditioner);
   Vec product(b.size());
   while (!run.finished()) {
     A(run.next(), product);
@@ -121,18 +124,17 @@ CgResult conjugate_gradient(const LinearOperator& A, const Vec& b, Vec& x, Vec& 
 }
 
 std::vector<CgResult> conjugate_gradient_block(const BlockOperator& A, const std::vector<Vec>& b,
-                                               std::vector<Vec>& x, std::vector<Vec>& g,
-                                               const CgSettings& settings, const std::vector<StopTest>& stop) {
+                                               std::vector<Vec>& x, const CgSettings& settings,
+                                               const qp::Budget& budget, const std::vector<StopTest>& stop) {
   settings.validate();
   if (x.size() != b.size() || stop.size() != b.size())
     throw std::invalid_argument("CG block: b, x and stop differ in count");
-  g.resize(b.size());
   const Monitor no_monitor;
   const LinearOperator no_preconditioner;
   std::vector<CgRun> runs;
   runs.reserve(b.size());
   for (size_t j = 0; j < b.size(); ++j)
-    runs.emplace_back(b[j], x[j], g[j], settings, stop[j], no_monitor, no_preconditioner);
+    runs.emplace_back(b[j], x[j], settings, budget, stop[j], no_monitor, no_preconditioner);
   Eigen::MatrixXd block, products;
   for (;;) {
     std::vector<size_t> open;

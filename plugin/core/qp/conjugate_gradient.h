@@ -6,40 +6,43 @@
 // right-hand sides in one pass.
 #pragma once
 
-#include "qp/qp_types.h"
+#include "qp/problem.h"
 
 #include <vector>
 
 namespace ffeti {
 
 struct CgSettings {
-  int max_hessian = 20000;  ///< limit on Hessian multiplications (per system)
+  /// Restarts from the true gradient A x - b after the updated one passed the test and the
+  /// true one did not; one more such failure returns `stagnated`.
+  int residual_replacements = 2;
   void validate() const;
 };
 
 using CgResult = QpResult;
 
-/// Minimizes 1/2 x'Ax - b'x from the start x (updated in place); g = Ax - b on return.
-/// `stop` receives ||g||_2. Convergence is declared only on the true gradient A x - b
-/// (recomputed once the updated one passes the test: one more multiplication); if it fails
-/// the test, CG restarts from it, and after two such restarts returns `stagnated`: the
+/// Minimizes 1/2 x'Hx - b'x of a problem without constraints (all blocks free, no equality
+/// part) from the start x (updated in place). `stop` receives x, g = Hx - b and ||g||_2.
+/// Convergence is declared only on the true gradient H x - b (recomputed once the updated
+/// one passes the test: one more multiplication); if it fails the test, CG restarts from it,
+/// and after `settings.residual_replacements` such restarts returns `stagnated`: the
 /// tolerance asked for lies below what round-off lets the data reach.
-/// With a `preconditioner` M (symmetric positive definite on the iteration's subspace)
+/// With `problem.preconditioner` M (symmetric positive definite on the iteration's subspace)
 /// this is preconditioned CG: directions from M g instead of g; the stop test still
 /// receives ||g||_2.
-CgResult conjugate_gradient(const LinearOperator& A, const Vec& b, Vec& x, Vec& g,
-                            const CgSettings& settings, const StopTest& stop,
-                            const Monitor& monitor = {}, const LinearOperator& preconditioner = {});
+CgResult conjugate_gradient(const qp::Problem& problem, const CgSettings& settings, Vec& x, const qp::Budget& budget,
+                            const StopTest& stop, const Monitor& monitor = {});
 
 /// Y = A X, column by column the same operator as a LinearOperator.
 using BlockOperator = std::function<void(const Eigen::MatrixXd& x, Eigen::MatrixXd& y)>;
 
-/// conjugate_gradient for the systems A x_j = b_j, j = 0..k-1, with stop test stop[j]:
+/// conjugate_gradient for the systems A x_j = b_j, j = 0..k-1, with stop test stop[j] and
+/// the budget for each:
 /// every step multiplies the vectors of the unfinished systems as one block (A is called as
 /// often as the longest run needs). Each system runs the same iteration, with the same
 /// counts, as on its own.
 std::vector<CgResult> conjugate_gradient_block(const BlockOperator& A, const std::vector<Vec>& b,
-                                               std::vector<Vec>& x, std::vector<Vec>& g,
-                                               const CgSettings& settings, const std::vector<StopTest>& stop);
+                                               std::vector<Vec>& x, const CgSettings& settings,
+                                               const qp::Budget& budget, const std::vector<StopTest>& stop);
 
 }  // namespace ffeti

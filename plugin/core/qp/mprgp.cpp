@@ -9,7 +9,7 @@ namespace ffeti {
 namespace {
 
 /// Free gradient phi: g on the free set, 0 on the active set.
-void free_gradient(const Vec& x, const Vec& g, const Bounds& bounds, Vec& phi) {
+void free_gradient(const Vec& x, const Vec& g, const qp::ConstraintSet& bounds, Vec& phi) {
   for (Eigen::Index i = 0; i < x.size(); ++i) phi[i] = bounds.free(i, x[i]) ? g[i] : 0.0;
 }
 
@@ -21,14 +21,14 @@ struct ReducedFreeGradient {
   double dot_phi = 0, squared_norm = 0;
 };
 
-ReducedFreeGradient reduced_free_gradient(const Vec& x, const Vec& phi, const Bounds& bounds, double abar) {
+ReducedFreeGradient reduced_free_gradient(const Vec& x, const Vec& phi, const qp::ConstraintSet& bounds, double abar) {
   const Vec& lower = bounds.lower;
   ReducedFreeGradient r;
   for (Eigen::Index i = 0; i < x.size(); ++i) {
     double phit = phi[i];
     if (bounds.free(i, x[i])) {
       if (lower[i] != kUnbounded) phit = std::min((x[i] - lower[i]) / abar, phit);
-      if (bounds.has_upper(i)) phit = std::max((x[i] - (*bounds.upper)[i]) / abar, phit);
+      if (bounds.has_upper(i)) phit = std::max((x[i] - bounds.upper[i]) / abar, phit);
     }
     r.dot_phi += phit * phi[i];
     r.squared_norm += phit * phit;
@@ -37,12 +37,12 @@ ReducedFreeGradient reduced_free_gradient(const Vec& x, const Vec& phi, const Bo
 }
 
 /// Largest step a >= 0 with l <= x - a p <= u on the bounded components.
-double feasible_step(const Vec& x, const Vec& p, const Bounds& bounds) {
+double feasible_step(const Vec& x, const Vec& p, const qp::ConstraintSet& bounds) {
   const Vec& lower = bounds.lower;
   double step = std::numeric_limits<double>::infinity();
   for (Eigen::Index i = 0; i < x.size(); ++i) {
     if (lower[i] != kUnbounded && p[i] > 0) step = std::min(step, (x[i] - lower[i]) / p[i]);
-    if (p[i] < 0 && bounds.has_upper(i)) step = std::min(step, (x[i] - (*bounds.upper)[i]) / p[i]);
+    if (p[i] < 0 && bounds.has_upper(i)) step = std::min(step, (x[i] - bounds.upper[i]) / p[i]);
   }
   return step;
 }
@@ -55,28 +55,24 @@ int off_bound_count(const Vec& x, const Vec& lower) {
   return count;
 }
 
-int project_onto_bounds(Vec& x, const Vec& lower) { return project_onto_bounds(x, Bounds{lower}); }
-
-int project_onto_bounds(Vec& x, const Bounds& bounds) {
+int project_onto_bounds(Vec& x, const qp::ConstraintSet& bounds) {
   const Vec& lower = bounds.lower;
   int projected = 0;
   for (Eigen::Index i = 0; i < x.size(); ++i) {
     if (lower[i] != kUnbounded && x[i] < lower[i]) {
       x[i] = lower[i];
       ++projected;
-    } else if (bounds.has_upper(i) && x[i] > (*bounds.upper)[i]) {
-      x[i] = (*bounds.upper)[i];
+    } else if (bounds.has_upper(i) && x[i] > bounds.upper[i]) {
+      x[i] = bounds.upper[i];
       ++projected;
     }
   }
   return projected;
 }
 
-Vec projected_gradient(const Vec& x, const Vec& g, const Vec& lower) { return projected_gradient(x, g, Bounds{lower}); }
-
 namespace {
 /// Component i of the projected gradient.
-double projected_component(const Vec& x, const Vec& g, const Bounds& bounds, Eigen::Index i) {
+double projected_component(const Vec& x, const Vec& g, const qp::ConstraintSet& bounds, Eigen::Index i) {
   if (bounds.free(i, x[i])) return g[i];
   if (bounds.pinned(i, x[i])) return 0.0;  // at both bounds: no direction is feasible
   if (!above_bound(x[i], bounds.lower[i])) return std::min(g[i], 0.0);  // at the lower bound
@@ -84,13 +80,13 @@ double projected_component(const Vec& x, const Vec& g, const Bounds& bounds, Eig
 }
 }  // namespace
 
-Vec projected_gradient(const Vec& x, const Vec& g, const Bounds& bounds) {
+Vec projected_gradient(const Vec& x, const Vec& g, const qp::ConstraintSet& bounds) {
   Vec gp(x.size());
   for (Eigen::Index i = 0; i < x.size(); ++i) gp[i] = projected_component(x, g, bounds, i);
   return gp;
 }
 
-double projected_gradient_max(const Vec& x, const Vec& g, const Bounds& bounds) {
+double projected_gradient_max(const Vec& x, const Vec& g, const qp::ConstraintSet& bounds) {
   double largest = 0;
   for (Eigen::Index i = 0; i < x.size(); ++i) largest = std::max(largest, std::abs(projected_component(x, g, bounds, i)));
   return largest;
@@ -100,27 +96,32 @@ void MprgpSettings::validate() const {
   if (!(gamma > 0)) throw std::invalid_argument("MPRGP gamma must be > 0");
   if (!(step_factor > 0 && step_factor <= 2))
     throw std::invalid_argument("MPRGP step_factor must lie in (0, 2]");
-  if (max_hessian < 1) throw std::invalid_argument("MPRGP max_hessian must be >= 1");
   if (settle_rounds < 0) throw std::invalid_argument("MPRGP settle_rounds must be >= 0");
 }
 
 
-MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Vec& lower, double a_norm,
-                  Vec& x, Vec& g, bool gradient_is_current, const MprgpSettings& settings,
-                  const StopTest& stop, const Monitor& monitor, const LinearOperator& preconditioner) {
-  return mprgp(A, b, Bounds{lower}, a_norm, x, g, gradient_is_current, settings, stop, monitor, preconditioner);
+MprgpResult mprgp(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, const qp::Budget& budget,
+                  const StopTest& stop, const Monitor& monitor) {
+  Vec g;
+  return mprgp_with_gradient(problem, settings, x, g, false, budget, stop, monitor);
 }
 
-MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Bounds& bounds, double a_norm,
-                  Vec& x, Vec& g, bool gradient_is_current, const MprgpSettings& settings,
-                  const StopTest& stop, const Monitor& monitor, const LinearOperator& preconditioner) {
+MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, Vec& g,
+                                bool gradient_is_current, const qp::Budget& budget, const StopTest& stop,
+                                const Monitor& monitor) {
+  const LinearOperator& A = problem.hessian;
+  const Vec& b = problem.b;
+  const qp::ConstraintSet& bounds = problem.constraints;
+  const double a_norm = problem.hessian_norm;
+  const LinearOperator& preconditioner = problem.preconditioner;
   settings.validate();
   const Vec& lower = bounds.lower;
   MprgpResult result;
   const Eigen::Index n = b.size();
-  if (x.size() != n || lower.size() != n || (bounds.upper && bounds.upper->size() != n))
+  if (x.size() != n || lower.size() != n || (bounds.upper.size() && bounds.upper.size() != n))
     throw std::invalid_argument("MPRGP: x, b and the bounds differ in size");
   if (!(a_norm > 0)) throw std::invalid_argument("MPRGP: the norm estimate of A must be > 0");
+  if (problem.range_projector) throw std::invalid_argument("MPRGP: the problem has an equality part (SMALBE's)");
   const double abar = settings.step_factor / a_norm;
   IterationCounts& counts = result.counts;
 
@@ -166,12 +167,12 @@ MprgpResult mprgp(const LinearOperator& A, const Vec& b, const Bounds& bounds, d
       result.status = SolveStatus::converged;
       return result;
     }
-    if (counts.hessian >= settings.max_hessian) {
+    if (counts.hessian >= budget.max_hessian()) {
       result.status = SolveStatus::max_iterations;
       return result;
     }
     if (iteration == 0 && settings.settle_rounds > 0) {  // a start that passes the test is kept as is
-      settle_start(A, b, bounds, settings.settle_rounds, settings.max_hessian, x, g, counts, preconditioner, monitor);
+      settle_start(A, b, bounds, settings.settle_rounds, budget.max_hessian(), x, g, counts, preconditioner, monitor);
       free_gradient(x, g, bounds, phi);
       p = precondition_in_face();
       continue;

@@ -35,21 +35,6 @@ std::string to_string(SolveStatus status);
 /// Component x of an iterate is off its lower bound l (always so where l = kUnbounded).
 inline bool above_bound(double x, double l) { return l == kUnbounded || x > l; }
 
-/// Box bounds l_i <= x_i <= u_i of a QP: kUnbounded in `lower` where a component has no
-/// lower bound; `upper` null where no component has an upper one (the frictionless dual,
-/// whose contact multipliers are bounded below only), else +infinity where one has none.
-struct Bounds {
-  const Vec& lower;
-  const Vec* upper = nullptr;
-
-  /// x_i strictly inside its bounds: free to move either way.
-  bool free(Eigen::Index i, double x) const { return above_bound(x, lower[i]) && (!upper || x < (*upper)[i]); }
-  bool has_upper(Eigen::Index i) const { return upper && (*upper)[i] < std::numeric_limits<double>::infinity(); }
-  /// x_i at both bounds (l_i = u_i, e.g. a friction row whose bound is 0): it cannot move,
-  /// whatever the sign of its gradient.
-  bool pinned(Eigen::Index i, double x) const { return !above_bound(x, lower[i]) && upper && x >= (*upper)[i]; }
-};
-
 /// Machine-independent cost of one solve. Every application of the Hessian inside the
 /// solve is counted in `hessian`; the norm estimate's multiplications are kept apart.
 struct IterationCounts {
@@ -89,8 +74,10 @@ struct ProgressLine {
 };
 using Monitor = std::function<void(const ProgressLine&)>;
 
-/// Stopping test of an iterative solver, called once per iteration with the iterate x, the
-/// gradient g = Ax - b and the norm of the (projected) gradient; true stops with `converged`.
+/// Stopping test of an iterative solver, called once per iteration with the iterate x, a
+/// gradient and the 2-norm of the projected gradient; true stops with `converged`. The
+/// gradient is g = Ax - b for CG and MPRGP; for SMALBE the projected gradient of the
+/// Lagrangian without penalty, gP(x, nu, 0), the one its global test weighs.
 using StopTest = std::function<bool(const Vec& x, const Vec& g, double gradient_norm)>;
 
 }  // namespace ffeti

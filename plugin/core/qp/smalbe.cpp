@@ -14,20 +14,18 @@ void SmalbeSettings::validate() const {
   if (!(beta > 1)) throw std::invalid_argument("SMALBE beta must be > 1");
   if (max_outer < 1) throw std::invalid_argument("SMALBE max_outer must be >= 1");
   if (stall_rounds < 1) throw std::invalid_argument("SMALBE stall_rounds must be >= 1");
-  if (max_hessian < 1) throw std::invalid_argument("SMALBE max_hessian must be >= 1");
   inner.validate();
 }
 
-SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& settings,
-                    const SmalbeStopTest& stop, const Monitor& monitor) {
+SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, Vec& x, const qp::Budget& budget,
+                    const StopTest& stop, const Monitor& monitor) {
   settings.validate();
-  if (!problem.b || !problem.lower || !problem.hessian || !problem.range_projector)
-    throw std::invalid_argument("SMALBE: incomplete problem");
-  const Vec& b = *problem.b;
-  const Vec& lower = *problem.lower;
-  const Bounds bounds{lower, problem.upper};
+  if (!problem.hessian || !problem.range_projector) throw std::invalid_argument("SMALBE: incomplete problem");
+  const Vec& b = problem.b;
+  const qp::ConstraintSet& bounds = problem.constraints;
+  const Vec& lower = bounds.lower;
   const Eigen::Index n = b.size();
-  if (x.size() != n || lower.size() != n || (problem.upper && problem.upper->size() != n))
+  if (x.size() != n || lower.size() != n || (bounds.upper.size() && bounds.upper.size() != n))
     throw std::invalid_argument("SMALBE: x, b and the bounds differ in size");
   if (!(problem.hessian_norm > 0)) throw std::invalid_argument("SMALBE: ||H|| must be > 0");
 
@@ -38,9 +36,8 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
   // (units of x): scale it by 1/||A|| there.
   double eta = settings.eta_factor * b.norm() /
                (settings.variant == SmalbeVariant::smalbe_m ? 1.0 : std::max(problem.hessian_norm, rho));
-  Vec own_multiplier;
-  Vec& nu = problem.multiplier ? *problem.multiplier : own_multiplier;  // multiplier term C'mu, kept in Im C'
-  if (nu.size() != n) nu = Vec::Zero(n);
+  Vec& nu = result.multiplier;  // multiplier term C'mu, kept in Im C'
+  nu = problem.equality_multiplier.size() == n ? problem.equality_multiplier : Vec::Zero(n);
   Vec shifted_b = b - nu;          // linear term of the inner problem
   Vec Qx(n), Qv(n), g(n);  // Qx: Q at the iterate; Qv: scratch of the operator A
   bool gradient_is_current = false;
@@ -68,6 +65,12 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
       y = Mv - QMv + Qp / rho;  // P M P v + Q v / rho
     };
 
+  // The bound-constrained subproblem min L(x, nu, rho): A, b - nu and the bounds.
+  qp::Problem inner_problem;
+  inner_problem.hessian = A;
+  inner_problem.preconditioner = inner_preconditioner;
+  inner_problem.constraints = bounds;
+
   for (int outer = 0;; ++outer) {
     bool globally_done = false;
     bool first_call = true;
@@ -80,7 +83,7 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
       result.equality_norm = q_norm;
       if (monitor)
         monitor({"smalbe", outer, result.gradient_norm, q_norm, applications, off_bound_count(xi, lower)});
-      if (stop(xi, gp0, Qx)) return globally_done = true;
+      if (stop(xi, gp0, result.gradient_norm)) return globally_done = true;
       // At least one inner step per outer iteration: a multiplier update that the inner
       // solver does not answer only grows nu, and can stall the outer loop for many rounds.
       if (first_call) return first_call = false;
@@ -88,16 +91,17 @@ SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& 
                                                                         : M * q_norm;
       return gp_norm <= bound;
     };
-    if (result.counts.hessian >= settings.max_hessian) {
+    if (result.counts.hessian >= budget.max_hessian()) {
       result.status = SolveStatus::max_iterations;
       return result;
     }
     MprgpSettings inner = settings.inner;
-    inner.max_hessian = settings.max_hessian - result.counts.hessian;
     if (outer > 0) inner.settle_rounds = 0;  // a start is settled once, not every multiplier update
+    inner_problem.b = shifted_b;
+    inner_problem.hessian_norm = std::max(problem.hessian_norm, rho);
     const MprgpResult inner_result =
-        mprgp(A, shifted_b, bounds, std::max(problem.hessian_norm, rho), x, g,
-              gradient_is_current, inner, inner_stop, {}, inner_preconditioner);
+        mprgp_with_gradient(inner_problem, inner, x, g, gradient_is_current,
+                            qp::Budget(budget.remaining(result.counts.hessian)), inner_stop);
     result.counts += inner_result.counts;
     result.rho = rho;
     if (globally_done) {

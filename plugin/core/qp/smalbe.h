@@ -24,8 +24,7 @@ struct SmalbeSettings {
   double beta = 2.0;          ///< smalbe_m: M <- M / beta; seed_alg31: rho <- beta rho
   int max_outer = 200;
   int stall_rounds = 10;      ///< smalbe_m: rho <- beta rho after this many rounds without ||Qx|| < 0.9 its best
-  int max_hessian = 20000;    ///< over all inner MPRGP calls
-  MprgpSettings inner{};      ///< its max_hessian is overridden by what remains of the above
+  MprgpSettings inner{};      ///< of every inner MPRGP call (each gets what remains of the budget)
 
   void validate() const;
 };
@@ -33,32 +32,19 @@ struct SmalbeSettings {
 struct SmalbeResult : QpResult {
   double equality_norm = 0;            ///< ||Q x||_2 at exit
   double rho = 0;                      ///< final penalty
+  Vec multiplier;                      ///< final multiplier term nu = C'mu (the next solve's
+                                       ///< Problem::equality_multiplier)
 };
 
-struct SmalbeProblem {
-  LinearOperator hessian;                  ///< H, symmetric positive semidefinite
-  std::function<void(const Vec&, Vec&)> range_projector;  ///< y = Q x
-  const Vec* b = nullptr;
-  const Vec* lower = nullptr;              ///< kUnbounded where a component is free
-  double hessian_norm = 0;                 ///< upper estimate of ||H||_2
-  /// Optional: an SPD approximation of H^{-1} on Ker C. The inner MPRGP then
-  /// preconditions in face with P M P + Q / rho (P = I - Q), the inverse's approximation
-  /// of H + rho Q.
-  LinearOperator preconditioner;
-  const Vec* upper = nullptr;              ///< upper bounds (+infinity where none); null: none
-  /// In: the multiplier term nu = C'mu to start from (empty: 0); out: the final one. A
-  /// sequence of solves of one problem with other bounds (friction's fixed point) starts
-  /// each from the last one's x and nu: with x alone the gradient of the Lagrangian at the
-  /// start is off by the whole of nu, and every solve costs as much as a cold one. Null: 0.
-  Vec* multiplier = nullptr;
-};
-
-/// Global stopping test: x, gP(x, nu, 0) (projected gradient of the Lagrangian without
-/// penalty) and Q x. Returning true ends the solve with `converged`.
-using SmalbeStopTest = std::function<bool(const Vec& x, const Vec& projected_gradient, const Vec& Qx)>;
-
-/// Runs SMALBE from the start x (projected onto the bounds; updated in place).
-SmalbeResult smalbe(const SmalbeProblem& problem, Vec& x, const SmalbeSettings& settings,
-                    const SmalbeStopTest& stop, const Monitor& monitor = {});
+/// Runs SMALBE on the problem (its bounds and its equality part `range_projector`, which it
+/// needs) from the start x (projected onto the bounds; the last iterate on return) and the
+/// multiplier term `problem.equality_multiplier` (empty: 0). `problem.hessian_norm` is an
+/// upper estimate of ||H||_2. With `problem.preconditioner` M, an SPD approximation of H^{-1}
+/// on Ker C, the inner MPRGP preconditions in face with P M P + Q / rho (P = I - Q), the
+/// inverse's approximation of H + rho Q. The budget holds over all inner MPRGP calls.
+/// `stop` receives x, gP(x, nu, 0) (the projected gradient of the Lagrangian without
+/// penalty) and its 2-norm; true ends the solve with `converged`.
+SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, Vec& x, const qp::Budget& budget,
+                    const StopTest& stop, const Monitor& monitor = {});
 
 }  // namespace ffeti

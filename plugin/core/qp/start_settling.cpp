@@ -61,7 +61,7 @@ void solve_on_face(const LinearOperator& A, const std::vector<char>& face, int m
 
 }  // namespace
 
-void settle_start(const LinearOperator& A, const Vec& b, const Bounds& bounds, int rounds, int max_hessian,
+void settle_start(const LinearOperator& A, const Vec& b, const qp::ConstraintSet& bounds, int rounds, int max_hessian,
                   Vec& x, Vec& g, IterationCounts& counts, const LinearOperator& preconditioner,
                   const Monitor& monitor) {
   const Eigen::Index n = x.size();

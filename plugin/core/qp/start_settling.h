@@ -2,7 +2,7 @@
 // that only release bounds.
 #pragma once
 
-#include "qp/qp_types.h"
+#include "qp/problem.h"
 
 namespace ffeti {
 
@@ -22,7 +22,7 @@ namespace ffeti {
 /// proportioning takes them back, swinging several times (docs/results/large-contact-reading.md).
 /// Solving the start's face first makes the forces consistent with the set, so what
 /// projection releases is only where the start's set was wrong.
-void settle_start(const LinearOperator& A, const Vec& b, const Bounds& bounds, int rounds, int max_hessian,
+void settle_start(const LinearOperator& A, const Vec& b, const qp::ConstraintSet& bounds, int rounds, int max_hessian,
                   Vec& x, Vec& g, IterationCounts& counts, const LinearOperator& preconditioner = {},
                   const Monitor& monitor = {});
 

@@ -273,7 +273,7 @@ AdjointResult SensitivityProblem::adjoint(const std::vector<Vec>& dJdu, const Du
   });
   if (!classification_.weak.empty()) {
     result.status = SolveStatus::weakly_active;
-    result.path = path_name(system_->path());
+    result.path = system_->path();
     counters_.adjoint = result;
     return result;
   }

@@ -46,7 +46,7 @@ double default_classification_threshold(double state_tolerance);
 /// One solve of the sensitivity QP (a design direction or an adjoint).
 struct DerivativeSolve {
   SolveStatus status = SolveStatus::invalid_input;  ///< adjoint: weakly_active when not solved
-  std::string path;               ///< the sensitivity QP's path_name
+  DualPath path = DualPath::cholesky;  ///< the sensitivity QP's path
   IterationCounts counts;
   KktResiduals kkt;               ///< of the sensitivity QP, recomputed in primal form
   double seconds = 0;             ///< the whole call: derivatives, dual data, solve, recovery, KKT
@@ -84,7 +84,7 @@ class SensitivityProblem {
 
   const ContactClassification& classification() const { return classification_; }
   const SensitivityCounters& counters() const { return counters_; }
-  std::string path() const { return path_name(system_->path()); }
+  DualPath path() const { return system_->path(); }
   int dual_dimension() const { return system_->rows(); }
 
   /// z = u'(alpha; beta) for one direction. Never throws for non-convergence. Collective.

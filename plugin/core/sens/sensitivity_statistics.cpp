@@ -37,7 +37,8 @@ std::string format_report(const SensitivityProblem& sensitivity) {
   // The path the last solve took (a system whose data call for SMALBE-M may be solved by
   // MPRGP or CG, e.g. without weakly active rows): the system's own before any solve.
   const SensitivityCounters& n = sensitivity.counters();
-  out << "sens_path=" << (n.directions > 0 ? n.last.path : n.adjoint_solves > 0 ? n.adjoint.path : sensitivity.path());
+  out << "sens_path="
+      << path_name(n.directions > 0 ? n.last.path : n.adjoint_solves > 0 ? n.adjoint.path : sensitivity.path());
   if (sensitivity.counters().directions > 0) out << " sens_status_name=" << to_string(sensitivity.counters().last.status);
   for (const auto& [key, value] : statistics(sensitivity)) out << ' ' << key << '=' << value;
   return out.str();
