@@ -118,13 +118,20 @@ void SensitivityProblem::check(const DesignDerivative& d) const {
     if (problem_.space_dimension() != 3)
       for (const auto& v : d.velocity_z)
         if (!v.empty()) throw InputError("velocityZ: the problem is plane (fetiSetup without Z=); give velocityX, velocityY");
-    // In 3D a velocity without its z part would be read as moving in the plane only, silently.
+    // In 3D a velocity without its z part would be read as moving in the plane only, and
+    // velocityZ alone as moving along z only, silently: all three or none.
     const auto given = [](const std::vector<std::vector<double>>& field) {
       return std::any_of(field.begin(), field.end(), [](const auto& v) { return !v.empty(); });
     };
-    if (problem_.space_dimension() == 3 && (given(d.velocity_x) || given(d.velocity_y)) && !given(d.velocity_z))
-      throw InputError("velocityZ: missing: in three dimensions give velocityX, velocityY and velocityZ (zeros for a "
-                       "component that does not move)");
+    if (problem_.space_dimension() == 3) {
+      const std::pair<const std::vector<std::vector<double>>*, const char*> components[] = {
+          {&d.velocity_x, "velocityX"}, {&d.velocity_y, "velocityY"}, {&d.velocity_z, "velocityZ"}};
+      const bool any = given(d.velocity_x) || given(d.velocity_y) || given(d.velocity_z);
+      for (const auto& [field, name] : components)
+        if (any && !given(*field))
+          throw InputError(std::string(name) + ": missing: in three dimensions give velocityX, velocityY and velocityZ "
+                           "together (zeros for a component that does not move)");
+    }
     for (size_t k = 0; k < inputs.size(); ++k) {
       const Eigen::Index n = inputs[k].K.rows();
       const int s = ids[k];
