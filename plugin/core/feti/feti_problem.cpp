@@ -42,6 +42,13 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
         throw InputError("K: local subdomains need ascending global indices in 0.." + std::to_string(global_count_ - 1));
     validate_input(inputs_, local_contact, global_ids_);
   });
+  // validate_input compares a rank's own subdomains; a plane and a solid rank must not mix.
+  const auto has = [&](bool solid) {
+    return std::any_of(inputs_.begin(), inputs_.end(), [&](const SubdomainInput& s) { return s.z.empty() != solid; });
+  };
+  if (comm.max(has(false) ? 1.0 : 0.0) > 0 && comm.max(has(true) ? 1.0 : 0.0) > 0)
+    throw InputError("Z: given for the subdomains of some ranks and missing for those of others: every subdomain of a "
+                     "problem is plane or every one has a third coordinate");
 
   // Who holds what: boxes, bodies and owners of all subdomains on every rank.
   std::vector<double> mine;
