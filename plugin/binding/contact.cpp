@@ -139,6 +139,11 @@ class FetiContactStart : public E_F0mps {
       const Handle& h = handle(GetAny<long>((*id)(stack)));
       const Handle& from = handle(GetAny<long>((*from_id)(stack)), "Pfrom");
       if (!from.result) throw InputError("Pfrom: no solution yet: call fetiSolve on it first");
+      // The forces are paired by position: a plane and a solid problem have no common positions.
+      if (from.problem->space_dimension() != h.problem->space_dimension())
+        throw InputError("Pfrom: is a " + std::string(from.problem->space_dimension() == 3 ? "solid" : "plane") +
+                         " problem and P a " + (h.problem->space_dimension() == 3 ? "solid" : "plane") +
+                         " one: a start takes the forces of the same kind of problem");
       const auto forces = contact_multipliers(*from.problem, &*from.result);
       if (forces.empty()) throw InputError("Pfrom: has no contact rows, so no contact forces to start from");
       copy_to(start_from_contact_forces(*h.problem, forces), *GetAny<KN<double>*>((*start_out)(stack)));
