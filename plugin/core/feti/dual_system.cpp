@@ -80,7 +80,10 @@ DualData DualSystem::data(std::vector<Vec> loads, const Vec& c) const {
   const int m = constraints_.rows();
   Vec d;
   F_->apply_B_pseudo_inverse(data.loads, d);
-  data.data_norm = d.norm();
+  // b is computed from both B K^+ f and c: its round-off is relative to the larger. A
+  // design that only moves the gaps under a floating body has f = 0 and c in Im G', so b
+  // is round-off of c alone (a uniform dGap: the body moves rigidly, lambda' = 0).
+  data.data_norm = std::max(d.norm(), c.norm());
   d -= c;  // d = B K^+ f - c
   if (coarse_) {
     data.e = coarse_->kernel_load(data.loads);              // e = R'f

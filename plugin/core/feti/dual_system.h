@@ -105,7 +105,7 @@ struct PhaseTimes {  ///< wall-clock seconds; in a problem's result over several
 struct DualData {
   std::vector<Vec> loads;
   Vec c, e, lambda_tilde, b;
-  double data_norm = 0;  ///< ||B K^+ f||: the size of what b was computed from
+  double data_norm = 0;  ///< max(||B K^+ f||, ||c||): the size of what b was computed from
   Vec slip_bound;        ///< per friction row: g >= 0 of |lambda_t| <= g (empty without friction)
 };
 
