@@ -172,5 +172,26 @@ TEST(DiscQp, SmalbeWithAnEqualityMatchesTheAcceleratedProjectedGradient) {
   EXPECT_LT(test::kkt_violation(qp, x), 1e-10);
 }
 
+TEST(DiscQp, SmalbeWithAnEqualityThroughTheDiscsMeetsTheKktConditions) {
+  // C couples a free component, a half-line and two discs' components: no exact projection
+  // for a reference, so the KKT conditions (C'mu by least squares) are the check.
+  test::DiscQp qp = test::random_disc_qp(kCondition, 8);
+  qp.C = Eigen::MatrixXd::Zero(1, 15);
+  qp.C(0, 0) = 1, qp.C(0, 3) = -1, qp.C(0, 9) = 0.5, qp.C(0, 12) = 1;
+  const Eigen::MatrixXd Q = qp.C.transpose() * (qp.C * qp.C.transpose()).inverse() * qp.C;
+  qp::Problem problem = problem_of(qp);
+  problem.range_projector = test::dense_operator(Q);
+  Vec x = Vec::Zero(15);
+  const double tol = 1e-12 * qp.b.norm();
+  const SmalbeResult r = smalbe(problem, SmalbeSettings{}, x, test::kLargeBudget, [&](const Vec& xi, const Vec&, double gP) {
+    return gP <= tol && (Q * xi).norm() <= tol / kCondition;
+  });
+  ASSERT_EQ(r.status, SolveStatus::converged);
+  EXPECT_LT(test::kkt_violation(qp, x), 1e-10);
+  Vec along_the_kernel = Vec::Zero(15);  // C'd = 0, every bound and circle kept: only stationarity can fail
+  along_the_kernel[1] = 1e-4;
+  EXPECT_GT(test::kkt_violation(qp, x + along_the_kernel), 1e-7);  // the check is not vacuous
+}
+
 }  // namespace
 }  // namespace ffeti
