@@ -35,6 +35,17 @@ MprgpResult solve(const test::DiscQp& qp, Vec& x, const MprgpSettings& settings 
                [&](const Vec&, const Vec&, double norm) { return norm <= tol; });
 }
 
+/// SMALBE with qp.C from x to ||gP(x, nu, 0)|| <= 1e-12 ||b|| and ||Q x|| <= 1e-12 ||b|| / ||H||.
+SmalbeResult solve_with_equality(const test::DiscQp& qp, Vec& x) {
+  const Eigen::MatrixXd Q = qp.C.transpose() * (qp.C * qp.C.transpose()).inverse() * qp.C;
+  qp::Problem problem = problem_of(qp);
+  problem.range_projector = test::dense_operator(Q);
+  const double tol = 1e-12 * qp.b.norm();
+  return smalbe(problem, SmalbeSettings{}, x, test::kLargeBudget, [&](const Vec& xi, const Vec&, double gP) {
+    return gP <= tol && (Q * xi).norm() <= tol / kCondition;
+  });
+}
+
 TEST(DiscConstraints, BlocksKeepTheirCentresAndRadii) {
   qp::ConstraintSet set;
   set.add_free(1);
@@ -159,15 +170,8 @@ TEST(DiscQp, SmalbeWithAnEqualityMatchesTheAcceleratedProjectedGradient) {
   qp.C(0, 0) = 1, qp.C(0, 1) = 2;  // on the free components: the reference's projection stays exact
   const Vec reference = test::accelerated_projected_gradient(qp);
   ASSERT_LT(test::kkt_violation(qp, reference), 1e-9);
-  const Eigen::MatrixXd Q = qp.C.transpose() * (qp.C * qp.C.transpose()).inverse() * qp.C;
-  qp::Problem problem = problem_of(qp);
-  problem.range_projector = test::dense_operator(Q);
   Vec x = Vec::Zero(15);
-  const double tol = 1e-12 * qp.b.norm();
-  const SmalbeResult r = smalbe(problem, SmalbeSettings{}, x, test::kLargeBudget, [&](const Vec& xi, const Vec&, double gP) {
-    return gP <= tol && (Q * xi).norm() <= tol / kCondition;
-  });
-  ASSERT_EQ(r.status, SolveStatus::converged);
+  ASSERT_EQ(solve_with_equality(qp, x).status, SolveStatus::converged);
   EXPECT_LT((x - reference).norm(), 1e-8 * reference.norm());
   EXPECT_LT(test::kkt_violation(qp, x), 1e-10);
 }
@@ -178,15 +182,8 @@ TEST(DiscQp, SmalbeWithAnEqualityThroughTheDiscsMeetsTheKktConditions) {
   test::DiscQp qp = test::random_disc_qp(kCondition, 8);
   qp.C = Eigen::MatrixXd::Zero(1, 15);
   qp.C(0, 0) = 1, qp.C(0, 3) = -1, qp.C(0, 9) = 0.5, qp.C(0, 12) = 1;
-  const Eigen::MatrixXd Q = qp.C.transpose() * (qp.C * qp.C.transpose()).inverse() * qp.C;
-  qp::Problem problem = problem_of(qp);
-  problem.range_projector = test::dense_operator(Q);
   Vec x = Vec::Zero(15);
-  const double tol = 1e-12 * qp.b.norm();
-  const SmalbeResult r = smalbe(problem, SmalbeSettings{}, x, test::kLargeBudget, [&](const Vec& xi, const Vec&, double gP) {
-    return gP <= tol && (Q * xi).norm() <= tol / kCondition;
-  });
-  ASSERT_EQ(r.status, SolveStatus::converged);
+  ASSERT_EQ(solve_with_equality(qp, x).status, SolveStatus::converged);
   EXPECT_LT(test::kkt_violation(qp, x), 1e-10);
   Vec along_the_kernel = Vec::Zero(15);  // C'd = 0, every bound and circle kept: only stationarity can fail
   along_the_kernel[1] = 1e-4;
