@@ -1,5 +1,6 @@
 #include "qp/mprgp.h"
 
+#include "qp/disc.h"
 #include "qp/start_settling.h"
 
 #include <cmath>
@@ -11,6 +12,7 @@ namespace {
 /// Free gradient phi: g on the free set, 0 on the active set.
 void free_gradient(const Vec& x, const Vec& g, const qp::ConstraintSet& bounds, Vec& phi) {
   for (Eigen::Index i = 0; i < x.size(); ++i) phi[i] = bounds.free(i, x[i]) ? g[i] : 0.0;
+  if (bounds.has_discs()) qp::zero_held_disc_pairs(x, bounds, phi);
 }
 
 /// phi'phit and ||phit||^2 of the reduced free gradient on the free set: phit_i =
@@ -23,13 +25,25 @@ struct ReducedFreeGradient {
 
 ReducedFreeGradient reduced_free_gradient(const Vec& x, const Vec& phi, const qp::ConstraintSet& bounds, double abar) {
   const Vec& lower = bounds.lower;
-  ReducedFreeGradient r;
-  for (Eigen::Index i = 0; i < x.size(); ++i) {
+  const auto component = [&](Eigen::Index i) {
     double phit = phi[i];
     if (bounds.free(i, x[i])) {
       if (lower[i] != kUnbounded) phit = std::min((x[i] - lower[i]) / abar, phit);
       if (bounds.has_upper(i)) phit = std::max((x[i] - bounds.upper[i]) / abar, phit);
     }
+    return phit;
+  };
+  ReducedFreeGradient r;
+  if (bounds.has_discs()) {  // the disc pairs' phit couples their two components
+    Vec phit(x.size());
+    for (Eigen::Index i = 0; i < x.size(); ++i) phit[i] = component(i);
+    qp::overwrite_disc_reduced_free_gradient(x, phi, bounds, abar, phit);
+    r.dot_phi = phit.dot(phi);
+    r.squared_norm = phit.squaredNorm();
+    return r;
+  }
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
+    const double phit = component(i);
     r.dot_phi += phit * phi[i];
     r.squared_norm += phit * phit;
   }
@@ -44,6 +58,7 @@ double feasible_step(const Vec& x, const Vec& p, const qp::ConstraintSet& bounds
     if (lower[i] != kUnbounded && p[i] > 0) step = std::min(step, (x[i] - lower[i]) / p[i]);
     if (p[i] < 0 && bounds.has_upper(i)) step = std::min(step, (x[i] - bounds.upper[i]) / p[i]);
   }
+  if (bounds.has_discs()) step = std::min(step, qp::disc_feasible_step(x, p, bounds));
   return step;
 }
 
@@ -67,6 +82,7 @@ int project_onto_bounds(Vec& x, const qp::ConstraintSet& bounds) {
       ++projected;
     }
   }
+  if (bounds.has_discs()) projected += qp::project_onto_discs(x, bounds);
   return projected;
 }
 
@@ -83,10 +99,12 @@ double projected_component(const Vec& x, const Vec& g, const qp::ConstraintSet& 
 Vec projected_gradient(const Vec& x, const Vec& g, const qp::ConstraintSet& bounds) {
   Vec gp(x.size());
   for (Eigen::Index i = 0; i < x.size(); ++i) gp[i] = projected_component(x, g, bounds, i);
+  if (bounds.has_discs()) qp::overwrite_disc_projected_gradient(x, g, bounds, gp);
   return gp;
 }
 
 double projected_gradient_max(const Vec& x, const Vec& g, const qp::ConstraintSet& bounds) {
+  if (bounds.has_discs()) return projected_gradient(x, g, bounds).lpNorm<Eigen::Infinity>();
   double largest = 0;
   for (Eigen::Index i = 0; i < x.size(); ++i) largest = std::max(largest, std::abs(projected_component(x, g, bounds, i)));
   return largest;
@@ -134,6 +152,7 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
     ++counts.preconditioner;
     for (Eigen::Index i = 0; i < n; ++i)
       if (!bounds.free(i, x[i])) z[i] = 0.0;
+    if (bounds.has_discs()) qp::zero_held_disc_pairs(x, bounds, z);
     return z;
   };
 
@@ -154,10 +173,16 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
   for (int iteration = 0;; ++iteration) {
     // Split the gradient: chopped gradient beta (at a bound, the part pointing into the box), and the reduced free gradient's products.
     double beta_sq = 0, gp_sq = 0;
-    for (Eigen::Index i = 0; i < n; ++i) {
-      beta[i] = bounds.free(i, x[i]) ? 0.0 : projected_component(x, g, bounds, i);
-      beta_sq += beta[i] * beta[i];
-      gp_sq += phi[i] * phi[i] + beta[i] * beta[i];
+    if (bounds.has_discs()) {  // gP = phi + beta, their supports apart; on a circle gP couples the pair
+      beta = projected_gradient(x, g, bounds) - phi;
+      beta_sq = beta.squaredNorm();
+      gp_sq = phi.squaredNorm() + beta_sq;
+    } else {
+      for (Eigen::Index i = 0; i < n; ++i) {
+        beta[i] = bounds.free(i, x[i]) ? 0.0 : projected_component(x, g, bounds, i);
+        beta_sq += beta[i] * beta[i];
+        gp_sq += phi[i] * phi[i] + beta[i] * beta[i];
+      }
     }
     const ReducedFreeGradient reduced = reduced_free_gradient(x, phi, bounds, abar);
     const double phit_phi = reduced.dot_phi, phit_sq = reduced.squared_norm;
@@ -251,6 +276,7 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
           // step (the large contact zone: 1.7 times the multiplications, docs/algorithms.md).
           for (Eigen::Index i = 0; i < n; ++i)
             if (!bounds.free(i, x[i])) p[i] = 0.0;
+          if (bounds.has_discs()) qp::zero_held_disc_pairs(x, bounds, p);
           trial = direction - (direction.dot(Ap) / pAp) * p;  // Ap = A p of the last direction
           continued = trial.dot(g) > 0;                       // a descent direction, or restart
         }
@@ -259,19 +285,30 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
       }
     } else {
       // Proportioning: release components of the active set along the chopped gradient.
-      multiply(beta, Ap);
-      const double dAd = beta.dot(Ap);
-      if (!(dAd > 0)) {
-        result.status = SolveStatus::not_positive_definite;
-        return result;
+      if (bounds.has_discs()) {
+        // With discs (MPGP): on a circle the chopped gradient's tangential part leaves the
+        // disc at once, so no step along it is feasible; the projected gradient step with the
+        // fixed step abar <= 2/||A|| releases the held pairs whose gradient points inward and
+        // decreases f by at least (1/abar - ||A||/2) ||x_new - x||^2.
+        x -= abar * g;  // x = P(x - abar g)
+        project_onto_bounds(x, bounds);
+        multiply(x, Ap);
+        g = Ap - b;  // g = A x - b
+      } else {
+        multiply(beta, Ap);
+        const double dAd = beta.dot(Ap);
+        if (!(dAd > 0)) {
+          result.status = SolveStatus::not_positive_definite;
+          return result;
+        }
+        // Exact line search along beta, held inside the box: with upper bounds a component
+        // released from one bound could otherwise pass the other (lower bounds only: no cap).
+        const double a_feasible = feasible_step(x, beta, bounds);
+        const double a = std::min(g.dot(beta) / dAd, a_feasible);
+        x -= a * beta;
+        if (a == a_feasible) project_onto_bounds(x, bounds);  // the bound reached exactly, not round-off past it
+        g -= a * Ap;
       }
-      // Exact line search along beta, held inside the box: with upper bounds a component
-      // released from one bound could otherwise pass the other (lower bounds only: no cap).
-      const double a_feasible = feasible_step(x, beta, bounds);
-      const double a = std::min(g.dot(beta) / dAd, a_feasible);
-      x -= a * beta;
-      if (a == a_feasible) project_onto_bounds(x, bounds);  // the bound reached exactly, not round-off past it
-      g -= a * Ap;
       free_gradient(x, g, bounds, phi);
       p = precondition_in_face();
       continued = false;

@@ -1,6 +1,9 @@
 // MPRGP: modified proportioning with reduced gradient projections (Dostal 1997), for
 //   min 1/2 x'Ax - b'x  subject to  l_i <= x_i <= u_i  (l_i = kUnbounded, u_i = +infinity:
-//   no bound; the frictionless dual has lower bounds only, friction's tangential rows both).
+//   no bound; the frictionless dual has lower bounds only, friction's tangential rows both),
+// and with disc blocks (isotropic friction in 3D) Dostal's MPGP, its generalisation to
+// separable convex sets: qp/disc.h has the disc pairs' projection, free set, chopped and
+// reduced gradients and feasible step; a problem without discs never runs that code.
 #pragma once
 
 #include "qp/problem.h"
@@ -32,19 +35,21 @@ using MprgpResult = QpResult;
 
 /// Projected gradient gP = phi + beta of ALGORITHMS.md section 4 (box bounds as in
 /// section 9): gP_i = g_i where x_i is free, min(g_i, 0) where x_i = l_i, max(g_i, 0) where
-/// x_i = u_i, 0 where both.
+/// x_i = u_i, 0 where both; on a disc pair, g inside, g - min(n'g, 0) n on the circle (n the
+/// outward unit normal), 0 at radius 0.
 Vec projected_gradient(const Vec& x, const Vec& g, const qp::ConstraintSet& bounds);
-/// ||gP||_inf without forming gP (stopping tests call it every iteration).
+/// ||gP||_inf without forming gP (stopping tests call it every iteration; with discs it does).
 double projected_gradient_max(const Vec& x, const Vec& g, const qp::ConstraintSet& bounds);
 
-/// Sets the components of x outside their bounds onto them; returns how many there were.
+/// Sets the components of x outside their bounds onto them and the disc pairs outside their
+/// discs onto the circle; returns how many components (pairs) there were.
 int project_onto_bounds(Vec& x, const qp::ConstraintSet& bounds);
 
 /// Bounded components of x above their bound: for the FETI dual, the contact rows with a
 /// positive multiplier (the contact set).
 int off_bound_count(const Vec& x, const Vec& lower);
 
-/// Minimizes the problem (its free, half-line and box blocks; no equality part) from the
+/// Minimizes the problem (its free, half-line, box and disc blocks; no equality part) from the
 /// start x (projected onto the bounds first; then, unless it passes the stop test, settled
 /// by `settings.settle_rounds` face solves); x is the last iterate on return. Needs
 /// `problem.hessian_norm`, an upper estimate of ||A||_2. `stop` receives x, g = Ax - b and
@@ -54,7 +59,9 @@ int off_bound_count(const Vec& x, const Vec& lower);
 /// problem); the expansion and proportioning steps, and so the convergence guarantees, are
 /// unchanged. With box blocks this is Dostal's MPRGP for bounds on both sides: the free set
 /// excludes both bounds, the chopped gradient points into the box, the reduced free
-/// gradient and the feasible step respect both.
+/// gradient and the feasible step respect both. With disc blocks this is MPGP: the same
+/// steps with the disc's geometry (qp/disc.h), except proportioning, which takes the
+/// projected gradient step P(x - abar g) (a tangential move leaves a circle at once).
 MprgpResult mprgp(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, const qp::Budget& budget,
                   const StopTest& stop, const Monitor& monitor = {});
 

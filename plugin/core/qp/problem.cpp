@@ -8,6 +8,8 @@ void ConstraintSet::append(BlockKind kind, const Vec& lower_part, const Vec& upp
   const Eigen::Index first = size(), n = lower_part.size();
   if (n == 0) return;
   blocks_.push_back({first, n, kind});
+  if (has_discs() && kind != BlockKind::disc)  // no disc here: centre 0, radius +infinity
+    append_disc_data(first, Vec::Zero(n), Vec::Constant(n, std::numeric_limits<double>::infinity()));
   lower.conservativeResize(first + n);
   lower.tail(n) = lower_part;
   if (kind == BlockKind::box && upper.size() == 0 && first > 0)
@@ -28,6 +30,27 @@ void ConstraintSet::add_half_line(const Vec& lower_part) {
 void ConstraintSet::add_box(const Vec& lower_part, const Vec& upper_part) {
   if (upper_part.size() != lower_part.size()) throw std::invalid_argument("box block: lower and upper differ in size");
   append(BlockKind::box, lower_part, upper_part);
+}
+
+void ConstraintSet::add_disc(const Vec& centre, const Vec& radius) {
+  if (centre.size() != 2 * radius.size()) throw std::invalid_argument("disc block: centre needs two entries per radius");
+  if (!((radius.array() >= 0).all() && radius.allFinite() && centre.allFinite()))
+    throw std::invalid_argument("disc block: radii must be finite and >= 0, centres finite");
+  const Eigen::Index first = size(), n = centre.size();
+  if (n == 0) return;
+  if (!has_discs())  // the blocks before have none
+    append_disc_data(0, Vec::Zero(first), Vec::Constant(first, std::numeric_limits<double>::infinity()));
+  Vec pair_radius(n);  // (g_0, g_0, g_1, g_1, ...)
+  for (Eigen::Index j = 0; j < radius.size(); ++j) pair_radius[2 * j] = pair_radius[2 * j + 1] = radius[j];
+  append_disc_data(first, centre, pair_radius);
+  append(BlockKind::disc, Vec::Constant(n, kUnbounded), Vec::Constant(n, std::numeric_limits<double>::infinity()));
+}
+
+void ConstraintSet::append_disc_data(Eigen::Index first, const Vec& centre_part, const Vec& radius_part) {
+  disc_centre.conservativeResize(first + centre_part.size());
+  disc_centre.tail(centre_part.size()) = centre_part;
+  disc_radius.conservativeResize(first + radius_part.size());
+  disc_radius.tail(radius_part.size()) = radius_part;
 }
 
 ConstraintSet ConstraintSet::from_bounds(const Vec& lower, const Vec& upper) {
@@ -53,6 +76,9 @@ ConstraintSet ConstraintSet::shifted(const Vec& offset) const {
   ConstraintSet set = *this;
   set.lower = lower - offset;  // kUnbounded stays
   if (upper.size()) set.upper = upper - offset;
+  for (const Block& block : blocks_)
+    if (block.kind == BlockKind::disc)
+      set.disc_centre.segment(block.first, block.size) -= offset.segment(block.first, block.size);
   return set;
 }
 

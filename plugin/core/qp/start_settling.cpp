@@ -1,5 +1,6 @@
 #include "qp/start_settling.h"
 
+#include "qp/disc.h"
 #include "qp/mprgp.h"
 
 #include <vector>
@@ -69,6 +70,7 @@ void settle_start(const LinearOperator& A, const Vec& b, const qp::ConstraintSet
   Vec y, gy, Ay;
   for (int round = 0; round < rounds && counts.hessian + 1 < max_hessian; ++round) {
     for (Eigen::Index i = 0; i < n; ++i) face[i] = bounds.free(i, x[i]);
+    for (const Eigen::Index i : qp::held_disc_pairs(x, bounds)) face[i] = face[i + 1] = false;
     y = x;
     gy = g;
     solve_on_face(A, face, max_hessian - 1, y, gy, counts, preconditioner);
