@@ -17,8 +17,9 @@ namespace {
 /// Fills xc, yc with the slave positions of the contact rows and lc with their multipliers
 /// from the last solve (0 before any: the positions serve to build a start); returns the
 /// number of contact rows. With friction, tangential= receives each row's friction force
-/// (0 without a friction row) and state= 0 open, 1 stick, 2 slip; zc= the slave nodes' third
-/// coordinate (three dimensions).
+/// (0 without a friction row; in three dimensions its component along t1, tangential2= along
+/// t2 of the row's tangent pair) and state= 0 open, 1 stick, 2 slip; zc= the slave nodes'
+/// third coordinate (three dimensions).
 class FetiContact : public WithNamedArguments {
  public:
   typedef long Result;
@@ -52,6 +53,10 @@ class FetiContact : public WithNamedArguments {
         tangential->resize(count);
         for (long k = 0; k < count; ++k) (*tangential)[k] = rows[static_cast<size_t>(k)].tangential;
       }
+      if (auto* second = optional_pointer<KN<double>>(nargs[3], stack)) {
+        second->resize(count);
+        for (long k = 0; k < count; ++k) (*second)[k] = rows[static_cast<size_t>(k)].second_tangential;
+      }
       if (auto* z = optional_pointer<KN<double>>(nargs[2], stack)) {
         z->resize(count);
         for (long k = 0; k < count; ++k) (*z)[k] = rows[static_cast<size_t>(k)].z;
@@ -66,7 +71,8 @@ class FetiContact : public WithNamedArguments {
 };
 
 NamedParameters FetiContact::name_param = {
-    {"tangential", &typeid(KN<double>*)}, {"state", &typeid(KN<long>*)}, {"zc", &typeid(KN<double>*)}};
+    {"tangential", &typeid(KN<double>*)}, {"state", &typeid(KN<long>*)}, {"zc", &typeid(KN<double>*)},
+    {"tangential2", &typeid(KN<double>*)}};
 
 // ---- int rows = fetiContactPressure(P, Share, Pr, rows=pc, shares=wc) ----------------------
 /// The contact pressure of the last solve per dof into Pr (this rank's subdomains, others

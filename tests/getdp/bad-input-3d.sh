@@ -92,8 +92,8 @@ expect "a zero obstacle normal" "contact\[0\].obstacle.normal: must not be zero"
   "p['contact'] = [{'slave': 4, 'obstacle': {'point': [0, 0, 0], 'normal': [0, 0, 0]}}]"
 expect "an obstacle curve in 3D" "contact\[0\].obstacle.curve: a plane problem's obstacle line" \
   "p['contact'] = [{'slave': 4, 'obstacle': {'curve': 11}}]"
-expect "friction in 3D" "contact\[0\].friction: node-to-face contact does not support friction yet" \
-  "p['contact'][0]['friction'] = 0.3"
+expect "a negative friction coefficient in 3D" "contact\[0\].friction: must be >= 0" \
+  "p['contact'][0]['friction'] = -0.3"
 expect "a plane model for a solid" "bodies\[0\].material.model: applies to plane problems only" \
   "p['bodies'][0]['material']['model'] = 'plane stress'"
 expect "the system of another volume" "sphere-block.pre: subdomains\[1\]: node .* is not a vertex of the subdomain's tetrahedra" \

@@ -38,8 +38,8 @@ TEST(Capabilities, OneEntryPerKindAndPerRegisteredDiscretization) {
 TEST(Capabilities, OneMessageFormNamingTheDimensionWhereTheFeatureWorksInTheOther) {
   EXPECT_EQ(unsupported(ContactKind::ball, Feature::friction, 2),
             "ball contact does not support friction yet (see the capability table in docs/reference.md)");
-  EXPECT_EQ(unsupported(ContactKind::obstacle, Feature::friction, 3),
-            "obstacle contact does not support friction in three dimensions yet (see the capability table in "
+  EXPECT_EQ(unsupported(ContactKind::node_to_node, Feature::ffeti_solve, 3),
+            "node-to-node contact does not support ffeti-solve in three dimensions yet (see the capability table in "
             "docs/reference.md)");
   EXPECT_EQ(unsupported(ContactKind::node_to_face, Feature::rows, 2),
             "node-to-face contact does not support plane problems yet (see the capability table in docs/reference.md)");
@@ -78,7 +78,7 @@ TEST(Capabilities, TheMarkdownTableHasARowPerKindAndSaysWhereAFeatureWorksInOneD
   EXPECT_EQ(table.rfind("| contact | selected by | plane (2D) | solid (3D) | friction", 0), 0u) << table;
   for (const KindCapabilities& k : capability_table())
     EXPECT_NE(table.find(std::string("\n| ") + k.name + " | "), std::string::npos) << k.name;
-  EXPECT_NE(table.find("| obstacle | `contactSlave, obstacle` | yes | yes | plane only |"), std::string::npos) << table;
+  EXPECT_NE(table.find("| obstacle | `contactSlave, obstacle` | yes | yes | yes | yes | — | yes | yes | plane only |"), std::string::npos) << table;
 }
 
 }  // namespace

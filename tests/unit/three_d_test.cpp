@@ -4,6 +4,7 @@
 #include "constraints/constraints.h"
 #include "constraints/contact/contact_linearization.h"
 #include "feti/kernel.h"
+#include "solid_block.h"
 
 #include <gtest/gtest.h>
 
@@ -16,29 +17,6 @@
 
 namespace ffeti {
 namespace {
-
-/// P1 elasticity (E = 1, nu = 0.3) of one tetrahedron, dofs 3k + c: an independent
-/// stiffness whose kernel is the six rigid motions and nothing else.
-Eigen::MatrixXd tetrahedron_stiffness(const std::array<Eigen::Vector3d, 4>& p) {
-  Eigen::Matrix4d M;
-  for (int k = 0; k < 4; ++k) M.row(k) << 1, p[k].transpose();
-  const Eigen::Matrix4d C = M.inverse();  // columns: barycentric coordinates' coefficients
-  const double volume = std::abs(M.determinant()) / 6;
-  Eigen::Matrix<double, 6, 12> B = Eigen::Matrix<double, 6, 12>::Zero();
-  for (int k = 0; k < 4; ++k) {
-    const double gx = C(1, k), gy = C(2, k), gz = C(3, k);
-    B(0, 3 * k) = gx, B(1, 3 * k + 1) = gy, B(2, 3 * k + 2) = gz;
-    B(3, 3 * k) = gy, B(3, 3 * k + 1) = gx;
-    B(4, 3 * k + 1) = gz, B(4, 3 * k + 2) = gy;
-    B(5, 3 * k) = gz, B(5, 3 * k + 2) = gx;
-  }
-  const double nu = 0.3, lambda = nu / ((1 + nu) * (1 - 2 * nu)), mu = 1 / (2 * (1 + nu));
-  Eigen::Matrix<double, 6, 6> D = Eigen::Matrix<double, 6, 6>::Zero();
-  D.topLeftCorner<3, 3>().setConstant(lambda);
-  D.topLeftCorner<3, 3>().diagonal().array() += 2 * mu;
-  D.bottomRightCorner<3, 3>().diagonal().setConstant(mu);
-  return volume * B.transpose() * D * B;
-}
 
 TEST(ThreeDimensions, CandidateRigidModesSpanTheElasticKernel) {
   const std::array<Eigen::Vector3d, 4> p = {Eigen::Vector3d(0.1, 0.2, 0.0), Eigen::Vector3d(1.3, 0.1, 0.2),

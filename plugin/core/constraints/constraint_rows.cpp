@@ -152,21 +152,34 @@ void add_friction_rows(const std::vector<DofRecord>& records, std::vector<Row>& 
   const size_t count = rows.size();
   for (size_t i = 0; i < count; ++i) {
     if (rows[i].kind != RowKind::contact) continue;
-    const RowAt slip = rows[i].geometry->slip_row();
-    Row row{{}, 0.0, RowKind::friction, false, rows[i].geometry, static_cast<int>(i), rows[i].friction};
-    for (size_t k = 0; k < slip.dofs.size(); ++k) {
-      if (slip.coefficients[k] == 0) continue;
-      const auto& [subdomain, dof] = slip.dofs[k];
-      // A fixed dof leaves the row, its prescribed motion moving to the right-hand side
-      // (it is there from the first load step on and adds nothing to later increments). In
-      // Total FETI too: its Dirichlet row already holds it, and a row on it alone would
-      // repeat that row (B would lose full rank).
-      if (const DofRecord* fixed = fixed_record(records, subdomain, dof))
-        row.rhs -= slip.coefficients[k] * fixed->value;
-      else
-        row.entries.push_back({subdomain, dof, slip.coefficients[k]});
+    std::vector<Row> pair;
+    for (const RowAt& slip : rows[i].geometry->slip_rows()) {
+      Row row{{}, 0.0, RowKind::friction, false, rows[i].geometry, static_cast<int>(i), rows[i].friction};
+      for (size_t k = 0; k < slip.dofs.size(); ++k) {
+        if (slip.coefficients[k] == 0) continue;
+        const auto& [subdomain, dof] = slip.dofs[k];
+        // A fixed dof leaves the row, its prescribed motion moving to the right-hand side
+        // (it is there from the first load step on and adds nothing to later increments). In
+        // Total FETI too: its Dirichlet row already holds it, and a row on it alone would
+        // repeat that row (B would lose full rank).
+        if (const DofRecord* fixed = fixed_record(records, subdomain, dof))
+          row.rhs -= slip.coefficients[k] * fixed->value;
+        else
+          row.entries.push_back({subdomain, dof, slip.coefficients[k]});
+      }
+      pair.push_back(std::move(row));
     }
-    if (!row.entries.empty()) rows.push_back(std::move(row));
+    const auto empty = std::count_if(pair.begin(), pair.end(), [](const Row& r) { return r.entries.empty(); });
+    if (empty == static_cast<long>(pair.size())) continue;  // a slave that cannot slip
+    // Both rows of a 3D pair or none: their multipliers share one disc, and a lone row
+    // would make the friction anisotropic.
+    if (empty > 0)
+      throw InputError("friction: the slave node at (" + std::to_string(rows[i].geometry->slave_position()[0]) + ", " +
+                       std::to_string(rows[i].geometry->slave_position()[1]) + ", " +
+                       std::to_string(rows[i].geometry->slave_position()[2]) +
+                       ") has prescribed motion along one tangent of its contact and not the other: "
+                       "fix all its components or none");
+    for (Row& row : pair) rows.push_back(std::move(row));
   }
 }
 

@@ -44,9 +44,10 @@ std::vector<SlaveMaster> node_to_node_pairs(const std::vector<DofRecord>& record
 const DofRecord* fixed_record(const std::vector<DofRecord>& records, int subdomain, int dof);
 /// FETI-1: known Dirichlet values move to the right-hand side.
 void substitute_dirichlet(const std::vector<DofRecord>& records, std::vector<Row>& rows);
-/// Appends a friction row for each contact row of `rows` (its index there as normal_row),
-/// the slip row of its geometry; fixed dofs leave the row (their values to its right-hand
-/// side), and a row left empty (a slave that cannot slip) is dropped.
+/// Appends the friction rows of each contact row of `rows` (its index there as
+/// normal_row), the slip rows of its geometry (one, or two adjacent in 3D); fixed dofs leave
+/// a row (their values to its right-hand side), rows left empty (a slave that cannot slip)
+/// are dropped, and a 3D pair with one empty row is an InputError.
 void add_friction_rows(const std::vector<DofRecord>& records, std::vector<Row>& rows);
 
 }  // namespace ffeti

@@ -49,6 +49,7 @@ Constraints build_constraints(std::vector<DofRecord> records, const std::vector<
   std::stable_partition(rows.begin(), rows.end(), [](const Row& r) { return r.equality; });
   if (contact.has_friction()) add_friction_rows(records, rows);
   Constraints result;
+  result.tangent_directions = contact.three_d ? 2 : 1;
   for (const ContactDiscretization* unit : selected) result.contact_kinds.push_back(unit->kind());
   for (const Row& row : rows) {
     result.entries.insert(result.entries.end(), row.entries.begin(), row.entries.end());

@@ -23,9 +23,10 @@ struct ConstraintEntry {
 };
 
 /// Rows in CSR form over (subdomain, dof) entries; equalities first, then the contact rows
-/// B_I u <= c_I, then (with friction) the tangential rows, whose multipliers are bounded on
-/// both sides, |lambda_t| <= g. Full row rank by construction: a node shared by k
-/// subdomains gets k-1 gluing rows, and none where every copy carries a Dirichlet row.
+/// B_I u <= c_I, then (with friction) the tangential rows, whose multipliers are bounded,
+/// |lambda_t| <= g in a plane problem, ||(lambda_t1, lambda_t2)|| <= g per pair in 3D.
+/// Full row rank by construction: a node shared by k subdomains gets k-1 gluing rows, and
+/// none where every copy carries a Dirichlet row.
 struct Constraints {
   std::vector<int> row_start{0};
   std::vector<ConstraintEntry> entries;
@@ -39,6 +40,9 @@ struct Constraints {
   std::vector<ContactKind> contact_kinds;    ///< the kinds the input selected (rows or not)
   std::vector<int> normal_row;               ///< per friction row: the row of its contact row
   std::vector<double> friction_coefficient;  ///< per friction row: Coulomb's mu (its slave node's)
+  /// Friction rows per contact row that has them: 1 in a plane problem, 2 in three
+  /// dimensions (t1 then t2, adjacent: their multipliers lie in one disc ||lambda_t|| <= g).
+  int tangent_directions = 1;
 
   int rows() const { return static_cast<int>(rhs.size()); }
   /// The rows with bounded multipliers: contact and friction rows.

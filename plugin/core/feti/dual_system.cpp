@@ -165,11 +165,12 @@ PrimalCheck DualSystem::primal_check(const DualData& data, const Vec& lambda) co
     if (i >= constraints_.equality_rows && lambda_scale > 0)
       complementarity = std::max(complementarity, std::abs(lambda[i] * r) / lambda_scale);
   }
-  // A friction row slips (s = B_t u - c_t) only at its bound and against its force.
-  for (int i = first_friction; i < rows() && lambda_scale > 0; ++i)
-    complementarity = std::max(complementarity, friction_complementarity(lambda[i], Bu[i] - data.c[i],
-                                                                         data.slip_bound[i - first_friction],
-                                                                         lambda_scale) / lambda_scale);
+  // A friction group slips (s = B_t u - c_t) only at its bound and against its force.
+  const Vec gap = Bu - data.c;
+  for (int i = first_friction; i < rows() && lambda_scale > 0; i += constraints_.tangent_directions)
+    complementarity = std::max(complementarity, friction_residual(constraints_, lambda, gap, i,
+                                                                  data.slip_bound[i - first_friction], lambda_scale)
+                                                        .complementarity / lambda_scale);
   violation = std::max(violation, complementarity);
   check.violation = check.displacement > 0 ? violation / check.displacement
                                            : (violation > 0 ? std::numeric_limits<double>::infinity() : 0.0);
@@ -200,17 +201,46 @@ qp::ConstraintSet DualSystem::multiplier_constraints(const DualData& data) const
   qp::ConstraintSet set;
   set.add_free(constraints_.equality_rows);
   set.add_half_line(Vec::Zero(constraints_.contact_rows()));  // lambda_I >= 0
-  if (constraints_.friction_rows > 0) set.add_box(-data.slip_bound, data.slip_bound);  // |lambda_t| <= g
+  if (constraints_.friction_rows == 0) return set;
+  if (constraints_.tangent_directions == 1) {
+    set.add_box(-data.slip_bound, data.slip_bound);  // |lambda_t| <= g
+    return set;
+  }
+  // ||(lambda_t1, lambda_t2)|| <= g per contact row: isotropic friction (a box would not be).
+  // g = inf (the first Coulomb solve sticks everywhere) leaves its pair free: runs of finite
+  // and of infinite bounds become disc and free blocks in row order.
+  const Eigen::Index pairs = constraints_.friction_rows / 2;
+  for (Eigen::Index first = 0; first < pairs;) {
+    const bool bounded = std::isfinite(data.slip_bound[2 * first]);
+    Eigen::Index last = first + 1;
+    while (last < pairs && std::isfinite(data.slip_bound[2 * last]) == bounded) ++last;
+    if (bounded) {
+      Vec radius(last - first);
+      for (Eigen::Index j = first; j < last; ++j) radius[j - first] = data.slip_bound[2 * j];
+      set.add_disc(Vec::Zero(2 * (last - first)), radius);
+    } else {
+      set.add_free(2 * (last - first));
+    }
+    first = last;
+  }
   return set;
 }
 
 Vec DualSystem::lambda_from_shifted(const Vec& mu, const qp::ConstraintSet& bounds, const DualData& data) const {
-  // Multipliers at a bound are the bound exactly (0, or -g, g), not the bound plus the
-  // round-off of lambda~.
+  // Multipliers at a bound are the bound exactly (0, or -g, g, or a pair of norm g), not
+  // the bound plus the round-off of lambda~.
   Vec lambda = mu + data.lambda_tilde;
   const int first_friction = constraints_.first_friction_row();
   for (Eigen::Index i = 0; i < first_friction; ++i)
     if (bounds.lower[i] != kUnbounded && mu[i] <= bounds.lower[i]) lambda[i] = 0.0;
+  if (constraints_.tangent_directions == 2) {  // a pair at its disc's boundary: on it exactly
+    for (int i = first_friction; i < mu.size(); i += 2) {
+      const double g = data.slip_bound[i - first_friction];
+      const double norm = std::hypot(lambda[i], lambda[i + 1]);
+      if (at_slip_bound(constraints_, lambda, i, g) && norm > 0) lambda.segment(i, 2) *= g / norm;
+    }
+    return lambda;
+  }
   for (Eigen::Index i = first_friction; i < mu.size(); ++i) {
     const double g = data.slip_bound[i - first_friction];
     if (mu[i] <= bounds.lower[i]) lambda[i] = -g;

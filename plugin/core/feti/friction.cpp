@@ -1,5 +1,7 @@
 #include "feti/friction.h"
 
+#include "feti/primal.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -68,15 +70,17 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
 ContactRowForces contact_row_forces(const Constraints& c, const Vec& lambda, const Vec& slip_bound) {
   ContactRowForces forces;
   forces.tangential.assign(static_cast<size_t>(c.contact_rows()), 0.0);
+  forces.second_tangential.assign(static_cast<size_t>(c.contact_rows()), 0.0);
   forces.state.assign(static_cast<size_t>(c.contact_rows()), ContactState::open);
   if (lambda.size() != c.rows()) return forces;
   for (int i = 0; i < c.contact_rows(); ++i)
     if (lambda[c.equality_rows + i] > 0) forces.state[static_cast<size_t>(i)] = ContactState::stick;
-  for (int t = 0; t < c.friction_rows; ++t) {
+  for (int t = 0; t < c.friction_rows; t += c.tangent_directions) {
     const auto i = static_cast<size_t>(c.normal_row[static_cast<size_t>(t)] - c.equality_rows);
-    const double lambda_t = lambda[c.first_friction_row() + t];
-    forces.tangential[i] = lambda_t;
-    if (forces.state[i] == ContactState::stick && std::abs(lambda_t) >= slip_bound[t]) forces.state[i] = ContactState::slip;
+    const int row = c.first_friction_row() + t;
+    forces.tangential[i] = lambda[row];
+    if (c.tangent_directions == 2) forces.second_tangential[i] = lambda[row + 1];
+    if (forces.state[i] == ContactState::stick && at_slip_bound(c, lambda, row, slip_bound[t])) forces.state[i] = ContactState::slip;
   }
   return forces;
 }

@@ -1,5 +1,5 @@
 // Friction in the dual (docs/algorithms.md, "Friction"): Tresca is one dual solve with the
-// friction rows' multipliers in [-g, g]; Coulomb is the fixed point of the seed's reference
+// friction rows' multipliers in [-g, g] (in 3D each pair in the disc of radius g); Coulomb is the fixed point of the seed's reference
 // [DHK00] over Tresca solves, g = mu lambda_n of the previous one.
 #pragma once
 
@@ -39,10 +39,12 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
                                      DualSolveSettings settings, const Vec& start);
 
 /// The contact state of each contact row (fetiContact): open (lambda_n = 0), stick (its
-/// friction row inside its bound, or no friction row and closed), slip (at its bound).
+/// friction force inside its bound, ||lambda_t|| < g, or no friction row and closed), slip
+/// (at its bound, at_slip_bound).
 enum class ContactState { open = 0, stick = 1, slip = 2 };
 struct ContactRowForces {
-  std::vector<double> tangential;  ///< lambda_t per contact row (0 without a friction row)
+  std::vector<double> tangential;         ///< lambda_t per contact row (0 without friction rows); 3D: along t1
+  std::vector<double> second_tangential;  ///< 3D: lambda_t along t2 (tangent_pair); 0 in a plane problem
   std::vector<ContactState> state;
 };
 ContactRowForces contact_row_forces(const Constraints& constraints, const Vec& lambda, const Vec& slip_bound);

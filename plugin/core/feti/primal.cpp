@@ -33,15 +33,32 @@ Vec solve_normal_equations(const Eigen::SparseMatrix<double>& normal, const Vec&
 
 }  // namespace
 
-double friction_complementarity(double lambda_t, double slip, double g, double lambda_scale) {
-  return std::max(std::min(g - std::abs(lambda_t), lambda_scale) * std::abs(slip), -lambda_t * slip);
+double tangential_norm(const Constraints& constraints, const Vec& lambda, int row) {
+  return constraints.tangent_directions == 2 ? std::hypot(lambda[row], lambda[row + 1]) : std::abs(lambda[row]);
+}
+
+bool at_slip_bound(const Constraints& constraints, const Vec& lambda, int row, double g) {
+  const double norm = tangential_norm(constraints, lambda, row);
+  return constraints.tangent_directions == 2 ? norm >= (1 - 1e-12) * g : norm >= g;
+}
+
+FrictionResidual friction_residual(const Constraints& constraints, const Vec& lambda, const Vec& gap, int row, double g,
+                                   double lambda_scale) {
+  const double norm = tangential_norm(constraints, lambda, row);
+  const double slip = tangential_norm(constraints, gap, row);
+  // -lambda_t s in the plane; in 3D ||lambda_t|| ||s|| - lambda_t.s, zero only when s points along lambda_t.
+  const double against = constraints.tangent_directions == 2
+                             ? norm * slip - (lambda[row] * gap[row] + lambda[row + 1] * gap[row + 1])
+                             : -lambda[row] * gap[row];
+  return {norm - g, std::max(std::min(g - norm, lambda_scale) * slip, against)};
 }
 
 bool holds_with_equality(const Constraints& constraints, const Vec& lambda, const Vec& slip_bound, int row) {
   if (row < constraints.equality_rows) return true;
   const int friction = row - constraints.first_friction_row();
   if (friction < 0) return lambda[row] > 0;
-  return std::abs(lambda[row]) < slip_bound[friction];
+  const int first = row - friction % constraints.tangent_directions;  // the group's first row
+  return !at_slip_bound(constraints, lambda, first, slip_bound[friction]);
 }
 
 std::vector<Vec> recover_primal(const DualOperator& F, const CoarseSpace* coarse,
@@ -114,8 +131,10 @@ KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs, const std:
     if (i < constraints.equality_rows) {
       equality = std::max(equality, std::abs(gap[i]));
     } else if (const int t = i - constraints.first_friction_row(); t >= 0) {
-      negative = std::max(negative, std::abs(lambda[i]) - slip_bound[t]);
-      complementarity = std::max(complementarity, friction_complementarity(lambda[i], gap[i], slip_bound[t], lambda_scale));
+      if (t % constraints.tangent_directions) continue;  // the second row of a pair: counted with the first
+      const FrictionResidual friction = friction_residual(constraints, lambda, gap, i, slip_bound[t], lambda_scale);
+      negative = std::max(negative, friction.excess);
+      complementarity = std::max(complementarity, friction.complementarity);
     } else {
       inequality = std::max(inequality, gap[i]);
       negative = std::max(negative, -lambda[i]);

@@ -87,7 +87,7 @@ std::vector<ContactMultiplier> contact_multipliers(const FetiProblem& problem, c
     const auto k = static_cast<size_t>(i - c.equality_rows);
     const auto& position = problem.contact_positions()[k];
     rows.push_back({position[0], position[1], solved ? result->lambda[i] : 0.0, problem.contact_heights()[k],
-                    forces.tangential[k], forces.state[k]});
+                    forces.tangential[k], forces.second_tangential[k], forces.state[k]});
   }
   return rows;
 }

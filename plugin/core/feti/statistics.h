@@ -25,7 +25,8 @@ int status_code(SolveStatus status);
 struct ContactMultiplier {
   double x, y, lambda;
   double z = 0;                              ///< the slave node's third coordinate (0 in a plane problem)
-  double tangential = 0;                     ///< the friction row's multiplier (0 without one)
+  double tangential = 0;                     ///< the friction row's multiplier (0 without one); 3D: along t1
+  double second_tangential = 0;              ///< 3D: the friction force along t2 (tangent_pair); 0 in the plane
   ContactState state = ContactState::open;   ///< open, stick or slip (friction.h)
 };
 /// The contact rows in row order, with the multipliers of `result` (0 without one: the

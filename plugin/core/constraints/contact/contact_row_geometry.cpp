@@ -4,10 +4,10 @@
 
 namespace ffeti {
 
-RowAt ContactRowGeometry::slip_row() const {
+std::vector<RowAt> ContactRowGeometry::slip_rows() const {
   // Reached only if the capability table says friction where the kind has no tangent.
   throw std::logic_error(std::string(capability_table()[static_cast<size_t>(kind_)].name) +
-                         " contact has no slip row; the capability table must refuse friction for it");
+                         " contact has no slip rows; the capability table must refuse friction for it");
 }
 
 }  // namespace ffeti

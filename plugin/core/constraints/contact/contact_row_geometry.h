@@ -45,9 +45,11 @@ class ContactRowGeometry {
   virtual RowAt row_at(const NodeMotion& velocities, double t) const = 0;
   /// The length the geometry is measured in: the step of the differences scales with it.
   virtual double length() const = 0;
-  /// The tangential row of friction: the slip t.(u_slave - u_master) from the last load
-  /// step's state (gap 0). Kinds whose capability has no friction are refused before.
-  virtual RowAt slip_row() const;
+  /// The tangential rows of friction, the slips t.(u_slave - u_master) from the last load
+  /// step's state (gap 0): one in a plane problem, two in three dimensions along
+  /// tangent_pair(n) of the row's normal n, t1 then t2 (their multipliers form one disc).
+  /// Kinds whose capability has no friction are refused before.
+  virtual std::vector<RowAt> slip_rows() const;
 
  private:
   ContactKind kind_;

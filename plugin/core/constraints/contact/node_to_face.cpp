@@ -22,6 +22,24 @@ double FaceGeometry::length() const {
   return std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
 }
 
+std::vector<RowAt> FaceGeometry::slip_rows() const {
+  const Point3 normal_direction = cross(minus(corners[1], corners[0]), minus(corners[2], corners[0]));
+  const double area = std::sqrt(dot(normal_direction, normal_direction));
+  const Point3 n{normal_direction[0] / area, normal_direction[1] / area, normal_direction[2] / area};
+  const std::array<double, 3> w = closest_point_weights(slave_position(), corners[0], corners[1], corners[2]);
+  std::vector<RowAt> rows;
+  for (const Point3& t : tangent_pair(n)) {
+    RowAt row{{slave[0], slave[1], slave[2]}, {t[0], t[1], t[2]}, 0.0};
+    for (size_t corner = 0; corner < 3; ++corner)
+      for (size_t i = 0; i < 3; ++i) {
+        row.dofs.push_back(face[3 * corner + i]);
+        row.coefficients.push_back(-w[corner] * t[i]);
+      }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
 bool NodeToFace::selected(const ContactRecords& in) const {
   return !in.faces.empty() && std::none_of(in.faces.begin(), in.faces.end(), [](const FaceRecord& f) { return f.slave; });
 }

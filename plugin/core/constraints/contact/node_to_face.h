@@ -20,6 +20,9 @@ class FaceGeometry final : public ContactRowGeometry {
   RowAt row_at(const NodeMotion& v, double t) const override;
   /// The face's first edge.
   double length() const override;
+  /// t.(u_s - sum_i w_i u_i) along tangent_pair(n) of the face's normal, w the weights of
+  /// the slave's closest point on the face.
+  std::vector<RowAt> slip_rows() const override;
 
   const std::array<DofRef, 3> slave;  ///< the slave's x, y, z dofs
   const std::array<DofRef, 9> face;   ///< the triangle's x, y, z dofs of corners a, b, c

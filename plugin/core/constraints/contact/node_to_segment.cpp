@@ -91,9 +91,9 @@ RowAt NodeToSegmentGeometry::row_at(const NodeMotion& v, double t) const {
 
 double NodeToSegmentGeometry::length() const { return std::hypot(b[0] - a[0], b[1] - a[1]); }
 
-RowAt NodeToSegmentGeometry::slip_row() const {
+std::vector<RowAt> NodeToSegmentGeometry::slip_rows() const {
   const LinearizedRow slip = node_to_segment_slip(s, a, b);
-  return {dofs(), {slip.coefficients.begin(), slip.coefficients.end()}, slip.gap};
+  return {{dofs(), {slip.coefficients.begin(), slip.coefficients.end()}, slip.gap}};
 }
 
 void NodeToSegment::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {

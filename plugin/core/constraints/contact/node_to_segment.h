@@ -19,7 +19,7 @@ class NodeToSegmentGeometry final : public ContactRowGeometry {
   std::vector<DofRef> moving_nodes() const override { return {slave[0], master[0], master[2]}; }
   RowAt row_at(const NodeMotion& v, double t) const override;
   double length() const override;
-  RowAt slip_row() const override;
+  std::vector<RowAt> slip_rows() const override;
 
   const std::array<DofRef, 2> slave;   ///< the slave's x and y dofs
   const std::array<DofRef, 4> master;  ///< the segment's a_x, a_y, b_x, b_y

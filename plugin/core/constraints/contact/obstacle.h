@@ -19,8 +19,8 @@ class ObstacleGeometry final : public ContactRowGeometry {
   /// The row is linear in the slave position: any step is exact.
   double length() const override { return 1.0; }
   /// Along the line's direction (-n_y, n_x), the turn from the outward normal a segment's
-  /// tangent makes (plane problems).
-  RowAt slip_row() const override;
+  /// tangent makes (plane problems); along tangent_pair(n) in three dimensions.
+  std::vector<RowAt> slip_rows() const override;
 
   const std::array<DofRef, 3> slave;
   const Point3 point, normal;
