@@ -2,8 +2,11 @@
 """3D elasticity at scale (edp/cubes-elasticity-3d.edp): weak scaling at H/h = 8 (n = 16, 32,
 64 cells per cube side; FFETI_ELASTICITY_3D_SIZES overrides), the whole scene's phases
 (FreeFEM's assembly, the plugin's set-up, factorization, solve, recovery) and peak memory,
-the preconditioners and CHOLMOD's factor kinds side by side at n = 32. Writes
-docs/results/elasticity-3d.md and its plot from one run (--render: again from the CSVs)."""
+the coarse problem at H/h = 4 (8 times the subdomains), the preconditioners and CHOLMOD's
+factor kinds side by side at n = 32, and the direct peers (the undivided cubes by the
+primal-dual active set method with UMFPACK and with MUMPS, each run alone) at n = 8, 16, 32
+(FFETI_ELASTICITY_3D_PEER_SIZES). Writes docs/results/elasticity-3d.md and its plot from one
+run (--render: again from the CSVs)."""
 import argparse
 import os
 import subprocess
@@ -19,6 +22,8 @@ from ffeti_bench import (OUT, begin_run, end_run, f, machine_line, markdown_tabl
 PAGE = "elasticity-3d"
 SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_SIZES", "16 32 64").split()]
 VARIANT_SIZE = 32 if 32 in SIZES else SIZES[-1]
+PEER_SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_PEER_SIZES", "8 16 32").split()]
+PEERS = [("UMFPACK", []), ("MUMPS", ["-DwithMUMPS=1"])]
 PRECONDITIONERS = ["lumped", "dirichlet", "none"]
 FACTORS = ["simplicial", "supernodal"]
 PHASES = [("time_assembly", "FreeFEM assembly"), ("time_plugin_setup", "plugin set-up"),
@@ -36,21 +41,47 @@ def blas_library():
     return "OpenBLAS" if "openblas" in resolved else ("reference BLAS (netlib)" if resolved else "unknown")
 
 
-def scene(n, **options):
-    args = ["-n", n, "-check", 1]
+def scene(n, *extra, **options):
+    args = ["-n", n, *extra]
     for key, value in options.items():
         args += [f"-{key}", value]
     row = run("cubes-elasticity-3d.edp", *args)["RESULT"][0]
     return dict(row, **{key: str(value) for key, value in options.items()})
 
 
+def scene_total(row):
+    """The FETI scene's whole time: FreeFEM's assembly, fetiSetup, the solve and recovery."""
+    return sum(f(row, key) for key, _ in PHASES)
+
+
+def measure_peers(weak):
+    """Each size's FETI run (the weak-scaling table's where it has the size) beside the direct
+    peers run alone; FETI's energy and contact set are compared with UMFPACK's answer."""
+    rows = []
+    for n in PEER_SIZES:
+        feti = next((r for r in weak if int(r["n"]) == n), None) or scene(n, check=1)
+        peers = [dict(scene(n, *flags, feti=0, reference=1), solver=f"primal-dual active set, {name}")
+                 for name, flags in PEERS]
+        reference = f(peers[0], "energy_reference")
+        rows.append(dict(feti, solver="ffeti (FETI)", time_total=repr(scene_total(feti)),
+                         memory_mb=feti["process_peak_mb"],
+                         energy_error=repr(abs(f(feti, "energy") - reference) / abs(reference)),
+                         same_contact_set=str(int(feti["active"]) == int(peers[0]["active_reference"]))))
+        rows += [dict(p, time_total=p["time_reference"], memory_mb=p["process_peak_mb"]) for p in peers]
+    return rows
+
+
 def measure():
     begun = begin_run()
-    weak = [dict(scene(n), case="default") for n in SIZES]
+    weak = [dict(scene(n, check=1), case="default") for n in SIZES]
+    coarse = [dict(scene(n, check=1, Hh=4), case="H/h = 4") for n in SIZES if n >= 16]
     variants = [dict(scene(VARIANT_SIZE, preconditioner=p), case=f"preconditioner {p}") for p in PRECONDITIONERS]
     variants += [dict(scene(VARIANT_SIZE, factor=k), case=f"factor {k}") for k in FACTORS]
+    peers = measure_peers(weak)
     write_csv(PAGE, "weak", weak)
+    write_csv(PAGE, "coarse", coarse)
     write_csv(PAGE, "variants", variants)
+    write_csv(PAGE, "peers", peers)
     end_run(PAGE, begun)
     write_csv(PAGE, "blas", [{"blas": blas_library()}])
 
@@ -101,8 +132,21 @@ def meaning(growth, last, run_row):
     return said
 
 
+def peer_ratios(peers):
+    """Per size, the peers' time and memory over FETI's."""
+    lines = []
+    for n in sorted({r["n"] for r in peers}, key=int):
+        feti = next(r for r in peers if r["n"] == n and r["solver"] == "ffeti (FETI)")
+        for r in peers:
+            if r["n"] == n and r is not feti:
+                lines.append(f"- n = {n}: {r['solver']} takes {f(r, 'time_total') / f(feti, 'time_total'):.1f} times "
+                             f"FETI's time and {f(r, 'memory_mb') / f(feti, 'memory_mb'):.1f} times its memory.")
+    return lines
+
+
 def render():
     weak, variants = read_csv(PAGE, "weak"), read_csv(PAGE, "variants")
+    coarse, peers = read_csv(PAGE, "coarse"), read_csv(PAGE, "peers")
     run_row, blas = read_csv(PAGE, "run")[0], read_csv(PAGE, "blas")[0]["blas"]
     plot_phases(weak, f"{PAGE}.png")
     first, last = weak[0], weak[-1]
@@ -145,6 +189,37 @@ def render():
             ("force balance", ("balance", ".1e")), ("status", "status")]),
         "",
         f"![phases]({PAGE}.png)",
+        "",
+        "## The coarse problem with many subdomains, H/h = 4",
+        "",
+        "The same sizes cut into boxes of 4 cells per side: 8 times the subdomains and the coarse",
+        "space (six rigid modes per box). `time_coarse` is the coarse problem's set-up (G G' assembled",
+        "and factorized); its application is inside the solve's time.",
+        "",
+        *markdown_table(coarse, [
+            ("n", "n"), ("unknowns", "unknowns"), ("subdomains", "subdomains"), ("coarse", "coarse"),
+            ("Hessian mult.", "hessian"), ("assembly [s]", ("time_assembly", ".2f")),
+            ("plugin set-up [s]", ("time_plugin_setup", ".2f")), ("of which coarse [s]", ("time_coarse", ".3f")),
+            ("factorization [s]", ("time_factor", ".2f")), ("solve [s]", ("time_solve", ".2f")),
+            ("peak memory [MB]", ("peak_memory_mb", ".0f")), ("status", "status")]),
+        "",
+        "## The direct peers",
+        "",
+        "The undivided cubes (one mesh each) by the primal-dual active set method, each Newton step",
+        "a sparse direct solve of the KKT system (edp/active-set.idp), with UMFPACK and with MUMPS",
+        "(both ship with FreeFEM), each run alone; the FETI row is the whole scene (assembly,",
+        "set-up, solve, recovery), its energy compared with UMFPACK's answer (energy error) and its",
+        "contact set's size with UMFPACK's. Memory: each process's peak resident set.",
+        "",
+        *markdown_table(peers, [
+            ("n", "n"), ("unknowns", "unknowns"), ("solver", "solver"), ("time [s]", ("time_total", ".2f")),
+            ("of which last solve [s]", lambda r: f"{f(r, 'time_reference_last_solve'):.2f}" if r["solver"] != "ffeti (FETI)" else "-"),
+            ("Newton steps", lambda r: r["pdas_iterations"] if r["solver"] != "ffeti (FETI)" else "-"),
+            ("peak memory [MB]", ("memory_mb", ".0f")),
+            ("energy error", lambda r: f"{f(r, 'energy_error'):.1e}" if r["solver"] == "ffeti (FETI)" else "-"),
+            ("active", lambda r: r["active"] if r["solver"] == "ffeti (FETI)" else r["active_reference"])]),
+        "",
+        *peer_ratios(peers),
         "",
         f"## Preconditioners and factor kinds, n = {VARIANT_SIZE}",
         "",
