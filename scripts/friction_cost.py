@@ -13,7 +13,7 @@ runs a build tree's plugin instead of the installed one)."""
 import argparse
 import os
 
-from ffeti_bench import ROOT, f, markdown_table, read_csv, run, write_csv
+from ffeti_bench import ROOT, f, markdown_table, read_csv, run, span, write_csv
 
 PAGE = "friction"
 MESHES = os.path.join(ROOT, "meshes")
@@ -91,7 +91,11 @@ def section():
                ("after / frictionless", lambda r: f"{ratio(r):.1f}"), ("after status", "status"),
                ("answer change", "change"), ("stick / slip rows", lambda r: f"{r['sticking']} / {r['slipping']}"
                                              if r.get("sticking") else "")]
-    worst = max(ratio(r) for r in after if r["status"] == "converged")
+    converged = [r for r in after if r["status"] == "converged"]
+    within = [r for r in converged if ratio(r) <= 3]
+    over = [r for r in converged if ratio(r) > 3]
+    gains = [f(before[(r["scene"], r["step"])], "hessian") / f(r, "hessian") for r in converged
+             if before.get((r["scene"], r["step"]), {}).get("status") == "converged"]
     return [
         "## Cost: the Coulomb fixed point against the frictionless solve",
         "",
@@ -108,7 +112,19 @@ def section():
         "",
         *markdown_table(rows, columns),
         "",
-        f"Reading: after, the converged steps cost at most {worst:.1f} times the frictionless solve.",
+        f"Reading: {len(within)} of the {len(converged)} converged steps cost at most 3 times the frictionless",
+        f"solve after the change; the other {len(over)} do not ({span([ratio(r) for r in over], '.1f')} times): the aim",
+        "is not met on the small stiff blocks and in 3D. Where the code before converged, the change",
+        f"divides the multiplications by {span(gains, '.1f')} (below 1: a few more, the 2D slope), with the",
+        "answer unchanged to the tolerance (answer change). The 3D sheared block did not converge",
+        "before: the first Tresca solve of step 2, to tol = 1e-6 with the bounds of step 1, ran into",
+        "maxit (10000); to 1e-2 it ends, and the next bounds are solvable. Why the disc solver stalls",
+        "on those bounds is not known. What is left: in a forced slide the fixed point",
+        "itself converges linearly (about 0.85 per solve at the end: 18 solves for 1e-6), and each",
+        "warm solve costs at least 4 multiplications; in 3D a Tresca solve costs tens of",
+        "multiplications, SMALBE-M restoring the balance of the floating block (‖Qμ‖) that each",
+        "new disc radius breaks. Anderson mixing of the bounds was tried and is not used",
+        "([log](../log.md)).",
         "",
     ]
 
