@@ -13,6 +13,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+import friction_3d  # noqa: E402
 from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, listing, machine_line, markdown_table, read_csv,  # noqa: E402
                          run, save_page, span, write_csv)
 
@@ -74,6 +75,7 @@ def main():
             refinement.append(run("cattaneo-mindlin.edp", "-h", h, "-partsize", PART_SIZE, "-meshes", MESHES)["RESULT"][0])
         for name, args in SLOPE_CASES:
             slope.append(dict(case=name, **run("block-on-slope.edp", *args)["RESULT"][0]))
+        friction_3d.measure(MESHES)
         write_csv(PAGE, "cattaneo-mindlin", mindlin)
         write_csv(PAGE, "tractions", tractions)
         write_csv(PAGE, "refinement", refinement)
@@ -217,7 +219,7 @@ def render():
         "the stop there is no equilibrium.",
         "",
     ]
-    save_page(f"{PAGE}.md", lines)
+    save_page(f"{PAGE}.md", lines + friction_3d.section())
 
 
 if __name__ == "__main__":
