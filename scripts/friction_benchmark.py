@@ -2,8 +2,9 @@
 """Friction (edp/cattaneo-mindlin.edp, edp/block-on-slope.edp): Cattaneo-Mindlin partial slip
 against the analytic tractions for three Q/(mu P), the stick/slip map, the Coulomb fixed
 point's iterations and Hessian multiplications against the frictionless solve of the same
-scene, their growth with h at fixed subdomain size, and the block on a slope. Writes
-docs/results/friction.md and its plots from one run on this machine."""
+scene, their growth with h at fixed subdomain size, and the block on a slope; the sphere in
+three dimensions from scripts/friction_3d.py. Writes docs/results/friction.md and its plots
+from one run on this machine."""
 import argparse
 import os
 import tempfile
