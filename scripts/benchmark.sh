@@ -15,7 +15,9 @@
 #   ./scripts/benchmark.sh accuracy        what accuracy costs in time, every scene, tol 1e-2 .. 1e-10 (~3 min)
 #   ./scripts/benchmark.sh busy-machine    scenes idle and beside busy neighbour processes, threads (~2 min)
 #   ./scripts/benchmark.sh friction        Cattaneo-Mindlin and a block on a slope: tractions, stick/slip,
-#                                          the Coulomb fixed point's cost against frictionless (~1 min)
+#                                          the Coulomb fixed point's cost against frictionless, and
+#                                          the sphere in 3D (~1 min; the sphere took 36 min more on a
+#                                          loaded machine, load average 10 on 2 cores)
 #   ./scripts/benchmark.sh three-dimensions  the model problem as two cubes up to 6 million unknowns,
 #                                          factor kinds in 3D, against 2D, Hertz for a sphere on a plane
 #                                          and on a block, a rigid ball, the patch test, 3D gradients and
