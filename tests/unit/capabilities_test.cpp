@@ -7,6 +7,7 @@
 #include "constraints/input_checks.h"
 #include "base/errors.h"
 #include "membrane_model.h"
+#include "solid_block.h"
 
 #include <gtest/gtest.h>
 
@@ -36,8 +37,8 @@ TEST(Capabilities, OneEntryPerKindAndPerRegisteredDiscretization) {
 }
 
 TEST(Capabilities, OneMessageFormNamingTheDimensionWhereTheFeatureWorksInTheOther) {
-  EXPECT_EQ(unsupported(ContactKind::ball, Feature::friction, 2),
-            "ball contact does not support friction yet (see the capability table in docs/reference.md)");
+  EXPECT_EQ(unsupported(ContactKind::mortar, Feature::friction, 3),
+            "mortar contact does not support friction yet (see the capability table in docs/reference.md)");
   EXPECT_EQ(unsupported(ContactKind::node_to_node, Feature::ffeti_solve, 3),
             "node-to-node contact does not support ffeti-solve in three dimensions yet (see the capability table in "
             "docs/reference.md)");
@@ -52,16 +53,22 @@ TEST(Capabilities, OneMessageFormNamingTheDimensionWhereTheFeatureWorksInTheOthe
 }
 
 TEST(Capabilities, TheSetUpRefusesFrictionWhereTheSelectedKindHasNone) {
-  const auto subdomains = membranes();
-  ContactInput contact = test::membrane_contact(subdomains);  // node to node
-  contact.friction = 0.3;
-  EXPECT_EQ(refusal([&] { build_constraints(subdomains, contact, FetiVariant::tfeti); }),
-            "friction: " + unsupported(ContactKind::node_to_node, Feature::friction, 2));
-  contact.master_dofs.clear();
-  contact.friction = -1, contact.slip_bound = 1;
-  contact.obstacle = true, contact.obstacle_radius = 0.5;
-  EXPECT_EQ(refusal([&] { build_constraints(subdomains, contact, FetiVariant::tfeti); }),
-            "slipBound: " + unsupported(ContactKind::ball, Feature::friction, 2));
+  // Mortar: a lower block's top face of slave triangles under an upper block's master face.
+  std::vector<SubdomainInput> blocks = {solid_block(0, {1, 1, 1}, {1, 1, 1}, {0, 0, 0}),
+                                        solid_block(0, {1, 1, 1}, {1, 1, 1}, {0, 0, 0})};
+  for (double& z : blocks[1].z) z += 1;  // body 1 on top of body 0
+  blocks[1].body = 1;
+  const auto corners = [](std::array<int, 3> nodes) {
+    std::array<int, 9> dofs;
+    for (size_t k = 0; k < 9; ++k) dofs[k] = 3 * nodes[k / 3] + static_cast<int>(k % 3);
+    return dofs;
+  };
+  ContactInput contact;  // nodes 4..7 are z = 1 of body 0, nodes 0..3 z = 0 of body 1
+  contact.slave_faces = {{corners({4, 5, 7}), corners({4, 7, 6})}, {}};
+  contact.master_faces = {{}, {corners({0, 3, 1}), corners({0, 2, 3})}};
+  contact.slip_bound = 1;
+  EXPECT_EQ(refusal([&] { build_constraints(blocks, contact, FetiVariant::tfeti); }),
+            "slipBound: " + unsupported(ContactKind::mortar, Feature::friction, 3));
 }
 
 TEST(Capabilities, TheInputChecksRefuseAKindInADimensionItLacks) {
