@@ -1,13 +1,13 @@
 // The capability table (constraints/capabilities.h): one entry per contact kind and per
-// registered discretization, one message form, and the refusals of both set-up paths
-// (build_constraints, validate_input) and of the sensitivity analysis worded by it.
+// registered discretization, one message form, friction wherever a kind has rows, and the
+// refusals of the input checks (validate_input) and of the sensitivity analysis worded by it.
 #include "constraints/capabilities.h"
 #include "constraints/constraints.h"
 #include "constraints/contact/contact_discretization.h"
 #include "constraints/input_checks.h"
 #include "base/errors.h"
 #include "membrane_model.h"
-#include "solid_block.h"
+#include "refusal.h"
 
 #include <gtest/gtest.h>
 
@@ -16,15 +16,6 @@
 
 namespace ffeti {
 namespace {
-
-std::string refusal(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
 
 std::vector<SubdomainInput> membranes() { return test::membrane_subdomains(test::membrane_options(4, 2)); }
 
@@ -37,8 +28,8 @@ TEST(Capabilities, OneEntryPerKindAndPerRegisteredDiscretization) {
 }
 
 TEST(Capabilities, OneMessageFormNamingTheDimensionWhereTheFeatureWorksInTheOther) {
-  EXPECT_EQ(unsupported(ContactKind::mortar, Feature::friction, 3),
-            "mortar contact does not support friction yet (see the capability table in docs/reference.md)");
+  EXPECT_EQ(unsupported(ContactKind::mortar, Feature::sensitivity, 3),
+            "mortar contact does not support sensitivity yet (see the capability table in docs/reference.md)");
   EXPECT_EQ(unsupported(ContactKind::node_to_node, Feature::ffeti_solve, 3),
             "node-to-node contact does not support ffeti-solve in three dimensions yet (see the capability table in "
             "docs/reference.md)");
@@ -52,23 +43,11 @@ TEST(Capabilities, OneMessageFormNamingTheDimensionWhereTheFeatureWorksInTheOthe
             "P: " + unsupported(ContactKind::mortar, Feature::sensitivity, 3));
 }
 
-TEST(Capabilities, TheSetUpRefusesFrictionWhereTheSelectedKindHasNone) {
-  // Mortar: a lower block's top face of slave triangles under an upper block's master face.
-  std::vector<SubdomainInput> blocks = {solid_block(0, {1, 1, 1}, {1, 1, 1}, {0, 0, 0}),
-                                        solid_block(0, {1, 1, 1}, {1, 1, 1}, {0, 0, 0})};
-  for (double& z : blocks[1].z) z += 1;  // body 1 on top of body 0
-  blocks[1].body = 1;
-  const auto corners = [](std::array<int, 3> nodes) {
-    std::array<int, 9> dofs;
-    for (size_t k = 0; k < 9; ++k) dofs[k] = 3 * nodes[k / 3] + static_cast<int>(k % 3);
-    return dofs;
-  };
-  ContactInput contact;  // nodes 4..7 are z = 1 of body 0, nodes 0..3 z = 0 of body 1
-  contact.slave_faces = {{corners({4, 5, 7}), corners({4, 7, 6})}, {}};
-  contact.master_faces = {{}, {corners({0, 3, 1}), corners({0, 2, 3})}};
-  contact.slip_bound = 1;
-  EXPECT_EQ(refusal([&] { build_constraints(blocks, contact, FetiVariant::tfeti); }),
-            "slipBound: " + unsupported(ContactKind::mortar, Feature::friction, 3));
+TEST(Capabilities, FrictionWorksWhereverAKindHasRows) {
+  for (const KindCapabilities& k : capability_table())
+    for (int dimension : {2, 3})
+      EXPECT_EQ(supports(k.kind, Feature::friction, dimension), supports(k.kind, Feature::rows, dimension))
+          << k.name << " in " << dimension << "D";
 }
 
 TEST(Capabilities, TheInputChecksRefuseAKindInADimensionItLacks) {

@@ -137,11 +137,7 @@ std::vector<SubdomainInput> halves(double turn) {
 /// tangent pair is e_x, e_y).
 ContactInput on_plane(const std::vector<SubdomainInput>& subdomains) {
   ContactInput contact;
-  for (const SubdomainInput& s : subdomains) {
-    contact.slave_dofs.emplace_back();
-    for (int k = 0; k < static_cast<int>(s.z.size()); ++k)
-      if (s.z[static_cast<size_t>(k)] == 0) contact.slave_dofs.back().push_back(k);
-  }
+  contact.slave_dofs = bottom_dofs(subdomains);
   contact.obstacle = true;
   contact.obstacle_point = {0, 0, -kGap};
   contact.obstacle_normal = {0, 0, 1};

@@ -8,9 +8,10 @@
 #include "feti/feti_problem.h"
 #include "feti/friction.h"
 #include "base/errors.h"
-#include "friction_reference.h"
+#include "friction_scenes.h"
 #include "membrane_model.h"
 #include "plane_block.h"
+#include "refusal.h"
 #include "solid_block.h"
 
 #include <gtest/gtest.h>
@@ -24,170 +25,15 @@
 namespace ffeti {
 namespace {
 
-constexpr double kGap = 0.001;
-
-DualSolveSettings tight() {
-  DualSolveSettings s;
-  s.tolerance = 1e-12;
-  s.max_hessian = 200000;
-  return s;
-}
-
-/// A contact row's node (x, y) and its forces: lambda_n, then the friction force as a vector
-/// (the multipliers times their tangents), so that references with another tangent basis compare.
-struct NodeForces {
-  std::array<double, 2> at;
-  double normal;
-  Point3 friction;
-};
-
-const NodeForces& at_node(const std::vector<NodeForces>& of, const std::array<double, 2>& at) {
-  for (const NodeForces& node : of)
-    if (std::hypot(node.at[0] - at[0], node.at[1] - at[1]) < 1e-9) return node;
-  throw std::runtime_error("no contact row at (" + std::to_string(at[0]) + ", " + std::to_string(at[1]) + ")");
-}
-
-void expect_same_forces(const std::vector<NodeForces>& feti, const std::vector<NodeForces>& reference) {
-  ASSERT_EQ(feti.size(), reference.size());
-  double scale = 0;
-  for (const NodeForces& node : reference) scale = std::max(scale, node.normal);
-  ASSERT_GT(scale, 0);
-  for (const NodeForces& node : reference) {
-    const NodeForces& other = at_node(feti, node.at);
-    EXPECT_NEAR(other.normal, node.normal, 1e-8 * scale) << "normal force at (" << node.at[0] << ", " << node.at[1] << ")";
-    for (size_t i = 0; i < 3; ++i)
-      EXPECT_NEAR(other.friction[i], node.friction[i], 1e-8 * scale)
-          << "friction force " << i << " at (" << node.at[0] << ", " << node.at[1] << ")";
-  }
-}
-
-/// FETI's forces per contact row; `tangents(row)` the directions of its friction rows.
-std::vector<NodeForces> feti_forces(const FetiProblem& p, const FetiResult& r,
-                                    const std::function<std::vector<Point3>(int)>& tangents) {
-  const Constraints& c = p.constraints();
-  const ContactRowForces forces = contact_row_forces(c, r.lambda, r.slip_bound);
-  std::vector<NodeForces> out;
-  for (int i = 0; i < c.contact_rows(); ++i) {
-    const auto k = static_cast<size_t>(i);
-    const std::vector<Point3> t = tangents(i);
-    Point3 friction{0, 0, 0};
-    for (size_t d = 0; d < 3; ++d)
-      friction[d] = forces.tangential[k] * t[0][d] + (t.size() > 1 ? forces.second_tangential[k] * t[1][d] : 0.0);
-    out.push_back({p.contact_positions()[k], r.lambda[c.equality_rows + i], friction});
-  }
-  return out;
-}
-
-/// The reference's forces per row, its rows' tangents given as vectors.
-std::vector<NodeForces> reference_forces(const std::vector<ReferenceForces>& forces,
-                                         const std::vector<std::array<double, 2>>& at,
-                                         const std::vector<std::vector<Point3>>& tangents) {
-  std::vector<NodeForces> out;
-  for (size_t k = 0; k < forces.size(); ++k) {
-    Point3 friction{0, 0, 0};
-    for (size_t j = 0; j < tangents[k].size(); ++j)
-      for (size_t d = 0; d < 3; ++d) friction[d] += forces[k].tangential[j] * tangents[k][j][d];
-    out.push_back({at[k], forces[k].normal, friction});
-  }
-  return out;
-}
-
-/// Two bodies side by side in one dense problem: K and f block-diagonal, the Dirichlet dofs of both.
-struct Undivided {
-  Eigen::MatrixXd K;
-  Vec f;
-  std::vector<int> fixed;
-  std::vector<double> values;
-  Eigen::Index offset;  ///< the second body's first dof
-};
-Undivided side_by_side(const SubdomainInput& a, const SubdomainInput& b) {
-  Undivided u;
-  u.offset = a.K.rows();
-  const Eigen::Index n = a.K.rows() + b.K.rows();
-  u.K = Eigen::MatrixXd::Zero(n, n);
-  u.K.topLeftCorner(a.K.rows(), a.K.rows()) = Eigen::MatrixXd(a.K);
-  u.K.bottomRightCorner(b.K.rows(), b.K.rows()) = Eigen::MatrixXd(b.K);
-  u.f = Vec(n);
-  u.f << a.f, b.f;
-  u.fixed = a.dirichlet_dofs, u.values = a.dirichlet_values;
-  for (size_t k = 0; k < b.dirichlet_dofs.size(); ++k)
-    u.fixed.push_back(b.dirichlet_dofs[k] + static_cast<int>(u.offset)), u.values.push_back(b.dirichlet_values[k]);
-  return u;
-}
-
-/// Per subdomain the dofs of component `component` on the plane where coordinate `axis` is 0.
-std::vector<std::vector<int>> dofs_on_zero(const std::vector<SubdomainInput>& subdomains, int axis, int component) {
-  std::vector<std::vector<int>> out;
-  for (const SubdomainInput& s : subdomains) {
-    const std::vector<double>& coordinate = axis == 2 ? s.z : s.y;
-    out.emplace_back();
-    for (int k = 0; k < static_cast<int>(coordinate.size()); ++k)
-      if (coordinate[static_cast<size_t>(k)] == 0 && s.component[static_cast<size_t>(k)] == component) out.back().push_back(k);
-  }
-  return out;
-}
-
-using Law = std::function<void(ContactInput&)>;
-Law tresca(double g) {
-  return [g](ContactInput& c) { c.slip_bound = g; };
-}
-Law coulomb(double mu) {
-  return [mu](ContactInput& c) { c.friction = mu; };
-}
-/// g per row: Tresca's bound, or Coulomb's mu lambda_n of FETI's own answer (its fixed point is
-/// the Tresca problem of those bounds).
-using RowBound = std::function<double(const std::array<double, 2>&)>;
-
-class FrictionKinds : public ::testing::TestWithParam<FetiVariant> {
- protected:
-  FetiSetupSettings setup() const {
-    FetiSetupSettings s;
-    s.variant = GetParam();
-    return s;
-  }
-  /// Solves, checks convergence and KKT, and compares with `reference(bound)` where bound is
-  /// Tresca's g or Coulomb's mu lambda_n of FETI's answer.
-  void expect_reference(const FetiProblem& p, bool is_coulomb, double parameter,
-                        const std::function<std::vector<Point3>(int)>& tangents,
-                        const std::function<std::vector<NodeForces>(const RowBound&)>& reference, bool mixed) {
-    const FetiResult r = p.solve(tight());
-    ASSERT_EQ(r.status, SolveStatus::converged);
-    EXPECT_LT(r.kkt.max(), 1e-8);
-    const std::vector<NodeForces> forces = feti_forces(p, r, tangents);
-    const RowBound bound = [&](const std::array<double, 2>& at) {
-      return is_coulomb ? parameter * at_node(forces, at).normal : parameter;
-    };
-    expect_same_forces(forces, reference(bound));
-    if (mixed) {  // some closed rows stick, some slip
-      EXPECT_GT(r.slipping_contact, 0);
-      EXPECT_LT(r.slipping_contact, r.active_contact);
-    }
-  }
-};
-
 // ---- Node to node in three dimensions: a block pressed and sheared onto another ----------
 
-const std::array<double, 3> kTop3{0.004, 0.002, -0.01};  // the upper block's top: shear along x and y, push down
+class FrictionKinds : public FrictionVariants {};
 
-/// Body 0: [0, 1] x [0, 0.5] x [0, 0.25] (4 x 2 x 1 cubes), top moved by kTop3; body 1: its
-/// mirror image below z = 0, bottom fixed; each in `parts` slices along x.
-std::vector<SubdomainInput> stacked_blocks(int parts) {
-  std::vector<SubdomainInput> out;
-  for (int body = 0; body < 2; ++body)
-    for (int k = 0; k < parts; ++k) {
-      const double w = 1.0 / parts;
-      SubdomainInput s = solid_block(k * w, {w, 0.5, 0.25}, {4 / parts, 2, 1}, body == 0 ? kTop3 : std::array<double, 3>{0, 0, 0});
-      if (body == 1) s = mirrored(s);
-      s.body = body;
-      out.push_back(std::move(s));
-    }
-  return out;
-}
-
-/// The lower block's top z dofs slave (u_lower - u_upper <= kGap), the upper's bottom ones master.
-ContactInput stacked_contact(const std::vector<SubdomainInput>& subdomains, const Law& law) {
+/// The lower body's dofs of component `axis` on the plane where that coordinate is 0 slave
+/// (u_lower - u_upper <= kGap), the upper's master: z in 3D (axis 2), y in the plane (axis 1).
+ContactInput stacked_contact(const std::vector<SubdomainInput>& subdomains, int axis, const Law& law) {
   ContactInput contact;
-  const auto on_face = dofs_on_zero(subdomains, 2, 2);
+  const auto on_face = dofs_on_zero(subdomains, axis, axis);
   for (size_t s = 0; s < subdomains.size(); ++s) {
     contact.slave_dofs.push_back(subdomains[s].body == 1 ? on_face[s] : std::vector<int>{});
     contact.master_dofs.push_back(subdomains[s].body == 0 ? on_face[s] : std::vector<int>{});
@@ -222,7 +68,7 @@ std::vector<NodeForces> stacked_reference(const RowBound& bound) {
 
 TEST_P(FrictionKinds, NodeToNode3DRowsSlipAlongTheOtherTwoComponents) {
   const auto subdomains = stacked_blocks(2);
-  const FetiProblem p(subdomains, stacked_contact(subdomains, tresca(0.1)), setup());
+  const FetiProblem p(subdomains, stacked_contact(subdomains, 2, tresca(0.1)), setup());
   const Constraints& c = p.constraints();
   ASSERT_EQ(c.contact_rows(), 15);
   ASSERT_EQ(c.friction_rows, 30);
@@ -242,10 +88,10 @@ TEST_P(FrictionKinds, NodeToNode3DMatchesTheUndividedDual) {
   const auto subdomains = stacked_blocks(2);
   for (const double bound : {0.05, 0.15, 100.0}) {
     SCOPED_TRACE("slip bound " + std::to_string(bound));
-    const FetiProblem p(subdomains, stacked_contact(subdomains, tresca(bound)), setup());
+    const FetiProblem p(subdomains, stacked_contact(subdomains, 2, tresca(bound)), setup());
     expect_reference(p, false, bound, node_to_node_3d_tangents, stacked_reference, bound == 0.15);
   }
-  const FetiProblem p(subdomains, stacked_contact(subdomains, coulomb(0.1)), setup());
+  const FetiProblem p(subdomains, stacked_contact(subdomains, 2, coulomb(0.1)), setup());
   expect_reference(p, true, 0.1, node_to_node_3d_tangents, stacked_reference, false);
 }
 
@@ -266,18 +112,6 @@ std::vector<SubdomainInput> stacked_plates(int parts) {
       out.push_back(std::move(s));
     }
   return out;
-}
-
-ContactInput plate_contact(const std::vector<SubdomainInput>& subdomains, const Law& law) {
-  ContactInput contact;
-  const auto on_edge = dofs_on_zero(subdomains, 1, 1);
-  for (size_t s = 0; s < subdomains.size(); ++s) {
-    contact.slave_dofs.push_back(subdomains[s].body == 1 ? on_edge[s] : std::vector<int>{});
-    contact.master_dofs.push_back(subdomains[s].body == 0 ? on_edge[s] : std::vector<int>{});
-  }
-  contact.gap = kGap;
-  law(contact);
-  return contact;
 }
 
 /// n = -e_y: t = (-n_y, n_x) = e_x.
@@ -304,10 +138,10 @@ TEST_P(FrictionKinds, NodeToNodeInThePlaneMatchesTheUndividedDual) {
   const auto subdomains = stacked_plates(2);
   for (const double bound : {0.1, 0.3, 100.0}) {
     SCOPED_TRACE("slip bound " + std::to_string(bound));
-    const FetiProblem p(subdomains, plate_contact(subdomains, tresca(bound)), setup());
+    const FetiProblem p(subdomains, stacked_contact(subdomains, 1, tresca(bound)), setup());
     expect_reference(p, false, bound, node_to_node_2d_tangent, plate_reference, bound == 0.3);
   }
-  const FetiProblem p(subdomains, plate_contact(subdomains, coulomb(0.2)), setup());
+  const FetiProblem p(subdomains, stacked_contact(subdomains, 1, coulomb(0.2)), setup());
   expect_reference(p, true, 0.2, node_to_node_2d_tangent, plate_reference, false);
 }
 
@@ -322,11 +156,7 @@ std::vector<SubdomainInput> block_halves() {
 
 ContactInput on_ball(const std::vector<SubdomainInput>& subdomains, const Law& law) {
   ContactInput contact;
-  for (const SubdomainInput& s : subdomains) {
-    contact.slave_dofs.emplace_back();
-    for (int k = 0; k < static_cast<int>(s.z.size()); ++k)
-      if (s.z[static_cast<size_t>(k)] == 0) contact.slave_dofs.back().push_back(k);
-  }
+  contact.slave_dofs = bottom_dofs(subdomains);
   contact.obstacle = true;
   contact.obstacle_point = kCentre;
   contact.obstacle_radius = kRadius;
@@ -414,15 +244,6 @@ INSTANTIATE_TEST_SUITE_P(Variants, FrictionKinds, ::testing::Values(FetiVariant:
 
 // ---- Refusals ----------------------------------------------------------------------------
 
-std::string refusal(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
-
 TEST(FrictionKindsInput, NodeToNodeFrictionNeedsTheTangentialComponents) {
   const auto membranes = test::membrane_subdomains(test::membrane_options(4, 2));  // a scalar field
   ContactInput contact = test::membrane_contact(membranes);
@@ -434,7 +255,7 @@ TEST(FrictionKindsInput, NodeToNodeFrictionNeedsTheTangentialComponents) {
 
 TEST(FrictionKindsInput, NodeToNodeFrictionTakesOneSlaveDofPerNode) {
   const auto subdomains = stacked_plates(1);
-  ContactInput contact = plate_contact(subdomains, coulomb(0.3));
+  ContactInput contact = stacked_contact(subdomains, 1, coulomb(0.3));
   const auto tangential = dofs_on_zero(subdomains, 1, 0);
   contact.slave_dofs[1].insert(contact.slave_dofs[1].end(), tangential[1].begin(), tangential[1].end());
   contact.master_dofs[0].insert(contact.master_dofs[0].end(), tangential[0].begin(), tangential[0].end());

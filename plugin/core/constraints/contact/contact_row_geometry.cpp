@@ -1,14 +1,6 @@
 #include "constraints/contact/contact_row_geometry.h"
 
-#include <stdexcept>
-
 namespace ffeti {
-
-std::vector<RowAt> ContactRowGeometry::slip_rows() const {
-  // Reached only if the capability table says friction where the kind has no tangent.
-  throw std::logic_error(std::string(capability_table()[static_cast<size_t>(kind_)].name) +
-                         " contact has no slip rows; the capability table must refuse friction for it");
-}
 
 std::vector<Point3> slip_directions(const Point3& n, bool three_d) {
   if (!three_d) return {{-n[1], n[0], 0.0}};

@@ -48,8 +48,7 @@ class ContactRowGeometry {
   /// The tangential rows of friction, the slips t.(u_slave - u_master) from the last load
   /// step's state (gap 0): one in a plane problem, two in three dimensions along
   /// tangent_pair(n) of the row's normal n, t1 then t2 (their multipliers form one disc).
-  /// Kinds whose capability has no friction are refused before.
-  virtual std::vector<RowAt> slip_rows() const;
+  virtual std::vector<RowAt> slip_rows() const = 0;
 
  private:
   ContactKind kind_;
