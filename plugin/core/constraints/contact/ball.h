@@ -19,6 +19,9 @@ class BallGeometry final : public ContactRowGeometry {
   /// n moves with s.
   RowAt row_at(const NodeMotion& v, double t) const override;
   double length() const override { return radius; }
+  /// t.u_s along the tangent(s) of the tangent plane at the slave's nearest ball point, whose
+  /// normal is n = (s - c)/|s - c| (rigid_slip_rows: the ball does not move).
+  std::vector<RowAt> slip_rows() const override;
 
   const std::array<DofRef, 3> slave;
   const Point3 centre;

@@ -23,6 +23,10 @@ struct MortarRow {
   std::map<std::pair<int, int>, double> coefficients;  ///< per (subdomain, dof)
   double gap = 0;
   double weight = 0;  ///< int phi_j over the covered part
+  /// With friction: int phi_j (u_s - u_m) per (subdomain, dof), its component, and the
+  /// pairs' normals weighted by their int phi_j.
+  std::map<std::pair<int, int>, std::pair<int, double>> jump;
+  Point3 normal{0, 0, 0};
 };
 
 /// (b - a) x (c - a): twice the area times the unit normal.
@@ -44,8 +48,9 @@ bool by_identity(const FaceRecord& a, const FaceRecord& b) {
 }
 
 /// Adds one (slave face, master face) pair's integrals to the rows of the slave's corners.
+/// `friction`: also the jump and the weighted normal.
 void add_pair(const FaceRecord& slave, const FaceRecord& master, const MortarIntegrals& in,
-              const std::array<size_t, 3>& corner_rows, std::vector<MortarRow>& pending) {
+              const std::array<size_t, 3>& corner_rows, bool friction, std::vector<MortarRow>& pending) {
   const Point3& n = in.normal;
   for (size_t j = 0; j < 3; ++j) {
     MortarRow& row = pending[corner_rows[j]];
@@ -54,7 +59,14 @@ void add_pair(const FaceRecord& slave, const FaceRecord& master, const MortarInt
       for (size_t i = 0; i < 3; ++i) {
         row.coefficients[{slave.subdomain, slave.dofs[3 * k + i]}] -= in.D[j][k] * n[i];
         row.coefficients[{master.subdomain, master.dofs[3 * k + i]}] += in.M[j][k] * n[i];
+        if (!friction) continue;
+        auto& s = row.jump[{slave.subdomain, slave.dofs[3 * k + i]}];
+        auto& m = row.jump[{master.subdomain, master.dofs[3 * k + i]}];
+        s = {static_cast<int>(i), s.second + in.D[j][k]};
+        m = {static_cast<int>(i), m.second - in.M[j][k]};
       }
+      if (friction)
+        for (size_t i = 0; i < 3; ++i) row.normal[i] += in.D[j][k] * n[i];
     }
     row.gap += dot(n, in.G[j]);
   }
@@ -65,6 +77,21 @@ void add_pair(const FaceRecord& slave, const FaceRecord& master, const MortarInt
 RowAt MortarGeometry::row_at(const NodeMotion&, double) const {
   // No caller: moving_nodes() is empty and the capability table refuses mortar's sensitivity.
   throw std::logic_error("mortar rows have no motion derivative yet");
+}
+
+std::vector<RowAt> MortarGeometry::slip_rows() const {
+  const double length = std::sqrt(dot(normal, normal));
+  const Point3 n{normal[0] / length, normal[1] / length, normal[2] / length};
+  std::vector<RowAt> rows;
+  for (const Point3& t : tangent_pair(n)) {
+    RowAt row{{}, {}, 0.0};
+    for (const JumpEntry& e : jump) {
+      row.dofs.push_back(e.dof);
+      row.coefficients.push_back(t[static_cast<size_t>(e.component)] * e.coefficient);
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
 }
 
 bool Mortar::selected(const ContactRecords& in) const {
@@ -136,7 +163,7 @@ void Mortar::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
       double gap = 0;
       for (const Point3& g : in.G) gap += dot(in.normal, g);
       if (std::abs(gap / in.area) > reach) return;  // its mean normal gap
-      add_pair(f, m, in, corner_rows, pending);
+      add_pair(f, m, in, corner_rows, contact.has_friction(), pending);
     });
   }
 
@@ -146,8 +173,12 @@ void Mortar::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
     // repeat its neighbours'): no contact possible here.
     if (!(pending_row.weight > 1e-3 * full_weight[j])) continue;
     const SlaveNode& node = nodes[j];
+    std::vector<JumpEntry> jump;  // divided by int phi_j like the row
+    for (const auto& [dof, share] : pending_row.jump)
+      if (share.second != 0) jump.push_back({{dof.first, dof.second}, share.first, share.second / pending_row.weight});
     const auto geometry = std::make_shared<const MortarGeometry>(DofRef{node.x_dof->subdomain, node.x_dof->dof},
-                                                                 Point3{node.x_dof->x, node.x_dof->y, node.x_dof->z});
+                                                                 Point3{node.x_dof->x, node.x_dof->y, node.x_dof->z},
+                                                                 std::move(jump), pending_row.normal);
     // Divided by int phi_j, so that the multiplier is a force like the other rows'.
     Row row{{}, pending_row.gap / pending_row.weight + node.x_dof->gap, RowKind::contact, false, geometry,
             -1, node.x_dof->friction};
