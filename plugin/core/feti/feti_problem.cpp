@@ -280,6 +280,7 @@ FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
     result.status = SolveStatus::inaccurate;
   for (int i = c.equality_rows; i < c.rows(); ++i)
     if (c.kind[static_cast<size_t>(i)] == RowKind::contact && result.lambda[i] > 0) ++result.active_contact;
+  result.beyond_reach = check_beyond_reach(c.beyond_reach, result.u, global_ids_, *comm_);
   if (has_friction())
     for (ContactState state : contact_row_forces(c, result.lambda, result.slip_bound).state)
       result.slipping_contact += state == ContactState::slip ? 1 : 0;

@@ -1,0 +1,88 @@
+// A contact radius so small that most slaves get no row (issue 37, item 6): the solve
+// converged with slaves passing through the master surface, without a word. The slaves
+// left without a row are now checked after the solve: counted, their deepest penetration
+// reported, and none reported when the radius reaches every slave.
+#include "feti/feti_problem.h"
+#include "feti/statistics.h"
+#include "solid_block.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <utility>
+
+namespace ffeti {
+namespace {
+
+constexpr int kCells = 2;
+
+/// Body 0: the block [0, 1]^2 x [0, 0.5], its top pushed down by 0.01; body 1: a block
+/// below whose top face (fixed) falls from z = -0.001 at x = 0 to -0.003 at x = 1, the
+/// master surface (normals +z up to the tilt). The upper block's bottom nodes are slaves.
+std::pair<std::vector<SubdomainInput>, ContactInput> pressed_on_a_slope() {
+  SubdomainInput upper = solid_block(0, {1, 1, 0.5}, {kCells, kCells, 1}, {0, 0, -0.01});
+  SubdomainInput lower = solid_block(0, {1, 1, 0.5}, {kCells, kCells, 1}, {0, 0, 0});
+  for (size_t k = 0; k < lower.z.size(); ++k) lower.z[k] -= 0.501 + (lower.z[k] > 0.25 ? 0.002 * lower.x[k] : 0.0);
+  lower.body = 1;
+  ContactInput contact;
+  contact.slave_dofs = {{}, {}};
+  for (int k = 0; k < static_cast<int>(upper.z.size()); ++k)
+    if (upper.z[static_cast<size_t>(k)] == 0) contact.slave_dofs[0].push_back(k);
+  const auto node = [](int i, int j) { return i + (kCells + 1) * (j + (kCells + 1)); };  // top layer
+  std::vector<std::array<int, 9>> faces;
+  for (int j = 0; j < kCells; ++j)
+    for (int i = 0; i < kCells; ++i)
+      for (const std::array<int, 3>& t : {std::array<int, 3>{node(i, j), node(i + 1, j), node(i + 1, j + 1)},
+                                          std::array<int, 3>{node(i, j), node(i + 1, j + 1), node(i, j + 1)}}) {
+        std::array<int, 9> face{};
+        for (size_t corner = 0; corner < 3; ++corner)
+          for (int c = 0; c < 3; ++c) face[3 * corner + static_cast<size_t>(c)] = 3 * t[corner] + c;
+        faces.push_back(face);
+      }
+  contact.master_faces = {{}, faces};
+  return {{std::move(upper), std::move(lower)}, contact};
+}
+
+double statistic(const FetiProblem& problem, const FetiResult& result, const std::string& key) {
+  for (const auto& [name, value] : statistics(problem, &result))
+    if (name == key) return value;
+  ADD_FAILURE() << "no statistic " << key;
+  return 0;
+}
+
+TEST(ContactReach, SlavesLeftWithoutARowAreCheckedForPenetration) {
+  auto [subs, contact] = pressed_on_a_slope();
+  // Every slave within reach: no slave is watched, and none passes through.
+  const FetiProblem all(subs, contact, FetiSetupSettings{});
+  const FetiResult reached = all.solve();
+  ASSERT_EQ(reached.status, SolveStatus::converged);
+  EXPECT_EQ(statistic(all, reached, "beyond_reach"), 0);
+  EXPECT_EQ(reached.beyond_reach.penetrating, 0);
+  EXPECT_EQ(reached.beyond_reach.warning(), "");
+  // A radius of 0.0015 reaches the column x = 0 only (gap 0.001; 0.002 and 0.003 beyond):
+  // the 6 others get no row and are pushed 0.01 down onto a master 0.002-0.003 below.
+  contact.search_distance = 0.0015;
+  const FetiProblem near(subs, contact, FetiSetupSettings{});
+  const FetiResult result = near.solve();
+  ASSERT_EQ(result.status, SolveStatus::converged);  // the QP without those rows is solved
+  EXPECT_EQ(near.constraints().count(RowKind::contact), kCells + 1);
+  EXPECT_EQ(statistic(near, result, "beyond_reach"), 2 * (kCells + 1));
+  EXPECT_EQ(statistic(near, result, "beyond_reach_penetrating"), 2 * (kCells + 1));
+  // The deepest: the slave at x = 1 moves down by about the top's 0.01 less the block's
+  // squeeze, its master 0.003 below: several millimetres, recomputed from u here.
+  double deepest = 0;
+  for (size_t k = 0; k < subs[0].z.size(); k += 3)
+    if (subs[0].z[k] == 0) {
+      const double below = -(result.u[0][static_cast<Eigen::Index>(k) + 2]) - (0.001 + 0.002 * subs[0].x[k]);
+      deepest = std::max(deepest, below);
+    }
+  EXPECT_GT(deepest, 0.003);
+  EXPECT_NEAR(result.beyond_reach.depth, deepest, 1e-3 * deepest);
+  EXPECT_NEAR(statistic(near, result, "beyond_reach_depth"), deepest, 1e-3 * deepest);
+  const std::string warning = result.beyond_reach.warning();
+  EXPECT_NE(warning.find("6 of the 6 slave nodes"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("contactRadius"), std::string::npos) << warning;
+}
+
+}  // namespace
+}  // namespace ffeti
