@@ -59,6 +59,9 @@ TEST(ContactReach, SlavesLeftWithoutARowAreCheckedForPenetration) {
   EXPECT_EQ(statistic(all, reached, "beyond_reach"), 0);
   EXPECT_EQ(reached.beyond_reach.penetrating, 0);
   EXPECT_EQ(reached.beyond_reach.warning(), "");
+  double pushed = 0;
+  for (const ContactMultiplier& row : contact_multipliers(all, &reached)) pushed += row.lambda;
+  EXPECT_GT(pushed, 0) << "fetiContact's forces of the rows that carry the block";
   // A radius of 0.0015 reaches the column x = 0 only (gap 0.001; 0.002 and 0.003 beyond):
   // the 6 others get no row and are pushed 0.01 down onto a master 0.002-0.003 below.
   contact.search_distance = 0.0015;
