@@ -163,15 +163,83 @@ SCRIPT_MUTATIONS = [
 ]
 
 
-def script_cases(count, rng, work, verdicts):
+# Three dimensions: two blocks, the upper one's bottom nodes against the lower one's top
+# faces (node to face), with a gap per row (contactGap) as a design (dGap), friction
+# mutations and the 3D-only arguments (Z, component, faces, planes, balls).
+SCRIPT3 = r"""
+include "ffeti.idp"
+include "elasticity.idp"
+int S = 2;
+mesh3[int] Th(S);
+Th[0] = cube(2, 2, 2);
+Th[1] = cube(2, 2, 2, [x, y, z - 1.001]);
+matrix[int] K(S), dK(S);
+real[int][int] F(S), X(S), Y(S), Z(S), U(S), dF(S), G(S), dG(S), Share(S), Pr(S), Zs(S);
+int[int] body = [0, 1];
+int[int][int] fixed(S), component(S), slave(S), faces(S), noFaces(S);
+for (int s = 0; s < S; ++s) {
+  fespace Vh(Th[s], [P13d, P13d, P13d]);
+  varf vK([u1, u2, u3], [v1, v2, v3]) = ffetiElasticity3(Th[s], 100., 0.3);
+  varf vF([u1, u2, u3], [v1, v2, v3]) = int3d(Th[s])(-1. * v3);
+  varf vS([u1, u2, u3], [v1, v2, v3]) = int2d(Th[s], 5)(v1 + v2 + v3);
+  ffetiAssemble(Vh, s, vK, vF, K, F)
+  ffetiVectorCoordinates3(Vh, X[s], Y[s], Z[s], component[s])
+  // The lower block's bottom fixed, the upper one's top held in x and y: the contact holds it in z.
+  ffetiVectorDofsWhere3(Vh, (s == 1 && z < -1.001 + 1e-10) || (s == 0 && z > 1 - 1e-10),
+                        (s == 1 && z < -1.001 + 1e-10) || (s == 0 && z > 1 - 1e-10), s == 1 && z < -1.001 + 1e-10, fixed[s])
+  ffetiVectorDofsWhere3(Vh, s == 0 && z < 1e-10, s == 0 && z < 1e-10, s == 0 && z < 1e-10, slave[s])
+  faces[s].resize(0);
+  if (s == 1) ffetiBoundaryFaces(Th[s], Vh, X[s], Y[s], Z[s], component[s], 6, faces[s])
+  noFaces[s].resize(0);
+  G[s].resize(Vh.ndof); G[s] = 0;
+  dG[s].resize(Vh.ndof); dG[s] = 1e-4;
+  dF[s].resize(Vh.ndof); dF[s] = 0;
+  Share[s].resize(Vh.ndof); Share[s] = vS(0, Vh);
+  dK[s] = 0 * K[s];
+}
+real[int] plane = [0., 0., -0.001, 0., 0., 1.], line = [0., 0., 0., 1.], ball = [0.5, 0.5, -1., 0.9];
+real[int] intoBody = [0., 0., -0.001, 0., 0., -1.];
+@MUTATION@
+int P = fetiSetup(K, F, X, Y, body, Z = Z, component = component, dirichlet = fixed, contactSlave = slave,
+                  contactFaces = faces, contactGap = G@SETUP@);
+int status = fetiSolve(P, U@SOLVE@);
+cout << "RESULT status=" << status << endl;
+if (status == 0) {
+  int rows = fetiContactPressure(P, Share, Pr);
+  int st = fetiSensitivity(P, dK, dF, Zs, dGap = dG@SENS@);
+  cout << "RESULT sensitivity=" << st << " rows=" << rows << endl;
+}
+"""
+
+SCRIPT3_MUTATIONS = [
+    ("SETUP", ", friction = 0.3"), ("SETUP", ", friction = -0.3"), ("SETUP", ", slipBound = 0.01"),
+    ("SETUP", ", friction = 0.3, slipBound = 1"), ("SETUP", ", contactRadius = 1e-9"), ("SETUP", ", contactRadius = 0.0005"),
+    ("SETUP", ", obstacle = line"), ("SETUP", ", obstacleBall = ball"), ("SETUP", ", obstacle = plane"),
+    ("SETUP", ", contactSlaveFaces = faces"), ("SETUP", ", frictionField = G"), ("SETUP", ", threads = 1"),
+    ("SOLVE", ", tol = 0"), ("SOLVE", ", maxit = 3"), ("SOLVE", ", algorithm = \"smalbe\""), ("SENS", ", tol = -1"),
+    ("SENS", ", velocityZ = dG"), ("SENS", ", velocityX = dG, velocityY = dG"),
+    ("MUTATION", "Z[1][0] = sqrt(-1.);"), ("MUTATION", "Z[0].resize(3);"), ("MUTATION", "component[0][0] = 5;"),
+    ("MUTATION", "component[1][3] = 0;"), ("MUTATION", "Z[0] = 1000 * Z[0];"), ("MUTATION", "Z[1] = 0 * Z[1];"),
+    ("MUTATION", "faces[1][4] = faces[1][7];"), ("MUTATION", "faces[1].resize(8);"), ("MUTATION", "faces[1][0] = -1;"),
+    ("MUTATION", "{ int t = faces[1][3]; faces[1][3] = faces[1][6]; faces[1][6] = t; t = faces[1][4]; "
+                 "faces[1][4] = faces[1][7]; faces[1][7] = t; t = faces[1][5]; faces[1][5] = faces[1][8]; faces[1][8] = t; }"),
+    ("MUTATION", "faces[0].resize(faces[1].n); faces[0] = faces[1];"), ("MUTATION", "slave[0].resize(1);"),
+    ("MUTATION", "G[0].resize(5);"), ("MUTATION", "G[0] = -1e300;"), ("MUTATION", "G[0][0] = sqrt(-1.);"),
+    ("MUTATION", "dG[0].resize(2);"), ("MUTATION", "dG[1][0] = 1e308 * 10;"), ("MUTATION", "plane = intoBody;"),
+    ("MUTATION", "fixed[1].resize(0);"), ("MUTATION", "body[1] = 0;"), ("MUTATION", "F[0] = -1 * F[0];"),
+    ("MUTATION", "Share[0].resize(4);"), ("MUTATION", "X[0][1] = X[0][0];"),
+]
+
+
+def script_cases(count, rng, work, verdicts, script=SCRIPT, mutations=SCRIPT_MUTATIONS, front="plugin"):
     """FreeFEM scripts with one or two bad arguments; returns the failures."""
     failures = []
     for case in range(count):
-        chosen = rng.sample(SCRIPT_MUTATIONS, rng.choice([1, 1, 2]))
-        names = [re.match(r", (\w+) =", insert) for _, insert in chosen]
-        if len(chosen) == 2 and names[0] and names[1] and names[0].group(1) == names[1].group(1):
+        chosen = rng.sample(mutations, rng.choice([1, 1, 2]))
+        names = [set(re.findall(r"(\w+) =", insert)) for where, insert in chosen if where != "MUTATION"]
+        if len(names) == 2 and names[0] & names[1]:
             chosen = chosen[:1]  # one named argument given twice does not compile
-        text = SCRIPT
+        text = script
         for where, insert in chosen:
             text = text.replace(f"@{where}@", insert + f"@{where}@")
         text = re.sub(r"@[A-Z]+@", "", text)
@@ -183,19 +251,19 @@ def script_cases(count, rng, work, verdicts):
             run = subprocess.run(["FreeFem++-nw", "-v", "0", path], cwd=work, capture_output=True, text=True,
                                  timeout=LIMIT)
         except subprocess.TimeoutExpired:
-            failures.append(f"plugin case {case} ({what}): no answer within {LIMIT} s")
+            failures.append(f"{front} case {case} ({what}): no answer within {LIMIT} s")
             continue
         output = run.stdout + run.stderr
         error = re.search(r"Exec error : (feti\w+: \w+[\[\]0-9, \w]*: .*)", output)
         if error:
-            verdicts["plugin", "refused"] += 1
-            print(f"ok: plugin {what}: refused: {error.group(1)[:160]}")
+            verdicts[front, "refused"] += 1
+            print(f"ok: {front} {what}: refused: {error.group(1)[:160]}")
         elif run.returncode == 0 and "RESULT status=" in output:
-            verdicts["plugin", "ran"] += 1
-            print(f"ok: plugin {what}: ran: {' '.join(re.findall(r'RESULT (.*)', output))}")
+            verdicts[front, "ran"] += 1
+            print(f"ok: {front} {what}: ran: {' '.join(re.findall(r'RESULT (.*)', output))}")
         else:
             tail = " | ".join(output.strip().splitlines()[-3:])
-            failures.append(f"plugin case {case} ({what}): exit status {run.returncode}: {tail[:300]}")
+            failures.append(f"{front} case {case} ({what}): exit status {run.returncode}: {tail[:300]}")
     return failures
 
 
@@ -209,8 +277,8 @@ def write_report(args, verdicts, failures):
              "40 cases per front end (`ctest -R fuzz`).", "",
              "| front end | refused clearly | ran to a RESULT line (exit 0) | ran, not converged (exit 1) | failures |",
              "|---|---|---|---|---|"]
-    for front in ("plugin", "ffeti-solve"):
-        failed = sum(1 for f in failures if f.startswith(front))
+    for front in ("plugin", "plugin 3D", "ffeti-solve"):
+        failed = sum(1 for f in failures if f.startswith(front + " case"))
         lines.append(f"| {front} | {verdicts[front, 'refused']} | {verdicts[front, 'ran']} | "
                      f"{verdicts[front, 'not converged']} | {failed} |")
     lines += ["", "Failures:" if failures else "No failures.", ""] + [f"- {f}" for f in failures] + [""]
@@ -231,14 +299,15 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         if os.path.exists("freefem++.pref"):
             shutil.copy("freefem++.pref", work)
-        failures = script_cases(args.cases, rng, work, verdicts) + solver_cases(
-            args.source, args.ffeti_solve, args.cases, rng, work, verdicts)
+        failures = (script_cases(args.cases, rng, work, verdicts) +
+                    script_cases(args.cases, rng, work, verdicts, SCRIPT3, SCRIPT3_MUTATIONS, "plugin 3D") +
+                    solver_cases(args.source, args.ffeti_solve, args.cases, rng, work, verdicts))
     for failure in failures:
         print("FAILED: " + failure)
     if args.report:
         write_report(args, verdicts, failures)
-    print(f"{len(failures)} failure(s) in {2 * args.cases} generated cases" if failures else
-          f"all {2 * args.cases} generated cases refused clearly or ran")
+    print(f"{len(failures)} failure(s) in {3 * args.cases} generated cases" if failures else
+          f"all {3 * args.cases} generated cases refused clearly or ran")
     sys.exit(1 if failures else 0)
 
 
