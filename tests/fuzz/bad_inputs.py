@@ -1,11 +1,14 @@
 #!/usr/bin/env python3
 """Bad inputs, generated, against both front ends: random mutations of a valid problem.
 
-ffeti-solve: a valid GetDP problem file (getdp/hertz.json on GetDP's assembly) with one
+ffeti-solve: a valid GetDP problem file (getdp/hertz.json on GetDP's assembly, and in three
+dimensions getdp/sphere-block.json, a quarter as many cases: its solves take seconds) with one
 value replaced (by null, a wrong type, 0, -1, a huge or tiny number, an integer beyond
 int, an empty list or object), a key deleted or an unknown key added. The plugin: a
 valid two-membrane script with one argument of fetiSetup, fetiSolve, fetiSensitivity or
-fetiContactPressure replaced by a bad value.
+fetiContactPressure replaced by a bad value; "plugin 3D": two blocks in node-to-face contact
+with a gap per row (contactGap) whose derivative (dGap) is the design, given friction,
+planes, balls, reversed or broken faces, scaled or broken coordinates.
 
 Every case must end as one of: a clear refusal (ffeti-solve: exit status 2 and a message
 naming the problem file or a data file; FreeFEM: an "Exec error" naming the plugin
@@ -14,7 +17,8 @@ Never a signal (crash), a hang (time limit), an uncaught exception or exit 3. A 
 class of bad input gets its own test in tests/edp/bad-input.edp or tests/getdp/bad-input.sh.
 
 Usage: bad_inputs.py SOURCE_DIR FFETI_SOLVE [--cases N] [--seed S] [--report FILE]
-(run where freefem++.pref points at the build; N cases per front end, default 40;
+(run where freefem++.pref points at the build; N cases per front end, default 40, N/4 for the
+3D problem file;
 --report writes the run's counts and failures as a Markdown page)."""
 import argparse
 import collections
@@ -66,18 +70,24 @@ def mutate(problem, rng):
     return f"{'.'.join(map(str, path))} = {json.dumps(value)}", p
 
 
-def solver_cases(source, ffeti_solve, count, rng, work, verdicts):
+# ffeti-solve's problems: (front end's name, problem, gmsh dimension, geometry): the plane
+# Hertz pair, and in three dimensions the sphere on a block (node to face, a gap, volumes).
+SOLVER_PROBLEMS = {"ffeti-solve": ("hertz", "-2", "hertz-pair.geo"), "ffeti-solve 3D": ("sphere-block", "-3", "sphere-block.geo")}
+
+
+def solver_cases(source, ffeti_solve, count, rng, work, verdicts, front="ffeti-solve"):
     """ffeti-solve on `count` mutated problem files; returns the failures."""
     if not shutil.which("getdp"):
-        print("ffeti-solve: skipped (getdp is not installed)")
+        print(f"{front}: skipped (getdp is not installed)")
         return []
-    for name in ("hertz.pro", "hertz.json"):
-        shutil.copy(os.path.join(source, "getdp", name), work)
-    subprocess.run(["gmsh", "-2", "-format", "msh22", "-v", "0", os.path.join(source, "meshes", "hertz-pair.geo"),
-                    "-o", "hertz.msh"], cwd=work, check=True)
-    subprocess.run(["getdp", "hertz.pro", "-msh", "hertz.msh", "-solve", "Assemble", "-v", "0"], cwd=work, check=True,
-                   capture_output=True)
-    problem = json.load(open(os.path.join(work, "hertz.json")))
+    name, dimension, geometry = SOLVER_PROBLEMS[front]
+    for suffix in (".pro", ".json"):
+        shutil.copy(os.path.join(source, "getdp", name + suffix), work)
+    subprocess.run(["gmsh", dimension, "-format", "msh22", "-v", "0", os.path.join(source, "meshes", geometry),
+                    "-o", name + ".msh"], cwd=work, check=True)
+    subprocess.run(["getdp", name + ".pro", "-msh", name + ".msh", "-solve", "Assemble", "-v", "0"], cwd=work,
+                   check=True, capture_output=True)
+    problem = json.load(open(os.path.join(work, name + ".json")))
     problem["output"] = {"table": "out.csv"}
     failures = []
     for case in range(count):
@@ -87,7 +97,7 @@ def solver_cases(source, ffeti_solve, count, rng, work, verdicts):
         try:
             run = subprocess.run([ffeti_solve, "case.json"], cwd=work, capture_output=True, text=True, timeout=LIMIT)
         except subprocess.TimeoutExpired:
-            failures.append(f"ffeti-solve case {case} ({what}): no answer within {LIMIT} s")
+            failures.append(f"{front} case {case} ({what}): no answer within {LIMIT} s")
             continue
         message = (run.stdout + run.stderr).strip().splitlines()
         last = message[-1] if message else ""
@@ -96,10 +106,10 @@ def solver_cases(source, ffeti_solve, count, rng, work, verdicts):
         elif run.returncode in (0, 1) and "RESULT " in run.stdout:
             verdict = "ran" if run.returncode == 0 else "not converged"
         else:
-            failures.append(f"ffeti-solve case {case} ({what}): exit status {run.returncode}: {last[:300]}")
+            failures.append(f"{front} case {case} ({what}): exit status {run.returncode}: {last[:300]}")
             continue
-        verdicts["ffeti-solve", verdict] += 1
-        print(f"ok: ffeti-solve {what}: {verdict}: {last[:160]}")
+        verdicts[front, verdict] += 1
+        print(f"ok: {front} {what}: {verdict}: {last[:160]}")
     return failures
 
 
@@ -274,16 +284,21 @@ def write_report(args, verdicts, failures):
              "generator's docstring says which). Every case must be refused with a message naming",
              "the argument (or file and key), or run to a RESULT line; a crash, a hang, an",
              "uncaught exception or an unclear refusal is a failure. The default test command runs",
-             "40 cases per front end (`ctest -R fuzz`).", "",
+             "40 cases per front end, 10 for the 3D problem file (`ctest -R fuzz`).", "",
              "| front end | refused clearly | ran to a RESULT line (exit 0) | ran, not converged (exit 1) | failures |",
              "|---|---|---|---|---|"]
-    for front in ("plugin", "plugin 3D", "ffeti-solve"):
+    for front in ("plugin", "plugin 3D", "ffeti-solve", "ffeti-solve 3D"):
         failed = sum(1 for f in failures if f.startswith(front + " case"))
         lines.append(f"| {front} | {verdicts[front, 'refused']} | {verdicts[front, 'ran']} | "
                      f"{verdicts[front, 'not converged']} | {failed} |")
     lines += ["", "Failures:" if failures else "No failures.", ""] + [f"- {f}" for f in failures] + [""]
     with open(args.report, "w") as page:
         page.write("\n".join(lines))
+
+
+def solid_cases(cases):
+    """The 3D problem file takes seconds per solve: a quarter as many cases."""
+    return max(cases // 4, 5)
 
 
 def main():
@@ -301,13 +316,16 @@ def main():
             shutil.copy("freefem++.pref", work)
         failures = (script_cases(args.cases, rng, work, verdicts) +
                     script_cases(args.cases, rng, work, verdicts, SCRIPT3, SCRIPT3_MUTATIONS, "plugin 3D") +
-                    solver_cases(args.source, args.ffeti_solve, args.cases, rng, work, verdicts))
+                    solver_cases(args.source, args.ffeti_solve, args.cases, rng, work, verdicts) +
+                    solver_cases(args.source, args.ffeti_solve, solid_cases(args.cases), rng, work, verdicts,
+                                 "ffeti-solve 3D"))
     for failure in failures:
         print("FAILED: " + failure)
     if args.report:
         write_report(args, verdicts, failures)
-    print(f"{len(failures)} failure(s) in {3 * args.cases} generated cases" if failures else
-          f"all {3 * args.cases} generated cases refused clearly or ran")
+    total = 3 * args.cases + solid_cases(args.cases)
+    print(f"{len(failures)} failure(s) in {total} generated cases" if failures else
+          f"all {total} generated cases refused clearly or ran")
     sys.exit(1 if failures else 0)
 
 
