@@ -4,6 +4,7 @@
 // reported, and none reported when the radius reaches every slave.
 #include "feti/feti_problem.h"
 #include "feti/statistics.h"
+#include "membrane_model.h"
 #include "solid_block.h"
 
 #include <gtest/gtest.h>
@@ -85,6 +86,51 @@ TEST(ContactReach, SlavesLeftWithoutARowAreCheckedForPenetration) {
   const std::string warning = result.beyond_reach.warning();
   EXPECT_NE(warning.find("6 of the 6 slave nodes"), std::string::npos) << warning;
   EXPECT_NE(warning.find("contactRadius"), std::string::npos) << warning;
+}
+
+TEST(ContactReach, NodeToSegmentSlavesBeyondTheRadiusToo) {
+  // The plane: a 2-component field on two rectangles (8 x 8 cells below, 5 x 7 above it,
+  // non-matching), the lower one's top edge the master, tilted so that its gap to the
+  // slaves falls from 0.02 at x = 0 to 0.01 at x = 1; the upper body's top pushed down by
+  // 0.05. A radius of 0.015 reaches the slaves at x > 0.5 only.
+  const auto zero = [](double, double) { return 0.0; };
+  std::vector<SubdomainInput> subs = {test::two_components(test::p1_rectangle(0, 0, 1, 1, 8, 8, 1.0, zero, 0)),
+                                      test::two_components(test::p1_rectangle(0.05, 1.02, 0.9, 1, 5, 7, 1.0, zero, 1))};
+  for (size_t k = 0; k < subs[0].y.size(); ++k) subs[0].y[k] += 0.01 * subs[0].x[k] * subs[0].y[k];
+  ContactInput contact;
+  contact.slave_dofs.resize(2), contact.master_segments.resize(2);
+  for (size_t s = 0; s < 2; ++s)
+    for (int k = 0; k < static_cast<int>(subs[s].x.size()); ++k) {
+      const bool bottom = s == 0 && subs[s].y[static_cast<size_t>(k)] < 1e-12;
+      const bool top = s == 1 && subs[s].y[static_cast<size_t>(k)] > 2.02 - 1e-12;
+      if (bottom || top) {
+        subs[s].dirichlet_dofs.push_back(k);
+        subs[s].dirichlet_values.push_back(top && subs[s].component[static_cast<size_t>(k)] == 1 ? -0.05 : 0.0);
+      }
+      if (s == 1 && subs[s].y[static_cast<size_t>(k)] < 1.02 + 1e-12) contact.slave_dofs[1].push_back(k);
+    }
+  for (int i = 8; i > 0; --i)  // the lower body's top edge (nodes 72 + i), right to left: the body on the left
+    contact.master_segments[0].push_back({2 * (72 + i), 2 * (72 + i) + 1, 2 * (71 + i), 2 * (71 + i) + 1});
+  contact.search_distance = 0.015;
+  const FetiProblem problem(subs, contact, FetiSetupSettings{});
+  const FetiResult result = problem.solve();
+  ASSERT_EQ(result.status, SolveStatus::converged);
+  const int rows = problem.constraints().count(RowKind::contact), watched = result.beyond_reach.watched;
+  EXPECT_GT(rows, 0);
+  EXPECT_GT(watched, 0);
+  EXPECT_EQ(rows + watched, 6);  // the upper body's 6 bottom nodes, all over the master edge
+  // The watched slaves' depth below the master edge, recomputed from u: the edge at x is
+  // y = 1 + 0.01 x (the lower body's top, moving with its own displacement, small here).
+  double deepest = 0;
+  int below = 0;
+  for (size_t k = 0; k < subs[1].x.size(); k += 2)
+    if (subs[1].y[k] < 1.02 + 1e-12 && subs[1].x[k] < 0.5) {
+      const double depth = (1 + 0.01 * subs[1].x[k]) - (subs[1].y[k] + result.u[1][static_cast<Eigen::Index>(k) + 1]);
+      below += depth > 0, deepest = std::max(deepest, depth);
+    }
+  EXPECT_EQ(result.beyond_reach.penetrating, below);
+  EXPECT_GT(below, 0);
+  EXPECT_NEAR(result.beyond_reach.depth, deepest, 0.05 * deepest);  // the master's own motion is the rest
 }
 
 }  // namespace
