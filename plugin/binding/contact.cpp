@@ -38,6 +38,12 @@ class FetiContact : public WithNamedArguments {
   AnyType operator()(Stack stack) const {
     return SetAny<long>(guarded("fetiContact", [&] {
       const Handle& h = handle(GetAny<long>((*id)(stack)));
+      // An infeasible solve's multipliers are the last iterate of a QP without a solution:
+      // forces and states that look plausible and mean nothing.
+      if (h.result && h.result->status == SolveStatus::infeasible)
+        throw InputError("P: the last fetiSolve found the contact conditions infeasible (status " +
+                         std::to_string(status_code(h.result->status)) +
+                         "): there are no contact forces or states to report");
       const auto rows = contact_multipliers(*h.problem, h.result ? &*h.result : nullptr);
       auto& x = *GetAny<KN<double>*>((*xc)(stack));
       auto& y = *GetAny<KN<double>*>((*yc)(stack));

@@ -171,6 +171,11 @@ class FetiSetup : public WithNamedArguments {
       if (obstacle->N() != 4 && obstacle->N() != 6)
         throw InputError("obstacle: needs [point x, point y, normal x, normal y] (with Z: [px, py, pz, nx, ny, nz]), got " +
                          std::to_string(obstacle->N()) + " entries");
+      // A line's four entries read as a plane would lie in z = 0 with a normal in the
+      // x-y plane: the rows then fail far from the cause.
+      if (nargs[kZ] != nullptr && obstacle->N() == 4)
+        throw InputError("obstacle: with Z (three dimensions) needs six entries, a plane [px, py, pz, nx, ny, nz]; "
+                         "got four (a line of a plane problem)");
       contact.obstacle = true;
       if (obstacle->N() == 6) {  // three dimensions: a plane
         contact.obstacle_point = {(*obstacle)[0], (*obstacle)[1], (*obstacle)[2]};

@@ -67,6 +67,9 @@ class FetiSolve : public WithNamedArguments {
     if (verbosity >= 1 && h.problem->communicator().rank() == 0 && r.friction_iterations > 0)
       std::printf("ffeti: friction: %d Tresca solves (Hessian multiplications %s), last change of the bounds %.2e\n",
                   r.friction_iterations, friction_counts(r).c_str(), r.friction_bound_change);
+    // Whatever the verbosity: an answer whose slaves pass through the master is not silent.
+    if (h.problem->communicator().rank() == 0 && r.beyond_reach.penetrating > 0)
+      std::printf("ffeti: WARNING fetiSolve: %s\n", r.beyond_reach.warning().c_str());
     std::fflush(stdout);
     return status_code(r.status);
   }

@@ -8,6 +8,7 @@
 #include "feti/cholmod_factor.h"
 #include "feti/statistics.h"
 #include "mesh/connect_parts.h"
+#include "mesh/tetrahedron_quality.h"
 
 #include <mpi.h>
 
@@ -101,6 +102,10 @@ double feti_wall_time() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
+/// The bound below which |volume| / (longest edge)^3 marks a tetrahedron as flat, the
+/// core's (ffeti-solve applies the same): ffeti.idp's ffetiFlatTetrahedron starts from it.
+double feti_flat_tetrahedron() { return kFlatTetrahedron; }
+
 }  // namespace
 
 void add_utility_functions() {
@@ -111,6 +116,7 @@ void add_utility_functions() {
   Global.Add("fetiRanks", "(", new OneOperator0<long>(feti_ranks));
   Global.Add("fetiRankReport", "(", new OneOperator1s_<std::string*, long>(feti_rank_report));
   Global.Add("fetiWallTime", "(", new OneOperator0<double>(feti_wall_time));
+  Global.Add("fetiFlatTetrahedron", "(", new OneOperator0<double>(feti_flat_tetrahedron));
   Global.Add("fetiFactorizations", "(", new OneOperator0<long>(feti_factorizations));
   Global.Add("fetiConnectParts", "(", new OneOperator2_<long, pmesh, KN<long>*>(feti_connect_parts<Mesh, 3>));
   Global.Add("fetiConnectParts", "(", new OneOperator2_<long, pmesh3, KN<long>*>(feti_connect_parts<Mesh3, 4>));

@@ -131,6 +131,8 @@ int run(const std::string& problem_path, const std::shared_ptr<const Communicato
   const std::string rank_report = format_rank_report(feti);
   if (comm->rank() == 0) {
     std::cout << rank_report << "RESULT " << format_report(feti, &result) << load_report.str() << std::endl;
+    if (result.beyond_reach.penetrating > 0)
+      std::cerr << "ffeti-solve: WARNING: " << result.beyond_reach.warning() << std::endl;
     if (!converged)
       std::cerr << "ffeti-solve: not converged: " << to_string(result.status)
                 << " (no views, tables or GetDP solution written; the history, if asked for, is)"

@@ -1,6 +1,7 @@
 #include "native/gmsh_mesh.h"
 
 #include "base/errors.h"
+#include "mesh/tetrahedron_quality.h"
 
 #include <gmsh.h>
 
@@ -128,25 +129,13 @@ void GmshMesh::check_tetrahedra(int group, const std::vector<Element>& tetrahedr
   for (const Element& t : tetrahedra) {
     std::array<std::array<double, 3>, 4> p;
     for (size_t i = 0; i < 4; ++i) p[i] = position(t.nodes[i]);
-    const auto edge = [&](size_t i, size_t j) {
-      return std::array<double, 3>{p[j][0] - p[i][0], p[j][1] - p[i][1], p[j][2] - p[i][2]};
-    };
-    const auto a = edge(0, 1), b = edge(0, 2), c = edge(0, 3);
-    const double six_volume = std::abs(a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-                                       a[2] * (b[0] * c[1] - b[1] * c[0]));
-    double longest = 0;
-    for (size_t i = 0; i < 4; ++i)
-      for (size_t j = i + 1; j < 4; ++j) {
-        const auto e = edge(i, j);
-        longest = std::max(longest, std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]));
-      }
-    const double ratio = longest > 0 ? six_volume / (longest * longest * longest) : 0.0;
+    const double ratio = tetrahedron_flatness(p);
     if (!(ratio >= kFlatTetrahedron)) {
       std::ostringstream message;
       message << path_ << ": physical volume " << group << ": tetrahedron " << t.tag << " (nodes " << t.nodes[0] << ", "
-              << t.nodes[1] << ", " << t.nodes[2] << ", " << t.nodes[3] << ") is flat or degenerate: 6 |volume| / "
+              << t.nodes[1] << ", " << t.nodes[2] << ", " << t.nodes[3] << ") is flat or degenerate: |volume| / "
               << "(longest edge)^3 = " << ratio << ", below " << kFlatTetrahedron
-              << " (a regular tetrahedron has 0.71): remesh or remove it";
+              << " (a regular tetrahedron has 0.118): remesh or remove it";
       throw InputError(message.str());
     }
   }

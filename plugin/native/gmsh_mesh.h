@@ -61,11 +61,4 @@ class GmshMesh {
   std::unordered_map<NodeTag, std::array<double, 3>> positions_;
 };
 
-/// A tetrahedron whose 6 |V| / L^3 (L its longest edge) is below this is refused as flat: a
-/// regular one has 1/sqrt(2); one with its four nodes in a plane (up to round-off) has a
-/// P1 stiffness of order L^4 / V that swamps the rest of the matrix, and the answer means
-/// nothing. The bound is far below any element a mesher keeps on purpose: the smallest
-/// ratio in the sphere-on-block example's mesh (meshes/sphere-block.geo) is 0.08.
-constexpr double kFlatTetrahedron = 1e-8;
-
 }  // namespace ffeti::native

@@ -1,11 +1,14 @@
 #!/usr/bin/env python3
 """Bad inputs, generated, against both front ends: random mutations of a valid problem.
 
-ffeti-solve: a valid GetDP problem file (getdp/hertz.json on GetDP's assembly) with one
+ffeti-solve: a valid GetDP problem file (getdp/hertz.json on GetDP's assembly, and in three
+dimensions getdp/sphere-block.json, a quarter as many cases: its solves take seconds) with one
 value replaced (by null, a wrong type, 0, -1, a huge or tiny number, an integer beyond
 int, an empty list or object), a key deleted or an unknown key added. The plugin: a
 valid two-membrane script with one argument of fetiSetup, fetiSolve, fetiSensitivity or
-fetiContactPressure replaced by a bad value.
+fetiContactPressure replaced by a bad value; "plugin 3D": two blocks in node-to-face contact
+with a gap per row (contactGap) whose derivative (dGap) is the design, given friction,
+planes, balls, reversed or broken faces, scaled or broken coordinates.
 
 Every case must end as one of: a clear refusal (ffeti-solve: exit status 2 and a message
 naming the problem file or a data file; FreeFEM: an "Exec error" naming the plugin
@@ -14,7 +17,8 @@ Never a signal (crash), a hang (time limit), an uncaught exception or exit 3. A 
 class of bad input gets its own test in tests/edp/bad-input.edp or tests/getdp/bad-input.sh.
 
 Usage: bad_inputs.py SOURCE_DIR FFETI_SOLVE [--cases N] [--seed S] [--report FILE]
-(run where freefem++.pref points at the build; N cases per front end, default 40;
+(run where freefem++.pref points at the build; N cases per front end, default 40, N/4 for the
+3D problem file;
 --report writes the run's counts and failures as a Markdown page)."""
 import argparse
 import collections
@@ -66,18 +70,24 @@ def mutate(problem, rng):
     return f"{'.'.join(map(str, path))} = {json.dumps(value)}", p
 
 
-def solver_cases(source, ffeti_solve, count, rng, work, verdicts):
+# ffeti-solve's problems: (front end's name, problem, gmsh dimension, geometry): the plane
+# Hertz pair, and in three dimensions the sphere on a block (node to face, a gap, volumes).
+SOLVER_PROBLEMS = {"ffeti-solve": ("hertz", "-2", "hertz-pair.geo"), "ffeti-solve 3D": ("sphere-block", "-3", "sphere-block.geo")}
+
+
+def solver_cases(source, ffeti_solve, count, rng, work, verdicts, front="ffeti-solve"):
     """ffeti-solve on `count` mutated problem files; returns the failures."""
     if not shutil.which("getdp"):
-        print("ffeti-solve: skipped (getdp is not installed)")
+        print(f"{front}: skipped (getdp is not installed)")
         return []
-    for name in ("hertz.pro", "hertz.json"):
-        shutil.copy(os.path.join(source, "getdp", name), work)
-    subprocess.run(["gmsh", "-2", "-format", "msh22", "-v", "0", os.path.join(source, "meshes", "hertz-pair.geo"),
-                    "-o", "hertz.msh"], cwd=work, check=True)
-    subprocess.run(["getdp", "hertz.pro", "-msh", "hertz.msh", "-solve", "Assemble", "-v", "0"], cwd=work, check=True,
-                   capture_output=True)
-    problem = json.load(open(os.path.join(work, "hertz.json")))
+    name, dimension, geometry = SOLVER_PROBLEMS[front]
+    for suffix in (".pro", ".json"):
+        shutil.copy(os.path.join(source, "getdp", name + suffix), work)
+    subprocess.run(["gmsh", dimension, "-format", "msh22", "-v", "0", os.path.join(source, "meshes", geometry),
+                    "-o", name + ".msh"], cwd=work, check=True)
+    subprocess.run(["getdp", name + ".pro", "-msh", name + ".msh", "-solve", "Assemble", "-v", "0"], cwd=work,
+                   check=True, capture_output=True)
+    problem = json.load(open(os.path.join(work, name + ".json")))
     problem["output"] = {"table": "out.csv"}
     failures = []
     for case in range(count):
@@ -87,7 +97,7 @@ def solver_cases(source, ffeti_solve, count, rng, work, verdicts):
         try:
             run = subprocess.run([ffeti_solve, "case.json"], cwd=work, capture_output=True, text=True, timeout=LIMIT)
         except subprocess.TimeoutExpired:
-            failures.append(f"ffeti-solve case {case} ({what}): no answer within {LIMIT} s")
+            failures.append(f"{front} case {case} ({what}): no answer within {LIMIT} s")
             continue
         message = (run.stdout + run.stderr).strip().splitlines()
         last = message[-1] if message else ""
@@ -96,10 +106,10 @@ def solver_cases(source, ffeti_solve, count, rng, work, verdicts):
         elif run.returncode in (0, 1) and "RESULT " in run.stdout:
             verdict = "ran" if run.returncode == 0 else "not converged"
         else:
-            failures.append(f"ffeti-solve case {case} ({what}): exit status {run.returncode}: {last[:300]}")
+            failures.append(f"{front} case {case} ({what}): exit status {run.returncode}: {last[:300]}")
             continue
-        verdicts["ffeti-solve", verdict] += 1
-        print(f"ok: ffeti-solve {what}: {verdict}: {last[:160]}")
+        verdicts[front, verdict] += 1
+        print(f"ok: {front} {what}: {verdict}: {last[:160]}")
     return failures
 
 
@@ -163,15 +173,83 @@ SCRIPT_MUTATIONS = [
 ]
 
 
-def script_cases(count, rng, work, verdicts):
+# Three dimensions: two blocks, the upper one's bottom nodes against the lower one's top
+# faces (node to face), with a gap per row (contactGap) as a design (dGap), friction
+# mutations and the 3D-only arguments (Z, component, faces, planes, balls).
+SCRIPT3 = r"""
+include "ffeti.idp"
+include "elasticity.idp"
+int S = 2;
+mesh3[int] Th(S);
+Th[0] = cube(2, 2, 2);
+Th[1] = cube(2, 2, 2, [x, y, z - 1.001]);
+matrix[int] K(S), dK(S);
+real[int][int] F(S), X(S), Y(S), Z(S), U(S), dF(S), G(S), dG(S), Share(S), Pr(S), Zs(S);
+int[int] body = [0, 1];
+int[int][int] fixed(S), component(S), slave(S), faces(S), noFaces(S);
+for (int s = 0; s < S; ++s) {
+  fespace Vh(Th[s], [P13d, P13d, P13d]);
+  varf vK([u1, u2, u3], [v1, v2, v3]) = ffetiElasticity3(Th[s], 100., 0.3);
+  varf vF([u1, u2, u3], [v1, v2, v3]) = int3d(Th[s])(-1. * v3);
+  varf vS([u1, u2, u3], [v1, v2, v3]) = int2d(Th[s], 5)(v1 + v2 + v3);
+  ffetiAssemble(Vh, s, vK, vF, K, F)
+  ffetiVectorCoordinates3(Vh, X[s], Y[s], Z[s], component[s])
+  // The lower block's bottom fixed, the upper one's top held in x and y: the contact holds it in z.
+  ffetiVectorDofsWhere3(Vh, (s == 1 && z < -1.001 + 1e-10) || (s == 0 && z > 1 - 1e-10),
+                        (s == 1 && z < -1.001 + 1e-10) || (s == 0 && z > 1 - 1e-10), s == 1 && z < -1.001 + 1e-10, fixed[s])
+  ffetiVectorDofsWhere3(Vh, s == 0 && z < 1e-10, s == 0 && z < 1e-10, s == 0 && z < 1e-10, slave[s])
+  faces[s].resize(0);
+  if (s == 1) ffetiBoundaryFaces(Th[s], Vh, X[s], Y[s], Z[s], component[s], 6, faces[s])
+  noFaces[s].resize(0);
+  G[s].resize(Vh.ndof); G[s] = 0;
+  dG[s].resize(Vh.ndof); dG[s] = 1e-4;
+  dF[s].resize(Vh.ndof); dF[s] = 0;
+  Share[s].resize(Vh.ndof); Share[s] = vS(0, Vh);
+  dK[s] = 0 * K[s];
+}
+real[int] plane = [0., 0., -0.001, 0., 0., 1.], line = [0., 0., 0., 1.], ball = [0.5, 0.5, -1., 0.9];
+real[int] intoBody = [0., 0., -0.001, 0., 0., -1.];
+@MUTATION@
+int P = fetiSetup(K, F, X, Y, body, Z = Z, component = component, dirichlet = fixed, contactSlave = slave,
+                  contactFaces = faces, contactGap = G@SETUP@);
+int status = fetiSolve(P, U@SOLVE@);
+cout << "RESULT status=" << status << endl;
+if (status == 0) {
+  int rows = fetiContactPressure(P, Share, Pr);
+  int st = fetiSensitivity(P, dK, dF, Zs, dGap = dG@SENS@);
+  cout << "RESULT sensitivity=" << st << " rows=" << rows << endl;
+}
+"""
+
+SCRIPT3_MUTATIONS = [
+    ("SETUP", ", friction = 0.3"), ("SETUP", ", friction = -0.3"), ("SETUP", ", slipBound = 0.01"),
+    ("SETUP", ", friction = 0.3, slipBound = 1"), ("SETUP", ", contactRadius = 1e-9"), ("SETUP", ", contactRadius = 0.0005"),
+    ("SETUP", ", obstacle = line"), ("SETUP", ", obstacleBall = ball"), ("SETUP", ", obstacle = plane"),
+    ("SETUP", ", contactSlaveFaces = faces"), ("SETUP", ", frictionField = G"), ("SETUP", ", threads = 1"),
+    ("SOLVE", ", tol = 0"), ("SOLVE", ", maxit = 3"), ("SOLVE", ", algorithm = \"smalbe\""), ("SENS", ", tol = -1"),
+    ("SENS", ", velocityZ = dG"), ("SENS", ", velocityX = dG, velocityY = dG"),
+    ("MUTATION", "Z[1][0] = sqrt(-1.);"), ("MUTATION", "Z[0].resize(3);"), ("MUTATION", "component[0][0] = 5;"),
+    ("MUTATION", "component[1][3] = 0;"), ("MUTATION", "Z[0] = 1000 * Z[0];"), ("MUTATION", "Z[1] = 0 * Z[1];"),
+    ("MUTATION", "faces[1][4] = faces[1][7];"), ("MUTATION", "faces[1].resize(8);"), ("MUTATION", "faces[1][0] = -1;"),
+    ("MUTATION", "{ int t = faces[1][3]; faces[1][3] = faces[1][6]; faces[1][6] = t; t = faces[1][4]; "
+                 "faces[1][4] = faces[1][7]; faces[1][7] = t; t = faces[1][5]; faces[1][5] = faces[1][8]; faces[1][8] = t; }"),
+    ("MUTATION", "faces[0].resize(faces[1].n); faces[0] = faces[1];"), ("MUTATION", "slave[0].resize(1);"),
+    ("MUTATION", "G[0].resize(5);"), ("MUTATION", "G[0] = -1e300;"), ("MUTATION", "G[0][0] = sqrt(-1.);"),
+    ("MUTATION", "dG[0].resize(2);"), ("MUTATION", "dG[1][0] = 1e308 * 10;"), ("MUTATION", "plane = intoBody;"),
+    ("MUTATION", "fixed[1].resize(0);"), ("MUTATION", "body[1] = 0;"), ("MUTATION", "F[0] = -1 * F[0];"),
+    ("MUTATION", "Share[0].resize(4);"), ("MUTATION", "X[0][1] = X[0][0];"),
+]
+
+
+def script_cases(count, rng, work, verdicts, script=SCRIPT, mutations=SCRIPT_MUTATIONS, front="plugin"):
     """FreeFEM scripts with one or two bad arguments; returns the failures."""
     failures = []
     for case in range(count):
-        chosen = rng.sample(SCRIPT_MUTATIONS, rng.choice([1, 1, 2]))
-        names = [re.match(r", (\w+) =", insert) for _, insert in chosen]
-        if len(chosen) == 2 and names[0] and names[1] and names[0].group(1) == names[1].group(1):
+        chosen = rng.sample(mutations, rng.choice([1, 1, 2]))
+        names = [set(re.findall(r"(\w+) =", insert)) for where, insert in chosen if where != "MUTATION"]
+        if len(names) == 2 and names[0] & names[1]:
             chosen = chosen[:1]  # one named argument given twice does not compile
-        text = SCRIPT
+        text = script
         for where, insert in chosen:
             text = text.replace(f"@{where}@", insert + f"@{where}@")
         text = re.sub(r"@[A-Z]+@", "", text)
@@ -183,19 +261,19 @@ def script_cases(count, rng, work, verdicts):
             run = subprocess.run(["FreeFem++-nw", "-v", "0", path], cwd=work, capture_output=True, text=True,
                                  timeout=LIMIT)
         except subprocess.TimeoutExpired:
-            failures.append(f"plugin case {case} ({what}): no answer within {LIMIT} s")
+            failures.append(f"{front} case {case} ({what}): no answer within {LIMIT} s")
             continue
         output = run.stdout + run.stderr
         error = re.search(r"Exec error : (feti\w+: \w+[\[\]0-9, \w]*: .*)", output)
         if error:
-            verdicts["plugin", "refused"] += 1
-            print(f"ok: plugin {what}: refused: {error.group(1)[:160]}")
+            verdicts[front, "refused"] += 1
+            print(f"ok: {front} {what}: refused: {error.group(1)[:160]}")
         elif run.returncode == 0 and "RESULT status=" in output:
-            verdicts["plugin", "ran"] += 1
-            print(f"ok: plugin {what}: ran: {' '.join(re.findall(r'RESULT (.*)', output))}")
+            verdicts[front, "ran"] += 1
+            print(f"ok: {front} {what}: ran: {' '.join(re.findall(r'RESULT (.*)', output))}")
         else:
             tail = " | ".join(output.strip().splitlines()[-3:])
-            failures.append(f"plugin case {case} ({what}): exit status {run.returncode}: {tail[:300]}")
+            failures.append(f"{front} case {case} ({what}): exit status {run.returncode}: {tail[:300]}")
     return failures
 
 
@@ -206,16 +284,21 @@ def write_report(args, verdicts, failures):
              "generator's docstring says which). Every case must be refused with a message naming",
              "the argument (or file and key), or run to a RESULT line; a crash, a hang, an",
              "uncaught exception or an unclear refusal is a failure. The default test command runs",
-             "40 cases per front end (`ctest -R fuzz`).", "",
+             "40 cases per front end, 10 for the 3D problem file (`ctest -R fuzz`).", "",
              "| front end | refused clearly | ran to a RESULT line (exit 0) | ran, not converged (exit 1) | failures |",
              "|---|---|---|---|---|"]
-    for front in ("plugin", "ffeti-solve"):
-        failed = sum(1 for f in failures if f.startswith(front))
+    for front in ("plugin", "plugin 3D", "ffeti-solve", "ffeti-solve 3D"):
+        failed = sum(1 for f in failures if f.startswith(front + " case"))
         lines.append(f"| {front} | {verdicts[front, 'refused']} | {verdicts[front, 'ran']} | "
                      f"{verdicts[front, 'not converged']} | {failed} |")
     lines += ["", "Failures:" if failures else "No failures.", ""] + [f"- {f}" for f in failures] + [""]
     with open(args.report, "w") as page:
         page.write("\n".join(lines))
+
+
+def solid_cases(cases):
+    """The 3D problem file takes seconds per solve: a quarter as many cases."""
+    return max(cases // 4, 5)
 
 
 def main():
@@ -231,14 +314,18 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         if os.path.exists("freefem++.pref"):
             shutil.copy("freefem++.pref", work)
-        failures = script_cases(args.cases, rng, work, verdicts) + solver_cases(
-            args.source, args.ffeti_solve, args.cases, rng, work, verdicts)
+        failures = (script_cases(args.cases, rng, work, verdicts) +
+                    script_cases(args.cases, rng, work, verdicts, SCRIPT3, SCRIPT3_MUTATIONS, "plugin 3D") +
+                    solver_cases(args.source, args.ffeti_solve, args.cases, rng, work, verdicts) +
+                    solver_cases(args.source, args.ffeti_solve, solid_cases(args.cases), rng, work, verdicts,
+                                 "ffeti-solve 3D"))
     for failure in failures:
         print("FAILED: " + failure)
     if args.report:
         write_report(args, verdicts, failures)
-    print(f"{len(failures)} failure(s) in {2 * args.cases} generated cases" if failures else
-          f"all {2 * args.cases} generated cases refused clearly or ran")
+    total = 3 * args.cases + solid_cases(args.cases)
+    print(f"{len(failures)} failure(s) in {total} generated cases" if failures else
+          f"all {total} generated cases refused clearly or ran")
     sys.exit(1 if failures else 0)
 
 

@@ -180,5 +180,27 @@ if cmp -s getdp.csv market.csv; then
 else
   echo "FAILED: Matrix Market results differ from GetDP's"; failures=$((failures + 1))
 fi
+# A search distance that leaves slaves without a row (issue 37): the solve converges, and
+# those that pass through the master are reported (a WARNING and the RESULT keys); the
+# full distance reports none.
+for distance in 12.5 0.05; do
+  python3 -c "
+import json
+p = json.load(open('hertz.json'))
+p['contact'][0]['search_distance'] = $distance
+json.dump(p, open('case.json', 'w'))"
+  status=0
+  "$ffeti_solve" case.json > out.txt 2> err.txt || status=$?
+  penetrating=$(grep -o "beyond_reach_penetrating=[0-9]*" out.txt | cut -d= -f2)
+  if [ "$distance" = 12.5 ] && [ "$status" -eq 0 ] && [ "$penetrating" = 0 ] && ! grep -q WARNING err.txt; then
+    echo "ok: search_distance 12.5: every slave has a row, nothing reported"
+  elif [ "$distance" = 0.05 ] && [ "$status" -eq 0 ] && [ "${penetrating:-0}" -gt 0 ] \
+       && grep -q "WARNING: $penetrating of the [0-9]* slave nodes that contactRadius left without a contact row" err.txt; then
+    echo "ok: search_distance 0.05: $(cat err.txt)"
+  else
+    echo "FAILED: search_distance $distance: exit status $status, beyond_reach_penetrating=$penetrating"; cat err.txt
+    failures=$((failures + 1))
+  fi
+done
 echo "failures: $failures"
 [ "$failures" -eq 0 ]

@@ -2,12 +2,14 @@
 // not an edge or a vertex), and METIS-like partitions with parts in pieces made connected.
 #include "base/errors.h"
 #include "mesh/connect_parts.h"
+#include "mesh/tetrahedron_quality.h"
 #include "mesh/facet_neighbours.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <random>
 #include <string>
@@ -151,6 +153,26 @@ TEST(ConnectElementParts, MeshInTwoPiecesEnds) {
   std::vector<long> part(12, 0);
   EXPECT_EQ(connect_element_parts(nodes, 4, part), 0);
   EXPECT_EQ(part, std::vector<long>(12, 0));
+}
+
+}  // namespace
+}  // namespace ffeti
+
+namespace ffeti {
+namespace {
+
+TEST(TetrahedronQuality, FlatnessIsVolumeOverTheCubeOfTheLongestEdge) {
+  // The unit corner: volume 1/6, longest edge sqrt 2.
+  EXPECT_NEAR(tetrahedron_flatness({{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}), 1 / (6 * std::pow(2, 1.5)), 1e-15);
+  // A regular one: 1 / (6 sqrt 2) = 0.118, above the bound by five orders.
+  const double regular = tetrahedron_flatness({{{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}});
+  EXPECT_NEAR(regular, 1 / (6 * std::sqrt(2.0)), 1e-15);
+  // tests/edp/bad-input-3d.edp's flat one: its fourth vertex 1e-7 off the face (1,0,0),
+  // (0,1,0), (0,0,1): 5e-9, refused by both front ends.
+  const double flat = tetrahedron_flatness({{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.5, 0.25, 0.2500001}}});
+  EXPECT_LT(flat, kFlatTetrahedron);
+  EXPECT_GT(flat, 0);
+  EXPECT_EQ(tetrahedron_flatness({{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}}}), 0);
 }
 
 }  // namespace

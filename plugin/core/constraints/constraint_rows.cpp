@@ -99,18 +99,28 @@ std::vector<SlaveMaster> node_to_node_pairs(const std::vector<DofRecord>& record
 std::vector<SlaveNode> slave_nodes(const std::vector<DofRecord>& records, double snap, int components) {
   const std::vector<Located> slaves = unique_slaves(records, snap);  // sorted by key(): component 0 first
   std::vector<SlaveNode> nodes;
+  const auto missing = [](const DofRecord& r, int c) {
+    return InputError("contactSlave[" + std::to_string(r.subdomain) + "]: dof " + std::to_string(r.dof) +
+                      " has no dof of component " + std::to_string(c) +
+                      " at its node: list every component of each slave node for node-to-segment, node-to-face "
+                      "or obstacle contact");
+  };
   for (const Located& s : slaves) {
-    if (s.record->component != 0) continue;
+    if (s.record->component != 0) {
+      // Its node's row is built from the component-0 dof: without one the node would get no
+      // row at all, and the body then looked unrestrained.
+      const auto wanted = std::make_tuple(s.record->body, 0, s.ix, s.iy, s.iz);
+      const auto x_dof = std::lower_bound(slaves.begin(), slaves.end(), wanted,
+                                          [](const Located& o, const auto& key) { return o.key() < key; });
+      if (x_dof == slaves.end() || x_dof->key() != wanted) throw missing(*s.record, 0);
+      continue;
+    }
     std::array<const DofRecord*, 3> dofs{s.record, nullptr, nullptr};
     for (int c = 1; c < components; ++c) {
       const auto wanted = std::make_tuple(s.record->body, c, s.ix, s.iy, s.iz);  // the same node's other dofs
       const auto partner = std::lower_bound(slaves.begin(), slaves.end(), wanted,
                                             [](const Located& o, const auto& key) { return o.key() < key; });
-      if (partner == slaves.end() || partner->key() != wanted)
-        throw InputError("contactSlave[" + std::to_string(s.record->subdomain) + "]: dof " +
-                         std::to_string(s.record->dof) + " has no dof of component " + std::to_string(c) +
-                         " at its node: list every component of each slave node for node-to-segment, node-to-face "
-                         "or obstacle contact");
+      if (partner == slaves.end() || partner->key() != wanted) throw missing(*s.record, c);
       dofs[static_cast<size_t>(c)] = partner->record;
     }
     nodes.push_back({dofs[0], dofs[1], dofs[2]});

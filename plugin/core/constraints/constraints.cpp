@@ -34,6 +34,17 @@ Constraints build_constraints(std::vector<DofRecord> records, const std::vector<
   add_gluing_rows(records, snap, rows);
   if (variant == FetiVariant::tfeti) add_dirichlet_rows(records, rows);
   for (const ContactDiscretization* unit : selected) unit->add_rows(in, rows);
+  Constraints result;
+  // Rows of slaves beyond the radius leave before the Dirichlet substitution: they are
+  // evaluated on the whole u, prescribed values included.
+  const auto watched = std::stable_partition(rows.begin(), rows.end(), [](const Row& r) { return !r.beyond_reach; });
+  for (auto row = watched; row != rows.end(); ++row) {
+    auto& out = result.beyond_reach;
+    out.entries.insert(out.entries.end(), row->entries.begin(), row->entries.end());
+    out.row_start.push_back(static_cast<int>(out.entries.size()));
+    out.rhs.push_back(row->rhs);
+  }
+  rows.erase(watched, rows.end());
   // A slave far from every master gets no row (no contact possible there); none at all
   // means the contact asked for cannot happen: most likely a radius or a surface mislaid.
   const bool has_slaves = std::any_of(records.begin(), records.end(), [](const DofRecord& r) { return r.slave; });
@@ -48,7 +59,6 @@ Constraints build_constraints(std::vector<DofRecord> records, const std::vector<
 
   std::stable_partition(rows.begin(), rows.end(), [](const Row& r) { return r.equality; });
   if (contact.has_friction()) add_friction_rows(records, rows);
-  Constraints result;
   result.tangent_directions = contact.three_d ? 2 : 1;
   for (const ContactDiscretization* unit : selected) result.contact_kinds.push_back(unit->kind());
   for (const Row& row : rows) {

@@ -43,6 +43,15 @@ struct Constraints {
   /// Friction rows per contact row that has them: 1 in a plane problem, 2 in three
   /// dimensions (t1 then t2, adjacent: their multipliers lie in one disc ||lambda_t|| <= g).
   int tangent_directions = 1;
+  /// Slave nodes that contactRadius left without a row although they lie over a master of
+  /// another body, in front of it: their rows against it (B u <= c form, not in B), which
+  /// FetiProblem::solve checks for penetration. Node to segment and node to face.
+  struct Watched {
+    std::vector<int> row_start{0};
+    std::vector<ConstraintEntry> entries;
+    std::vector<double> rhs;
+    int rows() const { return static_cast<int>(rhs.size()); }
+  } beyond_reach;
 
   int rows() const { return static_cast<int>(rhs.size()); }
   /// The rows with bounded multipliers: contact and friction rows.

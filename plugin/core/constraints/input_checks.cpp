@@ -1,6 +1,7 @@
 #include "constraints/input_checks.h"
 
 #include "constraints/capabilities.h"
+#include "constraints/surface_checks.h"
 
 #include "base/errors.h"
 
@@ -187,6 +188,8 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
     }
     check_per_subdomain_lists(face_dofs, ids, subdomains, name);
     check_face_corners(*faces, ids, subdomains, name);
+    check_face_orientation(*faces, ids, subdomains, name);
+    if (any(contact.slave_faces)) refuse_higher_order_faces(*faces, ids, subdomains, name);
     if (any(*faces)) require(kind, Feature::rows, dimension, name);
   }
   if (any(contact.slave_faces) && (any(contact.slave_dofs) || contact.obstacle))

@@ -70,9 +70,11 @@ CoarseSpace::CoarseSpace(const SubdomainList& subdomains, const std::vector<Loca
   }
   std::string names;
   for (int b : unrestrained) names += (names.empty() ? "" : ", ") + std::to_string(b);
-  throw InputError("body: the rigid body modes of body " + names +
-                   " are not restrained by any Dirichlet, gluing or contact condition "
-                   "(add a Dirichlet condition or a contact zone; GG' is singular)");
+  throw InputError("body: some rigid body motion of body " + names +
+                   " meets no Dirichlet, gluing or contact row (GG' is singular): either the body has no condition "
+                   "at all (add a Dirichlet condition or a contact zone), or its conditions leave a motion free, "
+                   "e.g. sliding along or turning on its contact surface, which contact rows do not hold (they act "
+                   "along their normals only; add Dirichlet conditions on the tangential components)");
 }
 
 int CoarseSpace::floating_subdomains() const {

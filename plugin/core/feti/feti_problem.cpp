@@ -1,5 +1,7 @@
 #include "feti/feti_problem.h"
 
+#include "constraints/surface_checks.h"
+
 #include "feti/dirichlet.h"
 #include "base/errors.h"
 #include "constraints/input_checks.h"
@@ -49,6 +51,11 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   if (comm.max(has(false) ? 1.0 : 0.0) > 0 && comm.max(has(true) ? 1.0 : 0.0) > 0)
     throw InputError("Z: given for the subdomains of some ranks and missing for those of others: every subdomain of a "
                      "problem is plane or every one has a third coordinate");
+  // The obstacle's side is judged from the slaves of all ranks (a body's slaves may be split).
+  const ObstacleFacing facing = obstacle_facing(inputs_, local_contact);
+  if (obstacle_points_into_bodies({comm.sum(facing.toward), comm.sum(facing.total)}))
+    throw InputError("obstacle: its normal points into the bodies (the slave nodes' bodies lie on the side it points "
+                     "to, read from K): give the normal pointing away from the obstacle, toward the bodies");
 
   // Who holds what: boxes, bodies and owners of all subdomains on every rank.
   std::vector<double> mine;
@@ -273,6 +280,7 @@ FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
     result.status = SolveStatus::inaccurate;
   for (int i = c.equality_rows; i < c.rows(); ++i)
     if (c.kind[static_cast<size_t>(i)] == RowKind::contact && result.lambda[i] > 0) ++result.active_contact;
+  result.beyond_reach = check_beyond_reach(c.beyond_reach, result.u, global_ids_, *comm_);
   if (has_friction())
     for (ContactState state : contact_row_forces(c, result.lambda, result.slip_bound).state)
       result.slipping_contact += state == ContactState::slip ? 1 : 0;

@@ -2,6 +2,7 @@
 // solved for one or more load cases, choosing the solver path the scene needs.
 #pragma once
 
+#include "feti/contact_reach.h"
 #include "feti/dual_system.h"
 #include "feti/friction.h"
 #include "feti/primal.h"
@@ -41,6 +42,7 @@ struct FetiResult : DualSolution {
   double friction_bound_change = 0;   ///< Coulomb: the fixed point's last relative change of g
   Vec slip_bound;                ///< g per friction row of the last Tresca solve
   int slipping_contact = 0;      ///< contact rows whose friction force is at its bound
+  ReachCheck beyond_reach;       ///< slaves without a row (contactRadius) that penetrate
 };
 
 /// What one rank holds and spent, for load-balance reports.

@@ -33,6 +33,7 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
       {"peak_memory_mb", peak_memory_mb()},  // read when asked: the process's peak so far
   };
   if (c.friction_rows > 0) s.push_back({"friction_rows", c.friction_rows});
+  s.push_back({"beyond_reach", c.beyond_reach.rows()});
   if (!result) return s;
   const Statistics solve = {
       {"status", status_code(result->status)},
@@ -67,6 +68,8 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
       {"time_primal_checks", result->times.primal_checks},
       {"time_recovery", result->times.recovery},
       {"time_kkt", result->times.kkt},
+      {"beyond_reach_penetrating", result->beyond_reach.penetrating},
+      {"beyond_reach_depth", result->beyond_reach.depth},
   };
   s.insert(s.end(), solve.begin(), solve.end());
   if (c.friction_rows > 0) {

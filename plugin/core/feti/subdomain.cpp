@@ -54,18 +54,27 @@ Subdomain::Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& ke
   fixing_ = fixing_dofs(R_);
   const SparseMatrix reduced = remove_dofs(K, fixing_, reduced_to_full_);
   const int failed = factor_.factorize(reduced);
+  // Some candidate modes outside the kernel of a matrix that is still singular: the modes
+  // built from the coordinates do not fit the matrix (Z scaled by 1000 gave this), more
+  // likely than a wrong matrix.
+  const std::string coordinates_hint =
+      R_.cols() > 0 && R_.cols() < kernel_candidates.cols()
+          ? " Only " + std::to_string(R_.cols()) + " of the " + std::to_string(kernel_candidates.cols()) +
+                " rigid modes built from X, Y, Z and component lie in its kernel: check that the coordinates are "
+                "those of this matrix's dofs (not scaled, swapped or another mesh's)."
+          : "";
   // A singular block may factor with a tiny positive pivot instead of failing outright.
   const double rcond = failed < 0 ? factor_.reciprocal_condition() : 0.0;
   if (failed < 0 && rcond < 1e-14)
     throw InputError(name + ": singular outside its kernel (reciprocal condition estimate " +
                      std::to_string(rcond) + " with kernel dimension " + std::to_string(R_.cols()) +
                      "): the matrix has a kernel outside the candidate rigid modes, e.g. a "
-                     "disconnected subdomain mesh or a mechanism");
+                     "disconnected subdomain mesh or a mechanism." + coordinates_hint);
   if (failed >= 0)
     throw InputError(name + ": not positive definite outside its kernel (Cholesky pivot " +
                      std::to_string(failed) + " of " + std::to_string(reduced.rows()) +
                      " fails; kernel dimension found " + std::to_string(R_.cols()) +
-                     "). Is the subdomain mesh connected and the matrix a stiffness matrix?");
+                     "). Is the subdomain mesh connected and the matrix a stiffness matrix?" + coordinates_hint);
   reduced_rhs_.resize(reduced.rows());
   reduced_solution_.resize(reduced.rows());
   const double residual = pseudo_inverse_residual(K);

@@ -40,6 +40,20 @@ std::vector<RowAt> FaceGeometry::slip_rows() const {
   return rows;
 }
 
+namespace {
+
+/// s projects along the face's normal inside the triangle (its edges included).
+bool over_face(const Point3& s, const std::array<Point3, 3>& corners) {
+  const Point3 u = minus(corners[1], corners[0]), v = minus(corners[2], corners[0]), w = minus(s, corners[0]);
+  const double uu = dot(u, u), uv = dot(u, v), vv = dot(v, v), wu = dot(w, u), wv = dot(w, v);
+  const double det = uu * vv - uv * uv;
+  const double beta = (vv * wu - uv * wv) / det, gamma = (uu * wv - uv * wu) / det;
+  constexpr double kEdge = 1e-9;
+  return beta >= -kEdge && gamma >= -kEdge && beta + gamma <= 1 + kEdge;
+}
+
+}  // namespace
+
 bool NodeToFace::selected(const ContactRecords& in) const {
   return !in.faces.empty() && std::none_of(in.faces.begin(), in.faces.end(), [](const FaceRecord& f) { return f.slave; });
 }
@@ -49,7 +63,12 @@ void NodeToFace::add_rows(const ContactRecords& in, std::vector<Row>& rows) cons
   for (const SlaveNode& node : slave_nodes(in.records, in.snap, 3)) {
     const Point3 s{node.x_dof->x, node.x_dof->y, node.x_dof->z};
     const FaceRecord* face = grid.nearest(s, node.x_dof->body, in.contact.search_distance);
-    if (!face) continue;  // no master face within reach: no contact possible here
+    // No master face within reach: no row, but a slave over a face beyond it, in front of
+    // it, is watched for penetration after the solve (a radius too small answers otherwise
+    // silently).
+    const bool beyond_reach = !face && std::isfinite(in.contact.search_distance);
+    if (beyond_reach) face = grid.nearest(s, node.x_dof->body, INFINITY);
+    if (!face || (beyond_reach && !over_face(s, face->corners))) continue;
     std::array<DofRef, 9> face_dofs;
     for (size_t k = 0; k < 9; ++k) face_dofs[k] = {face->subdomain, face->dofs[k]};
     const auto geometry = std::make_shared<const FaceGeometry>(
@@ -58,7 +77,8 @@ void NodeToFace::add_rows(const ContactRecords& in, std::vector<Row>& rows) cons
                                {node.z_dof->subdomain, node.z_dof->dof}}},
         s, face_dofs, face->corners);
     const LinearizedFaceRow linear = node_to_face_row(s, face->corners[0], face->corners[1], face->corners[2]);
-    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction};
+    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction, beyond_reach};
+    if (beyond_reach && row.rhs < 0) continue;  // behind the face from the start: not a contact it missed
     const DofRecord* slave[3] = {node.x_dof, node.y_dof, node.z_dof};
     for (size_t i = 0; i < 3; ++i)
       if (linear.coefficients[i] != 0) row.entries.push_back({slave[i]->subdomain, slave[i]->dof, linear.coefficients[i]});

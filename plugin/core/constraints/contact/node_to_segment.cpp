@@ -101,14 +101,24 @@ void NodeToSegment::add_rows(const ContactRecords& in, std::vector<Row>& rows) c
   for (const SlaveNode& node : slave_nodes(in.records, in.snap)) {
     const double sx = node.x_dof->x, sy = node.x_dof->y;
     const SegmentRecord* best = grid.nearest(sx, sy, node.x_dof->body, in.contact.search_distance);
-    if (!best) continue;  // no master segment within reach: no contact possible here
+    // No master segment within reach: no row, but a slave over a segment beyond it is
+    // watched for penetration after the solve, as in node to face.
+    const bool beyond_reach = !best && std::isfinite(in.contact.search_distance);
+    if (beyond_reach) best = grid.nearest(sx, sy, node.x_dof->body, INFINITY);
+    if (!best) continue;
+    if (beyond_reach) {
+      const double dx = best->bx - best->ax, dy = best->by - best->ay;
+      const double xi = ((sx - best->ax) * dx + (sy - best->ay) * dy) / (dx * dx + dy * dy);
+      if (xi < -1e-9 || xi > 1 + 1e-9) continue;
+    }
     std::array<DofRef, 4> master;
     for (size_t k = 0; k < 4; ++k) master[k] = {best->subdomain, best->dofs[k]};
     const auto geometry = std::make_shared<const NodeToSegmentGeometry>(
         std::array<DofRef, 2>{{{node.x_dof->subdomain, node.x_dof->dof}, {node.y_dof->subdomain, node.y_dof->dof}}},
         master, Point{sx, sy}, Point{best->ax, best->ay}, Point{best->bx, best->by});
     const LinearizedRow linear = node_to_segment_row(geometry->s, geometry->a, geometry->b);
-    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction};
+    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction, beyond_reach};
+    if (beyond_reach && row.rhs < 0) continue;  // behind the segment from the start
     const std::vector<DofRef> dofs = geometry->dofs();
     for (size_t k = 0; k < 6; ++k)
       if (linear.coefficients[k] != 0) row.entries.push_back({dofs[k][0], dofs[k][1], linear.coefficients[k]});
