@@ -18,7 +18,7 @@ struct Row {
   bool equality = true;
   std::shared_ptr<const ContactRowGeometry> geometry{};
   int normal_row = -1;  ///< a friction row's contact row
-  double friction = 0;  ///< a contact or friction row's Coulomb coefficient (its slave node's)
+  double friction = 0;  ///< a contact or friction row's Coulomb coefficient or Tresca bound (its slave node's)
 };
 
 /// A slave node of the contact kinds that take every component: its dofs.

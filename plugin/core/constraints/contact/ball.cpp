@@ -16,6 +16,12 @@ RowAt BallGeometry::row_at(const NodeMotion& v, double t) const {
   return row;
 }
 
+Point3 BallGeometry::normal() const {
+  const Point3 d = minus(slave_position(), centre);
+  const double distance = std::sqrt(dot(d, d));
+  return {d[0] / distance, d[1] / distance, d[2] / distance};
+}
+
 void Ball::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
   const ContactInput& contact = in.contact;
   const Point3& c = contact.obstacle_point;

@@ -19,6 +19,8 @@ class BallGeometry final : public ContactRowGeometry {
   /// n moves with s.
   RowAt row_at(const NodeMotion& v, double t) const override;
   double length() const override { return radius; }
+  /// (s - c)/|s - c|.
+  Point3 normal() const override;
 
   const std::array<DofRef, 3> slave;
   const Point3 centre;

@@ -21,6 +21,7 @@ using NodeKey = std::tuple<int, long long, long long, long long>;  // body, snap
 /// summed over the (slave face, master face) pairs, n each master face's normal.
 struct MortarRow {
   std::map<std::pair<int, int>, double> coefficients;  ///< per (subdomain, dof)
+  Point3 normal_sum{0, 0, 0};  ///< sum over pairs of int phi_j n: the row's normal, unnormalized
   double gap = 0;
   double weight = 0;  ///< int phi_j over the covered part
 };
@@ -51,6 +52,7 @@ void add_pair(const FaceRecord& slave, const FaceRecord& master, const MortarInt
     MortarRow& row = pending[corner_rows[j]];
     for (size_t k = 0; k < 3; ++k) {
       row.weight += in.D[j][k];
+      for (size_t i = 0; i < 3; ++i) row.normal_sum[i] += in.D[j][k] * n[i];
       for (size_t i = 0; i < 3; ++i) {
         row.coefficients[{slave.subdomain, slave.dofs[3 * k + i]}] -= in.D[j][k] * n[i];
         row.coefficients[{master.subdomain, master.dofs[3 * k + i]}] += in.M[j][k] * n[i];
@@ -146,8 +148,11 @@ void Mortar::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
     // repeat its neighbours'): no contact possible here.
     if (!(pending_row.weight > 1e-3 * full_weight[j])) continue;
     const SlaveNode& node = nodes[j];
-    const auto geometry = std::make_shared<const MortarGeometry>(DofRef{node.x_dof->subdomain, node.x_dof->dof},
-                                                                 Point3{node.x_dof->x, node.x_dof->y, node.x_dof->z});
+    const Point3& d = pending_row.normal_sum;
+    const double d_length = std::sqrt(dot(d, d));
+    const auto geometry = std::make_shared<const MortarGeometry>(
+        DofRef{node.x_dof->subdomain, node.x_dof->dof}, Point3{node.x_dof->x, node.x_dof->y, node.x_dof->z},
+        Point3{d[0] / d_length, d[1] / d_length, d[2] / d_length});
     // Divided by int phi_j, so that the multiplier is a force like the other rows'.
     Row row{{}, pending_row.gap / pending_row.weight + node.x_dof->gap, RowKind::contact, false, geometry,
             -1, node.x_dof->friction};

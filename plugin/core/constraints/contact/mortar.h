@@ -12,11 +12,18 @@ namespace ffeti {
 /// derivative is not derived (the capability table refuses the sensitivity analysis).
 class MortarGeometry final : public ContactRowGeometry {
  public:
-  MortarGeometry(DofRef slave, const Point3& s) : ContactRowGeometry(ContactKind::mortar, slave, s, true) {}
+  /// `normal`: the unit normal of the row's condition (normal()).
+  MortarGeometry(DofRef slave, const Point3& s, const Point3& normal)
+      : ContactRowGeometry(ContactKind::mortar, slave, s, true), unit_normal(normal) {}
 
   std::vector<DofRef> moving_nodes() const override { return {}; }
   RowAt row_at(const NodeMotion& v, double t) const override;
   double length() const override { return 1.0; }
+  /// The masters' normals weighted by int phi_j over each overlap with the slave's faces,
+  /// normalized (a flat contact: the master's normal).
+  Point3 normal() const override { return unit_normal; }
+
+  const Point3 unit_normal;
 };
 
 class Mortar final : public ContactDiscretization {

@@ -14,7 +14,7 @@ void NodeToNode::add_rows(const ContactRecords& in, std::vector<Row>& rows) cons
                     std::make_shared<const NodeToNodeGeometry>(DofRef{slave->subdomain, slave->dof},
                                                                DofRef{master->subdomain, master->dof},
                                                                Point3{slave->x, slave->y, slave->z}, gap,
-                                                               in.contact.three_d)});
+                                                               in.contact.three_d, slave->component)});
   }
 }
 

@@ -11,15 +11,24 @@ namespace ffeti {
 /// The row does not depend on positions: its derivative under motion is zero.
 class NodeToNodeGeometry final : public ContactRowGeometry {
  public:
-  NodeToNodeGeometry(DofRef slave, DofRef master, const Point3& s, double gap, bool three_d)
-      : ContactRowGeometry(ContactKind::node_to_node, slave, s, three_d), master(master), gap(gap) {}
+  /// `component`: the slave dof's field component c.
+  NodeToNodeGeometry(DofRef slave, DofRef master, const Point3& s, double gap, bool three_d, int component)
+      : ContactRowGeometry(ContactKind::node_to_node, slave, s, three_d), master(master), gap(gap),
+        component(component) {}
 
   std::vector<DofRef> moving_nodes() const override { return {}; }
   RowAt row_at(const NodeMotion&, double) const override { return {{slave_dof(), master}, {1.0, -1.0}, gap}; }
   double length() const override { return 1.0; }
+  /// -e_c: u_slave - u_master <= gap is n.(u_master - u_slave) <= gap (a scalar field: c = 0).
+  Point3 normal() const override {
+    Point3 n{0, 0, 0};
+    n[static_cast<size_t>(component)] = -1;
+    return n;
+  }
 
   const DofRef master;
   const double gap;
+  const int component;
 };
 
 class NodeToNode final : public ContactDiscretization {
