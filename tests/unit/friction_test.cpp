@@ -6,6 +6,7 @@
 #include "feti/friction.h"
 #include "sens/sensitivity.h"
 #include "base/errors.h"
+#include "input_error.h"
 
 #include <gtest/gtest.h>
 
@@ -208,13 +209,14 @@ std::unique_ptr<FetiProblem> dragged_coulomb(FetiVariant variant) {
   return std::make_unique<FetiProblem>(two_subdomains(kDrag), contact, setup);
 }
 
-void expect_input_error(const std::function<void()>& f, const std::string& part) {
-  try {
-    f();
-    ADD_FAILURE() << "no InputError, expected one containing '" << part << "'";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+/// A value per dof of each subdomain, `value` of its x (frictionField, slipBoundField).
+std::vector<std::vector<double>> field_of_x(const std::vector<SubdomainInput>& subs, double (*value)(double)) {
+  std::vector<std::vector<double>> field;
+  for (const SubdomainInput& s : subs) {
+    field.emplace_back();
+    for (double x : s.x) field.back().push_back(value(x));
   }
+  return field;
 }
 
 class Tresca : public ::testing::TestWithParam<FetiVariant> {};
@@ -260,10 +262,7 @@ TEST_P(Tresca, TrescaWithABoundPerRow) {
   std::vector<SubdomainInput> subs = two_subdomains(kDrag);
   ContactInput contact = on_plane(subs);
   contact.slip_bound = 0;
-  for (const SubdomainInput& s : subs) {
-    contact.slip_bound_field.emplace_back();
-    for (double x : s.x) contact.slip_bound_field.back().push_back(0.2 + 2 * x);
-  }
+  contact.slip_bound_field = field_of_x(subs, [](double x) { return 0.2 + 2 * x; });
   FetiSetupSettings setup;
   setup.variant = GetParam();
   const FetiProblem p(std::move(subs), contact, setup);
@@ -373,10 +372,7 @@ TEST_P(Tresca, CoulombWithACoefficientPerRow) {
   std::vector<SubdomainInput> subs = two_subdomains(kDrag);
   ContactInput contact = on_plane(subs);
   contact.friction = 0;
-  for (const SubdomainInput& s : subs) {
-    contact.friction_field.emplace_back();
-    for (double x : s.x) contact.friction_field.back().push_back(0.1 + 0.2 * x);
-  }
+  contact.friction_field = field_of_x(subs, [](double x) { return 0.1 + 0.2 * x; });
   FetiSetupSettings setup;
   setup.variant = GetParam();
   const FetiProblem p(std::move(subs), contact, setup);
