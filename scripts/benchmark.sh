@@ -15,12 +15,16 @@
 #   ./scripts/benchmark.sh accuracy        what accuracy costs in time, every scene, tol 1e-2 .. 1e-10 (~3 min)
 #   ./scripts/benchmark.sh busy-machine    scenes idle and beside busy neighbour processes, threads (~2 min)
 #   ./scripts/benchmark.sh friction        Cattaneo-Mindlin and a block on a slope: tractions, stick/slip,
-#                                          the Coulomb fixed point's cost against frictionless (~1 min)
+#                                          the Coulomb fixed point's cost against frictionless, and
+#                                          the sphere in 3D (~1 min; the sphere took 36 min more on a
+#                                          loaded machine, load average 10 on 2 cores)
 #   ./scripts/benchmark.sh three-dimensions  the model problem as two cubes up to 6 million unknowns,
 #                                          factor kinds in 3D, against 2D, Hertz for a sphere on a plane
 #                                          and on a block, a rigid ball, the patch test, 3D gradients and
 #                                          a picture (~12 min, 13 GB; "three-dimensions --sphere": the
 #                                          Hertz scenes alone)
+#   ./scripts/benchmark.sh elasticity-3d   3D elasticity contact (two cubes) at H/h = 8 up to 1.6 million
+#                                          unknowns: phases, memory, preconditioners, factor kinds (~20 min, 12 GB)
 #   ./scripts/benchmark.sh                 all
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -42,6 +46,7 @@ case "${1:-all}" in
   accuracy) /usr/bin/python3 "$root/scripts/accuracy_benchmark.py" ;;
   friction) /usr/bin/python3 "$root/scripts/friction_benchmark.py" ;;
   three-dimensions) /usr/bin/python3 "$root/scripts/three_dimensions_benchmark.py" "${@:2}" ;;
+  elasticity-3d) /usr/bin/python3 "$root/scripts/elasticity_3d_benchmark.py" ;;
   all) /usr/bin/python3 "$root/scripts/model_problem_benchmark.py"
        /usr/bin/python3 "$root/scripts/parallel_benchmark.py"
        /usr/bin/python3 "$root/scripts/hertz_benchmark.py"
@@ -53,6 +58,7 @@ case "${1:-all}" in
        /usr/bin/python3 "$root/scripts/accuracy_benchmark.py"
        /usr/bin/python3 "$root/scripts/busy_machine_benchmark.py"
        /usr/bin/python3 "$root/scripts/friction_benchmark.py"
-       /usr/bin/python3 "$root/scripts/three_dimensions_benchmark.py" ;;
-  *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization|scalability|large-contact|hard-cases|accuracy|busy-machine]" >&2; exit 2 ;;
+       /usr/bin/python3 "$root/scripts/three_dimensions_benchmark.py"
+       /usr/bin/python3 "$root/scripts/elasticity_3d_benchmark.py" ;;
+  *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization|scalability|large-contact|hard-cases|accuracy|busy-machine|friction|three-dimensions|elasticity-3d]" >&2; exit 2 ;;
 esac

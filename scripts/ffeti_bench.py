@@ -33,11 +33,14 @@ def run(script, *args, ranks=0, prefixes=("RESULT", "DIRECT", "RANK")):
     of its key=value result lines, each with the process's peak resident memory as
     'process_peak_mb' (of FreeFEM alone; of mpirun, not its ranks, under MPI), and its whole
     standard output under 'output' (progress lines)."""
-    command = ["FreeFem++-nw", "-v", "0", script, *map(str, args)]
+    # FFETI_RUN_DIR: run from that folder instead (a build tree's edp-tests folder, whose
+    # freefem++.pref loads that build's plugin rather than the installed one).
+    run_dir = os.environ.get("FFETI_RUN_DIR")
+    command = ["FreeFem++-nw", "-v", "0", os.path.join(EDP, script) if run_dir else script, *map(str, args)]
     if ranks:
         command = ["mpirun", "--oversubscribe", "-np", str(ranks), "FreeFem++-mpi", *command[1:]]
     with tempfile.TemporaryFile(mode="w+") as output:
-        process = subprocess.Popen(command, cwd=EDP, stdout=output, stderr=subprocess.DEVNULL, text=True, env=MPI_ENV)
+        process = subprocess.Popen(command, cwd=run_dir or EDP, stdout=output, stderr=subprocess.DEVNULL, text=True, env=MPI_ENV)
         _, status, usage = os.wait4(process.pid, 0)
         process.returncode = os.waitstatus_to_exitcode(status)
         output.seek(0)

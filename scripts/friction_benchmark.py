@@ -2,8 +2,10 @@
 """Friction (edp/cattaneo-mindlin.edp, edp/block-on-slope.edp): Cattaneo-Mindlin partial slip
 against the analytic tractions for three Q/(mu P), the stick/slip map, the Coulomb fixed
 point's iterations and Hessian multiplications against the frictionless solve of the same
-scene, their growth with h at fixed subdomain size, and the block on a slope. Writes
-docs/results/friction.md and its plots from one run on this machine."""
+scene, their growth with h at fixed subdomain size, the block on a slope, the cost of
+every friction scene before and after the fixed point's change (scripts/friction_cost.py),
+and the sphere in three dimensions (scripts/friction_3d.py). Writes docs/results/friction.md
+and its plots from one run on this machine."""
 import argparse
 import os
 import tempfile
@@ -13,6 +15,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+import friction_3d  # noqa: E402
+import friction_cost  # noqa: E402
 from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, listing, machine_line, markdown_table, read_csv,  # noqa: E402
                          run, save_page, span, write_csv)
 
@@ -74,10 +78,12 @@ def main():
             refinement.append(run("cattaneo-mindlin.edp", "-h", h, "-partsize", PART_SIZE, "-meshes", MESHES)["RESULT"][0])
         for name, args in SLOPE_CASES:
             slope.append(dict(case=name, **run("block-on-slope.edp", *args)["RESULT"][0]))
+        friction_3d.measure(MESHES)
         write_csv(PAGE, "cattaneo-mindlin", mindlin)
         write_csv(PAGE, "tractions", tractions)
         write_csv(PAGE, "refinement", refinement)
         write_csv(PAGE, "slope", slope)
+        write_csv(PAGE, "cost", friction_cost.measure())
         end_run(PAGE, begun)
     render()
 
@@ -216,8 +222,9 @@ def render():
         "bound exactly (the row at the stop's corner cannot slip: its x displacement is fixed); without",
         "the stop there is no equilibrium.",
         "",
+        *friction_cost.section(),
     ]
-    save_page(f"{PAGE}.md", lines)
+    save_page(f"{PAGE}.md", lines + friction_3d.section())
 
 
 if __name__ == "__main__":

@@ -157,7 +157,8 @@ def render():
         ]
     lines.append("")
     with open(os.path.join(READINGS, "parallel-reading.md")) as reading:
-        lines.append(reading.read())
+        # The reading stands alone with its own title; inside this page it is a section.
+        lines.append(reading.read().replace("# Reading of the parallel results", "## Reading", 1))
     save_page(f"{PAGE}.md", lines)
 
 

@@ -40,6 +40,13 @@ exercise "lesson 9: -mu 0.2" "$lessons/09-friction.edp" -mu 0.2
 exercise "lesson 10: -n 8" "$lessons/10-three-dimensions.edp" -n 8
 exercise "lesson 10: -n 32" "$lessons/10-three-dimensions.edp" -n 32
 exercise "lesson 10: -n 16 -Hh 4" "$lessons/10-three-dimensions.edp" -n 16 -Hh 4
+exercise "lesson 12: -angle 0" "$lessons/12-friction-3d.edp" -angle 0
+exercise "lesson 12: -angle 90" "$lessons/12-friction-3d.edp" -angle 90
+exercise "lesson 12: -pull 0.7" "$lessons/12-friction-3d.edp" -pull 0.7
+exercise "lesson 12: -pull 0.8" "$lessons/12-friction-3d.edp" -pull 0.8
+exercise "lesson 12: -pull 0.9" "$lessons/12-friction-3d.edp" -pull 0.9
+exercise "lesson 12: -pull 1.1" "$lessons/12-friction-3d.edp" -pull 1.1
+exercise "lesson 12: -m 8" "$lessons/12-friction-3d.edp" -m 8
 exercise "lesson 11: -m2 6" "$lessons/11-solids-in-contact.edp" -m2 6
 exercise "lesson 11: -swap 1" "$lessons/11-solids-in-contact.edp" -swap 1
 exercise "lesson 11: -m 12 -m2 8" "$lessons/11-solids-in-contact.edp" -m 12 -m2 8

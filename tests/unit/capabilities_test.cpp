@@ -1,12 +1,13 @@
 // The capability table (constraints/capabilities.h): one entry per contact kind and per
-// registered discretization, one message form, and the refusals of both set-up paths
-// (build_constraints, validate_input) and of the sensitivity analysis worded by it.
+// registered discretization, one message form, friction wherever a kind has rows, and the
+// refusals of the input checks (validate_input) and of the sensitivity analysis worded by it.
 #include "constraints/capabilities.h"
 #include "constraints/constraints.h"
 #include "constraints/contact/contact_discretization.h"
 #include "constraints/input_checks.h"
 #include "base/errors.h"
 #include "membrane_model.h"
+#include "refusal.h"
 
 #include <gtest/gtest.h>
 
@@ -15,15 +16,6 @@
 
 namespace ffeti {
 namespace {
-
-std::string refusal(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
 
 std::vector<SubdomainInput> membranes() { return test::membrane_subdomains(test::membrane_options(4, 2)); }
 
@@ -36,8 +28,8 @@ TEST(Capabilities, OneEntryPerKindAndPerRegisteredDiscretization) {
 }
 
 TEST(Capabilities, OneMessageFormNamingTheDimensionWhereTheFeatureWorksInTheOther) {
-  EXPECT_EQ(unsupported(ContactKind::ball, Feature::friction, 2),
-            "ball contact does not support friction yet (see the capability table in docs/reference.md)");
+  EXPECT_EQ(unsupported(ContactKind::mortar, Feature::sensitivity, 3),
+            "mortar contact does not support sensitivity yet (see the capability table in docs/reference.md)");
   EXPECT_EQ(unsupported(ContactKind::node_to_node, Feature::ffeti_solve, 3),
             "node-to-node contact does not support ffeti-solve in three dimensions yet (see the capability table in "
             "docs/reference.md)");
@@ -51,17 +43,11 @@ TEST(Capabilities, OneMessageFormNamingTheDimensionWhereTheFeatureWorksInTheOthe
             "P: " + unsupported(ContactKind::mortar, Feature::sensitivity, 3));
 }
 
-TEST(Capabilities, TheSetUpRefusesFrictionWhereTheSelectedKindHasNone) {
-  const auto subdomains = membranes();
-  ContactInput contact = test::membrane_contact(subdomains);  // node to node
-  contact.friction = 0.3;
-  EXPECT_EQ(refusal([&] { build_constraints(subdomains, contact, FetiVariant::tfeti); }),
-            "friction: " + unsupported(ContactKind::node_to_node, Feature::friction, 2));
-  contact.master_dofs.clear();
-  contact.friction = -1, contact.slip_bound = 1;
-  contact.obstacle = true, contact.obstacle_radius = 0.5;
-  EXPECT_EQ(refusal([&] { build_constraints(subdomains, contact, FetiVariant::tfeti); }),
-            "slipBound: " + unsupported(ContactKind::ball, Feature::friction, 2));
+TEST(Capabilities, FrictionWorksWhereverAKindHasRows) {
+  for (const KindCapabilities& k : capability_table())
+    for (int dimension : {2, 3})
+      EXPECT_EQ(supports(k.kind, Feature::friction, dimension), supports(k.kind, Feature::rows, dimension))
+          << k.name << " in " << dimension << "D";
 }
 
 TEST(Capabilities, TheInputChecksRefuseAKindInADimensionItLacks) {

@@ -1,14 +1,15 @@
 // Isotropic friction in three dimensions: the tangent pair of each contact row, the slip
 // rows of a rigid plane and of a face, the disc's KKT measures, and a block pressed on a
 // rigid plane and sheared, solved by FETI in two subdomains against the undivided block's
-// dual (B K^-1 B' with a dense K) solved here by accelerated projected gradient onto
-// half-lines and discs, which shares no code with qp/.
+// dual (B K^-1 B' with a dense K) solved by accelerated projected gradient onto half-lines
+// and discs (friction_reference.h), which shares no code with qp/.
 #include "constraints/constraints.h"
 #include "constraints/contact/node_to_face.h"
 #include "constraints/contact/obstacle.h"
 #include "feti/feti_problem.h"
 #include "feti/friction.h"
 #include "feti/primal.h"
+#include "friction_reference.h"
 #include "solid_block.h"
 
 #include <gtest/gtest.h>
@@ -136,11 +137,7 @@ std::vector<SubdomainInput> halves(double turn) {
 /// tangent pair is e_x, e_y).
 ContactInput on_plane(const std::vector<SubdomainInput>& subdomains) {
   ContactInput contact;
-  for (const SubdomainInput& s : subdomains) {
-    contact.slave_dofs.emplace_back();
-    for (int k = 0; k < static_cast<int>(s.z.size()); ++k)
-      if (s.z[static_cast<size_t>(k)] == 0) contact.slave_dofs.back().push_back(k);
-  }
+  contact.slave_dofs = bottom_dofs(subdomains);
   contact.obstacle = true;
   contact.obstacle_point = {0, 0, -kGap};
   contact.obstacle_normal = {0, 0, 1};
@@ -153,73 +150,31 @@ struct NodeForces {
   std::array<double, 3> force;
 };
 
-/// The undivided block's dual, min 1/2 l'Hl - d'l over lambda_n >= 0 and ||(lambda_t1,
-/// lambda_t2)|| <= g per bottom node, H = B K_ff^-1 B', by projected gradient with Nesterov's
-/// momentum (restarted when a step turns back, O'Donoghue and Candes) until the iterate
-/// stops moving.
+/// The undivided block's dual (friction_reference.h): lambda_n >= 0 and ||(lambda_t1,
+/// lambda_t2)|| <= g per bottom node, rows -u_z <= kGap and the slips u_x, u_y.
 /// `bound` gives g at a node's position (x, y).
 using NodeBound = std::function<double(const std::array<double, 2>&)>;
 std::vector<NodeForces> undivided_dual(const NodeBound& bound, double turn) {
   const SubdomainInput block = solid_block(0, {1, 0.5, 0.25}, {4, 2, 1}, kTop, turn);
-  const int n = static_cast<int>(block.K.rows());
-  std::vector<int> free_index(static_cast<size_t>(n), -1);
-  Vec fixed = Vec::Zero(n);
-  for (size_t k = 0; k < block.dirichlet_dofs.size(); ++k) fixed[block.dirichlet_dofs[k]] = block.dirichlet_values[k];
-  std::vector<int> free;
-  for (int i = 0; i < n; ++i)
-    if (std::find(block.dirichlet_dofs.begin(), block.dirichlet_dofs.end(), i) == block.dirichlet_dofs.end())
-      free_index[static_cast<size_t>(i)] = static_cast<int>(free.size()), free.push_back(i);
-  const Eigen::MatrixXd K(block.K);
-  const int nf = static_cast<int>(free.size());
-  Eigen::MatrixXd Kff(nf, nf);
-  Vec f(nf);
-  const Vec K_fixed = K * fixed;
-  for (int a = 0; a < nf; ++a) {
-    f[a] = -K_fixed[free[static_cast<size_t>(a)]];
-    for (int b = 0; b < nf; ++b) Kff(a, b) = K(free[static_cast<size_t>(a)], free[static_cast<size_t>(b)]);
+  const Eigen::Index n = block.K.rows();
+  std::vector<ReferenceRow> rows;
+  std::vector<std::array<double, 2>> at;
+  for (Eigen::Index node = 0; 3 * node < n; ++node) {
+    const auto dof = static_cast<size_t>(3 * node);
+    if (block.z[dof] != 0) continue;
+    const auto unit_row = [&](size_t component, double sign) {
+      Vec row = Vec::Zero(n);
+      row[static_cast<Eigen::Index>(dof + component)] = sign;
+      return row;
+    };
+    at.push_back({block.x[dof], block.y[dof]});
+    rows.push_back({unit_row(2, -1), kGap, {unit_row(0, 1), unit_row(1, 1)}, bound(at.back())});
   }
-  std::vector<int> bottom;  // node numbers
-  for (int node = 0; 3 * node < n; ++node)
-    if (block.z[static_cast<size_t>(3 * node)] == 0) bottom.push_back(node);
-  const int nodes = static_cast<int>(bottom.size()), m = 3 * nodes;  // rows: normals, then the pairs
-  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(m, nf);
-  Vec c = Vec::Zero(m);
-  for (int k = 0; k < nodes; ++k) {
-    const int node = bottom[static_cast<size_t>(k)];
-    B(k, free_index[static_cast<size_t>(3 * node + 2)]) = -1, c[k] = kGap;  // -u_z <= gap
-    B(nodes + 2 * k, free_index[static_cast<size_t>(3 * node)]) = 1;         // slip along e_x
-    B(nodes + 2 * k + 1, free_index[static_cast<size_t>(3 * node + 1)]) = 1;  // and e_y
-  }
-  const Eigen::LLT<Eigen::MatrixXd> Kllt(Kff);
-  const Eigen::MatrixXd H = B * Kllt.solve(B.transpose());
-  const Vec d = B * Kllt.solve(f) - c;
-  std::vector<double> g;
-  for (int node : bottom) g.push_back(bound({block.x[static_cast<size_t>(3 * node)], block.y[static_cast<size_t>(3 * node)]}));
-  const auto project = [&](Vec& l) {
-    for (int k = 0; k < nodes; ++k) {
-      l[k] = std::max(l[k], 0.0);
-      const double norm = std::hypot(l[nodes + 2 * k], l[nodes + 2 * k + 1]);
-      if (norm > g[static_cast<size_t>(k)]) l.segment(nodes + 2 * k, 2) *= g[static_cast<size_t>(k)] / norm;
-    }
-  };
-  const double step = 1 / Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(H).eigenvalues().maxCoeff();
-  Vec l = Vec::Zero(m), y = l;
-  double momentum = 1;
-  for (int it = 0; it < 1000000; ++it) {
-    Vec next = y - step * (H * y - d);
-    project(next);
-    if ((y - next).dot(next - l) > 0) momentum = 1;  // the step turned back: restart the momentum
-    const double next_momentum = (1 + std::sqrt(1 + 4 * momentum * momentum)) / 2;
-    const double moved = (next - l).norm();
-    y = next + (momentum - 1) / next_momentum * (next - l);
-    l = next, momentum = next_momentum;
-    if (moved <= 1e-15 * l.norm()) break;
-  }
+  const std::vector<ReferenceForces> forces =
+      friction_dual(Eigen::MatrixXd(block.K), block.f, block.dirichlet_dofs, block.dirichlet_values, rows);
   std::vector<NodeForces> out;
-  for (int k = 0; k < nodes; ++k) {
-    const size_t dof = static_cast<size_t>(3 * bottom[static_cast<size_t>(k)]);
-    out.push_back({{block.x[dof], block.y[dof]}, {l[k], l[nodes + 2 * k], l[nodes + 2 * k + 1]}});
-  }
+  for (size_t k = 0; k < rows.size(); ++k)
+    out.push_back({at[k], {forces[k].normal, forces[k].tangential[0], forces[k].tangential[1]}});
   return out;
 }
 

@@ -89,4 +89,14 @@ SubdomainInput solid_block(double x0, const std::array<double, 3>& size, const s
   return out;
 }
 
+std::vector<std::vector<int>> bottom_dofs(const std::vector<SubdomainInput>& subdomains) {
+  std::vector<std::vector<int>> out;
+  for (const SubdomainInput& s : subdomains) {
+    out.emplace_back();
+    for (int k = 0; k < static_cast<int>(s.z.size()); ++k)
+      if (s.z[static_cast<size_t>(k)] == 0) out.back().push_back(k);
+  }
+  return out;
+}
+
 }  // namespace ffeti

@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 
 #include <array>
+#include <vector>
 
 namespace ffeti {
 
@@ -21,5 +22,8 @@ Eigen::MatrixXd tetrahedron_stiffness(const std::array<Eigen::Vector3d, 4>& p, d
 /// turned as well); no load.
 SubdomainInput solid_block(double x0, const std::array<double, 3>& size, const std::array<int, 3>& cells,
                            const std::array<double, 3>& top, double turn = 0);
+
+/// Per subdomain every dof of the nodes on the face z = 0 (contact slaves).
+std::vector<std::vector<int>> bottom_dofs(const std::vector<SubdomainInput>& subdomains);
 
 }  // namespace ffeti

@@ -43,15 +43,15 @@ const std::vector<KindCapabilities>& capability_table() {
   // kind, name, selected by: rows, friction, sensitivity, sensitivity with friction, MPI,
   // ffeti-solve, fetiContactStart
   static const std::vector<KindCapabilities> table = {
-      {ContactKind::node_to_node, "node-to-node", "contactSlave, contactMaster", kBoth, kNone, kBoth, kNone, kBoth,
+      {ContactKind::node_to_node, "node-to-node", "contactSlave, contactMaster", kBoth, kBoth, kBoth, kNone, kBoth,
        kPlane, kPlane},
       {ContactKind::node_to_segment, "node-to-segment", "contactSlave, contactSegments", kPlane, kPlane, kPlane, kNone,
        kPlane, kPlane, kPlane},
       {ContactKind::obstacle, "obstacle", "contactSlave, obstacle", kBoth, kBoth, kBoth, kNone, kBoth, kBoth, kPlane},
-      {ContactKind::ball, "ball", "contactSlave, obstacleBall", kBoth, kNone, kBoth, kNone, kBoth, kNone, kPlane},
+      {ContactKind::ball, "ball", "contactSlave, obstacleBall", kBoth, kBoth, kBoth, kNone, kBoth, kNone, kPlane},
       {ContactKind::node_to_face, "node-to-face", "contactSlave, contactFaces", kSolid, kSolid, kSolid, kNone, kSolid,
        kSolid, kNone},
-      {ContactKind::mortar, "mortar", "contactSlaveFaces, contactFaces", kSolid, kNone, kNone, kNone, kSolid, kNone,
+      {ContactKind::mortar, "mortar", "contactSlaveFaces, contactFaces", kSolid, kSolid, kNone, kNone, kSolid, kNone,
        kNone},
   };
   return table;

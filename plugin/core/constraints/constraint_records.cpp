@@ -1,7 +1,9 @@
 #include "constraints/constraint_records.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <utility>
 
 namespace ffeti {
 namespace {
@@ -48,6 +50,29 @@ class BoxGrid {
   int cells_;
   std::vector<std::vector<int>> members_;
 };
+
+/// The dofs of the other components at the node of a slave or master dof: node-to-node
+/// friction slips along them. The other kinds list every component of their slave nodes
+/// and take no master dofs, so they gain nothing; and a dof without a copy in another
+/// subdomain forms no gluing row: recording it changes no other row.
+std::vector<char> node_partners(const SubdomainInput& sub, const std::vector<char>& slave,
+                                const std::vector<char>& master, double snap) {
+  const size_t n = sub.x.size();
+  std::vector<char> partner(n, 0);
+  using Key = std::array<long long, 3>;
+  const auto key = [&](size_t i) {
+    return Key{std::llround(sub.x[i] / snap), std::llround(sub.y[i] / snap), std::llround((sub.z.empty() ? 0.0 : sub.z[i]) / snap)};
+  };
+  std::vector<std::pair<Key, size_t>> contact_nodes;
+  for (size_t i = 0; i < n; ++i)
+    if (slave[i] || master[i]) contact_nodes.push_back({key(i), i});
+  std::sort(contact_nodes.begin(), contact_nodes.end());
+  for (size_t i = 0; i < n; ++i) {
+    const auto at = std::lower_bound(contact_nodes.begin(), contact_nodes.end(), std::make_pair(key(i), size_t{0}));
+    partner[i] = at != contact_nodes.end() && at->first == key(i);
+  }
+  return partner;
+}
 
 }  // namespace
 
@@ -106,13 +131,15 @@ std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& 
         for (int dof : face) slave[static_cast<size_t>(dof)] = 1;
     if (!local_contact.master_dofs.empty())
       for (int dof : local_contact.master_dofs[k]) master[static_cast<size_t>(dof)] = 1;
+    const std::vector<char> partner = local_contact.has_friction() ? node_partners(sub, slave, master, snap)
+                                                                   : std::vector<char>(n, 0);
     for (size_t i = 0; i < n; ++i) {
       bool shared = false;
       const double z = sub.z.empty() ? 0.0 : sub.z[i];
       grid.for_each_containing(sub.x[i], sub.y[i], z, [&](int other) {
         shared = shared || (other != s && bodies[static_cast<size_t>(other)] == sub.body);
       });
-      if (shared || fixed[i] || slave[i] || master[i])
+      if (shared || fixed[i] || slave[i] || master[i] || partner[i])
         records.push_back({s, static_cast<int>(i), sub.body, sub.component.empty() ? 0 : sub.component[i],
                            sub.x[i], sub.y[i], z, fixed[i] != 0, slave[i] != 0, master[i] != 0, value[i],
                            gap ? (*gap)[i] : 0.0, friction ? (*friction)[i] : law_value});

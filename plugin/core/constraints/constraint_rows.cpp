@@ -118,6 +118,22 @@ std::vector<SlaveNode> slave_nodes(const std::vector<DofRecord>& records, double
   return nodes;
 }
 
+NodeComponents::NodeComponents(const std::vector<DofRecord>& records, double snap) : snap_(snap) {
+  for (const DofRecord& r : records) sorted_.push_back({key(r, r.component), &r});
+  std::sort(sorted_.begin(), sorted_.end());
+}
+
+NodeComponents::Key NodeComponents::key(const DofRecord& r, int component) const {
+  return {r.subdomain, std::llround(r.x / snap_), std::llround(r.y / snap_), std::llround(r.z / snap_), component};
+}
+
+const DofRecord* NodeComponents::find(const DofRecord& at, int component) const {
+  const Key wanted = key(at, component);
+  const auto it = std::lower_bound(sorted_.begin(), sorted_.end(), wanted,
+                                   [](const std::pair<Key, const DofRecord*>& e, const Key& k) { return e.first < k; });
+  return it != sorted_.end() && it->first == wanted ? it->second : nullptr;
+}
+
 const DofRecord* fixed_record(const std::vector<DofRecord>& records, int subdomain, int dof) {
   auto it = std::lower_bound(records.begin(), records.end(), std::make_pair(subdomain, dof),
                              [](const DofRecord& r, const std::pair<int, int>& key) {

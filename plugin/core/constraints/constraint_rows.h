@@ -6,6 +6,8 @@
 #include "constraints/constraints.h"
 
 #include <memory>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace ffeti {
@@ -40,6 +42,21 @@ struct SlaveMaster {
   const DofRecord* master;
 };
 std::vector<SlaveMaster> node_to_node_pairs(const std::vector<DofRecord>& records, double snap);
+/// The records of each node by component, in one subdomain: the other dofs of a contact
+/// dof's node (node-to-node friction slips along them).
+class NodeComponents {
+ public:
+  NodeComponents(const std::vector<DofRecord>& records, double snap);
+  /// The record of component `component` at the node of `at`, in its subdomain; nullptr if
+  /// none was recorded.
+  const DofRecord* find(const DofRecord& at, int component) const;
+
+ private:
+  using Key = std::tuple<int, long long, long long, long long, int>;  // subdomain, position, component
+  Key key(const DofRecord& r, int component) const;
+  double snap_;
+  std::vector<std::pair<Key, const DofRecord*>> sorted_;
+};
 /// The record of a fixed dof, nullptr if the dof is not fixed.
 const DofRecord* fixed_record(const std::vector<DofRecord>& records, int subdomain, int dof);
 /// FETI-1: known Dirichlet values move to the right-hand side.

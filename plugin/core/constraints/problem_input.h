@@ -69,9 +69,9 @@ struct ContactInput {
   double obstacle_radius = 0;
   /// Set by the set-up (not the caller): the subdomains have a third coordinate.
   bool three_d = false;
-  /// Friction (node to segment and obstacle; in 3D planes and node to face; docs/algorithms.md,
-  /// "Friction"): each contact row gets a tangential row, the slip t.(u_slave - u_p) of the
-  /// slave along the master's tangent t (on an obstacle the line's direction) measured from
+  /// Friction (every kind; docs/algorithms.md, "Friction"): each contact row gets a
+  /// tangential row, the slip t.(u_slave - u_p) of the slave along the master's tangent t (on
+  /// an obstacle the line's direction, node to node the other component) measured from
   /// the state of the last load step, whose multiplier, the friction force, keeps
   /// |lambda_t| <= g; in 3D two, along tangent_pair(n), whose multipliers keep ||lambda_t|| <= g.
   /// Coulomb: g = friction * lambda_n (a fixed point over Tresca solves). Tresca: g =

@@ -84,7 +84,9 @@ std::vector<Option> make_options() {
        "an open gap) by more than `tol ‖u‖∞` and its equilibrium residual `‖Ku − f + B'λ‖` is at most `tol max(‖f‖, "
        "‖B'λ‖)`, both checked on the recovered solution: the relative KKT residuals `fetiInfo` reports are then at "
        "most `tol` ([algorithms](algorithms.md#stopping-test-stopping_testcpp), [every "
-       "scene](results/accuracy-and-time.md)); the seed's value",
+       "scene](results/accuracy-and-time.md)); the seed's value. With Coulomb friction also: the last Tresca solve of "
+       "the fixed point meets this test and the friction bounds μλ_n of its answer differ from the bounds it was "
+       "solved with by at most `tol ‖μλ_n‖∞` (earlier solves stop looser, [algorithms](algorithms.md#friction))",
        [](SolverSettings& s, const OptionValue& v) { s.solve.tolerance = number(v); }},
       {"stop", S::solve, K::word, {kStops[0], kStops[1]}, 0, 0, false, false, "`\"kkt\"`",
        "`\"kkt\"`: the test of `tol`; `\"seed\"`: the seed's `‖gP‖₂ ≤ tol ‖b‖₂` (b the dual right-hand side), whose "
@@ -128,7 +130,8 @@ std::vector<Option> make_options() {
        "with a start (fetiSolve's `start`): face solves that settle it before MPRGP (conjugate gradients on the "
        "start's contact set with the bounds ignored, then projected onto them, each kept if it lowers the cost; "
        "[algorithms](algorithms.md), measured in [large contact](results/large-contact.md)); 0: MPRGP from the "
-       "start as given. Ignored without a start",
+       "start as given. Ignored without a start, and by the second and later Tresca solves of Coulomb friction's "
+       "fixed point (each starts from the last one's multipliers as they are)",
        [](SolverSettings& s, const OptionValue& v) { s.solve.settle = integer(v); }},
       {"frictionit", S::solve, K::integer, {}, 1, kIntMax, false, false, "50",
        "with Coulomb friction: Tresca solves the fixed point may take; beyond them, or once they have spent `maxit` "

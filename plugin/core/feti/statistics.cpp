@@ -1,6 +1,7 @@
 #include "feti/statistics.h"
 
 #include "feti/options.h"
+#include "parallel/process.h"
 
 #include <sstream>
 
@@ -29,6 +30,7 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
       {"time_factor", setup.factorization},
       {"time_coarse", setup.coarse_space},
       {"time_dual_data", setup.dual_data},
+      {"peak_memory_mb", peak_memory_mb()},  // read when asked: the process's peak so far
   };
   if (c.friction_rows > 0) s.push_back({"friction_rows", c.friction_rows});
   if (!result) return s;

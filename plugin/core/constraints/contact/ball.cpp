@@ -22,6 +22,8 @@ Point3 BallGeometry::normal() const {
   return {d[0] / distance, d[1] / distance, d[2] / distance};
 }
 
+std::vector<RowAt> BallGeometry::slip_rows() const { return rigid_slip_rows(slave, normal(), three_d()); }
+
 void Ball::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
   const ContactInput& contact = in.contact;
   const Point3& c = contact.obstacle_point;

@@ -25,8 +25,6 @@ LinearizedRow node_to_segment_slip(const Point& s, const Point& a, const Point& 
   return {{tx, ty, -(1 - xi) * tx, -(1 - xi) * ty, -xi * tx, -xi * ty}, 0.0};
 }
 
-LinearizedRow obstacle_slip(const Point& normal) { return {{-normal[1], normal[0], 0, 0, 0, 0}, 0.0}; }
-
 std::array<double, 3> closest_point_weights(const Point3& s, const Point3& a, const Point3& b, const Point3& c) {
   // The Voronoi regions of the triangle's corners, edges and face, in turn (the classic
   // region test; weights of the point p = w_a a + w_b b + w_c c).

@@ -41,6 +41,5 @@ LinearizedFaceRow node_to_face_row(const Point3& s, const Point3& a, const Point
                                    bool clamp = true);
 /// The closest point of triangle a, b, c to s as barycentric weights (w_a, w_b, w_c).
 std::array<double, 3> closest_point_weights(const Point3& s, const Point3& a, const Point3& b, const Point3& c);
-LinearizedRow obstacle_slip(const Point& normal);
 
 }  // namespace ffeti

@@ -1,19 +1,24 @@
 #include "constraints/contact/contact_row_geometry.h"
 
-#include <stdexcept>
-
 namespace ffeti {
 
-std::array<Point3, 2> ContactRowGeometry::tangents() const {
-  const Point3 n = normal();
-  if (three_d_) return tangent_pair(n);
-  return {Point3{-n[1], n[0], 0.0}, Point3{0.0, 0.0, 0.0}};
+std::vector<Point3> slip_directions(const Point3& n, bool three_d) {
+  if (!three_d) return {{-n[1], n[0], 0.0}};
+  const auto pair = tangent_pair(n);
+  return {pair[0], pair[1]};
 }
 
-std::vector<RowAt> ContactRowGeometry::slip_rows() const {
-  // Reached only if the capability table says friction where the kind has no tangent.
-  throw std::logic_error(std::string(capability_table()[static_cast<size_t>(kind_)].name) +
-                         " contact has no slip rows; the capability table must refuse friction for it");
+std::vector<RowAt> rigid_slip_rows(const std::array<DofRef, 3>& slave, const Point3& n, bool three_d) {
+  const size_t components = three_d ? 3 : 2;
+  std::vector<RowAt> rows;
+  for (const Point3& t : slip_directions(n, three_d))
+    rows.push_back({{slave.begin(), slave.begin() + components}, {t.begin(), t.begin() + components}, 0.0});
+  return rows;
+}
+
+std::array<Point3, 2> ContactRowGeometry::tangents() const {
+  const std::vector<Point3> t = slip_directions(normal(), three_d_);
+  return {t[0], t.size() > 1 ? t[1] : Point3{0, 0, 0}};
 }
 
 }  // namespace ffeti

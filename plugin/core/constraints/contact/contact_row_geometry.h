@@ -57,8 +57,7 @@ class ContactRowGeometry {
   /// The tangential rows of friction, the slips t.(u_slave - u_master) from the last load
   /// step's state (gap 0): one in a plane problem, two in three dimensions along
   /// tangent_pair(n) of the row's normal n, t1 then t2 (their multipliers form one disc).
-  /// Kinds whose capability has no friction are refused before.
-  virtual std::vector<RowAt> slip_rows() const;
+  virtual std::vector<RowAt> slip_rows() const = 0;
 
  private:
   ContactKind kind_;
@@ -66,6 +65,16 @@ class ContactRowGeometry {
   Point3 slave_position_;
   bool three_d_;
 };
+
+/// The slip directions of friction for a row's unit normal n (out of the master, towards the
+/// slave): in a plane problem the turn (-n_y, n_x) a segment's tangent makes from its outward
+/// normal, in three dimensions tangent_pair(n).
+std::vector<Point3> slip_directions(const Point3& n, bool three_d);
+
+/// The slip rows t.u_s of a slave against a rigid surface (a plane, a ball) of unit normal n
+/// at the slave: the surface does not move. `slave`: its x, y, z dofs (z {-1, -1} in a plane
+/// problem).
+std::vector<RowAt> rigid_slip_rows(const std::array<DofRef, 3>& slave, const Point3& n, bool three_d);
 
 inline Point3 moved(const Point3& p, const Point3& velocity, double t) {
   return {p[0] + t * velocity[0], p[1] + t * velocity[1], p[2] + t * velocity[2]};

@@ -21,9 +21,11 @@ using NodeKey = std::tuple<int, long long, long long, long long>;  // body, snap
 /// summed over the (slave face, master face) pairs, n each master face's normal.
 struct MortarRow {
   std::map<std::pair<int, int>, double> coefficients;  ///< per (subdomain, dof)
-  Point3 normal_sum{0, 0, 0};  ///< sum over pairs of int phi_j n: the row's normal, unnormalized
   double gap = 0;
   double weight = 0;  ///< int phi_j over the covered part
+  /// With friction: int phi_j (u_s - u_m) per (subdomain, dof), its component.
+  std::map<std::pair<int, int>, std::pair<int, double>> jump;
+  Point3 normal{0, 0, 0};  ///< the pairs' normals weighted by their int phi_j: the row's, unnormalized
 };
 
 /// (b - a) x (c - a): twice the area times the unit normal.
@@ -45,17 +47,23 @@ bool by_identity(const FaceRecord& a, const FaceRecord& b) {
 }
 
 /// Adds one (slave face, master face) pair's integrals to the rows of the slave's corners.
+/// `friction`: also the jump.
 void add_pair(const FaceRecord& slave, const FaceRecord& master, const MortarIntegrals& in,
-              const std::array<size_t, 3>& corner_rows, std::vector<MortarRow>& pending) {
+              const std::array<size_t, 3>& corner_rows, bool friction, std::vector<MortarRow>& pending) {
   const Point3& n = in.normal;
   for (size_t j = 0; j < 3; ++j) {
     MortarRow& row = pending[corner_rows[j]];
     for (size_t k = 0; k < 3; ++k) {
       row.weight += in.D[j][k];
-      for (size_t i = 0; i < 3; ++i) row.normal_sum[i] += in.D[j][k] * n[i];
+      for (size_t i = 0; i < 3; ++i) row.normal[i] += in.D[j][k] * n[i];
       for (size_t i = 0; i < 3; ++i) {
         row.coefficients[{slave.subdomain, slave.dofs[3 * k + i]}] -= in.D[j][k] * n[i];
         row.coefficients[{master.subdomain, master.dofs[3 * k + i]}] += in.M[j][k] * n[i];
+        if (!friction) continue;
+        auto& s = row.jump[{slave.subdomain, slave.dofs[3 * k + i]}];
+        auto& m = row.jump[{master.subdomain, master.dofs[3 * k + i]}];
+        s = {static_cast<int>(i), s.second + in.D[j][k]};
+        m = {static_cast<int>(i), m.second - in.M[j][k]};
       }
     }
     row.gap += dot(n, in.G[j]);
@@ -64,9 +72,28 @@ void add_pair(const FaceRecord& slave, const FaceRecord& master, const MortarInt
 
 }  // namespace
 
+Point3 MortarGeometry::normal() const {
+  const double length = std::sqrt(dot(weighted_normal, weighted_normal));
+  return {weighted_normal[0] / length, weighted_normal[1] / length, weighted_normal[2] / length};
+}
+
 RowAt MortarGeometry::row_at(const NodeMotion&, double) const {
   // No caller: moving_nodes() is empty and the capability table refuses mortar's sensitivity.
   throw std::logic_error("mortar rows have no motion derivative yet");
+}
+
+std::vector<RowAt> MortarGeometry::slip_rows() const {
+  const Point3 n = normal();
+  std::vector<RowAt> rows;
+  for (const Point3& t : tangent_pair(n)) {
+    RowAt row{{}, {}, 0.0};
+    for (const JumpEntry& e : jump) {
+      row.dofs.push_back(e.dof);
+      row.coefficients.push_back(t[static_cast<size_t>(e.component)] * e.coefficient);
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
 }
 
 bool Mortar::selected(const ContactRecords& in) const {
@@ -138,7 +165,7 @@ void Mortar::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
       double gap = 0;
       for (const Point3& g : in.G) gap += dot(in.normal, g);
       if (std::abs(gap / in.area) > reach) return;  // its mean normal gap
-      add_pair(f, m, in, corner_rows, pending);
+      add_pair(f, m, in, corner_rows, contact.has_friction(), pending);
     });
   }
 
@@ -148,11 +175,12 @@ void Mortar::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
     // repeat its neighbours'): no contact possible here.
     if (!(pending_row.weight > 1e-3 * full_weight[j])) continue;
     const SlaveNode& node = nodes[j];
-    const Point3& d = pending_row.normal_sum;
-    const double d_length = std::sqrt(dot(d, d));
-    const auto geometry = std::make_shared<const MortarGeometry>(
-        DofRef{node.x_dof->subdomain, node.x_dof->dof}, Point3{node.x_dof->x, node.x_dof->y, node.x_dof->z},
-        Point3{d[0] / d_length, d[1] / d_length, d[2] / d_length});
+    std::vector<JumpEntry> jump;  // divided by int phi_j like the row
+    for (const auto& [dof, share] : pending_row.jump)
+      if (share.second != 0) jump.push_back({{dof.first, dof.second}, share.first, share.second / pending_row.weight});
+    const auto geometry = std::make_shared<const MortarGeometry>(DofRef{node.x_dof->subdomain, node.x_dof->dof},
+                                                                 Point3{node.x_dof->x, node.x_dof->y, node.x_dof->z},
+                                                                 std::move(jump), pending_row.normal);
     // Divided by int phi_j, so that the multiplier is a force like the other rows'.
     Row row{{}, pending_row.gap / pending_row.weight + node.x_dof->gap, RowKind::contact, false, geometry,
             -1, node.x_dof->friction};

@@ -2,19 +2,74 @@
 
 #include "constraints/constraint_rows.h"
 
+#include "base/errors.h"
+
+#include <optional>
+#include <string>
+
 namespace ffeti {
+namespace {
+
+std::string where(const DofRecord& r) {
+  return "dof " + std::to_string(r.dof) + " of subdomain " + std::to_string(r.subdomain) + " at (" +
+         std::to_string(r.x) + ", " + std::to_string(r.y) + ", " + std::to_string(r.z) + ")";
+}
+
+/// The dofs of `at`'s node by component, for friction: every component but the row's must
+/// be there, and none of the slave's may be a slave too (its rows would repeat each other's
+/// slips).
+std::array<DofRef, 3> node_dofs(const NodeComponents& nodes, const DofRecord& at, int components) {
+  std::array<DofRef, 3> dofs{{{-1, -1}, {-1, -1}, {-1, -1}}};
+  for (int c = 0; c < components; ++c) {
+    const DofRecord* r = c == at.component ? &at : nodes.find(at, c);
+    if (!r)
+      throw InputError("friction: node-to-node contact slips along the other components of each slave and master "
+                       "node (a vector field with component=): " + where(at) + " has no dof of component " +
+                       std::to_string(c) + " at its node");
+    if (c != at.component && at.slave && r->slave)
+      throw InputError("friction: contactSlave lists " + where(at) + " and dof " + std::to_string(r->dof) +
+                       " of the same node: node-to-node friction takes one slave dof per node, along the normal");
+    dofs[static_cast<size_t>(c)] = {r->subdomain, r->dof};
+  }
+  return dofs;
+}
+
+}  // namespace
+
+std::vector<RowAt> NodeToNodeGeometry::slip_rows() const {
+  Point3 n{0, 0, 0};
+  n[static_cast<size_t>(component)] = -1;
+  std::vector<RowAt> rows;
+  for (const Point3& t : slip_directions(n, three_d())) {
+    RowAt row{{}, {}, 0.0};
+    for (size_t i = 0; i < 3; ++i)
+      if (t[i] != 0) {
+        row.dofs.insert(row.dofs.end(), {slave_node[i], master_node[i]});
+        row.coefficients.insert(row.coefficients.end(), {t[i], -t[i]});
+      }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
 
 void NodeToNode::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
+  const int components = in.contact.three_d ? 3 : 2;
+  std::optional<NodeComponents> nodes;
+  if (in.contact.has_friction()) nodes.emplace(in.records, in.snap);
   for (const auto& [slave, master] : node_to_node_pairs(in.records, in.snap)) {
     const double gap = in.contact.gap + slave->gap;
+    std::array<DofRef, 3> slave_node{{{-1, -1}, {-1, -1}, {-1, -1}}}, master_node = slave_node;
+    if (nodes) slave_node = node_dofs(*nodes, *slave, components), master_node = node_dofs(*nodes, *master, components);
     rows.push_back({{{slave->subdomain, slave->dof, 1.0}, {master->subdomain, master->dof, -1.0}},
                     gap,
                     RowKind::contact,
                     false,
-                    std::make_shared<const NodeToNodeGeometry>(DofRef{slave->subdomain, slave->dof},
-                                                               DofRef{master->subdomain, master->dof},
-                                                               Point3{slave->x, slave->y, slave->z}, gap,
-                                                               in.contact.three_d, slave->component)});
+                    std::make_shared<const NodeToNodeGeometry>(
+                        DofRef{slave->subdomain, slave->dof}, DofRef{master->subdomain, master->dof},
+                        Point3{slave->x, slave->y, slave->z}, gap, in.contact.three_d, slave->component, slave_node,
+                        master_node),
+                    -1,
+                    slave->friction});
   }
 }
 

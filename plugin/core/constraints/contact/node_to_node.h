@@ -11,10 +11,12 @@ namespace ffeti {
 /// The row does not depend on positions: its derivative under motion is zero.
 class NodeToNodeGeometry final : public ContactRowGeometry {
  public:
-  /// `component`: the slave dof's field component c.
-  NodeToNodeGeometry(DofRef slave, DofRef master, const Point3& s, double gap, bool three_d, int component)
-      : ContactRowGeometry(ContactKind::node_to_node, slave, s, three_d), master(master), gap(gap),
-        component(component) {}
+  /// `component`: the row's; `slave_node`, `master_node`: the dofs of the two nodes by
+  /// component, looked up for friction only ({-1, -1} otherwise, and for z in a plane problem).
+  NodeToNodeGeometry(DofRef slave, DofRef master, const Point3& s, double gap, bool three_d, int component,
+                     const std::array<DofRef, 3>& slave_node, const std::array<DofRef, 3>& master_node)
+      : ContactRowGeometry(ContactKind::node_to_node, slave, s, three_d),
+        master(master), gap(gap), component(component), slave_node(slave_node), master_node(master_node) {}
 
   std::vector<DofRef> moving_nodes() const override { return {}; }
   RowAt row_at(const NodeMotion&, double) const override { return {{slave_dof(), master}, {1.0, -1.0}, gap}; }
@@ -25,10 +27,15 @@ class NodeToNodeGeometry final : public ContactRowGeometry {
     n[static_cast<size_t>(component)] = -1;
     return n;
   }
+  /// t.(u_s - u_m) along slip_directions(n) of the row's normal n = -e_c, c its component
+  /// (the row is -n.(u_s - u_m) <= gap, as a plane's -n.u_s): in a plane problem the other
+  /// component, in three dimensions the other two.
+  std::vector<RowAt> slip_rows() const override;
 
   const DofRef master;
   const double gap;
   const int component;
+  const std::array<DofRef, 3> slave_node, master_node;
 };
 
 class NodeToNode final : public ContactDiscretization {
@@ -37,6 +44,8 @@ class NodeToNode final : public ContactDiscretization {
   bool selected(const ContactRecords& in) const override {
     return in.segments.empty() && in.faces.empty() && !in.contact.obstacle;
   }
+  /// With friction, also each pair's nodes by component (InputError where a tangential
+  /// component is missing, a scalar field, or where two slave dofs share a node).
   void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;
 };
 

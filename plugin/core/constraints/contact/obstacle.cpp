@@ -20,15 +20,7 @@ RowAt ObstacleGeometry::row_at(const NodeMotion& v, double t) const {
   return {{slave[0], slave[1]}, {r.coefficients[0], r.coefficients[1]}, r.gap};
 }
 
-std::vector<RowAt> ObstacleGeometry::slip_rows() const {
-  if (three_d()) {  // the obstacle does not move: the slip is t.u_s
-    std::vector<RowAt> rows;
-    for (const Point3& t : tangent_pair(unit_normal)) rows.push_back({{slave[0], slave[1], slave[2]}, {t[0], t[1], t[2]}, 0.0});
-    return rows;
-  }
-  const LinearizedRow slip = obstacle_slip({unit_normal[0], unit_normal[1]});
-  return {{{slave[0], slave[1]}, {slip.coefficients[0], slip.coefficients[1]}, slip.gap}};
-}
+std::vector<RowAt> ObstacleGeometry::slip_rows() const { return rigid_slip_rows(slave, unit_normal, three_d()); }
 
 void Obstacle::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
   const ContactInput& contact = in.contact;
