@@ -11,6 +11,8 @@
 #include "feti/contact_pressure.h"
 #include "feti/contact_transfer.h"
 
+#include <functional>
+
 namespace ffeti::binding {
 namespace {
 
@@ -18,8 +20,10 @@ namespace {
 /// from the last solve (0 before any: the positions serve to build a start); returns the
 /// number of contact rows. With friction, tangential= receives each row's friction force
 /// (0 without a friction row; in three dimensions its component along t1, tangential2= along
-/// t2 of the row's tangent pair) and state= 0 open, 1 stick, 2 slip; zc= the slave nodes'
-/// third coordinate (three dimensions).
+/// t2 of the row's tangent pair), slip= and slip2= the step's slip along t1 and t2, and
+/// state= 0 open, 1 stick, 2 slip; zc= the slave nodes' third coordinate (three dimensions);
+/// normal=, tangent1=, tangent2= each row's n, t1, t2, d components per row (d = 2 or 3).
+/// Signs: docs/reference.md, "Signs of contact and friction".
 class FetiContact : public WithNamedArguments {
  public:
   typedef long Result;
@@ -67,6 +71,26 @@ class FetiContact : public WithNamedArguments {
         z->resize(count);
         for (long k = 0; k < count; ++k) (*z)[k] = rows[static_cast<size_t>(k)].z;
       }
+      const auto per_row = [&](int argument, const std::function<double(const ContactMultiplier&)>& value) {
+        if (auto* out = optional_pointer<KN<double>>(nargs[argument], stack)) {
+          out->resize(count);
+          for (long k = 0; k < count; ++k) (*out)[k] = value(rows[static_cast<size_t>(k)]);
+        }
+      };
+      per_row(7, [](const ContactMultiplier& r) { return r.slip; });
+      per_row(8, [](const ContactMultiplier& r) { return r.second_slip; });
+      // A vector per row, its d components one after the other.
+      const long d = h.problem->space_dimension();
+      const auto vectors = [&](int argument, const std::function<Point3(const ContactMultiplier&)>& value) {
+        if (auto* out = optional_pointer<KN<double>>(nargs[argument], stack)) {
+          out->resize(d * count);
+          for (long k = 0; k < count; ++k)
+            for (long i = 0; i < d; ++i) (*out)[d * k + i] = value(rows[static_cast<size_t>(k)])[static_cast<size_t>(i)];
+        }
+      };
+      vectors(4, [](const ContactMultiplier& r) { return r.normal; });
+      vectors(5, [](const ContactMultiplier& r) { return r.tangents[0]; });
+      vectors(6, [](const ContactMultiplier& r) { return r.tangents[1]; });
       if (auto* state = optional_pointer<KN<long>>(nargs[1], stack)) {
         state->resize(count);
         for (long k = 0; k < count; ++k) (*state)[k] = static_cast<long>(rows[static_cast<size_t>(k)].state);
@@ -78,7 +102,8 @@ class FetiContact : public WithNamedArguments {
 
 NamedParameters FetiContact::name_param = {
     {"tangential", &typeid(KN<double>*)}, {"state", &typeid(KN<long>*)}, {"zc", &typeid(KN<double>*)},
-    {"tangential2", &typeid(KN<double>*)}};
+    {"tangential2", &typeid(KN<double>*)}, {"normal", &typeid(KN<double>*)}, {"tangent1", &typeid(KN<double>*)},
+    {"tangent2", &typeid(KN<double>*)}, {"slip", &typeid(KN<double>*)}, {"slip2", &typeid(KN<double>*)}};
 
 // ---- int rows = fetiContactPressure(P, Share, Pr, rows=pc, shares=wc) ----------------------
 /// The contact pressure of the last solve per dof into Pr (this rank's subdomains, others

@@ -10,6 +10,7 @@
 #include "parallel/ownership.h"
 
 #include <cmath>
+#include <tuple>
 
 namespace ffeti::binding {
 namespace {
@@ -41,7 +42,8 @@ class FetiSetup : public WithNamedArguments {
  private:
   // Named parameters by position in name_param: these, then the set-up options.
   enum Named { kDirichlet, kDirichletValues, kSlave, kMaster, kGap, kComponent, kComm, kSegments, kObstacle,
-               kRadius, kContactGap, kFriction, kSlipBound, kFrictionField, kZ, kFaces, kSlaveFaces, kBall, kOptions };
+               kRadius, kContactGap, kFriction, kSlipBound, kFrictionField, kZ, kFaces, kSlaveFaces, kBall, kSlipBoundField,
+               kOptions };
 
   long setup(Stack stack) const {
     auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
@@ -128,7 +130,7 @@ class FetiSetup : public WithNamedArguments {
   }
 
   /// contactSlave=, contactMaster=, gap=, contactSegments=, obstacle=, contactRadius=, contactGap=,
-  /// friction=, slipBound=, frictionField=.
+  /// friction=, slipBound=, frictionField=, slipBoundField=.
   /// Triangles given as 9 dofs each (a_x, a_y, a_z, b_x, ..., c_z), per subdomain.
   std::vector<std::vector<std::array<int, 9>>> faces(Stack stack, Named argument, const char* name, long count,
                                                      const std::vector<int>& ids, const std::vector<long>& dofs) const {
@@ -209,12 +211,17 @@ class FetiSetup : public WithNamedArguments {
     contact.slip_bound = optional_real(nargs[kSlipBound], stack, -1.0);
     if ((nargs[kFriction] && contact.friction == -1.0) || (nargs[kSlipBound] && contact.slip_bound == -1.0))
       throw InputError(std::string(nargs[kFriction] ? "friction" : "slipBound") + ": must be >= 0, got -1");
-    if (const auto* mu = optional_pointer<KN<KN<double>>>(nargs[kFrictionField], stack)) {
-      if (mu->N() != count)
-        throw InputError("frictionField: has " + std::to_string(mu->N()) + " entries for " + std::to_string(count) +
-                         " subdomains");
-      for (int s : ids) contact.friction_field.push_back(to_std((*mu)[s]));
-      if (!nargs[kFriction]) contact.friction = 0.0;  // where the field has no entry
+    // A value per dof of each law: its scalar (0 if not given) where the field has no entry.
+    for (const auto& [argument, name, field, scalar] :
+         {std::tuple{kFrictionField, "frictionField", &contact.friction_field, &contact.friction},
+          std::tuple{kSlipBoundField, "slipBoundField", &contact.slip_bound_field, &contact.slip_bound}}) {
+      const auto* values = optional_pointer<KN<KN<double>>>(nargs[argument], stack);
+      if (!values) continue;
+      if (values->N() != count)
+        throw InputError(std::string(name) + ": has " + std::to_string(values->N()) + " entries for " +
+                         std::to_string(count) + " subdomains");
+      for (int s : ids) field->push_back(to_std((*values)[s]));
+      if (*scalar == -1.0) *scalar = 0.0;
     }
     if (const auto* gaps = optional_pointer<KN<KN<double>>>(nargs[kContactGap], stack)) {
       if (gaps->N() != count)
@@ -241,28 +248,56 @@ NamedParameters FetiSetup::name_param = named_parameters(
      {"contactGap", &typeid(KN<KN<double>>*)},   {"friction", &typeid(double)},
      {"slipBound", &typeid(double)},             {"frictionField", &typeid(KN<KN<double>>*)},
      {"Z", &typeid(KN<KN<double>>*)},             {"contactFaces", &typeid(KN<KN<long>>*)},
-     {"contactSlaveFaces", &typeid(KN<KN<long>>*)}, {"obstacleBall", &typeid(KN<double>*)}},
+     {"contactSlaveFaces", &typeid(KN<KN<long>>*)}, {"obstacleBall", &typeid(KN<double>*)},
+     {"slipBoundField", &typeid(KN<KN<double>>*)}},
     OptionScope::setup);
 
-long feti_set_loads(const long& id, KN<KN<double>>* const& loads) {
-  return guarded("fetiSetLoads", [&] {
-    Handle& h = handle(id);
-    // One entry per subdomain, as fetiSetup's F; each rank takes its own subdomains' (with
-    // all of them handed to the core, a second rank refused the array).
-    if (loads->N() != h.problem->subdomain_count())
-      throw InputError("F: has " + std::to_string(loads->N()) + " entries for " +
-                       std::to_string(h.problem->subdomain_count()) + " subdomains");
-    std::vector<Vec> f;
-    for (int s : h.problem->global_ids()) f.push_back(to_vec((*loads)[s]));
-    // With friction new loads are the next load step: the last solve's state is where its
-    // slip is measured from (before any solve, the unloaded state still is).
-    if (h.problem->has_friction() && h.result) h.problem->start_load_step(*h.result);
-    h.problem->set_loads(f);
-    h.sensitivity.reset();
-    h.result.reset();
-    return 0L;
-  });
-}
+// ---- fetiSetLoads(P, F, dirichletValues=D): the next load case or load step -----------
+class FetiSetLoads : public WithNamedArguments {
+ public:
+  typedef long Result;
+  static NamedParameters name_param;
+  Expression id, loads_in;
+  explicit FetiSetLoads(const basicAC_F0& args) : WithNamedArguments(args, name_param) {
+    id = to<long>(args[0]);
+    loads_in = to<KN<KN<double>>*>(args[1]);
+  }
+  static ArrayOfaType typeargs() { return ArrayOfaType(atype<long>(), atype<KN<KN<double>>*>()); }
+  static E_F0* f(const basicAC_F0& args) { return new FetiSetLoads(args); }
+  AnyType operator()(Stack stack) const {
+    return SetAny<long>(guarded("fetiSetLoads", [&] {
+      Handle& h = handle(GetAny<long>((*id)(stack)));
+      const auto& loads = *GetAny<KN<KN<double>>*>((*loads_in)(stack));
+      const auto* values = optional_pointer<KN<KN<double>>>(nargs[0], stack);
+      const int count = h.problem->subdomain_count();
+      // One entry per subdomain, as fetiSetup's F; each rank takes its own subdomains' (with
+      // all of them handed to the core, a second rank refused the array).
+      collectively(h.problem->communicator(), [&] {
+        if (loads.N() != count)
+          throw InputError("F: has " + std::to_string(loads.N()) + " entries for " + std::to_string(count) + " subdomains");
+        if (values && values->N() != count)
+          throw InputError("dirichletValues: has " + std::to_string(values->N()) + " entries for " +
+                           std::to_string(count) + " subdomains");
+      });
+      std::vector<Vec> f;
+      std::vector<std::vector<double>> prescribed;
+      for (int s : h.problem->global_ids()) {
+        f.push_back(to_vec(loads[s]));
+        if (values) prescribed.push_back(to_std((*values)[s]));
+      }
+      // With friction new loads are the next load step: the last solve's state is where its
+      // slip is measured from (before any solve, the unloaded state still is).
+      if (h.problem->has_friction() && h.result) h.problem->start_load_step(*h.result);
+      if (values) h.problem->set_dirichlet_values(prescribed);
+      h.problem->set_loads(f);
+      h.sensitivity.reset();
+      h.result.reset();
+      return 0L;
+    }));
+  }
+};
+
+NamedParameters FetiSetLoads::name_param = {{"dirichletValues", &typeid(KN<KN<double>>*)}};
 
 /// Frees the problem behind `id`; the handle stays invalid for the life of the process.
 long feti_free(const long& id) {
@@ -276,7 +311,7 @@ long feti_free(const long& id) {
 
 void add_setup_functions() {
   Global.Add("fetiSetup", "(", new OneOperatorCode<FetiSetup>());
-  Global.Add("fetiSetLoads", "(", new OneOperator2_<long, long, KN<KN<double>>*>(feti_set_loads));
+  Global.Add("fetiSetLoads", "(", new OneOperatorCode<FetiSetLoads>());
   Global.Add("fetiFree", "(", new OneOperator1_<long, long>(feti_free));
 }
 

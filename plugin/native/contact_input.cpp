@@ -152,8 +152,8 @@ void add_node_dofs(const std::vector<NodeTag>& nodes, const std::vector<Subdomai
         dofs[k].push_back(static_cast<int>(i));
 }
 
-/// Coulomb's coefficient `mu` at the dofs of `nodes` (sorted: a contact entry's slave curve),
-/// 0 at the other dofs: one coefficient per contact entry.
+/// The friction law's value `mu` (Coulomb's coefficient or Tresca's bound) at the dofs of
+/// `nodes` (sorted: a contact entry's slave curve), 0 at the other dofs: one per contact entry.
 void set_friction(const std::vector<NodeTag>& nodes, double mu, const std::vector<SubdomainLayout>& layouts,
                   std::vector<std::vector<double>>& field) {
   field.resize(layouts.size());
@@ -179,21 +179,28 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
   const ContactSpec& first = problem.contact.front();
   if (first.search_distance) contact.search_distance = *first.search_distance;
   contact.gap = first.gap.value_or(0.0);
-  // Coulomb: a coefficient per entry (0 for an entry without one); Tresca: one bound.
+  // Coulomb: a coefficient per entry, Tresca: a bound per entry (0, no friction, for an
+  // entry without one); one law per problem.
   const bool coulomb = std::any_of(problem.contact.begin(), problem.contact.end(),
                                    [](const ContactSpec& c) { return c.friction.has_value(); });
+  const bool tresca = std::any_of(problem.contact.begin(), problem.contact.end(),
+                                  [](const ContactSpec& c) { return c.slip_bound.has_value(); });
+  if (coulomb && tresca)
+    throw InputError(problem.path + ": contact: friction (Coulomb) in one entry and slip_bound (Tresca) in another: "
+                     "one law per problem");
   if (coulomb) contact.friction = 0.0;
-  contact.slip_bound = first.slip_bound.value_or(-1.0);
+  if (tresca) contact.slip_bound = 0.0;
   for (size_t i = 0; i < problem.contact.size(); ++i) {
     const ContactSpec& c = problem.contact[i];
     const std::string key = "contact[" + std::to_string(i) + "]";
-    if (c.search_distance != first.search_distance || c.gap != first.gap || c.slip_bound != first.slip_bound)
+    if (c.search_distance != first.search_distance || c.gap != first.gap)
       throw InputError(problem.path + ": " + key +
-                       ": search_distance, gap and slip_bound must be those of contact[0] (one value per problem)");
+                       ": search_distance and gap must be those of contact[0] (one value per problem)");
     const std::vector<NodeTag> slaves =
         from_group(problem, key + ".slave", [&] { return mesh.nodes(boundary, c.slave); });
     add_node_dofs(slaves, layouts, contact.slave_dofs);
     if (c.friction) set_friction(slaves, *c.friction, layouts, contact.friction_field);
+    if (c.slip_bound) set_friction(slaves, *c.slip_bound, layouts, contact.slip_bound_field);
     if (c.obstacle) {
       if (contact.obstacle)
         throw InputError(problem.path + ": " + key + ": a second obstacle (one rigid obstacle per problem)");

@@ -56,8 +56,8 @@ struct ContactSpec {
   bool obstacle = false;  ///< a rigid straight obstacle (a plane in 3D): a point and a normal, or a curve
   std::array<double, 3> obstacle_point{0, 0, 0}, obstacle_normal{0, 1, 0};  ///< z entries: 3D only
   int obstacle_curve = 0;  ///< > 0: a straight physical curve, its normal towards the slave
-  std::optional<double> friction;    ///< Coulomb coefficient of this entry's rows (2 components only)
-  std::optional<double> slip_bound;  ///< Tresca bound per row, a force (2 components only; one per problem)
+  std::optional<double> friction;    ///< Coulomb coefficient of this entry's rows (capability table: where)
+  std::optional<double> slip_bound;  ///< Tresca bound of each of this entry's rows, a force
 };
 
 

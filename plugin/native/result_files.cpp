@@ -201,9 +201,13 @@ NodalResults nodal_results(const ProblemFile& problem, const GmshMesh& mesh, con
   for (const ContactMultiplier& row : contact) {
     const auto node = slave_at.find({row.x, row.y, solid ? row.z : 0.0});
     if (node == slave_at.end()) continue;  // a row of another kind at this position: none expected
-    results.contact_force[node->second] += row.lambda;
-    results.friction_force[node->second] += row.tangential;
-    results.contact_state[node->second] = static_cast<int>(row.state);
+    const NodeTag at = node->second;
+    results.contact_force[at] += row.lambda;
+    results.friction_force[at] += row.tangential;
+    results.friction_force_2[at] += row.second_tangential;
+    results.slip[at] = row.slip, results.slip_2[at] = row.second_slip;
+    results.normal[at] = row.normal, results.tangent_1[at] = row.tangents[0], results.tangent_2[at] = row.tangents[1];
+    results.contact_state[at] = static_cast<int>(row.state);
   }
   for (const auto& [node, force] : results.contact_force) {
     const auto length = share.find(node);
@@ -240,12 +244,31 @@ void write_views(const std::string& path, const ProblemFile& problem, const Gmsh
     gmsh::view::addHomogeneousModelData(views.back(), 0, mesh.model_name(), "NodeData", tags, data, 0,
                                         problem.components == 1 ? 1 : 3);
   }
+  const auto vector_view = [&](const std::string& name, const std::map<NodeTag, Point3>& values) {
+    if (values.empty()) return;
+    std::vector<std::size_t> tags;
+    std::vector<double> data;
+    for (const auto& [node, v] : values) {
+      tags.push_back(node);
+      data.insert(data.end(), v.begin(), v.end());
+    }
+    views.push_back(gmsh::view::add(name));
+    gmsh::view::addHomogeneousModelData(views.back(), 0, mesh.model_name(), "NodeData", tags, data, 0, 3);
+  };
   node_view("contact pressure", results.contact_pressure);
   std::map<NodeTag, double> active;
   for (const auto& [node, force] : results.contact_force) active[node] = force > 0 ? 1.0 : 0.0;
   node_view("active set", active);
-  if (problem.contact.size() && (problem.contact.front().friction || problem.contact.front().slip_bound)) {
-    node_view("friction force", results.friction_force);
+  const bool solid = problem.dimension() == 3;
+  if (std::any_of(problem.contact.begin(), problem.contact.end(),
+                  [](const ContactSpec& c) { return c.friction || c.slip_bound; })) {
+    node_view(solid ? "friction force along t1" : "friction force", results.friction_force);
+    if (solid) node_view("friction force along t2", results.friction_force_2);
+    node_view(solid ? "slip along t1" : "slip", results.slip);
+    if (solid) node_view("slip along t2", results.slip_2);
+    vector_view("contact normal", results.normal);  // with friction only: the views' order stays otherwise
+    vector_view("tangent t1", results.tangent_1);
+    if (solid) vector_view("tangent t2", results.tangent_2);
     std::map<NodeTag, double> state(results.contact_state.begin(), results.contact_state.end());
     node_view("contact state (0 open, 1 stick, 2 slip)", state);
   }
@@ -270,7 +293,14 @@ void write_table(const std::string& path, const ProblemFile& problem, const Gmsh
   std::ofstream out = open_output(path);
   const bool solid = problem.components == 3;
   out << (solid ? "node,body,x,y,z,u_x,u_y,u_z," : "node,body,x,y,u_x,u_y,")
-      << "contact_row,contact_force,contact_pressure,active,friction_force,state\n";
+      << (solid ? "contact_row,contact_force,contact_pressure,active,friction_force,state,friction_force_2,slip,slip_2,"
+                  "n_x,n_y,n_z,t1_x,t1_y,t1_z,t2_x,t2_y,t2_z\n"
+                : "contact_row,contact_force,contact_pressure,active,friction_force,state,slip,n_x,n_y,t1_x,t1_y\n");
+  const auto vector = [&](const std::map<NodeTag, Point3>& values, NodeTag node, bool slave) {
+    const Point3 v = slave ? values.at(node) : Point3{0, 0, 0};
+    out << ',' << v[0] << ',' << v[1];
+    if (solid) out << ',' << v[2];
+  };
   for (const auto& [node, u] : results.displacement) {
     const auto p = mesh.position(node);
     const auto force = results.contact_force.find(node);
@@ -281,7 +311,14 @@ void write_table(const std::string& path, const ProblemFile& problem, const Gmsh
     if (solid) out << u[2] << ',';
     out << slave << ',' << (slave ? force->second : 0.0) << ',' << (slave ? results.contact_pressure.at(node) : 0.0) << ','
         << (slave && force->second > 0 ? 1 : 0) << ',' << (slave ? results.friction_force.at(node) : 0.0) << ','
-        << (slave ? results.contact_state.at(node) : 0) << '\n';
+        << (slave ? results.contact_state.at(node) : 0);
+    if (solid) out << ',' << (slave ? results.friction_force_2.at(node) : 0.0);
+    out << ',' << (slave ? results.slip.at(node) : 0.0);
+    if (solid) out << ',' << (slave ? results.slip_2.at(node) : 0.0);
+    vector(results.normal, node, slave);
+    vector(results.tangent_1, node, slave);
+    if (solid) vector(results.tangent_2, node, slave);
+    out << '\n';
   }
 }
 

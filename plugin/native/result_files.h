@@ -41,7 +41,10 @@ struct NodalResults {
   std::map<NodeTag, std::array<double, 3>> displacement;  ///< the problem's components, the others 0
   std::map<NodeTag, int> body;
   std::map<NodeTag, double> contact_force, contact_pressure;
-  std::map<NodeTag, double> friction_force;  ///< the friction row's multiplier (0 without friction)
+  std::map<NodeTag, double> friction_force;  ///< the friction row's multiplier (0 without friction); 3D: along t1
+  std::map<NodeTag, double> friction_force_2;  ///< 3D: along t2 (0 in the plane)
+  std::map<NodeTag, double> slip, slip_2;    ///< the step's slip along t1 and t2 (fetiContact's slip=, slip2=)
+  std::map<NodeTag, Point3> normal, tangent_1, tangent_2;  ///< the row's n, t1, t2 (t2 = 0 in the plane)
   std::map<NodeTag, int> contact_state;      ///< 0 open, 1 stick, 2 slip (friction.h)
   std::vector<ElementStress> stresses;  ///< displacements (2 or 3 components), bodies with a material
 };
@@ -53,10 +56,12 @@ NodalResults nodal_results(const ProblemFile& problem, const GmshMesh& mesh, con
 void write_views(const std::string& path, const ProblemFile& problem, const GmshMesh& mesh,
                  const NodalResults& results);
 
-/// node,body,x,y,u_x,u_y,contact_row,contact_force,contact_pressure,active,friction_force,state
-/// (contact_row: 1 at the slave nodes that have a contact row; friction_force and state (0
-/// open, 1 stick, 2 slip) as fetiContact's tangential= and state=); a solid (3 components)
-/// adds z after y and u_z after u_y.
+/// node,body,x,y,u_x,u_y,contact_row,contact_force,contact_pressure,active,friction_force,state,
+/// slip,n_x,n_y,t1_x,t1_y (contact_row: 1 at the slave nodes that have a contact row;
+/// friction_force, state (0 open, 1 stick, 2 slip), slip, n and t1 as fetiContact's
+/// tangential=, state=, slip=, normal=, tangent1=; 0 elsewhere); a solid (3 components) adds
+/// z after y, u_z after u_y, friction_force_2 after state, slip_2 after slip, the z
+/// components of n and t1 and t2_x,t2_y,t2_z (tangential2=, slip2=, tangent2=).
 void write_table(const std::string& path, const ProblemFile& problem, const GmshMesh& mesh, const NodalResults& results);
 
 /// element,body,x,y,von_mises (centroids; a solid adds z after y), for the bodies with a material.

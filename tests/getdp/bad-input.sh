@@ -90,7 +90,7 @@ expect "the same slave curve twice" "contact\[1\].slave: curve 1 is already the 
 expect "a gap for node-to-segment contact" "contact\[0\].gap: applies to node-to-node contact" "p['contact'][0]['gap'] = 0.1"
 expect "a negative friction coefficient" "contact\[0\].friction: must be >= 0" "p['contact'][0]['friction'] = -0.3"
 expect "both friction laws" "contact\[0\].slip_bound: give one law" "p['contact'][0]['friction'] = 0.3; p['contact'][0]['slip_bound'] = 1"
-expect "slip bounds that differ between contacts" "search_distance, gap and slip_bound must be those of contact\[0\]" "p['contact'].append({'slave': 3, 'obstacle': {'point': [0, -5], 'normal': [0, 1]}, 'slip_bound': 2})"
+expect "Coulomb in one contact, Tresca in another" "one law per problem" "p['contact'][0]['friction'] = 0.3; p['contact'].append({'slave': 3, 'obstacle': {'point': [0, -5], 'normal': [0, 1]}, 'slip_bound': 2})"
 expect "an obstacle curve that is not straight" "contact\[0\].obstacle.curve: curve 4 is not straight" "p['contact'] = [{'slave': 1, 'obstacle': {'curve': 4}}]"
 expect "no bodies" "case.json: bodies: needs at least one body" "p['bodies'] = []"
 expect "GetDP solution from two .pre files" "output.getdp_solution: needs every subdomain's dofs from one GetDP .pre file; subdomains\[1\]" "p['output']['getdp_solution'] = 'x.res'; p['subdomains'][1]['dofs'] = {'file': 'dofs1.txt'}"

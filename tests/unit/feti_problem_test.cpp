@@ -6,6 +6,7 @@
 #include "feti/options.h"
 #include "parallel/process.h"
 #include "membrane_model.h"
+#include "input_error.h"
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
@@ -443,15 +444,6 @@ TEST(FetiProblem, NonConvergenceIsAStatusNotAnException) {
   const FetiResult result = problem.solve(settings);
   EXPECT_EQ(result.status, SolveStatus::max_iterations);
   EXPECT_EQ(result.u.size(), 8u);  // the last iterate is still returned
-}
-
-void expect_input_error(const std::function<void()>& action, const std::string& needle) {
-  try {
-    action();
-    FAIL() << "expected an InputError mentioning " << needle;
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find(needle), std::string::npos) << error.what();
-  }
 }
 
 TEST(FetiProblem, BadInputIsAnErrorNamingTheArgument) {

@@ -115,9 +115,11 @@ std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& 
     std::vector<double> value(n, 0.0);
     const std::vector<double>* gap = local_contact.gap_field.empty() || local_contact.gap_field[k].empty()
                                          ? nullptr : &local_contact.gap_field[k];
-    const std::vector<double>* friction =
-        local_contact.friction_field.empty() || local_contact.friction_field[k].empty() ? nullptr
-                                                                                          : &local_contact.friction_field[k];
+    // The law's value per slave: Coulomb's coefficient, or Tresca's bound.
+    const bool tresca = local_contact.slip_bound >= 0;
+    const auto& law_field = tresca ? local_contact.slip_bound_field : local_contact.friction_field;
+    const double law_value = tresca ? local_contact.slip_bound : local_contact.friction;
+    const std::vector<double>* friction = law_field.empty() || law_field[k].empty() ? nullptr : &law_field[k];
     for (size_t i = 0; i < sub.dirichlet_dofs.size(); ++i) {
       fixed[static_cast<size_t>(sub.dirichlet_dofs[i])] = 1;
       value[static_cast<size_t>(sub.dirichlet_dofs[i])] = sub.dirichlet_values.empty() ? 0.0 : sub.dirichlet_values[i];
@@ -140,7 +142,7 @@ std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& 
       if (shared || fixed[i] || slave[i] || master[i] || partner[i])
         records.push_back({s, static_cast<int>(i), sub.body, sub.component.empty() ? 0 : sub.component[i],
                            sub.x[i], sub.y[i], z, fixed[i] != 0, slave[i] != 0, master[i] != 0, value[i],
-                           gap ? (*gap)[i] : 0.0, friction ? (*friction)[i] : local_contact.friction});
+                           gap ? (*gap)[i] : 0.0, friction ? (*friction)[i] : law_value});
     }
   }
   return records;

@@ -177,7 +177,10 @@ void substitute_dirichlet(const std::vector<DofRecord>& records, std::vector<Row
 void add_friction_rows(const std::vector<DofRecord>& records, std::vector<Row>& rows) {
   const size_t count = rows.size();
   for (size_t i = 0; i < count; ++i) {
-    if (rows[i].kind != RowKind::contact) continue;
+    // A zero coefficient or bound holds nothing: no row, so that mu = 0 is the frictionless
+    // problem, which refuses a body nothing else holds (a row pinned at 0 would let it pass
+    // the coarse space's check and float along the tangent).
+    if (rows[i].kind != RowKind::contact || !(rows[i].friction > 0)) continue;
     std::vector<Row> pair;
     for (const RowAt& slip : rows[i].geometry->slip_rows()) {
       Row row{{}, 0.0, RowKind::friction, false, rows[i].geometry, static_cast<int>(i), rows[i].friction};

@@ -210,7 +210,13 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
     throw InputError("frictionField: needs friction >= 0 as well (its value where the field has no entry; "
                      "fetiSetup sets 0 when only frictionField is given)");
   if (!contact.friction_field.empty() && contact.slip_bound >= 0)
-    throw InputError("frictionField, slipBound: a coefficient per row is Coulomb's law; Tresca's takes slipBound alone");
+    throw InputError("frictionField, slipBound: a coefficient per row is Coulomb's law; Tresca's bound per row is slipBoundField");
+  check_dof_field(contact.slip_bound_field, ids, subdomains, "slipBoundField", 0.0);
+  if (!contact.slip_bound_field.empty() && contact.slip_bound < 0)
+    throw InputError("slipBoundField: needs slipBound >= 0 as well (its value where the field has no entry; "
+                     "fetiSetup sets 0 when only slipBoundField is given)");
+  if (!contact.slip_bound_field.empty() && !contact.friction_field.empty())
+    throw InputError("frictionField, slipBoundField: give one law, Coulomb (frictionField=) or Tresca (slipBoundField=)");
   if (contact.friction >= 0 && contact.slip_bound >= 0)
     throw InputError("friction, slipBound: give one law, Coulomb (friction=) or Tresca (slipBound=), not both");
   for (double v : {contact.obstacle_point[0], contact.obstacle_point[1], contact.obstacle_point[2],

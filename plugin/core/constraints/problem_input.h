@@ -76,12 +76,18 @@ struct ContactInput {
   /// |lambda_t| <= g; in 3D two, along tangent_pair(n), whose multipliers keep ||lambda_t|| <= g.
   /// Coulomb: g = friction * lambda_n (a fixed point over Tresca solves). Tresca: g =
   /// slip_bound, a force per row. Negative: not given; neither given: frictionless, no rows.
+  /// A row whose coefficient or bound is 0 gets no friction row: it could carry no force,
+  /// and mu = 0 is then exactly the frictionless problem (refusals of unrestrained bodies too).
   double friction = -1;
   double slip_bound = -1;
   /// Coulomb with a coefficient per contact row: per subdomain one value per dof (empty
   /// entries: `friction` there, which must be given), read at the slave node's component-0
   /// dof like gap_field.
   std::vector<std::vector<double>> friction_field;
+  /// Tresca with a bound per contact row (a traction bound uniform on a graded mesh: the
+  /// bound times each node's share of the contact surface): like friction_field, empty
+  /// entries `slip_bound` there (fetiSetup sets 0 when only slipBoundField is given).
+  std::vector<std::vector<double>> slip_bound_field;
   bool has_friction() const { return friction >= 0 || slip_bound >= 0; }
 };
 

@@ -165,12 +165,14 @@ PrimalCheck DualSystem::primal_check(const DualData& data, const Vec& lambda) co
     if (i >= constraints_.equality_rows && lambda_scale > 0)
       complementarity = std::max(complementarity, std::abs(lambda[i] * r) / lambda_scale);
   }
-  // A friction group slips (s = B_t u - c_t) only at its bound and against its force.
+  // A friction group slips (s = B_t u - c_t) only at its bound and along lambda_t (the force
+  // on the slave, -lambda_t t, opposes the slip: docs/reference.md, "Signs of contact and friction").
   const Vec gap = Bu - data.c;
-  for (int i = first_friction; i < rows() && lambda_scale > 0; i += constraints_.tangent_directions)
+  const double force_scale = friction_force_scale(lambda_scale, data.slip_bound);
+  for (int i = first_friction; i < rows(); i += constraints_.tangent_directions)
     complementarity = std::max(complementarity, friction_residual(constraints_, lambda, gap, i,
-                                                                  data.slip_bound[i - first_friction], lambda_scale)
-                                                        .complementarity / lambda_scale);
+                                                                  data.slip_bound[i - first_friction], force_scale)
+                                                        .complementarity / force_scale);
   violation = std::max(violation, complementarity);
   check.violation = check.displacement > 0 ? violation / check.displacement
                                            : (violation > 0 ? std::numeric_limits<double>::infinity() : 0.0);

@@ -88,18 +88,15 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   if (!ownership_error.empty()) throw InputError(ownership_error);  // the same on every rank
   space_dimension_ = static_cast<int>(all[8]);
 
-  const double snap = snap_ = snapping_length(boxes);
-  std::vector<DofRecord> records =
-      unpack(comm.allgather(pack(constraint_candidates(inputs_, global_ids_, local_contact, boxes, bodies, snap))));
-  const std::vector<SegmentRecord> segments =
-      unpack_segments(comm.allgather(pack(segment_records(inputs_, global_ids_, local_contact))));
-  const std::vector<FaceRecord> faces =
-      unpack_faces(comm.allgather(pack(face_records(inputs_, global_ids_, local_contact))));
-  ContactInput contact = local_contact;
-  contact.three_d = space_dimension_ == 3;
-  Constraints constraints = build_constraints(records, segments, faces, contact, settings_.variant, snap);
-  rhs_ = Eigen::Map<const Vec>(constraints.rhs.data(), constraints.rows());
-  friction_ = {local_contact.slip_bound};
+  snap_ = snapping_length(boxes);
+  boxes_ = std::move(boxes);
+  local_contact_ = local_contact;
+  local_contact_.three_d = space_dimension_ == 3;
+  std::vector<DofRecord> records;
+  Constraints constraints = build_rows(&records);
+  built_rhs_ = rhs_ = Eigen::Map<const Vec>(constraints.rhs.data(), constraints.rows());
+  if (local_contact.slip_bound >= 0)  // Tresca: the bounds per friction row are fixed at set-up
+    friction_ = {true, Eigen::Map<const Vec>(constraints.friction_coefficient.data(), constraints.friction_rows)};
   std::sort(records.begin(), records.end(), [](const DofRecord& a, const DofRecord& b) {
     return std::make_pair(a.subdomain, a.dof) < std::make_pair(b.subdomain, b.dof);
   });
@@ -119,8 +116,15 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   setup_times_.factorization = local_factor_seconds_ = factor_clock.seconds();
 
   Stopwatch coarse_clock;
-  dual_ = std::make_unique<DualSystem>(subdomains_, global_ids_, owner, bodies, std::move(constraints),
-                                       settings_.threads, comm);
+  try {
+    dual_ = std::make_unique<DualSystem>(subdomains_, global_ids_, owner, bodies, std::move(constraints),
+                                         settings_.threads, comm);
+  } catch (const InputError& error) {  // thrown on every rank alike: the coarse space is global
+    if (!local_contact.has_friction()) throw;
+    throw InputError(std::string(error.what()) +
+                     "; friction holds only where its coefficient or bound is > 0 (friction=0, slipBound=0 or a zero "
+                     "of frictionField or slipBoundField where read gives a row no friction row)");
+  }
   (dual_->coarse() ? setup_times_.coarse_space : setup_times_.constraints) += coarse_clock.seconds();
   if (settings_.preconditioner != DualPreconditioner::none) {
     Stopwatch preconditioner_clock;
@@ -151,6 +155,18 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   gather_rank_statistics(0.0);
   setup_times_ = {comm.max(setup_times_.constraints), comm.max(setup_times_.factorization),
                   comm.max(setup_times_.coarse_space), comm.max(setup_times_.dual_data), 0, 0, 0, 0};
+}
+
+Constraints FetiProblem::build_rows(std::vector<DofRecord>* gathered) const {
+  const Communicator& comm = *comm_;
+  std::vector<DofRecord> records = unpack(
+      comm.allgather(pack(constraint_candidates(inputs_, global_ids_, local_contact_, boxes_, bodies_, snap_))));
+  const std::vector<SegmentRecord> segments =
+      unpack_segments(comm.allgather(pack(segment_records(inputs_, global_ids_, local_contact_))));
+  const std::vector<FaceRecord> faces =
+      unpack_faces(comm.allgather(pack(face_records(inputs_, global_ids_, local_contact_))));
+  if (gathered) *gathered = records;
+  return build_constraints(std::move(records), segments, faces, local_contact_, settings_.variant, snap_);
 }
 
 void FetiProblem::factorize() {
@@ -224,6 +240,34 @@ void FetiProblem::compute_dual_data() {
   setup_times_.dual_data = clock.seconds();
 }
 
+void FetiProblem::set_dirichlet_values(const std::vector<std::vector<double>>& values) {
+  collectively(*comm_, [&] {
+    if (values.size() != inputs_.size())
+      throw InputError("dirichletValues: has " + std::to_string(values.size()) + " entries for " +
+                       std::to_string(inputs_.size()) + " subdomains");
+    for (size_t k = 0; k < values.size(); ++k) {
+      const std::string name = "dirichletValues[" + std::to_string(global_ids_[k]) + "]";
+      if (values[k].size() != inputs_[k].dirichlet_dofs.size())
+        throw InputError(name + ": needs one value per Dirichlet dof (" + std::to_string(inputs_[k].dirichlet_dofs.size()) +
+                         " as at set-up), got " + std::to_string(values[k].size()));
+      for (double v : values[k])
+        if (!std::isfinite(v)) throw InputError(name + ": has a non-finite value");
+    }
+  });
+  const ThreadLimit limit(settings_.threads);
+  for (size_t k = 0; k < values.size(); ++k) inputs_[k].dirichlet_values = values[k];
+  // c is affine in the prescribed values: the rows built anew with them differ from the
+  // current ones by exactly the values' change, whatever the last load step left in c.
+  Constraints rebuilt;
+  collectively(*comm_, [&] { rebuilt = build_rows(); });
+  if (rebuilt.rows() != constraints().rows() || rebuilt.kind != constraints().kind)
+    throw std::logic_error("set_dirichlet_values: the same dofs built other rows");
+  const Vec now = Eigen::Map<const Vec>(rebuilt.rhs.data(), rebuilt.rows());
+  rhs_ += now - built_rhs_;
+  built_rhs_ = now;
+  compute_dual_data();
+}
+
 void FetiProblem::start_load_step(const FetiResult& last) {
   collectively(*comm_, [&] {
     if (last.status != SolveStatus::converged)
@@ -249,6 +293,9 @@ FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
     result.friction_hessian = std::move(friction.hessian);
     result.friction_bound_change = friction.bound_change;
     result.slip_bound = std::move(friction.slip_bound);
+    Vec Bu;
+    dual_->F().apply_B(result.u, Bu);
+    result.slip = Bu.tail(constraints().friction_rows) - rhs_.tail(constraints().friction_rows);
   } else {
     static_cast<DualSolution&>(result) = dual_->solve(data_, settings);
   }
@@ -282,7 +329,7 @@ FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
     if (c.kind[static_cast<size_t>(i)] == RowKind::contact && result.lambda[i] > 0) ++result.active_contact;
   result.beyond_reach = check_beyond_reach(c.beyond_reach, result.u, global_ids_, *comm_);
   if (has_friction())
-    for (ContactState state : contact_row_forces(c, result.lambda, result.slip_bound).state)
+    for (ContactState state : contact_row_forces(c, result.lambda, result.slip_bound, result.slip).state)
       result.slipping_contact += state == ContactState::slip ? 1 : 0;
   result.times.kkt = kkt_clock.seconds();
   gather_rank_statistics(result.times.norm_estimate + result.times.solve);

@@ -41,6 +41,7 @@ struct FetiResult : DualSolution {
   std::vector<int> friction_hessian;  ///< Hessian multiplications of each
   double friction_bound_change = 0;   ///< Coulomb: the fixed point's last relative change of g
   Vec slip_bound;                ///< g per friction row of the last Tresca solve
+  Vec slip;                      ///< per friction row B u - c: the slip of this load step along its tangent
   int slipping_contact = 0;      ///< contact rows whose friction force is at its bound
   ReachCheck beyond_reach;       ///< slaves without a row (contactRadius) that penetrate
 };
@@ -75,6 +76,13 @@ class FetiProblem {
   /// New loads for the local subdomains, same matrices: keeps every factorization and the
   /// coarse factor. Collective.
   void set_loads(const std::vector<Vec>& loads);
+
+  /// New prescribed values of the Dirichlet dofs (per local subdomain, one per
+  /// SubdomainInput::dirichlet_dofs entry), same dofs: the right-hand sides of the rows they
+  /// enter (Dirichlet rows, rows they were substituted into, friction rows: the prescribed
+  /// motion's change is part of the step's slip) and, in FETI-1, the eliminated loads.
+  /// Keeps every factorization. With friction call start_load_step first. Collective.
+  void set_dirichlet_values(const std::vector<std::vector<double>>& values);
 
   /// With friction: `last` (a converged solve of this problem) becomes the state the next
   /// load step starts from: the slip of the friction rows is measured from its u, and its
@@ -131,6 +139,9 @@ class FetiProblem {
 
  private:
   void set_up(const ContactInput& local_contact);
+  /// B and c from the current inputs (the records of all ranks gathered, also into
+  /// `gathered` if given). Collective.
+  Constraints build_rows(std::vector<DofRecord>* gathered = nullptr) const;
   void factorize();
   void compute_dual_data();
   void gather_rank_statistics(double solve_seconds) const;
@@ -150,6 +161,9 @@ class FetiProblem {
   std::unique_ptr<DualSystem> dual_;
   DualData data_;                       // the state problem's dual right-hand side
   Vec rhs_;                             // c: the constraints' rhs, friction rows' from the last load step
+  Vec built_rhs_;                       // c as built for the current Dirichlet values
+  ContactInput local_contact_;          // this rank's contact input, to rebuild the rows' rhs
+  std::vector<BoundingBox> boxes_;      // of every global subdomain
   FrictionLaw friction_;
   Vec step_start_;                      // friction: multipliers of the last load step (empty: none)
   long primal_dimension_ = 0;

@@ -57,7 +57,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
   const Constraints& c = dual.constraints();
   if (settings.start.size() == 0) settings.start = start;
   FrictionSolution out;
-  Vec g = law.coulomb() ? coulomb_bounds(c, settings.start) : Vec::Constant(c.friction_rows, law.slip_bound);
+  Vec g = law.coulomb() ? coulomb_bounds(c, settings.start) : law.slip_bound;
   IterationCounts counts;
   PhaseTimes times;
   // maxit holds over the whole fixed point: each Tresca solve gets what the ones before left.
@@ -103,19 +103,25 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
   return out;
 }
 
-ContactRowForces contact_row_forces(const Constraints& c, const Vec& lambda, const Vec& slip_bound) {
+ContactRowForces contact_row_forces(const Constraints& c, const Vec& lambda, const Vec& slip_bound, const Vec& slip) {
   ContactRowForces forces;
-  forces.tangential.assign(static_cast<size_t>(c.contact_rows()), 0.0);
-  forces.second_tangential.assign(static_cast<size_t>(c.contact_rows()), 0.0);
-  forces.state.assign(static_cast<size_t>(c.contact_rows()), ContactState::open);
+  const auto rows = static_cast<size_t>(c.contact_rows());
+  for (auto* v : {&forces.tangential, &forces.second_tangential, &forces.slip, &forces.second_slip}) v->assign(rows, 0.0);
+  forces.state.assign(rows, ContactState::open);
   if (lambda.size() != c.rows()) return forces;
   for (int i = 0; i < c.contact_rows(); ++i)
     if (lambda[c.equality_rows + i] > 0) forces.state[static_cast<size_t>(i)] = ContactState::stick;
+  const bool slipped = slip.size() == c.friction_rows;
   for (int t = 0; t < c.friction_rows; t += c.tangent_directions) {
     const auto i = static_cast<size_t>(c.normal_row[static_cast<size_t>(t)] - c.equality_rows);
     const int row = c.first_friction_row() + t;
     forces.tangential[i] = lambda[row];
-    if (c.tangent_directions == 2) forces.second_tangential[i] = lambda[row + 1];
+    if (slipped) forces.slip[i] = slip[t];
+    if (c.tangent_directions == 2) {
+      forces.second_tangential[i] = lambda[row + 1];
+      if (slipped) forces.second_slip[i] = slip[t + 1];
+    }
+    if (tangential_norm(c, lambda, row) > 0) forces.state[i] = ContactState::stick;  // Tresca: closed or not
     if (forces.state[i] == ContactState::stick && at_slip_bound(c, lambda, row, slip_bound[t])) forces.state[i] = ContactState::slip;
   }
   return forces;

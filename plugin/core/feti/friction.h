@@ -10,10 +10,11 @@
 namespace ffeti {
 
 /// Coulomb's coefficients per friction row (Constraints::friction_coefficient), or Tresca's
-/// bound, the same for every row.
+/// bound per friction row (slipBound=, slipBoundField=; the same Constraints entries).
 struct FrictionLaw {
-  double slip_bound = -1;   ///< Tresca's g per row (>= 0), or negative: Coulomb
-  bool coulomb() const { return slip_bound < 0; }
+  bool tresca = false;
+  Vec slip_bound;  ///< Tresca: g per friction row (>= 0)
+  bool coulomb() const { return !tresca; }
 };
 
 /// The Coulomb fixed point stops when a Tresca solve to the user's tol gives
@@ -41,15 +42,21 @@ struct FrictionSolution {
 FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, const FrictionLaw& law,
                                      DualSolveSettings settings, const Vec& start);
 
-/// The contact state of each contact row (fetiContact): open (lambda_n = 0), stick (its
-/// friction force inside its bound, ||lambda_t|| < g, or no friction row and closed), slip
-/// (at its bound, at_slip_bound).
+/// The contact state of each contact row (fetiContact; docs/algorithms.md, "Friction"):
+/// open: no force at all (lambda_n = 0 and no friction force); stick: a force, its friction
+/// force inside its bound (||lambda_t|| < g, or no friction row); slip: at its bound
+/// (at_slip_bound). A Tresca row acts whether closed or not (its bound does not depend on
+/// lambda_n), so a row that carries a friction force is never open, even with lambda_n = 0.
 enum class ContactState { open = 0, stick = 1, slip = 2 };
 struct ContactRowForces {
   std::vector<double> tangential;         ///< lambda_t per contact row (0 without friction rows); 3D: along t1
   std::vector<double> second_tangential;  ///< 3D: lambda_t along t2 (tangent_pair); 0 in a plane problem
+  std::vector<double> slip;               ///< the slip of the step along t1, (B u - c) on the friction row; 0 without
+  std::vector<double> second_slip;        ///< 3D: along t2; 0 in a plane problem
   std::vector<ContactState> state;
 };
-ContactRowForces contact_row_forces(const Constraints& constraints, const Vec& lambda, const Vec& slip_bound);
+/// `slip`: B u - c on the friction rows (FetiResult::slip), empty before a solve.
+ContactRowForces contact_row_forces(const Constraints& constraints, const Vec& lambda, const Vec& slip_bound,
+                                    const Vec& slip = Vec());
 
 }  // namespace ffeti

@@ -53,6 +53,14 @@ FrictionResidual friction_residual(const Constraints& constraints, const Vec& la
   return {norm - g, std::max(std::min(g - norm, lambda_scale) * slip, against)};
 }
 
+double friction_force_scale(double lambda_scale, const Vec& slip_bound) {
+  if (lambda_scale > 0) return lambda_scale;
+  double largest = 0;
+  for (Eigen::Index t = 0; t < slip_bound.size(); ++t)
+    if (std::isfinite(slip_bound[t])) largest = std::max(largest, slip_bound[t]);
+  return largest > 0 ? largest : 1.0;
+}
+
 bool holds_with_equality(const Constraints& constraints, const Vec& lambda, const Vec& slip_bound, int row) {
   if (row < constraints.equality_rows) return true;
   const int friction = row - constraints.first_friction_row();
@@ -99,7 +107,8 @@ KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs, const std:
   KktResiduals r;
   const int m = constraints.rows();
   const double u_scale = comm.max(inf_norm(u));
-  const double lambda_scale = lambda.size() ? lambda.cwiseAbs().maxCoeff() : 0.0;
+  const double lambda_scale = friction_force_scale(lambda.size() ? lambda.cwiseAbs().maxCoeff() : 0.0,
+                                                  constraints.friction_rows ? slip_bound : Vec());
 
   double residual_sq = 0, load_sq = 0, reaction_sq = 0, dirichlet_violation = 0;
   for (size_t s = 0; s < inputs.size(); ++s) {

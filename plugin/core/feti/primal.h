@@ -38,6 +38,10 @@ struct FrictionResidual {
 };
 FrictionResidual friction_residual(const Constraints& constraints, const Vec& lambda, const Vec& gap, int row, double g,
                                    double lambda_scale);
+/// The force scale of the friction measures: ||lambda||_inf, or where every multiplier is 0
+/// (a Tresca scene with no force at all) the largest finite bound g, so that a row that
+/// slips while its bound could have held it still counts (1 if no bound is finite).
+double friction_force_scale(double lambda_scale, const Vec& slip_bound);
 
 /// A row holds with equality at lambda: an equality row, a contact row with lambda_i > 0, a
 /// friction row whose group sticks (not at_slip_bound, g its `slip_bound` entry).

@@ -86,13 +86,16 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
 std::vector<ContactMultiplier> contact_multipliers(const FetiProblem& problem, const FetiResult* result) {
   const Constraints& c = problem.constraints();
   const bool solved = result && result->lambda.size();
-  const ContactRowForces forces = contact_row_forces(c, solved ? result->lambda : Vec(), solved ? result->slip_bound : Vec());
+  const ContactRowForces forces = contact_row_forces(c, solved ? result->lambda : Vec(), solved ? result->slip_bound : Vec(),
+                                                     solved ? result->slip : Vec());
   std::vector<ContactMultiplier> rows;
   for (int i = c.equality_rows; i < c.first_friction_row(); ++i) {
     const auto k = static_cast<size_t>(i - c.equality_rows);
     const auto& position = problem.contact_positions()[k];
+    const ContactRowGeometry& geometry = *c.geometry[k];
     rows.push_back({position[0], position[1], solved ? result->lambda[i] : 0.0, problem.contact_heights()[k],
-                    forces.tangential[k], forces.second_tangential[k], forces.state[k]});
+                    forces.tangential[k], forces.second_tangential[k], forces.state[k], geometry.normal(),
+                    geometry.tangents(), forces.slip[k], forces.second_slip[k]});
   }
   return rows;
 }

@@ -28,6 +28,9 @@ struct ContactMultiplier {
   double tangential = 0;                     ///< the friction row's multiplier (0 without one); 3D: along t1
   double second_tangential = 0;              ///< 3D: the friction force along t2 (tangent_pair); 0 in the plane
   ContactState state = ContactState::open;   ///< open, stick or slip (friction.h)
+  Point3 normal{0, 0, 0};                    ///< the row's unit normal (ContactRowGeometry::normal)
+  std::array<Point3, 2> tangents{};          ///< t1, t2 (ContactRowGeometry::tangents; t2 = 0 in the plane)
+  double slip = 0, second_slip = 0;          ///< the slip of the last step along t1, t2 (0 without friction rows)
 };
 /// The contact rows in row order, with the multipliers of `result` (0 without one: the
 /// positions alone, known from the set-up) and, with friction, the friction forces and states.

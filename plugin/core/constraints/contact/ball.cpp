@@ -16,12 +16,13 @@ RowAt BallGeometry::row_at(const NodeMotion& v, double t) const {
   return row;
 }
 
-std::vector<RowAt> BallGeometry::slip_rows() const {
-  const Point3& s = slave_position();
-  const double distance = std::hypot(s[0] - centre[0], s[1] - centre[1], s[2] - centre[2]);
-  const Point3 n{(s[0] - centre[0]) / distance, (s[1] - centre[1]) / distance, (s[2] - centre[2]) / distance};
-  return rigid_slip_rows(slave, n, three_d());
+Point3 BallGeometry::normal() const {
+  const Point3 d = minus(slave_position(), centre);
+  const double distance = std::sqrt(dot(d, d));
+  return {d[0] / distance, d[1] / distance, d[2] / distance};
 }
+
+std::vector<RowAt> BallGeometry::slip_rows() const { return rigid_slip_rows(slave, normal(), three_d()); }
 
 void Ball::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
   const ContactInput& contact = in.contact;

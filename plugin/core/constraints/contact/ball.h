@@ -19,6 +19,8 @@ class BallGeometry final : public ContactRowGeometry {
   /// n moves with s.
   RowAt row_at(const NodeMotion& v, double t) const override;
   double length() const override { return radius; }
+  /// (s - c)/|s - c|.
+  Point3 normal() const override;
   /// t.u_s along the tangent(s) of the tangent plane at the slave's nearest ball point, whose
   /// normal is n = (s - c)/|s - c| (rigid_slip_rows: the ball does not move).
   std::vector<RowAt> slip_rows() const override;

@@ -16,4 +16,9 @@ std::vector<RowAt> rigid_slip_rows(const std::array<DofRef, 3>& slave, const Poi
   return rows;
 }
 
+std::array<Point3, 2> ContactRowGeometry::tangents() const {
+  const std::vector<Point3> t = slip_directions(normal(), three_d_);
+  return {t[0], t.size() > 1 ? t[1] : Point3{0, 0, 0}};
+}
+
 }  // namespace ffeti

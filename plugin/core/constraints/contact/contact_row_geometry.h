@@ -45,6 +45,15 @@ class ContactRowGeometry {
   virtual RowAt row_at(const NodeMotion& velocities, double t) const = 0;
   /// The length the geometry is measured in: the step of the differences scales with it.
   virtual double length() const = 0;
+  /// The row's unit normal n (docs/reference.md, "Signs"): the master's outward normal at
+  /// the slave's closest point, pointing from the master to the slave; the row is
+  /// n.(u_master - u_slave) <= gap and its multiplier pushes the slave along n (z = 0 in a
+  /// plane problem).
+  virtual Point3 normal() const = 0;
+  /// The row's tangents, functions of normal() alone: in the plane t1 = (-n_y, n_x) (the
+  /// turn a segment's direction makes from its outward normal) and t2 = 0; in three
+  /// dimensions tangent_pair(n). The friction rows are the slips along them.
+  std::array<Point3, 2> tangents() const;
   /// The tangential rows of friction, the slips t.(u_slave - u_master) from the last load
   /// step's state (gap 0): one in a plane problem, two in three dimensions along
   /// tangent_pair(n) of the row's normal n, t1 then t2 (their multipliers form one disc).

@@ -23,10 +23,9 @@ struct MortarRow {
   std::map<std::pair<int, int>, double> coefficients;  ///< per (subdomain, dof)
   double gap = 0;
   double weight = 0;  ///< int phi_j over the covered part
-  /// With friction: int phi_j (u_s - u_m) per (subdomain, dof), its component, and the
-  /// pairs' normals weighted by their int phi_j.
+  /// With friction: int phi_j (u_s - u_m) per (subdomain, dof), its component.
   std::map<std::pair<int, int>, std::pair<int, double>> jump;
-  Point3 normal{0, 0, 0};
+  Point3 normal{0, 0, 0};  ///< the pairs' normals weighted by their int phi_j: the row's, unnormalized
 };
 
 /// (b - a) x (c - a): twice the area times the unit normal.
@@ -48,7 +47,7 @@ bool by_identity(const FaceRecord& a, const FaceRecord& b) {
 }
 
 /// Adds one (slave face, master face) pair's integrals to the rows of the slave's corners.
-/// `friction`: also the jump and the weighted normal.
+/// `friction`: also the jump.
 void add_pair(const FaceRecord& slave, const FaceRecord& master, const MortarIntegrals& in,
               const std::array<size_t, 3>& corner_rows, bool friction, std::vector<MortarRow>& pending) {
   const Point3& n = in.normal;
@@ -56,6 +55,7 @@ void add_pair(const FaceRecord& slave, const FaceRecord& master, const MortarInt
     MortarRow& row = pending[corner_rows[j]];
     for (size_t k = 0; k < 3; ++k) {
       row.weight += in.D[j][k];
+      for (size_t i = 0; i < 3; ++i) row.normal[i] += in.D[j][k] * n[i];
       for (size_t i = 0; i < 3; ++i) {
         row.coefficients[{slave.subdomain, slave.dofs[3 * k + i]}] -= in.D[j][k] * n[i];
         row.coefficients[{master.subdomain, master.dofs[3 * k + i]}] += in.M[j][k] * n[i];
@@ -65,8 +65,6 @@ void add_pair(const FaceRecord& slave, const FaceRecord& master, const MortarInt
         s = {static_cast<int>(i), s.second + in.D[j][k]};
         m = {static_cast<int>(i), m.second - in.M[j][k]};
       }
-      if (friction)
-        for (size_t i = 0; i < 3; ++i) row.normal[i] += in.D[j][k] * n[i];
     }
     row.gap += dot(n, in.G[j]);
   }
@@ -74,14 +72,18 @@ void add_pair(const FaceRecord& slave, const FaceRecord& master, const MortarInt
 
 }  // namespace
 
+Point3 MortarGeometry::normal() const {
+  const double length = std::sqrt(dot(weighted_normal, weighted_normal));
+  return {weighted_normal[0] / length, weighted_normal[1] / length, weighted_normal[2] / length};
+}
+
 RowAt MortarGeometry::row_at(const NodeMotion&, double) const {
   // No caller: moving_nodes() is empty and the capability table refuses mortar's sensitivity.
   throw std::logic_error("mortar rows have no motion derivative yet");
 }
 
 std::vector<RowAt> MortarGeometry::slip_rows() const {
-  const double length = std::sqrt(dot(normal, normal));
-  const Point3 n{normal[0] / length, normal[1] / length, normal[2] / length};
+  const Point3 n = normal();
   std::vector<RowAt> rows;
   for (const Point3& t : tangent_pair(n)) {
     RowAt row{{}, {}, 0.0};

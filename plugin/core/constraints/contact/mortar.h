@@ -22,18 +22,20 @@ struct JumpEntry {
 class MortarGeometry final : public ContactRowGeometry {
  public:
   /// With friction: `jump`, the row's weighted jump (1/w_j) int phi_j (u_s - u_m) as entries
-  /// per dof and component, and `normal`, its pairs' normals weighted by int phi_j.
-  MortarGeometry(DofRef slave, const Point3& s, std::vector<JumpEntry> jump = {}, const Point3& normal = {0, 0, 0})
-      : ContactRowGeometry(ContactKind::mortar, slave, s, true), jump(std::move(jump)), normal(normal) {}
+  /// per dof and component; `weighted_normal`, its pairs' normals weighted by int phi_j.
+  MortarGeometry(DofRef slave, const Point3& s, std::vector<JumpEntry> jump, const Point3& weighted_normal)
+      : ContactRowGeometry(ContactKind::mortar, slave, s, true), jump(std::move(jump)), weighted_normal(weighted_normal) {}
 
   std::vector<DofRef> moving_nodes() const override { return {}; }
   RowAt row_at(const NodeMotion& v, double t) const override;
   double length() const override { return 1.0; }
+  /// weighted_normal normalized (a flat contact: the master's normal).
+  Point3 normal() const override;
   /// t.(the weighted jump) along tangent_pair(normal) (docs/algorithms.md, "Mortar", friction).
   std::vector<RowAt> slip_rows() const override;
 
   const std::vector<JumpEntry> jump;
-  const Point3 normal;
+  const Point3 weighted_normal;
 };
 
 class Mortar final : public ContactDiscretization {

@@ -22,10 +22,14 @@ double FaceGeometry::length() const {
   return std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
 }
 
-std::vector<RowAt> FaceGeometry::slip_rows() const {
+Point3 FaceGeometry::normal() const {
   const Point3 normal_direction = cross(minus(corners[1], corners[0]), minus(corners[2], corners[0]));
   const double area = std::sqrt(dot(normal_direction, normal_direction));
-  const Point3 n{normal_direction[0] / area, normal_direction[1] / area, normal_direction[2] / area};
+  return {normal_direction[0] / area, normal_direction[1] / area, normal_direction[2] / area};
+}
+
+std::vector<RowAt> FaceGeometry::slip_rows() const {
+  const Point3 n = normal();
   const std::array<double, 3> w = closest_point_weights(slave_position(), corners[0], corners[1], corners[2]);
   std::vector<RowAt> rows;
   for (const Point3& t : tangent_pair(n)) {

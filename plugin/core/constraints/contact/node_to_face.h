@@ -20,6 +20,8 @@ class FaceGeometry final : public ContactRowGeometry {
   RowAt row_at(const NodeMotion& v, double t) const override;
   /// The face's first edge.
   double length() const override;
+  /// (b - a) x (c - a), normalized: out of the master's body.
+  Point3 normal() const override;
   /// t.(u_s - sum_i w_i u_i) along tangent_pair(n) of the face's normal, w the weights of
   /// the slave's closest point on the face.
   std::vector<RowAt> slip_rows() const override;

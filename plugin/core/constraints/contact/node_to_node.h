@@ -21,6 +21,12 @@ class NodeToNodeGeometry final : public ContactRowGeometry {
   std::vector<DofRef> moving_nodes() const override { return {}; }
   RowAt row_at(const NodeMotion&, double) const override { return {{slave_dof(), master}, {1.0, -1.0}, gap}; }
   double length() const override { return 1.0; }
+  /// -e_c: u_slave - u_master <= gap is n.(u_master - u_slave) <= gap (a scalar field: c = 0).
+  Point3 normal() const override {
+    Point3 n{0, 0, 0};
+    n[static_cast<size_t>(component)] = -1;
+    return n;
+  }
   /// t.(u_s - u_m) along slip_directions(n) of the row's normal n = -e_c, c its component
   /// (the row is -n.(u_s - u_m) <= gap, as a plane's -n.u_s): in a plane problem the other
   /// component, in three dimensions the other two.

@@ -91,6 +91,11 @@ RowAt NodeToSegmentGeometry::row_at(const NodeMotion& v, double t) const {
 
 double NodeToSegmentGeometry::length() const { return std::hypot(b[0] - a[0], b[1] - a[1]); }
 
+Point3 NodeToSegmentGeometry::normal() const {
+  const double l = length();
+  return {(b[1] - a[1]) / l, -(b[0] - a[0]) / l, 0.0};  // as node_to_segment_row's
+}
+
 std::vector<RowAt> NodeToSegmentGeometry::slip_rows() const {
   const LinearizedRow slip = node_to_segment_slip(s, a, b);
   return {{dofs(), {slip.coefficients.begin(), slip.coefficients.end()}, slip.gap}};

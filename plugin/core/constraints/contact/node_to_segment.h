@@ -19,6 +19,8 @@ class NodeToSegmentGeometry final : public ContactRowGeometry {
   std::vector<DofRef> moving_nodes() const override { return {slave[0], master[0], master[2]}; }
   RowAt row_at(const NodeMotion& v, double t) const override;
   double length() const override;
+  /// (b - a) turned clockwise, normalized: outward, the segment's body on its left.
+  Point3 normal() const override;
   std::vector<RowAt> slip_rows() const override;
 
   const std::array<DofRef, 2> slave;   ///< the slave's x and y dofs

@@ -12,15 +12,15 @@ namespace ffeti {
 RowAt ObstacleGeometry::row_at(const NodeMotion& v, double t) const {
   const Point3 s = moved(slave_position(), v[0], t);
   if (three_d()) {  // only the gap moves
-    RowAt row{{slave[0], slave[1], slave[2]}, {-normal[0], -normal[1], -normal[2]}, 0.0};
-    for (size_t i = 0; i < 3; ++i) row.gap += normal[i] * (s[i] - point[i]);
+    RowAt row{{slave[0], slave[1], slave[2]}, {-unit_normal[0], -unit_normal[1], -unit_normal[2]}, 0.0};
+    for (size_t i = 0; i < 3; ++i) row.gap += unit_normal[i] * (s[i] - point[i]);
     return row;
   }
-  const LinearizedRow r = obstacle_row({s[0], s[1]}, {point[0], point[1]}, {normal[0], normal[1]});
+  const LinearizedRow r = obstacle_row({s[0], s[1]}, {point[0], point[1]}, {unit_normal[0], unit_normal[1]});
   return {{slave[0], slave[1]}, {r.coefficients[0], r.coefficients[1]}, r.gap};
 }
 
-std::vector<RowAt> ObstacleGeometry::slip_rows() const { return rigid_slip_rows(slave, normal, three_d()); }
+std::vector<RowAt> ObstacleGeometry::slip_rows() const { return rigid_slip_rows(slave, unit_normal, three_d()); }
 
 void Obstacle::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
   const ContactInput& contact = in.contact;

@@ -12,18 +12,19 @@ class ObstacleGeometry final : public ContactRowGeometry {
  public:
   /// `slave`: the slave's x, y and z dofs (z {-1, -1} in a plane problem).
   ObstacleGeometry(std::array<DofRef, 3> slave, const Point3& s, const Point3& point, const Point3& normal, bool three_d)
-      : ContactRowGeometry(ContactKind::obstacle, slave[0], s, three_d), slave(slave), point(point), normal(normal) {}
+      : ContactRowGeometry(ContactKind::obstacle, slave[0], s, three_d), slave(slave), point(point), unit_normal(normal) {}
 
   std::vector<DofRef> moving_nodes() const override { return {slave[0]}; }
   RowAt row_at(const NodeMotion& v, double t) const override;
   /// The row is linear in the slave position: any step is exact.
   double length() const override { return 1.0; }
+  Point3 normal() const override { return unit_normal; }
   /// Along the line's direction (-n_y, n_x), the turn from the outward normal a segment's
   /// tangent makes (plane problems); along tangent_pair(n) in three dimensions.
   std::vector<RowAt> slip_rows() const override;
 
   const std::array<DofRef, 3> slave;
-  const Point3 point, normal;
+  const Point3 point, unit_normal;
 };
 
 class Obstacle final : public ContactDiscretization {
