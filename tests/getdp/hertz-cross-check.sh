@@ -82,8 +82,8 @@ sys.exit(0 if all(e <= b for _, e, b in checks) else 1)
 PY
 
 # Friction from the problem file: the same cylinder on the plane with "friction": 0.3 builds
-# friction rows, converges and keeps the force balance; "friction": 0 gives the frictionless
-# contact forces (1e-8), a friction coefficient on a scalar field is refused by name.
+# friction rows, converges and keeps the force balance; "friction": 0 builds none and gives the
+# frictionless contact forces (1e-8), a friction coefficient on a scalar field is refused by name.
 python3 - <<'PY'
 import json
 problem = json.load(open("obstacle.json"))
@@ -92,10 +92,12 @@ for mu in (0.3, 0):
     problem["output"] = {"table": f"friction{mu}.csv"}
     json.dump(problem, open(f"friction{mu}.json", "w"), indent=2)
 PY
-for mu in 0.3 0; do
-  "$ffeti_solve" friction$mu.json | grep '^RESULT' | grep 'status_name=converged' | grep -q ' friction_rows=[1-9]' \
-    || { echo "FAILED: friction $mu: no converged solve with friction rows"; exit 1; }
-done
+"$ffeti_solve" friction0.3.json | grep '^RESULT' | grep 'status_name=converged' | grep -q ' friction_rows=[1-9]' \
+  || { echo "FAILED: friction 0.3: no converged solve with friction rows"; exit 1; }
+# mu = 0 is the frictionless problem itself: no friction rows at all.
+result0=$("$ffeti_solve" friction0.json | grep '^RESULT')
+echo "$result0" | grep -q 'status_name=converged' && ! echo "$result0" | grep -q ' friction_rows=[1-9]' \
+  || { echo "FAILED: friction 0: not a converged solve without friction rows"; exit 1; }
 python3 - <<'PY'
 import csv, sys
 F = 35000.0
