@@ -24,7 +24,7 @@
 #                                          a picture (~12 min, 13 GB; "three-dimensions --sphere": the
 #                                          Hertz scenes alone)
 #   ./scripts/benchmark.sh elasticity-3d   3D elasticity contact (two cubes) at H/h = 8 up to 1.6 million
-#                                          unknowns: phases, memory, preconditioners, factor kinds (~20 min, 12 GB)
+#                                          unknowns: phases, memory, the coarse problem, preconditioners, factor kinds, direct peers (~25 min, 12 GB)
 #   ./scripts/benchmark.sh                 all
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)

@@ -4,8 +4,8 @@
 (FreeFEM's assembly, the plugin's set-up, factorization, solve, recovery) and peak memory,
 the coarse problem at H/h = 4 (8 times the subdomains), the preconditioners and CHOLMOD's
 factor kinds side by side at n = 32, and the direct peers (the undivided cubes by the
-primal-dual active set method with UMFPACK and with MUMPS, each run alone) at n = 8, 16, 32
-(FFETI_ELASTICITY_3D_PEER_SIZES). Writes docs/results/elasticity-3d.md and its plot from one
+primal-dual active set method with UMFPACK and with MUMPS, each run alone) at n = 8, 16
+(FFETI_ELASTICITY_3D_PEER_SIZES); the H/h = 4 cases at n = 16, 32 (FFETI_ELASTICITY_3D_COARSE_SIZES). Writes docs/results/elasticity-3d.md and its plot from one
 run (--render: again from the CSVs)."""
 import argparse
 import os
@@ -22,7 +22,8 @@ from ffeti_bench import (OUT, begin_run, end_run, f, machine_line, markdown_tabl
 PAGE = "elasticity-3d"
 SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_SIZES", "16 32 64").split()]
 VARIANT_SIZE = 32 if 32 in SIZES else SIZES[-1]
-PEER_SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_PEER_SIZES", "8 16 32").split()]
+PEER_SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_PEER_SIZES", "8 16").split()]
+COARSE_SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_COARSE_SIZES", "16 32").split()]
 PEERS = [("UMFPACK", []), ("MUMPS", ["-DwithMUMPS=1"])]
 PRECONDITIONERS = ["lumped", "dirichlet", "none"]
 FACTORS = ["simplicial", "supernodal"]
@@ -74,7 +75,7 @@ def measure_peers(weak):
 def measure():
     begun = begin_run()
     weak = [dict(scene(n, check=1), case="default") for n in SIZES]
-    coarse = [dict(scene(n, check=1, Hh=4), case="H/h = 4") for n in SIZES if n >= 16]
+    coarse = [dict(scene(n, check=1, Hh=4), case="H/h = 4") for n in COARSE_SIZES]
     variants = [dict(scene(VARIANT_SIZE, preconditioner=p), case=f"preconditioner {p}") for p in PRECONDITIONERS]
     variants += [dict(scene(VARIANT_SIZE, factor=k), case=f"factor {k}") for k in FACTORS]
     peers = measure_peers(weak)
