@@ -68,6 +68,15 @@ std::vector<RowDerivative> contact_row_derivatives(const Constraints& constraint
 
   for (size_t row = 0; row < result.size(); ++row) {
     const ContactRowGeometry& g = *constraints.geometry[row];
+    const std::string reason = g.unverified_motion(velocity[row]);  // the same on every rank
+    if (!reason.empty()) {
+      const Point3& s = g.slave_position();
+      throw InputError("velocityX, velocityY, velocityZ: the contact row of the slave node at (" + std::to_string(s[0]) +
+                       ", " + std::to_string(s[1]) + ", " + std::to_string(s[2]) + "): " + reason);
+    }
+  }
+  for (size_t row = 0; row < result.size(); ++row) {
+    const ContactRowGeometry& g = *constraints.geometry[row];
     const auto& v = velocity[row];
     double speed = 0;
     for (const Point3& w : v) speed = std::max(speed, std::hypot(w[0], w[1], w[2]));

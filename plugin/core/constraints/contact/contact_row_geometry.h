@@ -7,6 +7,7 @@
 #include "constraints/contact/point3.h"
 
 #include <array>
+#include <string>
 #include <vector>
 
 namespace ffeti {
@@ -58,6 +59,9 @@ class ContactRowGeometry {
   /// step's state (gap 0): one in a plane problem, two in three dimensions along
   /// tangent_pair(n) of the row's normal n, t1 then t2 (their multipliers form one disc).
   virtual std::vector<RowAt> slip_rows() const = 0;
+  /// Why the derivative of this row along `velocities` is not to be trusted yet, or "" when
+  /// it is: the sensitivities refuse such a motion rather than answer wrongly.
+  virtual std::string unverified_motion(const NodeMotion& /*velocities*/) const { return ""; }
 
  private:
   ContactKind kind_;

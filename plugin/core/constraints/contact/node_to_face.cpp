@@ -17,6 +17,16 @@ RowAt FaceGeometry::row_at(const NodeMotion& v, double t) const {
   return row;
 }
 
+std::string FaceGeometry::unverified_motion(const NodeMotion& v) const {
+  const auto moves = [&](size_t node) { return v[node][0] != 0 || v[node][1] != 0 || v[node][2] != 0; };
+  if (!moves(0) || !(moves(1) || moves(2) || moves(3))) return "";
+  const std::array<double, 3> w = closest_point_weights(slave_position(), corners[0], corners[1], corners[2]);
+  if (*std::max_element(w.begin(), w.end()) > 1 - 1e-9) return "";  // over a corner: matching faces
+  return "the slave node and its master face both move, the slave not over a corner of the face (non-matching "
+         "faces): such a row's derivative was measured 7 % off finite differences and is not trusted yet; move "
+         "one side of the interface only, or use matching faces there";
+}
+
 double FaceGeometry::length() const {
   const Point3 &a = corners[0], &b = corners[1];
   return std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
