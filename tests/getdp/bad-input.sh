@@ -4,12 +4,7 @@
 # with an explicit dof map give GetDP's result.
 # Usage: bad-input.sh SOURCE_DIR FFETI_SOLVE.  Exit 77 (skipped) when GetDP is not installed.
 set -euo pipefail
-source_dir=$1
-ffeti_solve=$2
-command -v getdp >/dev/null || { echo "SKIPPED: getdp is not installed (apt-get install getdp)"; exit 77; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 cp "$source_dir/getdp/hertz.pro" "$source_dir/getdp/hertz.json" .
 # The mesh split by gmsh's partitioner too (GetDP ignores the partitions; ffeti-solve can select one).
 gmsh -2 -part 4 -format msh22 -v 0 "$source_dir/meshes/hertz-pair.geo" -o hertz.msh

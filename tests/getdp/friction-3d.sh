@@ -13,12 +13,7 @@
 # refused.
 # Usage: friction-3d.sh SOURCE_DIR FFETI_SOLVE. Exit 77 (skipped) when GetDP is not installed.
 set -euo pipefail
-source_dir=$1
-ffeti_solve=$2
-command -v getdp >/dev/null || { echo "SKIPPED: getdp is not installed (apt-get install getdp)"; exit 77; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 cp "$source_dir/getdp/sphere-block.pro" .
 gmsh -3 -format msh22 -v 0 "$source_dir/meshes/sphere-block.geo" -o sphere-block.msh
 python3 - "$source_dir/getdp/sphere-block.json" <<'PY'

@@ -8,14 +8,7 @@
 # Usage: hertz-cross-check.sh SOURCE_DIR FFETI_SOLVE   (in a folder with the tests' freefem++.pref)
 # Exit 77 (skipped) when GetDP is not installed.
 set -euo pipefail
-source_dir=$1
-ffeti_solve=$2
-command -v getdp >/dev/null || { echo "SKIPPED: getdp is not installed (apt-get install getdp)"; exit 77; }
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-pref=$PWD/freefem++.pref
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 cp "$pref" .
 cp "$source_dir/getdp/hertz.pro" .
 gmsh -2 -format msh22 -v 0 "$source_dir/meshes/hertz-pair.geo" -o hertz.msh

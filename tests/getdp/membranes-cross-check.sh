@@ -6,13 +6,7 @@
 # Usage: membranes-cross-check.sh SOURCE_DIR FFETI_SOLVE   (in a folder with the tests' freefem++.pref)
 # Exit 77 (skipped) when GetDP is not installed.
 set -euo pipefail
-source_dir=$1
-ffeti_solve=$2
-command -v getdp >/dev/null || { echo "SKIPPED: getdp is not installed (apt-get install getdp)"; exit 77; }
-pref=$PWD/freefem++.pref
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 cp "$pref" "$source_dir/getdp/membranes.pro" .
 gmsh -2 -format msh22 -v 0 "$source_dir/meshes/membranes.geo" -o membranes.msh
 python3 - "$source_dir/getdp/membranes.json" <<'PY'

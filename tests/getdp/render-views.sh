@@ -6,13 +6,8 @@
 # must not be blank.
 # Usage: render-views.sh SOURCE_DIR FFETI_SOLVE. Exit 77 (skipped) without GetDP.
 set -euo pipefail
-source_dir=$1
-ffeti_solve=$2
-command -v getdp >/dev/null || { echo "SKIPPED: getdp is not installed (apt-get install getdp)"; exit 77; }
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 geo=$source_dir/getdp/render-views.geo
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
 failures=0
 
 if gmsh -0 -setstring mesh missing.msh "$geo" > missing.out 2>&1; then  # -0: parse only, no display

@@ -9,13 +9,7 @@
 # Usage: sphere-block-cross-check.sh SOURCE_DIR FFETI_SOLVE   (in a folder with the tests' freefem++.pref)
 # Exit 77 (skipped) when GetDP is not installed.
 set -euo pipefail
-source_dir=$1
-ffeti_solve=$2
-command -v getdp >/dev/null || { echo "SKIPPED: getdp is not installed (apt-get install getdp)"; exit 77; }
-pref=$PWD/freefem++.pref
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 cp "$pref" "$source_dir/getdp/sphere-block.pro" .
 gmsh -3 -format msh22 -v 0 "$source_dir/meshes/sphere-block.geo" -o sphere-block.msh
 python3 - "$source_dir/getdp/sphere-block.json" <<'PY'

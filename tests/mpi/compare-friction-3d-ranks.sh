@@ -5,7 +5,8 @@
 # subdomains per body, -ny 2) and on a base meshed apart by mortar friction (two per body,
 # coarser: its solve takes far more multiplications) must give the serial counts exactly and
 # the forces to 1e-8: the tangent pairs and the discs do not depend on how the subdomains are
-# spread over the ranks.
+# spread over the ranks. With -ny 1 (two subdomains) the third rank holds none and still
+# reads the plane obstacle as a solid problem's.
 # Usage: compare-friction-3d-ranks.sh SOURCE_DIR   (run where freefem++.pref points at the build)
 set -euo pipefail
 source_dir=$1
@@ -31,6 +32,7 @@ compare() {
 
 compare "plane, coulomb" -ny 2 -law coulomb -theta 15 -phi 30
 compare "plane, tresca" -ny 2 -law tresca
+compare "plane, coulomb, a rank without subdomains" -ny 1 -law coulomb -theta 15 -phi 30
 compare "base, coulomb" -ny 2 -law coulomb -theta 15 -phi 30 -base 1
 compare "mortar base, coulomb" -ny 1 -m 2 -law coulomb -theta 15 -phi 30 -base 2
 [ "$failures" -eq 0 ] && echo "all checks passed" || { echo "$failures check(s) failed"; exit 1; }

@@ -161,7 +161,8 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
       if (!std::isfinite(sub.dirichlet_values[i]))
         throw InputError(indexed("dirichletValues", s) + ": entry " + std::to_string(i) + " is not finite");
   }
-  const bool three_d = !subdomains.empty() && !subdomains.front().z.empty();
+  // contact.three_d: set by a parallel set-up for a rank that may hold no subdomain.
+  const bool three_d = contact.three_d || (!subdomains.empty() && !subdomains.front().z.empty());
   const int dimension = three_d ? 3 : 2;
   if (std::any_of(contact.master_segments.begin(), contact.master_segments.end(),
                   [](const auto& list) { return !list.empty(); }))

@@ -36,19 +36,24 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   const ThreadLimit limit(settings_.threads);
   const Communicator& comm = *comm_;
   Stopwatch constraints_clock;
+  // The problem's dimension from every rank's subdomains: a rank holding none still checks
+  // the contact input (an obstacle's z entries) as a solid problem's.
+  const auto has = [&](bool solid) {
+    return std::any_of(inputs_.begin(), inputs_.end(), [&](const SubdomainInput& s) { return s.z.empty() != solid; });
+  };
+  const bool some_plane = comm.max(has(false) ? 1.0 : 0.0) > 0, some_solid = comm.max(has(true) ? 1.0 : 0.0) > 0;
+  ContactInput dimensioned = local_contact;
+  dimensioned.three_d = some_solid;
   collectively(comm, [&] {
     if (global_count_ < 1) throw InputError("K: no subdomains given");
     if (global_ids_.size() != inputs_.size()) throw InputError("K: one global index per local subdomain needed");
     for (size_t k = 0; k < global_ids_.size(); ++k)
       if (global_ids_[k] < 0 || global_ids_[k] >= global_count_ || (k > 0 && global_ids_[k] <= global_ids_[k - 1]))
         throw InputError("K: local subdomains need ascending global indices in 0.." + std::to_string(global_count_ - 1));
-    validate_input(inputs_, local_contact, global_ids_);
+    validate_input(inputs_, dimensioned, global_ids_);
   });
   // validate_input compares a rank's own subdomains; a plane and a solid rank must not mix.
-  const auto has = [&](bool solid) {
-    return std::any_of(inputs_.begin(), inputs_.end(), [&](const SubdomainInput& s) { return s.z.empty() != solid; });
-  };
-  if (comm.max(has(false) ? 1.0 : 0.0) > 0 && comm.max(has(true) ? 1.0 : 0.0) > 0)
+  if (some_plane && some_solid)
     throw InputError("Z: given for the subdomains of some ranks and missing for those of others: every subdomain of a "
                      "problem is plane or every one has a third coordinate");
   // The obstacle's side is judged from the slaves of all ranks (a body's slaves may be split).
