@@ -70,6 +70,10 @@ def total(r):
     return f(r, "time_setup") + f(r, "time_solve") + f(r, "time_recovery")
 
 
+def kkt(r):
+    return max(f(r, k) for k in KKT)
+
+
 def phase_reading(phases):
     """The largest size's whole time and its largest phase, said from the rows."""
     last = phases[-1]

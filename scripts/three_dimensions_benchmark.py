@@ -30,7 +30,7 @@ from matplotlib.colors import LogNorm  # noqa: E402
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
 from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, listing, machine_line, markdown_table,  # noqa: E402
-                         phase_table, read_csv, run, save_page, span, write_csv)
+                         read_csv, run, save_page, span, write_csv)
 import three_dimensions_elasticity as elasticity  # noqa: E402
 
 PAGE = "three-dimensions"
@@ -592,7 +592,7 @@ def render():
         *markdown_table(plane, PLANE_COLUMNS),
         "",
         "Reading: the 3D problem's subdomains are smaller (729 unknowns at H/h = 8 against 4,225 at",
-        f"H/h = 64 in 2D) and five times as many; per unknown its factorization costs",
+        "H/h = 64 in 2D) and five times as many; per unknown its factorization costs",
         f"{per_unknown['time_factor']:.1f} times the plane problem's and its solve {per_unknown['time_solve']:.1f} times",
         f"with {f(three, 'hessian') / f(two, 'hessian'):.2f} times the Hessian multiplications: each costs more per unknown.",
         "",
