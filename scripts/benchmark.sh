@@ -18,13 +18,16 @@
 #                                          the Coulomb fixed point's cost against frictionless, and
 #                                          the sphere in 3D (~1 min; the sphere took 36 min more on a
 #                                          loaded machine, load average 10 on 2 cores)
-#   ./scripts/benchmark.sh three-dimensions  the model problem as two cubes up to 6 million unknowns,
-#                                          factor kinds in 3D, against 2D, Hertz for a sphere on a plane
-#                                          and on a block, a rigid ball, the patch test, 3D gradients and
-#                                          a picture (~12 min, 13 GB; "three-dimensions --sphere": the
-#                                          Hertz scenes alone)
-#   ./scripts/benchmark.sh elasticity-3d   3D elasticity contact (two cubes) at H/h = 8 up to 1.6 million
-#                                          unknowns: phases, memory, the coarse problem, preconditioners, factor kinds, direct peers (~25 min, 12 GB)
+#   ./scripts/benchmark.sh three-dimensions  3D elasticity contact (two cubes) at H/h = 8 up to 2.2 million
+#                                          unknowns: phases, memory, the coarse problem, preconditioners,
+#                                          factor kinds, direct peers; the model problem as two cubes up to
+#                                          6 million unknowns, factor kinds in 3D, against 2D, Hertz for a
+#                                          sphere on a plane and on a block, a rigid ball, the patch test,
+#                                          3D gradients and a picture (~20 min, 13 GB; "three-dimensions
+#                                          --only PART": one part alone, PART cubes, sphere, elasticity or
+#                                          mpi, the largest elasticity case on 1 process and 2 MPI ranks,
+#                                          which the full run leaves out)
+#   ./scripts/benchmark.sh elasticity-3d   the same as "three-dimensions --only elasticity"
 #   ./scripts/benchmark.sh                 all
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -46,7 +49,7 @@ case "${1:-all}" in
   accuracy) /usr/bin/python3 "$root/scripts/accuracy_benchmark.py" ;;
   friction) /usr/bin/python3 "$root/scripts/friction_benchmark.py" ;;
   three-dimensions) /usr/bin/python3 "$root/scripts/three_dimensions_benchmark.py" "${@:2}" ;;
-  elasticity-3d) /usr/bin/python3 "$root/scripts/elasticity_3d_benchmark.py" ;;
+  elasticity-3d) /usr/bin/python3 "$root/scripts/three_dimensions_benchmark.py" --only elasticity ;;
   all) /usr/bin/python3 "$root/scripts/model_problem_benchmark.py"
        /usr/bin/python3 "$root/scripts/parallel_benchmark.py"
        /usr/bin/python3 "$root/scripts/hertz_benchmark.py"
@@ -58,7 +61,6 @@ case "${1:-all}" in
        /usr/bin/python3 "$root/scripts/accuracy_benchmark.py"
        /usr/bin/python3 "$root/scripts/busy_machine_benchmark.py"
        /usr/bin/python3 "$root/scripts/friction_benchmark.py"
-       /usr/bin/python3 "$root/scripts/three_dimensions_benchmark.py"
-       /usr/bin/python3 "$root/scripts/elasticity_3d_benchmark.py" ;;
+       /usr/bin/python3 "$root/scripts/three_dimensions_benchmark.py" ;;
   *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization|scalability|large-contact|hard-cases|accuracy|busy-machine|friction|three-dimensions|elasticity-3d]" >&2; exit 2 ;;
 esac

@@ -108,13 +108,14 @@ def begin_run():
     return {"started": time.time(), "load_at_start": load_average()}
 
 
-def end_run(page, begun):
-    """Writes the run's own row, docs/results/<page>-run.csv: the machine, the date, the whole
-    run in seconds and the load average at its start and end; returns it read back."""
+def end_run(page, begun, table="run"):
+    """Writes the run's own row, docs/results/<page>-<table>.csv (a part of a page run alone
+    names its own table): the machine, the date, the whole run in seconds and the load
+    average at its start and end; returns it read back."""
     row = dict(machine(), date=datetime.datetime.now().isoformat(timespec="seconds"),
                elapsed_s=repr(time.time() - begun["started"]), load_at_start=begun["load_at_start"],
                load_at_end=load_average())
-    return write_csv(page, "run", [row])[0]
+    return write_csv(page, table, [row])[0]
 
 
 def machine_line(run_row):
@@ -180,6 +181,26 @@ def markdown_table(rows, columns):
     lines = ["| " + " | ".join(header for header, _ in columns) + " |", "|" + "---|" * len(columns)]
     lines += ["| " + " | ".join(cell(row, spec) for _, spec in columns) + " |" for row in rows]
     return lines
+
+
+# The whole scene's phases as the scenes print them (edp/ffeti-phases.idp), in the order they
+# run: (header, key). time_coarse is part of the plugin's set-up; time_scene is their sum.
+PHASES = [("assembly", "time_assembly"), ("plugin set-up", "time_plugin_setup"), ("factorization", "time_factor"),
+          ("dual solve", "time_solve"), ("recovery", "time_recovery")]
+
+
+def phase_table(rows, first=(("n", "n"),)):
+    """The Markdown lines of a per-phase table: the columns `first`, then each phase's seconds
+    (the coarse problem's among the plugin's set-up), the whole scene, each phase's share of
+    it and the process's peak memory."""
+    columns = list(first) + [(f"{label} [s]", (key, ".2f")) for label, key in PHASES[:2]]
+    columns += [("of which coarse [s]", ("time_coarse", ".3f"))]
+    columns += [(f"{label} [s]", (key, ".3f" if key == "time_recovery" else ".2f")) for label, key in PHASES[2:]]
+    columns += [("whole scene [s]", ("time_scene", ".2f")),
+                ("shares: " + " / ".join(label for label, _ in PHASES),
+                 lambda r: " / ".join(f"{100 * f(r, key) / f(r, 'time_scene'):.0f} %" for _, key in PHASES)),
+                ("peak MB", ("process_peak_mb", ".0f"))]
+    return markdown_table(rows, columns)
 
 
 def span(values, number_format="", unit=""):

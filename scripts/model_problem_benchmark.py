@@ -12,10 +12,13 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from ffeti_bench import (OUT, READINGS, begin_run, end_run, f, machine_line, markdown_table,  # noqa: E402
-                         model_problem, read_csv, run, save_page, write_csv)
+from ffeti_bench import (OUT, PHASES, READINGS, begin_run, end_run, f, machine_line, markdown_table,  # noqa: E402
+                         model_problem, phase_table, read_csv, run, save_page, write_csv)
 
 SIZES = [64, 128, 256, 512]
+# The whole scene's phases at these sizes (FFETI_MODEL_PROBLEM_PHASE_SIZES overrides; --quick:
+# the two largest quick sizes); a size among SIZES reuses its default run.
+PHASE_SIZES = [int(n) for n in os.environ.get("FFETI_MODEL_PROBLEM_PHASE_SIZES", "512 1024").split()]
 PAGE = "model-problem"
 # The seed paper's published figures (inputs to compare with, not measured here): primal
 # dimensions at n = 64 and 512; dual dimension, couples and active couples at n = 512; CG
@@ -40,6 +43,9 @@ def measure(sizes, quick):
     largest = sizes[-1]
     default = [model_problem(n) for n in sizes]
     write_csv(PAGE, "default", default)
+    by_size = {int(r["n"]): r for r in default}
+    phase_sizes = sizes[-2:] if quick and "FFETI_MODEL_PROBLEM_PHASE_SIZES" not in os.environ else PHASE_SIZES
+    write_csv(PAGE, "phases", [by_size.get(n) or model_problem(n) for n in phase_sizes])
     write_csv(PAGE, "direct", [run("model-problem-direct.edp", "-n", n)["DIRECT"][0] for n in sizes])
     write_csv(PAGE, "ipopt", [run("model-problem-ipopt.edp", "-n", n, prefixes=("IPOPT",))["IPOPT"][0] for n in sizes])
     write_csv(PAGE, "tight", [model_problem(n, tol="1e-8") for n in sizes])  # about IPOPT's accuracy
@@ -61,11 +67,21 @@ def measure(sizes, quick):
 
 def total(r):
     """ffeti's set-up, solve and recovery, in seconds."""
-    return f(r, "time_factor") + f(r, "time_solve") + f(r, "time_recovery")
+    return f(r, "time_setup") + f(r, "time_solve") + f(r, "time_recovery")
 
 
 def kkt(r):
     return max(f(r, k) for k in KKT)
+
+
+def phase_reading(phases):
+    """The largest size's whole time and its largest phase, said from the rows."""
+    last = phases[-1]
+    label, key = max(PHASES, key=lambda phase: f(last, phase[1]))
+    return [f"Reading: at n = {last['n']} ({int(f(last, 'primal')):,} unknowns, {last['subdomains']} subdomains) the whole scene "
+            f"takes {f(last, 'time_scene'):.1f} s, the largest phase being the {label} ({f(last, key):.1f} s, "
+            f"{f(last, key) / f(last, 'time_scene'):.0%}); the plugin's own set-up is "
+            f"{f(last, 'time_plugin_setup') / f(last, 'time_factor'):.2f} times its factorizations."]
 
 
 def write_plots(default, direct, ipopt, accuracy, reference_energy):
@@ -120,9 +136,9 @@ def seed(kind, r):
 
 
 def render():
-    default, direct, ipopt, tight, accuracy, references, variants = (
+    default, direct, ipopt, tight, accuracy, references, variants, phases = (
         read_csv(PAGE, table) for table in ("default", "direct", "ipopt", "tight", "accuracy", "accuracy-reference",
-                                            "variants"))
+                                            "variants", "phases"))
     run_row = read_csv(PAGE, "run")[0]
     reference_energy = {r["n"]: f(r, "energy") for r in references}
     write_plots(default, direct, ipopt, accuracy, reference_energy)
@@ -154,7 +170,8 @@ def render():
         f"[{PAGE}-default.csv]({PAGE}-default.csv) (default options), [{PAGE}-direct.csv]({PAGE}-direct.csv)",
         f"(UMFPACK and PDAS), [{PAGE}-ipopt.csv]({PAGE}-ipopt.csv), [{PAGE}-tight.csv]({PAGE}-tight.csv)",
         f"(tol = 1e-8), [{PAGE}-accuracy.csv]({PAGE}-accuracy.csv) with its tol = 1e-10 references",
-        f"[{PAGE}-accuracy-reference.csv]({PAGE}-accuracy-reference.csv), [{PAGE}-variants.csv]({PAGE}-variants.csv).",
+        f"[{PAGE}-accuracy-reference.csv]({PAGE}-accuracy-reference.csv), [{PAGE}-variants.csv]({PAGE}-variants.csv),",
+        f"[{PAGE}-phases.csv]({PAGE}-phases.csv) (the whole scene per phase).",
         "",
         "## Numerical scalability, beside the seed's figures",
         "",
@@ -177,7 +194,7 @@ def render():
         *markdown_table(peers, [
             ("n", "n"), ("unknowns (unsplit)", "unknowns"),
             ("assembly", lambda p: f"{f(p['default'], 'time_assembly'):.3f}"),
-            ("setup", lambda p: f"{f(p['default'], 'time_factor'):.3f}"),
+            ("setup", lambda p: f"{f(p['default'], 'time_setup'):.3f}"),
             ("solve", lambda p: f"{f(p['default'], 'time_solve'):.3f}"),
             ("recovery", lambda p: f"{f(p['default'], 'time_recovery'):.3f}"),
             ("ffeti total (setup+solve+recovery)", lambda p: f"{total(p['default']):.3f}"),
@@ -186,6 +203,21 @@ def render():
             ("PDAS (iterations)", lambda p: f"{f(p['direct'], 'time_pdas'):.2f} ({p['direct']['pdas_iterations']})"),
             ("energy ffeti", lambda p: f"{f(p['default'], 'energy'):.8f}"),
             ("energy PDAS", lambda p: f"{f(p['direct'], 'energy'):.8f}")]),
+        "",
+        "## The whole scene, phase by phase",
+        "",
+        "The scene from its first line to its last (`edp/model-problem.edp`, default options), each phase",
+        "as `edp/ffeti-phases.idp` names it: `assembly` the script's own work before `fetiSetup`;",
+        "`plugin set-up` `fetiSetup` without its factorizations (constraints, kernels, the coarse",
+        "problem, dual data), of which `coarse` the coarse problem; `factorization` CHOLMOD's",
+        "factorizations of the subdomain matrices; `dual solve` the norm estimate and SMALBE-M;",
+        "`recovery` the primal solution. Whole scene: their sum; peak MB: the process's resident set.",
+        f"Raw data: [{PAGE}-phases.csv]({PAGE}-phases.csv).",
+        "",
+        *phase_table(phases, (("n", "n"), ("unknowns", "primal"), ("subdomains", "subdomains"),
+                              ("Hessian mult.", "hessian"))),
+        "",
+        *phase_reading(phases),
         "",
         "## Peers on the same meshes",
         "",
@@ -228,7 +260,7 @@ def render():
         "",
         *markdown_table(variants, [
             ("variant", "case"), ("dual", "dual"), ("outer", "outer"), ("Hessian mult.", "hessian"),
-            ("setup [s]", ("time_factor", ".3f")), ("solve [s]", ("time_solve", ".3f")),
+            ("setup [s]", ("time_setup", ".3f")), ("solve [s]", ("time_solve", ".3f")),
             ("energy", ("energy", ".8f")), ("status", "status")]),
         "",
     ]

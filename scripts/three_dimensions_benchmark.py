@@ -1,19 +1,24 @@
 #!/usr/bin/env python3
-"""Three dimensions, as far as they go (edp/model-problem-3d.edp): the seed's model problem as
-two cubes at fixed H/h against the undivided cubes' active set solution, the Hessian count
-and times as h falls to a problem above a million unknowns, CHOLMOD's simplicial against
-supernodal factors on 3D subdomains, and the 2D model problem of about the same size beside
-it; Hertz for a sphere (edp/hertz-sphere.edp) on a rigid plane and on an elastic block
-(mortar contact) with a picture of its stress and contact pressure; the contact patch test
-and the 3D gradient checks (tests/edp/). Writes docs/results/three-dimensions.md and its
-plots from one run on this machine (--sphere: the sphere's part alone, the other tables
-kept; --render: from the CSVs, no run)."""
+"""Three dimensions, as far as they go. Opens with 3D elasticity contact at scale
+(edp/cubes-elasticity-3d.edp, scripts/three_dimensions_elasticity.py: weak scaling, the whole
+scene's phases, the coarse problem, preconditioners and factor kinds, the direct peers; MPI
+optionally); then the seed's model problem as two cubes (edp/model-problem-3d.edp) at fixed
+H/h against the undivided cubes' active set solution, the Hessian count, the phases and times
+as h falls to a problem above a million unknowns, CHOLMOD's simplicial against supernodal
+factors on 3D subdomains, and the 2D model problem of about the same size beside it; Hertz for
+a sphere (edp/hertz-sphere.edp) on a rigid plane and on an elastic block (mortar contact) with
+a picture of its stress and contact pressure; the contact patch test and the 3D gradient
+checks (tests/edp/). Writes docs/results/three-dimensions.md and its plots from one run on
+this machine (--only PART: that part alone, the other tables kept: cubes, sphere, elasticity,
+or mpi, the two-rank elasticity run, which the full run leaves out; --sphere: --only sphere;
+--render: from the CSVs, no run). Smaller runs to try it: FFETI_THREE_DIMENSIONS_SIZES,
+FFETI_THREE_DIMENSIONS_FACTOR_SIZES, FFETI_THREE_DIMENSIONS_SEARCH_SIZES,
+FFETI_THREE_DIMENSIONS_PLANE ("n H/h") and the
+FFETI_ELASTICITY_3D_* variables of three_dimensions_elasticity.py."""
 import argparse
-import datetime
 import math
 import os
 import tempfile
-import time
 
 import matplotlib
 
@@ -24,23 +29,27 @@ from matplotlib.collections import PolyCollection  # noqa: E402
 from matplotlib.colors import LogNorm  # noqa: E402
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
-from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, listing, load_average, machine, machine_line,  # noqa: E402
-                         markdown_table, read_csv, run, save_page, span, write_csv)
+from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, listing, machine_line, markdown_table,  # noqa: E402
+                         read_csv, run, save_page, span, write_csv)
+import three_dimensions_elasticity as elasticity  # noqa: E402
 
 PAGE = "three-dimensions"
 HH = 8
-SIZES = [8, 16, 32, 64, 80, 128]  # 80: 1.46 million unknowns; 128: 6 million, the third refinement of 16
+# 80: 1.46 million unknowns; 128: 6 million, the third refinement of 16
+SIZES = [int(n) for n in os.environ.get("FFETI_THREE_DIMENSIONS_SIZES", "8 16 32 64 80 128").split()]
 REFERENCE_UP_TO = 16  # the undivided cubes' sparse factorization grows fast in 3D
-FACTOR_CASES = [(32, 16), (64, 16)]
-PLANE = (640, 64)  # the 2D model problem (n, H/h) of about the size of the 3D n = 64
+FACTOR_CASES = [(int(n), 16) for n in os.environ.get("FFETI_THREE_DIMENSIONS_FACTOR_SIZES", "32 64").split()]
+# the 2D model problem (n, H/h) of about the size of the 3D n = 64
+PLANE = tuple(int(v) for v in os.environ.get("FFETI_THREE_DIMENSIONS_PLANE", "640 64").split())
 SPHERE_SIZES = [0.2, 0.1, 0.07]  # mesh size at the contact (mm), edp/hertz-sphere.edp
 PICTURE_H = 0.1  # the sphere run whose fields the picture draws (its gmsh file)
 NU = 0.3  # the sphere's Poisson ratio, for Hertz's stress below the contact
 
 CUBES = [("n", "n"), ("subdomains", "subdomains"), ("unknowns", "primal"), ("dual", "dual"), ("couples", "couples"),
          ("active", "active"), ("Hessian mult.", "hessian"), ("outer", "outer"),
-         ("set-up [s]", ("time_setup", ".2f")), ("factor [s]", ("time_factor", ".2f")),
-         ("solve [s]", ("time_solve", ".2f")), ("peak MB", ("process_peak_mb", ".0f")),
+         ("assembly [s]", ("time_assembly", ".2f")), ("plugin set-up [s]", ("time_plugin_setup", ".2f")),
+         ("factor [s]", ("time_factor", ".2f")), ("solve [s]", ("time_solve", ".2f")),
+         ("whole scene [s]", ("time_scene", ".2f")), ("peak MB", ("process_peak_mb", ".0f")),
          ("MB per subdomain", lambda r: f"{f(r, 'process_peak_mb') / f(r, 'subdomains'):.2f}"),
          ("factor nonzeros per subdomain", lambda r: f"{f(r, 'factor_nnz') / f(r, 'subdomains'):,.0f}"),
          ("energy", "energy"), ("status", "status")]
@@ -68,7 +77,8 @@ INDENTER = [("h [mm]", "h"), ("unknowns", "unknowns"), ("couples", "couples"), (
             ("error a", ("a_relerr", ".2%")), ("p0 [MPa]", ("p0", ".2f")), ("p0 Hertz", ("p0_hertz", ".2f")),
             ("error p0", ("p0_relerr", ".2%")), ("L2 error of p", ("pressure_l2_relerr", ".1%")),
             ("Hessian mult.", "hessian"), ("solve [s]", ("time_solve", ".2f")), ("status", "status")]
-SEARCH_SIZES = [25, 50, 100, 200]  # edp/contact-search.edp: m x m cells on the slave side
+# edp/contact-search.edp: m x m cells on the slave side
+SEARCH_SIZES = [int(m) for m in os.environ.get("FFETI_THREE_DIMENSIONS_SEARCH_SIZES", "25 50 100 200").split()]
 SEARCH = [("contact", "contact"), ("m", "m"), ("slave faces", "slave_faces"), ("master faces", "master_faces"),
           ("rows", "couples"), ("unknowns", "unknowns"), ("constraints [s]", ("time_constraints", ".3f")),
           ("µs per slave face", lambda r: f"{1e6 * f(r, 'time_constraints') / f(r, 'slave_faces'):.1f}"),
@@ -116,9 +126,7 @@ def run_sphere():
     write_csv(PAGE, "sphere-pressure", profile)
     write_csv(PAGE, "sphere-surface-nodes", nodes)
     write_csv(PAGE, "sphere-surface-faces", faces)
-    write_csv(PAGE, "sphere-run", [dict(machine(), date=datetime.datetime.now().isoformat(timespec="seconds"),
-                                        elapsed_s=repr(time.time() - begun["started"]),
-                                        load_at_start=begun["load_at_start"], load_at_end=load_average())])
+    end_run(PAGE, begun, "sphere-run")
 
 
 def surface(path):
@@ -158,39 +166,49 @@ def surface(path):
     return nodes, faces
 
 
+def run_cubes():
+    """The model problem as two cubes, its reference, factor kinds and 2D neighbour; the patch
+    test, the 3D gradients and the contact search: each into its CSV."""
+    cubes = [run("model-problem-3d.edp", "-n", n, "-Hh", HH, "-reference", 0)["RESULT"][0] for n in SIZES]
+    reference = [run("model-problem-3d.edp", "-n", n, "-Hh", HH, "-tol", 1e-8)["RESULT"][0]
+                 for n in SIZES if n <= REFERENCE_UP_TO]
+    factors = [run("model-problem-3d.edp", "-n", n, "-Hh", hh, "-reference", 0, "-factor", kind)["RESULT"][0]
+               for n, hh in FACTOR_CASES for kind in ("simplicial", "supernodal")]
+    plane = run("model-problem.edp", "-n", PLANE[0], "-Hh", PLANE[1])["RESULT"][0]
+    patch = [dict(element=element, **row) for element, fe in (("P1", "P13d"), ("P2", "P23d"))
+             for row in run(os.path.join(ROOT, "tests", "edp", "patch-test-3d.edp"), f"-DPk={fe}")["RESULT"]]
+    gradients = [dict(scene=scene, **row) for scene in ("sensitivity-3d.edp", "sensitivity-3d-faces.edp")
+                 for row in run(os.path.join(ROOT, "tests", "edp", scene))["RESULT"]]
+    search = [run("contact-search.edp", "-m", m, "-mortar", mortar)["RESULT"][0]
+              for mortar in (1, 0) for m in SEARCH_SIZES]
+    three = min(cubes, key=lambda r: abs(f(r, "primal") - f(plane, "primal")))  # the 3D row of about its size
+    write_csv(PAGE, "cubes", cubes)
+    write_csv(PAGE, "reference", reference)
+    write_csv(PAGE, "factors", factors)
+    write_csv(PAGE, "patch", patch)
+    write_csv(PAGE, "search", search)
+    write_csv(PAGE, "gradients", gradients)
+    write_csv(PAGE, "plane", [dict(problem=f"2D, n = {PLANE[0]}, H/h = {PLANE[1]}", **plane),
+                              dict(problem=f"3D, n = {three['n']}, H/h = {HH}", **three)])
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--render", action="store_true", help="re-render the page from its CSVs, no run")
-    parser.add_argument("--sphere", action="store_true",
-                        help="re-run only the Hertz sphere (tables and picture), keep the other tables")
+    parser.add_argument("--only", choices=("cubes", "sphere", "elasticity", "mpi"),
+                        help="run this part alone, keep the other tables (mpi: the largest elasticity case on one "
+                             "process and on two ranks, left out of the full run)")
+    parser.add_argument("--sphere", action="store_true", help="the same as --only sphere")
     options = parser.parse_args()
-    if options.sphere and not options.render:
-        run_sphere()
-    elif not options.render:
+    only = "sphere" if options.sphere else options.only
+    if not options.render:
         begun = begin_run()
-        cubes = [run("model-problem-3d.edp", "-n", n, "-Hh", HH, "-reference", 0)["RESULT"][0] for n in SIZES]
-        reference = [run("model-problem-3d.edp", "-n", n, "-Hh", HH, "-tol", 1e-8)["RESULT"][0]
-                     for n in SIZES if n <= REFERENCE_UP_TO]
-        factors = [run("model-problem-3d.edp", "-n", n, "-Hh", hh, "-reference", 0, "-factor", kind)["RESULT"][0]
-                   for n, hh in FACTOR_CASES for kind in ("simplicial", "supernodal")]
-        plane = run("model-problem.edp", "-n", PLANE[0], "-Hh", PLANE[1])["RESULT"][0]
-        patch = [dict(element=element, **row) for element, fe in (("P1", "P13d"), ("P2", "P23d"))
-                 for row in run(os.path.join(ROOT, "tests", "edp", "patch-test-3d.edp"), f"-DPk={fe}")["RESULT"]]
-        gradients = [dict(scene=scene, **row) for scene in ("sensitivity-3d.edp", "sensitivity-3d-faces.edp")
-                     for row in run(os.path.join(ROOT, "tests", "edp", scene))["RESULT"]]
-        search = [run("contact-search.edp", "-m", m, "-mortar", mortar)["RESULT"][0]
-                  for mortar in (1, 0) for m in SEARCH_SIZES]
-        run_sphere()
-        three = next(r for r in cubes if r["n"] == "64")
-        write_csv(PAGE, "cubes", cubes)
-        write_csv(PAGE, "reference", reference)
-        write_csv(PAGE, "factors", factors)
-        write_csv(PAGE, "patch", patch)
-        write_csv(PAGE, "search", search)
-        write_csv(PAGE, "gradients", gradients)
-        write_csv(PAGE, "plane", [dict(problem=f"2D, n = {PLANE[0]}, H/h = {PLANE[1]}", **plane),
-                                  dict(problem=f"3D, n = 64, H/h = {HH}", **three)])
-        end_run(PAGE, begun)
+        parts = {"elasticity": lambda: elasticity.measure(begin_run()), "cubes": run_cubes, "sphere": run_sphere,
+                 "mpi": lambda: elasticity.measure_mpi(begin_run())}
+        for name in [only] if only else ["elasticity", "cubes", "sphere"]:
+            parts[name]()
+        if not only:
+            end_run(PAGE, begun)
     render()
 
 
@@ -204,8 +222,8 @@ def write_plot(cubes):
     ax[0].set_ylabel("Hessian multiplications")
     ax[0].set_title(f"Two cubes, H/h = {HH}")
     unknowns = [f(r, "primal") for r in cubes]
-    for key, label in (("time_setup", "set-up (assembly included)"), ("time_factor", "factorization"),
-                       ("time_solve", "solve")):
+    for key, label in (("time_assembly", "assembly (FreeFEM)"), ("time_plugin_setup", "plugin set-up"),
+                       ("time_factor", "factorization"), ("time_solve", "solve")):
         ax[1].loglog(unknowns, [f(r, key) for r in cubes], "o-", label=label)
     ax[1].set_xlabel("unknowns")
     ax[1].set_ylabel("seconds")
@@ -379,10 +397,12 @@ def render():
              / f(next(r for r in factors if r["n"] == n and r["factor"] == "simplicial"), "time_factor")
              for n in {r["n"] for r in factors}}
     lines = [
-        "# Three dimensions: the seed's model problem as two cubes",
+        "# Three dimensions: 3D elasticity contact at scale, the seed's model problem as two cubes",
         "",
         "Generated by `scripts/benchmark.sh three-dimensions` (do not edit by hand) on:",
         machine_line(run_row),
+        "",
+        *elasticity.headline(),
         "",
         "What exists in 3D: a third coordinate through the plugin (`fetiSetup(..., Z=)`) and ffeti-solve",
         "(gmsh volume meshes, [getdp.md](../getdp.md)), the six rigid modes of 3D elasticity among the",
@@ -391,9 +411,11 @@ def render():
         "plane and ball rows, METIS parts of a `mesh3` (`ffetiMetis3`), P2 elements (node-to-face faces as",
         "sub-triangles), isotropic friction on every kind of contact ([friction](friction.md)). Not yet:",
         "mortar on P2 faces, rigid surfaces from gmsh, the sensitivities of mortar rows. The Hertz sphere",
-        "writes its fields for ParaView and gmsh when asked (`-vtk`, `-gmsh`). 3D elasticity contact at",
-        "scale (two elastic cubes, Total FETI, up to 2.2 million unknowns and 1024 subdomains, against",
-        "the direct solvers): [elasticity-3d.md](elasticity-3d.md).",
+        "writes its fields for ParaView and gmsh when asked (`-vtk`, `-gmsh`).",
+        "",
+        *elasticity.section(f(run_row, "memory_gib")),
+        f"## Two cubes at H/h = {HH}: the seed's model problem",
+        "",
         "`edp/model-problem-3d.edp`: two unit cubes,",
         "−Δu = f with the 2D problem's data extruded along z (K = 2 × the P1 Laplacian, f = −3 for",
         "y > 0.75 in the first cube, −1 for y < 0.25 in the second), u = 0 on x = 0, the second cube",
@@ -404,8 +426,6 @@ def render():
         f"[{PAGE}-factors.csv]({PAGE}-factors.csv),",
         f"[{PAGE}-plane.csv]({PAGE}-plane.csv).",
         "",
-        f"## Two cubes at H/h = {HH}",
-        "",
         *markdown_table(cubes, CUBES),
         "",
         "![three dimensions](three-dimensions.png)",
@@ -415,9 +435,10 @@ def render():
         f"H/h fixed, it stays between {min(decomposed):.0f} and {max(decomposed):.0f}: over the three refinements to n = {16 * HH}",
         f"at most {max(refined) / refined[0]:.2f} times its n = {2 * HH} value (the aim is 1.5 over three refinements,",
         f"n = {2 * HH} to {int(max(f(r, 'n') for r in cubes))}). The largest problem,",
-        f"{int(f(largest, 'primal')):,} unknowns in {largest['subdomains']} subdomains, is set up in",
-        f"{f(largest, 'time_setup'):.1f} s (most of it FreeFEM's assembly of the subdomain matrices), factorized in",
-        f"{f(largest, 'time_factor'):.1f} s and solved in {f(largest, 'time_solve'):.1f} s, in {f(largest, 'process_peak_mb') / 1024:.1f} GB.",
+        f"{int(f(largest, 'primal')):,} unknowns in {largest['subdomains']} subdomains, is assembled by FreeFEM in",
+        f"{f(largest, 'time_assembly'):.1f} s, set up by the plugin in {f(largest, 'time_plugin_setup'):.1f} s besides its factorizations",
+        f"({f(largest, 'time_factor'):.1f} s) and solved in {f(largest, 'time_solve'):.1f} s: {f(largest, 'time_scene'):.1f} s in all, "
+        f"in {f(largest, 'process_peak_mb') / 1024:.1f} GB.",
         "",
         f"## Against the undivided cubes (tol = 1e-8, n ≤ {REFERENCE_UP_TO})",
         "",
@@ -571,7 +592,7 @@ def render():
         *markdown_table(plane, PLANE_COLUMNS),
         "",
         "Reading: the 3D problem's subdomains are smaller (729 unknowns at H/h = 8 against 4,225 at",
-        f"H/h = 64 in 2D) and five times as many; per unknown its factorization costs",
+        "H/h = 64 in 2D) and five times as many; per unknown its factorization costs",
         f"{per_unknown['time_factor']:.1f} times the plane problem's and its solve {per_unknown['time_solve']:.1f} times",
         f"with {f(three, 'hessian') / f(two, 'hessian'):.2f} times the Hessian multiplications: each costs more per unknown.",
         "",

@@ -1,0 +1,287 @@
+"""The 3D elasticity part of docs/results/three-dimensions.md (scripts/three_dimensions_benchmark.py
+runs it with the page's other parts, or alone with --only elasticity): edp/cubes-elasticity-3d.edp,
+weak scaling at H/h = 8 (n = 16, 32, 64 cells per cube side; FFETI_ELASTICITY_3D_SIZES
+overrides) with the whole scene's phases (FreeFEM's assembly, the plugin's set-up, factorization,
+solve, recovery) and peak memory, the coarse problem at H/h = 4 (8 times the subdomains; n = 16,
+32, FFETI_ELASTICITY_3D_COARSE_SIZES), the preconditioners and CHOLMOD's factor kinds side by
+side at n = 32, and the direct peers (the undivided cubes by the primal-dual active set method
+with UMFPACK and with MUMPS, each run alone) at n = 8, 16 (FFETI_ELASTICITY_3D_PEER_SIZES).
+Optional (--only mpi, not in the page's full run): the largest size (FFETI_ELASTICITY_3D_MPI_SIZE,
+default the largest weak-scaling size) on one process and on two MPI ranks, the same answer
+and each rank's memory. Each table is the CSV three-dimensions-elasticity-<table>.csv."""
+import os
+import subprocess
+
+import matplotlib.pyplot as plt  # the driver chooses the backend first
+
+from ffeti_bench import OUT, PHASES, end_run, f, listing, markdown_table, phase_table, read_csv, run, write_csv
+
+PAGE = "three-dimensions"
+SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_SIZES", "16 32 64").split()]
+VARIANT_SIZE = 32 if 32 in SIZES else SIZES[-1]
+PEER_SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_PEER_SIZES", "8 16").split()]
+COARSE_SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_COARSE_SIZES", "16 32").split()]
+MPI_SIZE = int(os.environ.get("FFETI_ELASTICITY_3D_MPI_SIZE", SIZES[-1]))
+PEERS = [("UMFPACK", []), ("MUMPS", ["-DwithMUMPS=1"])]
+PRECONDITIONERS = ["lumped", "dirichlet", "none"]
+FACTORS = ["simplicial", "supernodal"]
+FETI = "ffeti (FETI)"
+
+
+def table(name):
+    return f"elasticity-{name}"
+
+
+def blas_library():
+    """The BLAS the dynamic linker gives CHOLMOD (Debian's alternatives: reference or OpenBLAS)."""
+    try:
+        text = subprocess.run(["ldconfig", "-p"], capture_output=True, text=True, check=True).stdout
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+    path = next((line.split("=>")[-1].strip() for line in text.splitlines() if "libblas.so.3 " in line), "")
+    resolved = os.path.realpath(path) if path else ""
+    return "OpenBLAS" if "openblas" in resolved else ("reference BLAS (netlib)" if resolved else "unknown")
+
+
+def scene(n, *extra, ranks=0, **options):
+    """One run of the scene: its RESULT row with the options given, and under MPI its ranks'
+    peak memories (RANK lines) as 'rank_peak_mb' ('a / b' MB)."""
+    args = ["-n", n, *extra]
+    for key, value in options.items():
+        args += [f"-{key}", value]
+    lines = run("cubes-elasticity-3d.edp", *args, ranks=ranks)
+    row = dict(lines["RESULT"][0], **{key: str(value) for key, value in options.items()})
+    row["rank_peak_mb"] = " / ".join(f"{f(r, 'peak_memory_mb'):.0f}" for r in lines["RANK"])
+    return row
+
+
+def measure_peers():
+    """Each size's FETI run beside the direct peers, each run alone, one after the other (so
+    that they see the same load); FETI's energy and contact set are compared with UMFPACK's
+    answer."""
+    rows = []
+    for n in PEER_SIZES:
+        feti = scene(n, check=1)
+        peers = [dict(scene(n, *flags, feti=0, reference=1), solver=f"primal-dual active set, {name}")
+                 for name, flags in PEERS]
+        reference = f(peers[0], "energy_reference")
+        rows.append(dict(feti, solver=FETI, time_total=feti["time_scene"], memory_mb=feti["process_peak_mb"],
+                         energy_error=repr(abs(f(feti, "energy") - reference) / abs(reference)),
+                         same_contact_set=str(int(feti["active"]) == int(peers[0]["active_reference"]))))
+        rows += [dict(p, time_total=p["time_reference"], memory_mb=p["process_peak_mb"]) for p in peers]
+    return rows
+
+
+def measure(begun):
+    """The elasticity part's tables and its own run row (elasticity-run)."""
+    weak = [dict(scene(n, check=1), case="default") for n in SIZES]
+    coarse = [dict(scene(n, check=1, Hh=4), case="H/h = 4") for n in COARSE_SIZES]
+    variants = [dict(scene(VARIANT_SIZE, preconditioner=p), case=f"preconditioner {p}") for p in PRECONDITIONERS]
+    variants += [dict(scene(VARIANT_SIZE, factor=k), case=f"factor {k}") for k in FACTORS]
+    peers = measure_peers()
+    write_csv(PAGE, table("weak"), weak)
+    write_csv(PAGE, table("coarse"), coarse)
+    write_csv(PAGE, table("variants"), variants)
+    write_csv(PAGE, table("peers"), peers)
+    write_csv(PAGE, table("blas"), [{"blas": blas_library()}])
+    end_run(PAGE, begun, table("run"))
+
+
+def measure_mpi(begun):
+    """The largest size on one process and on two MPI ranks (each rank its own boxes, the
+    plugin's threads as it chooses them), one after the other."""
+    rows = [dict(scene(MPI_SIZE, check=1), case="1 process"),
+            dict(scene(MPI_SIZE, check=1, ranks=2), case="2 MPI ranks")]
+    write_csv(PAGE, table("mpi"), rows)
+    end_run(PAGE, begun, table("mpi-run"))
+
+
+def plot_phases(weak, name):
+    figure, (counts, phases) = plt.subplots(1, 2, figsize=(11, 4.2))
+    unknowns = [f(r, "unknowns") for r in weak]
+    counts.plot(unknowns, [f(r, "hessian") for r in weak], "o-", label="Hessian multiplications")
+    counts.set_xscale("log")
+    counts.set_xlabel("unknowns")
+    counts.set_ylabel("Hessian multiplications")
+    counts.set_ylim(0, 1.3 * max(f(r, "hessian") for r in weak))
+    counts.set_title("3D elasticity, dual solve, H/h = 8 fixed")
+    counts.grid(True, alpha=0.3)
+    bottom = [0.0] * len(weak)
+    labels = [f"n = {r['n']}\n{int(f(r, 'subdomains'))} subdomains\n{f(r, 'time_scene'):.1f} s" for r in weak]
+    for key_label, key in PHASES:
+        shares = [100 * f(r, key) / f(r, "time_scene") for r in weak]
+        phases.bar(labels, shares, bottom=bottom, label=key_label)
+        bottom = [b + v for b, v in zip(bottom, shares)]
+    phases.set_ylim(0, 100)
+    phases.set_ylabel("share of the scene's wall-clock time [%]")
+    phases.set_title("Where the scene's time goes (total below each bar)")
+    phases.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.0, 1.0))
+    figure.tight_layout()
+    figure.savefig(os.path.join(OUT, name), dpi=90)
+    plt.close(figure)
+
+
+def next_size(last, memory_gib):
+    """Whether the next size (8 times the unknowns) would fit this machine's memory, at the
+    peak memory per unknown measured at the largest size."""
+    per_unknown = f(last, "process_peak_mb") / f(last, "unknowns")  # MB
+    unknowns = 8 * f(last, "unknowns")
+    needed = per_unknown * unknowns / 1024
+    if needed <= memory_gib:
+        return []
+    return [f"n = {2 * int(last['n'])} ({unknowns / 1e6:.1f} million unknowns) was not run: at the "
+            f"{per_unknown * 1024:.1f} KiB per unknown measured at n = {last['n']} it would need about "
+            f"{needed:.0f} GiB, more than this machine's {memory_gib:.0f} GiB."]
+
+
+def headline():
+    """The page's opening lines: the largest 3D elasticity contact solved, its Hessian count
+    against the smallest size's, its time against the direct peers where both ran."""
+    weak, peers = read_csv(PAGE, table("weak")), read_csv(PAGE, table("peers"))
+    first, last = weak[0], weak[-1]
+    growth = f(last, "hessian") / f(first, "hessian")
+    shared = max((r["n"] for r in peers), key=int)
+    feti = next(r for r in peers if r["n"] == shared and r["solver"] == FETI)
+    against = [f"{r['solver'].split(', ')[-1]} {f(r, 'time_total') / f(feti, 'time_total'):.0f} times"
+               for r in peers if r["n"] == shared and r["solver"] != FETI]
+    return [f"**Headline.** The largest 3D elasticity contact solved here: two elastic cubes, n = {last['n']} cells per "
+            f"side, {int(f(last, 'unknowns')):,} unknowns in {last['subdomains']} subdomains (Total FETI, six rigid "
+            f"modes each), the whole scene in {f(last, 'time_scene'):.0f} s and {f(last, 'process_peak_mb') / 1024:.1f} GB. "
+            f"Its dual solve took {last['hessian']} Hessian multiplications against {first['hessian']} at n = "
+            f"{first['n']} ({int(f(first, 'unknowns')):,} unknowns): {growth:.2f} times (aim: at most 1.5). The direct "
+            f"peers (the undivided cubes by the primal-dual active set method) ran up to n = {shared}, where they took "
+            f"{listing(against)} FETI's whole-scene time ({f(feti, 'time_total'):.1f} s); "
+            f"[below](#3d-elasticity-the-direct-peers) how the gap grows."]
+
+
+def section(memory_gib):
+    """The page's lines of the elasticity part, rendered from its CSVs."""
+    weak, variants = read_csv(PAGE, table("weak")), read_csv(PAGE, table("variants"))
+    coarse, peers = read_csv(PAGE, table("coarse")), read_csv(PAGE, table("peers"))
+    run_row, blas = read_csv(PAGE, table("run"))[0], read_csv(PAGE, table("blas"))[0]["blas"]
+    plot_phases(weak, f"{PAGE}-elasticity.png")
+    last = weak[-1]
+    lines = [
+        "## 3D elasticity: weak scaling, H/h = 8",
+        "",
+        "`edp/cubes-elasticity-3d.edp`: two elastic unit cubes stacked (a quarter model), the lower",
+        "clamped at its bottom, the upper floating, pressed by a traction on a quarter of its top;",
+        "node-to-node contact on the shared face with a crowned gap, so that the contact zone is",
+        "partial. Each cube is cut into boxes of 8 cells per side (H/h = 8 fixed), P1 elasticity, Total",
+        f"FETI: every box floats, six rigid modes each, tol = 1e-4, default options. BLAS used by CHOLMOD: {blas}.",
+        f"This part ran on its own: {run_row['date']}, {float(run_row['elapsed_s']):.0f} s, load average "
+        f"{float(run_row['load_at_start']):.1f} as it started, {float(run_row['load_at_end']):.1f} as it ended. Raw data:",
+        f"[{PAGE}-elasticity-weak.csv]({PAGE}-elasticity-weak.csv), [{PAGE}-elasticity-coarse.csv]({PAGE}-elasticity-coarse.csv),",
+        f"[{PAGE}-elasticity-variants.csv]({PAGE}-elasticity-variants.csv), [{PAGE}-elasticity-peers.csv]({PAGE}-elasticity-peers.csv).",
+        "",
+        *markdown_table(weak, [
+            ("n", "n"), ("unknowns", "unknowns"), ("subdomains", "subdomains"), ("dual", "dual"),
+            ("coarse", "coarse"), ("couples", "couples"), ("active", "active"), ("Hessian mult.", "hessian"),
+            ("outer", "outer"), ("whole scene [s]", ("time_scene", ".2f")), ("peak MB", ("process_peak_mb", ".0f")),
+            ("force balance", ("balance", ".1e")), ("status", "status")]),
+        "",
+        *next_size(last, memory_gib),
+        "",
+        "## 3D elasticity: the whole scene, phase by phase",
+        "",
+        "Each phase as `edp/ffeti-phases.idp` names it: `assembly` FreeFEM builds the boxes' meshes and",
+        "assembles K_s, f_s and the condition lists; `plugin set-up` `fetiSetup` without its",
+        "factorizations, of which `coarse` the coarse problem (G G' assembled and factorized);",
+        "`factorization` CHOLMOD's factorizations of the boxes' matrices; `dual solve` the norm",
+        "estimate and SMALBE-M with MPRGP; `recovery` the primal solution.",
+        "",
+        *phase_table(weak, (("n", "n"), ("unknowns", "unknowns"), ("subdomains", "subdomains"))),
+        "",
+        f"![phases]({PAGE}-elasticity.png)",
+        "",
+        f"Reading: at n = {last['n']} FreeFEM's assembly is {f(last, 'time_assembly') / f(last, 'time_scene'):.0%} of the "
+        f"scene's time and the plugin's own set-up {f(last, 'time_plugin_setup') / f(last, 'time_factor'):.2f} times its "
+        "factorizations (aim: at most 1).",
+        "",
+        "## 3D elasticity: the coarse problem with many subdomains, H/h = 4",
+        "",
+        "The same sizes cut into boxes of 4 cells per side: 8 times the subdomains and the coarse",
+        "space (six rigid modes per box). `coarse`: the coarse problem's set-up (G G' assembled and",
+        "factorized); its application is inside the solve's time.",
+        "",
+        *markdown_table(coarse, [
+            ("n", "n"), ("unknowns", "unknowns"), ("subdomains", "subdomains"), ("coarse", "coarse"),
+            ("Hessian mult.", "hessian"), ("assembly [s]", ("time_assembly", ".2f")),
+            ("plugin set-up [s]", ("time_plugin_setup", ".2f")), ("of which coarse [s]", ("time_coarse", ".3f")),
+            ("factorization [s]", ("time_factor", ".2f")), ("solve [s]", ("time_solve", ".2f")),
+            ("peak MB", ("process_peak_mb", ".0f")), ("status", "status")]),
+        "",
+        f"## 3D elasticity: preconditioners and factor kinds, n = {VARIANT_SIZE}",
+        "",
+        "The same scene with each preconditioner (lumped: a sparse product; Dirichlet: a factorized",
+        "interior block per subdomain) and each CHOLMOD factor kind (simplicial, or supernodal with",
+        f"dense blocks through the BLAS, here {blas}).",
+        "",
+        *markdown_table(variants, [
+            ("case", "case"), ("Hessian mult.", "hessian"), ("factor nnz", ("factor_nnz", ".3g")),
+            ("factorization [s]", ("time_factor", ".2f")), ("solve [s]", ("time_solve", ".2f")),
+            ("solve per mult. [ms]", lambda r: f"{1000 * f(r, 'time_solve') / f(r, 'hessian'):.0f}"),
+            ("peak MB", ("process_peak_mb", ".0f")), ("status", "status")]),
+        "",
+        "## 3D elasticity: the direct peers",
+        "",
+        "The undivided cubes (one mesh each) by the primal-dual active set method, each Newton step",
+        "a sparse direct solve of the KKT system (`edp/active-set.idp`), with UMFPACK and with MUMPS",
+        "(both ship with FreeFEM), each run alone; the FETI row is the whole scene (assembly,",
+        "set-up, solve, recovery), its energy compared with UMFPACK's answer (energy error) and its",
+        "contact set's size with UMFPACK's. Memory: each process's peak resident set. FETI's unknowns",
+        "count the copies of interface nodes in every subdomain, the peers' each node once.",
+        "",
+        *markdown_table(peers, [
+            ("n", "n"), ("unknowns", "unknowns"), ("solver", "solver"), ("time [s]", ("time_total", ".2f")),
+            ("of which last solve [s]", lambda r: f"{f(r, 'time_reference_last_solve'):.2f}" if r["solver"] != FETI else "-"),
+            ("Newton steps", lambda r: r["pdas_iterations"] if r["solver"] != FETI else "-"),
+            ("peak MB", ("memory_mb", ".0f")),
+            ("energy error", lambda r: f"{f(r, 'energy_error'):.1e}" if r["solver"] == FETI else "-"),
+            ("active", lambda r: r["active"] if r["solver"] == FETI else r["active_reference"])]),
+        "",
+        *peer_ratios(peers),
+        "",
+    ]
+    return lines + mpi_section()
+
+
+def peer_ratios(peers):
+    """Per size, the peers' time and memory over FETI's."""
+    lines = []
+    for n in sorted({r["n"] for r in peers}, key=int):
+        feti = next(r for r in peers if r["n"] == n and r["solver"] == FETI)
+        for r in peers:
+            if r["n"] == n and r is not feti:
+                lines.append(f"- n = {n}: {r['solver']} takes {f(r, 'time_total') / f(feti, 'time_total'):.1f} times "
+                             f"FETI's time and {f(r, 'memory_mb') / f(feti, 'memory_mb'):.1f} times its memory.")
+    return lines
+
+
+def mpi_section():
+    """The optional MPI part's lines, when it has been run (--only mpi)."""
+    if not os.path.exists(os.path.join(OUT, f"{PAGE}-{table('mpi')}.csv")):
+        return []
+    rows, run_row = read_csv(PAGE, table("mpi")), read_csv(PAGE, table("mpi-run"))[0]
+    serial, ranks = rows
+    same = serial["hessian"] == ranks["hessian"] and serial["active"] == ranks["active"]
+    energy = abs(f(ranks, "energy") - f(serial, "energy")) / abs(f(serial, "energy"))
+    return [
+        f"## 3D elasticity on two MPI ranks, n = {serial['n']}",
+        "",
+        "`mpirun -np 2 FreeFem++-mpi edp/cubes-elasticity-3d.edp`: each rank assembles and factorizes",
+        "its own boxes; beside one process, one run after the other"
+        f" ({run_row['date']}, load average {float(run_row['load_at_start']):.1f} as it started). Peak MB per",
+        "rank: each rank's own resident set (the RANK lines).",
+        "",
+        *markdown_table(rows, [
+            ("run", "case"), ("Hessian mult.", "hessian"), ("active", "active"), ("energy", "energy"),
+            ("assembly [s]", ("time_assembly", ".2f")), ("plugin set-up [s]", ("time_plugin_setup", ".2f")),
+            ("factorization [s]", ("time_factor", ".2f")), ("dual solve [s]", ("time_solve", ".2f")),
+            ("whole scene [s]", ("time_scene", ".2f")), ("peak MB per rank", "rank_peak_mb"), ("status", "status")]),
+        "",
+        f"Reading: the two runs {'give the same' if same else 'do NOT give the same'} Hessian count and contact set; "
+        f"their energies differ by {energy:.0e} (relative). The whole scene takes "
+        f"{f(ranks, 'time_scene') / f(serial, 'time_scene'):.2f} times one process's time on two ranks.",
+        "",
+    ]
