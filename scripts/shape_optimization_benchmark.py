@@ -5,8 +5,8 @@ on this machine (docs/results/shape-optimization-<table>.csv: loops, history, co
 gradient-checks, and the uniform-pressure sections', plane and 3D) and renders
 docs/results/shape-optimization.md and its plots from it (--render: again from the CSVs;
 the spanner pictures come from the run's stress fields, not kept, and stay as they are).
---only-3d: measure the 3D section alone (development) and write it beside its CSVs as
-shape-optimization-3d-section.md, leaving the page as it is."""
+--only-3d: measure the 3D section alone (development; with --render: from its CSVs) and
+write it beside its CSVs as shape-optimization-3d-section.md, leaving the page as it is."""
 import argparse
 import glob
 import os
@@ -153,8 +153,9 @@ def main():
     arguments = parser.parse_args()
     if arguments.only_3d:
         begun = begin_run()
-        with tempfile.TemporaryDirectory() as folder:
-            uniform_pressure_3d_section.measure(folder)
+        if not arguments.render:
+            with tempfile.TemporaryDirectory() as folder:
+                uniform_pressure_3d_section.measure(folder)
         save_page("shape-optimization-3d-section.md", uniform_pressure_3d_section.section())
         print(f"3D section: {time.time() - begun['started']:.0f} s")
         return

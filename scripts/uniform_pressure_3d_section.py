@@ -10,7 +10,6 @@ Run alone for development (the page is written by scripts/shape_optimization_ben
     FFETI_RUN_DIR=build/edp-tests FFETI_RESULTS=/tmp/so3d python3 scripts/shape_optimization_benchmark.py --only-3d
 measures this part into FFETI_RESULTS and writes the section there as
 shape-optimization-3d-section.md, leaving the page alone."""
-import csv
 import os
 
 import matplotlib
@@ -19,16 +18,18 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.tri import Triangulation  # noqa: E402
 
-from ffeti_bench import OUT, f, markdown_table, read_csv, run, write_csv  # noqa: E402
+from ffeti_bench import OUT, f, markdown_table, read_csv  # noqa: E402
+from uniform_pressure_section import measure_loops  # noqa: E402
 
 SCRIPT = "uniform-pressure-3d.edp"
 PAGE, TABLE = "shape-optimization", "uniform-pressure-3d"
 PICTURE = "shape-optimization-uniform-pressure-3d.png"
 # (cost, m, k, gradient), k B-splines per direction (k x k variables): the energy's optimum
 # on the default mesh (m = 8 cells across the contact zone) and on a finer one with more
-# variables, the pressure's P-mean on the default mesh; the peers at 16 variables.
-OPTIMA = [("energy", 8, 4, "adjoint"), ("energy", 12, 5, "adjoint"), ("pressure", 8, 4, "adjoint")]
-PEERS = [("energy", 8, 4, gradient) for gradient in ("adjoint", "direct", "fd")]
+# variables, the pressure's P-mean on the default mesh; the peers at 16 variables on the
+# coarsest mesh (m = 4: about 140 design steps, each 33 analyses with finite differences).
+OPTIMA = [("energy", 8, 4, "adjoint"), ("pressure", 8, 4, "adjoint"), ("energy", 12, 5, "adjoint")]
+PEERS = [("energy", 4, 4, gradient) for gradient in ("adjoint", "direct", "fd")]
 LOOPS = OPTIMA + [loop for loop in PEERS if loop not in OPTIMA]
 CHECKS = [(cost, m) for cost in ("energy", "pressure") for m in (4, 8)]
 
@@ -38,22 +39,15 @@ def key(r):
     return r["cost_name"], int(r["m"]), int(r["k"]), r["gradient"]
 
 
+def profile_rows(profiles, loop):
+    """The profile rows of one loop (cost, m, k, gradient)."""
+    return [r for r in profiles if (r["cost"], int(r["m"]), int(r["k"]), r["gradient"]) == loop]
+
+
 def measure(folder):
     """Runs every loop of LOOPS and the gradient checks; writes their raw data (one row per
     loop, the pressure and surface per contact node and loop, one row per check)."""
-    results, profiles = [], []
-    for cost, m, k, gradient in LOOPS:
-        name = f"3d-{cost}-m{m}-k{k}-{gradient}"
-        profile = os.path.join(folder, name + ".csv")
-        results.append(run(SCRIPT, "-cost", cost, "-m", m, "-k", k, "-gradient", gradient,
-                           "-history", os.path.join(folder, name + ".history"), "-profile", profile)["RESULT"][0])
-        with open(profile) as file:
-            profiles += [dict(cost=cost, m=m, k=k, gradient=gradient, **row) for row in csv.DictReader(file)]
-    write_csv(PAGE, TABLE, results)
-    write_csv(PAGE, f"{TABLE}-profiles", profiles)
-    write_csv(PAGE, f"{TABLE}-checks", [
-        run(SCRIPT, "-gradcheck", 1e-5, "-cost", cost, "-m", m, prefixes=("GRADCHECK",))["GRADCHECK"][0]
-        for cost, m in CHECKS])
+    measure_loops(SCRIPT, TABLE, LOOPS, CHECKS, folder)
 
 
 def mirrored(rows, column):
@@ -71,9 +65,8 @@ def picture(profiles, uniform, name):
     """The contact pressure over the whole face (the quarter mirrored) before and after (the
     energy's loop on the default mesh), on one colour scale centred on q, and the pressure
     along the diagonal and the mid-line of the quarter for every optimum."""
-    cost, m, k, gradient = OPTIMA[0]
-    rows = [r for r in profiles if (r["cost"], int(r["m"]), int(r["k"]), r["gradient"]) == (cost, m, k, gradient)]
-    fig, axes = plt.subplots(1, 3, figsize=(13, 4.0), gridspec_kw={"width_ratios": [1, 1, 1.25]})
+    rows = profile_rows(profiles, OPTIMA[0])
+    fig, axes = plt.subplots(1, 3, figsize=(14, 4.2), layout="constrained", gridspec_kw={"width_ratios": [1, 1, 1.3]})
     top = max(f(r, "pressure0") for r in rows)
     spread = max(top - uniform, uniform)
     for ax, column, title in zip(axes[:2], ("pressure0", "pressure"), ("crowned start", "optimum of the energy")):
@@ -84,21 +77,22 @@ def picture(profiles, uniform, name):
         ax.set_title(f"{title}: {min(p):.0f} to {max(p):.0f} MPa", fontsize=10)
         ax.set_xlabel("x [mm]")
     axes[0].set_ylabel("y [mm]")
-    fig.colorbar(shading, ax=axes[:2], fraction=0.03, label="contact pressure [MPa] (white: q)")
+    fig.colorbar(shading, ax=axes[1], fraction=0.05, label="contact pressure [MPa] (white: q)")
     right = axes[2]
-    for cost, m, k, gradient in OPTIMA:
-        loop = [r for r in profiles if (r["cost"], int(r["m"]), int(r["k"]), r["gradient"]) == (cost, m, k, gradient)]
+    for colour, (cost, m, k, gradient) in zip(("C1", "C2", "C3"), OPTIMA):
+        loop = profile_rows(profiles, (cost, m, k, gradient))
         diagonal = sorted((f(r, "x"), r) for r in loop if abs(f(r, "x") - f(r, "y")) < 1e-9)
         if (cost, m, k) == OPTIMA[0][:3]:
             right.plot([x for x, _ in diagonal], [f(r, "pressure0") for _, r in diagonal], "C0.-",
-                       label=f"start, m = {m}")
-        right.plot([x for x, _ in diagonal], [f(r, "pressure") for _, r in diagonal], ".-",
+                       label=f"crowned start, m = {m}")
+        right.plot([x for x, _ in diagonal], [f(r, "pressure") for _, r in diagonal], colour, marker=".",
                    label=f"optimum of the {cost}, m = {m}, {k} x {k}")
     right.axhline(uniform, color="k", lw=0.8, ls=":", label=f"q = {uniform:g} MPa")
     right.set_xlabel("x = y [mm] (the diagonal, centre to corner)")
     right.set_ylabel("contact pressure [MPa]")
     right.legend(fontsize=7)
-    fig.savefig(os.path.join(OUT, name), dpi=110, bbox_inches="tight")
+    right.set_title("along the diagonal", fontsize=10)
+    fig.savefig(os.path.join(OUT, name), dpi=110)
     plt.close(fig)
 
 
@@ -147,7 +141,7 @@ def section():
         "",
         "### The peer in three dimensions",
         "",
-        f"The energy's loop at {base['variables']} variables with adjoint gradients (one adjoint solve, then one",
+        f"The energy's loop on the m = {base['m']} mesh at {base['variables']} variables with adjoint gradients (one adjoint solve, then one",
         "product per variable), direct sensitivities (all directions in one `fetiSensitivity`",
         "call) and central differences of full re-solves (2 x variables analyses per gradient).",
         "",
