@@ -6,7 +6,7 @@
 #   ./scripts/benchmark.sh parallel        MPI ranks and OpenMP threads, h = 1/1024 (~3 min)
 #   ./scripts/benchmark.sh hertz           cylinder on a block against Hertz, mesh refinement
 #   ./scripts/benchmark.sh multibody       three stacked bodies: figures and a von Mises picture
-#   ./scripts/benchmark.sh shape-optimization  design loops, gradient costs and checks (~6 min)
+#   ./scripts/benchmark.sh shape-optimization  design loops, gradient costs and checks (~6 min; the 3D section adds an estimated 20, not yet timed idle)
 #   ./scripts/benchmark.sh scalability     Hessian multiplications over h up to n = 2048, with and
 #                                          without contact, with and without preconditioner (~10 min)
 #   ./scripts/benchmark.sh large-contact   a large contact zone: expansion steps, stopping tests,

@@ -2,14 +2,17 @@
 """Contact shape optimization (the seed's second half): the two design loops, what a
 gradient costs against an analysis, and the gradient checks. Writes the raw data of one run
 on this machine (docs/results/shape-optimization-<table>.csv: loops, history, costs,
-gradient-checks, and the uniform-pressure section's) and renders
+gradient-checks, and the uniform-pressure sections', plane and 3D) and renders
 docs/results/shape-optimization.md and its plots from it (--render: again from the CSVs;
-the spanner pictures come from the run's stress fields, not kept, and stay as they are)."""
+the spanner pictures come from the run's stress fields, not kept, and stay as they are).
+--only-3d: measure the 3D section alone (development; with --render: from its CSVs) and
+write it beside its CSVs as shape-optimization-3d-section.md, leaving the page as it is."""
 import argparse
 import glob
 import os
 import subprocess
 import tempfile
+import time
 
 import matplotlib
 
@@ -19,6 +22,7 @@ from matplotlib.collections import PolyCollection  # noqa: E402
 
 from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, machine_line, markdown_table, read_csv, run,  # noqa: E402
                          save_page, write_csv)
+import uniform_pressure_3d_section  # noqa: E402
 import uniform_pressure_section  # noqa: E402
 
 MESHES = os.path.join(ROOT, "meshes")
@@ -144,7 +148,18 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--render", action="store_true",
                         help="re-render the page from its CSVs, no run (the spanner pictures are kept)")
-    if not parser.parse_args().render:
+    parser.add_argument("--only-3d", action="store_true",
+                        help="measure the 3D section alone and write it as shape-optimization-3d-section.md (not the page)")
+    arguments = parser.parse_args()
+    if arguments.only_3d:
+        begun = begin_run()
+        if not arguments.render:
+            with tempfile.TemporaryDirectory() as folder:
+                uniform_pressure_3d_section.measure(folder)
+        save_page("shape-optimization-3d-section.md", uniform_pressure_3d_section.section())
+        print(f"3D section: {time.time() - begun['started']:.0f} s")
+        return
+    if not arguments.render:
         measure()
     render()
 
@@ -172,6 +187,7 @@ def measure():
                 history_rows += [dict(loop=label, step=k + 1, cost=c, true_max=m)
                                  for k, (c, m) in enumerate(zip(costs, true_max))]
         uniform_pressure_section.measure(folder)
+        uniform_pressure_3d_section.measure(folder)
     write_csv(PAGE, "loops", loops)
     write_csv(PAGE, "history", history_rows)
     write_csv(PAGE, "gradient-checks", [dict(case=label, **gradient_check(script, args))
@@ -226,7 +242,7 @@ def render():
                                                                               "costs"))
     run_row = read_csv(PAGE, "run")[0]
     history_plot(history_rows, "shape-optimization-history.png")
-    uniform = uniform_pressure_section.section()
+    uniform = uniform_pressure_section.section() + uniform_pressure_3d_section.section()
     write_page(uniform, loops, checks, costs, run_row)
 
 

@@ -36,19 +36,26 @@ def measure(folder):
     shape-optimization-uniform-pressure.csv (one row per loop),
     shape-optimization-uniform-pressure-profiles.csv (pressure and profile per node and loop)
     and shape-optimization-uniform-pressure-checks.csv (one row per gradient check)."""
+    measure_loops(SCRIPT, TABLE, LOOPS, [(cost, m) for cost in ("energy", "pressure") for m in (16, 32)], folder)
+
+
+def measure_loops(script, table, loops, checks, folder):
+    """Runs the design loops (cost, m, k, gradient) of a uniform-pressure scene with -profile
+    and its gradient checks (cost, m); writes shape-optimization-<table>.csv (one row per
+    loop), ...-profiles.csv (the profile file's rows per loop) and ...-checks.csv."""
     results, profiles = [], []
-    for cost, m, k, gradient in LOOPS:
-        name = f"{cost}-m{m}-k{k}-{gradient}"
+    for cost, m, k, gradient in loops:
+        name = f"{table}-{cost}-m{m}-k{k}-{gradient}"
         profile = os.path.join(folder, name + ".csv")
-        results.append(run(SCRIPT, "-cost", cost, "-m", m, "-k", k, "-gradient", gradient,
+        results.append(run(script, "-cost", cost, "-m", m, "-k", k, "-gradient", gradient,
                            "-history", os.path.join(folder, name + ".history"), "-profile", profile)["RESULT"][0])
         with open(profile) as file:
             profiles += [dict(cost=cost, m=m, k=k, gradient=gradient, **row) for row in csv.DictReader(file)]
-    write_csv(PAGE, f"{TABLE}", results)
-    write_csv(PAGE, f"{TABLE}-profiles", profiles)
-    write_csv(PAGE, f"{TABLE}-checks", [
-        run(SCRIPT, "-gradcheck", 1e-5, "-cost", cost, "-m", m, prefixes=("GRADCHECK",))["GRADCHECK"][0]
-        for cost in ("energy", "pressure") for m in (16, 32)])
+    write_csv(PAGE, table, results)
+    write_csv(PAGE, f"{table}-profiles", profiles)
+    write_csv(PAGE, f"{table}-checks", [
+        run(script, "-gradcheck", 1e-5, "-cost", cost, "-m", m, prefixes=("GRADCHECK",))["GRADCHECK"][0]
+        for cost, m in checks])
 
 
 def picture(profiles, uniform, name):

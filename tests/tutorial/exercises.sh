@@ -34,6 +34,16 @@ rm -r scenes 05-several-bodies.edp
 exercise "lesson 6: -k 6" "$lessons/06-sensitivity.edp" -k 6
 exercise "lesson 7: -start 0.1" "$lessons/07-shape-optimization.edp" -start 0.1
 exercise "lesson 7: -amax 0.02" "$lessons/07-shape-optimization.edp" -amax 0.02
+# Lesson 7's exercise 4 runs a scene: its -check makes the exit status the test.
+for args in "-m 4 -check 0.02" "-m 4 -cost pressure -check 0.02"; do
+  # shellcheck disable=SC2086
+  if FreeFem++-nw -v 0 "$source_dir/edp/uniform-pressure-3d.edp" $args -history exercise-3d.history > out.txt 2>&1 \
+     && grep -q '^RESULT .* status=0' out.txt; then
+    echo "ok: lesson 7, exercise 4: uniform-pressure-3d.edp $args"
+  else
+    echo "FAILED: lesson 7, exercise 4: uniform-pressure-3d.edp $args"; tail -n 4 out.txt; failures=$((failures + 1))
+  fi
+done
 exercise "lesson 9: -pull 0.9" "$lessons/09-friction.edp" -pull 0.9
 exercise "lesson 9: -onestep 1" "$lessons/09-friction.edp" -onestep 1
 exercise "lesson 9: -mu 0.2" "$lessons/09-friction.edp" -mu 0.2
