@@ -112,6 +112,27 @@ TEST(DiscQp, MpgpMatchesTheAcceleratedProjectedGradient) {
   EXPECT_GT(inside, 3);
 }
 
+TEST(DiscQp, PairsSlippingHardOnSmallCirclesAgree) {
+  // Radii 1e-3 of the random ones: every disc pair ends on its circle with -n'g / radius, the
+  // curvature the circle adds round it, far above ||H|| (rows slipping fast under small
+  // bounds). CG round the circles needs that curvature in its steps and its preconditioner.
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    test::DiscQp qp = test::random_disc_qp(kCondition, seed);
+    qp.set.disc_radius *= 1e-3;  // infinite off the discs, 0 on the pinned pair: unchanged
+    const Vec reference = test::accelerated_projected_gradient(qp);
+    ASSERT_LT(test::kkt_violation(qp, reference), 1e-9) << "seed " << seed;
+    Vec x = Vec::Zero(15);
+    const MprgpResult r = solve(qp, x);
+    ASSERT_EQ(r.status, SolveStatus::converged) << "seed " << seed;
+    EXPECT_LT(r.counts.hessian, 200) << "seed " << seed;
+    EXPECT_LT((x - reference).norm(), 1e-8 * reference.norm()) << "seed " << seed;
+    EXPECT_LT(test::kkt_violation(qp, x), 1e-10) << "seed " << seed;
+    for (int j = 1; j < 5; ++j)  // on its circle, with the circle's curvature above ||H||
+      EXPECT_NEAR((x.segment<2>(5 + 2 * j) - qp.set.disc_centre.segment<2>(5 + 2 * j)).norm(),
+                  qp.set.disc_radius[5 + 2 * j], 1e-12) << "seed " << seed << " pair " << j;
+  }
+}
+
 TEST(DiscQp, PreconditionedMpgpAgrees) {
   const test::DiscQp qp = test::random_disc_qp(kCondition, 7);
   const Vec reference = test::accelerated_projected_gradient(qp);

@@ -34,8 +34,39 @@ std::vector<Eigen::Index> held_disc_pairs(const Vec& x, const ConstraintSet& set
   return held;
 }
 
-void zero_held_disc_pairs(const Vec& x, const ConstraintSet& set, Vec& v) {
-  for (const Eigen::Index i : held_disc_pairs(x, set)) v.segment<2>(i).setZero();
+void restrict_to_disc_faces(const Vec& x, const ConstraintSet& set, Vec& v) {
+  for (const Eigen::Index i : held_disc_pairs(x, set)) {
+    const Eigen::Vector2d d = offset_from_centre(x, set, i);
+    const double norm = d.norm();
+    if (set.disc_radius[i] == 0 || norm == 0) {
+      v.segment<2>(i).setZero();  // pinned: no direction is feasible
+      continue;
+    }
+    const Eigen::Vector2d n = d / norm;  // outward unit normal
+    v.segment<2>(i) -= n.dot(v.segment<2>(i)) * n;
+  }
+}
+
+Vec circle_curvature(const Vec& x, const Vec& g, const ConstraintSet& set, const Vec& p) {
+  Vec curvature = Vec::Zero(x.size());
+  for (const Eigen::Index i : held_disc_pairs(x, set)) {
+    const Eigen::Vector2d d = offset_from_centre(x, set, i);
+    const double norm = d.norm();
+    if (set.disc_radius[i] == 0 || norm == 0) continue;  // pinned: p is 0 there
+    const double holding = std::max(-d.dot(g.segment<2>(i)) / norm, 0.0);  // -n'g where -g points out
+    curvature.segment<2>(i) = (holding / norm) * p.segment<2>(i);
+  }
+  return curvature;
+}
+
+void precondition_circle_curvature(const Vec& x, const Vec& g, const ConstraintSet& set, double a_norm, Vec& v) {
+  for (const Eigen::Index i : held_disc_pairs(x, set)) {
+    const Eigen::Vector2d d = offset_from_centre(x, set, i);
+    const double norm = d.norm();
+    if (set.disc_radius[i] == 0 || norm == 0) continue;
+    const double holding = std::max(-d.dot(g.segment<2>(i)) / norm, 0.0);
+    v.segment<2>(i) /= 1 + holding / norm / a_norm;
+  }
 }
 
 int project_onto_discs(Vec& x, const ConstraintSet& set) {
@@ -65,13 +96,14 @@ void overwrite_disc_projected_gradient(const Vec& x, const Vec& g, const Constra
   });
 }
 
-double disc_feasible_step(const Vec& x, const Vec& p, const ConstraintSet& set) {
+double disc_feasible_step(const Vec& x, const Vec& p, const ConstraintSet& set, bool slide_on_circles) {
   double step = std::numeric_limits<double>::infinity();
   for_each_disc_pair(set, [&](Eigen::Index i) {
     const Eigen::Vector2d d = offset_from_centre(x, set, i), pi = p.segment<2>(i);
     const double pp = pi.squaredNorm();
     if (pp == 0) return;
     const double radius = set.disc_radius[i], dp = d.dot(pi);
+    if (slide_on_circles && !strictly_inside(d, radius)) return;
     const double room = std::max(radius * radius - d.squaredNorm(), 0.0);  // g^2 - ||d||^2
     const double root = std::sqrt(dp * dp + pp * room);
     // a^2 pp - 2 a dp - room = 0; its larger root, written without cancellation either way.

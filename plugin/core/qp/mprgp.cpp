@@ -9,10 +9,11 @@
 namespace ffeti {
 namespace {
 
-/// Free gradient phi: g on the free set, 0 on the active set.
+/// Free gradient phi: g on the free set, 0 on the active set; on a disc pair on its circle
+/// g's tangential part (the circle's tangent is free, qp::restrict_to_disc_faces).
 void free_gradient(const Vec& x, const Vec& g, const qp::ConstraintSet& bounds, Vec& phi) {
   for (Eigen::Index i = 0; i < x.size(); ++i) phi[i] = bounds.free(i, x[i]) ? g[i] : 0.0;
-  if (bounds.has_discs()) qp::zero_held_disc_pairs(x, bounds, phi);
+  if (bounds.has_discs()) qp::restrict_to_disc_faces(x, bounds, phi);
 }
 
 /// phi'phit and ||phit||^2 of the reduced free gradient on the free set: phit_i =
@@ -50,15 +51,16 @@ ReducedFreeGradient reduced_free_gradient(const Vec& x, const Vec& phi, const qp
   return r;
 }
 
-/// Largest step a >= 0 with l <= x - a p <= u on the bounded components.
-double feasible_step(const Vec& x, const Vec& p, const qp::ConstraintSet& bounds) {
+/// Largest step a >= 0 with l <= x - a p <= u on the bounded components and the disc pairs in
+/// their discs (with `slide_on_circles` but those on their circle, which p moves round it).
+double feasible_step(const Vec& x, const Vec& p, const qp::ConstraintSet& bounds, bool slide_on_circles) {
   const Vec& lower = bounds.lower;
   double step = std::numeric_limits<double>::infinity();
   for (Eigen::Index i = 0; i < x.size(); ++i) {
     if (lower[i] != kUnbounded && p[i] > 0) step = std::min(step, (x[i] - lower[i]) / p[i]);
     if (p[i] < 0 && bounds.has_upper(i)) step = std::min(step, (x[i] - bounds.upper[i]) / p[i]);
   }
-  if (bounds.has_discs()) step = std::min(step, qp::disc_feasible_step(x, p, bounds));
+  if (bounds.has_discs()) step = std::min(step, qp::disc_feasible_step(x, p, bounds, slide_on_circles));
   return step;
 }
 
@@ -93,6 +95,70 @@ double projected_component(const Vec& x, const Vec& g, const qp::ConstraintSet& 
   if (bounds.pinned(i, x[i])) return 0.0;  // at both bounds: no direction is feasible
   if (!above_bound(x[i], bounds.lower[i])) return std::min(g[i], 0.0);  // at the lower bound
   return std::max(g[i], 0.0);                                          // at the upper bound
+}
+
+/// The fixed projected step x = P(x - abar v), v = phi: MPRGP's expansion step. With discs v =
+/// g - beta, phi plus the part of g pointing out of the set (0 on boxes once projected; on a
+/// pair on its circle the normal part of g when -g points out): phi alone, tangential there,
+/// is not guaranteed to decrease f (the projection back onto the circle costs n'g times its
+/// inward move), P(x - abar (g - beta)) decreases f by at least (1/abar - ||A||/2) ||dx||^2.
+void fixed_projected_step(Vec& x, const Vec& g, const Vec& phi, const qp::ConstraintSet& bounds, double abar) {
+  if (bounds.has_discs()) x -= abar * (g - projected_gradient(x, g, bounds) + phi);
+  else x -= abar * phi;
+  project_onto_bounds(x, bounds);
+}
+
+/// g within this relative part of ||gP|| is taken as known: a CG step that slides round the
+/// circles updates g along the tangent lines and leaves out A times the projection's move
+/// back onto the circles (bounded by ||A|| times its norm) until the sum of those bounds
+/// exceeds it; g is recomputed then, and before any return.
+constexpr double kSlideGradientError = 1e-2;
+
+/// The CG step x - a_cg p on a set with discs (a_cg within the free pairs' feasible step).
+/// Pairs on their circle move along its tangent and leave it by a second-order amount: they
+/// go back onto it radially (delta), which changes g by A delta; `gradient_error` bounds
+/// the g so left out (||A|| ||delta|| per step), and g is recomputed (one multiplication)
+/// when it exceeds kSlideGradientError ||gP||. The step is kept if f falls by at least half
+/// what it takes on the tangent lines, (g'p) a_cg / 2, by the bound f(y + delta) <= f(y) +
+/// g(y)'delta + ||A|| ||delta||^2 / 2; otherwise (the circles curve too much for the step)
+/// the fixed projected step P(x - abar (g - beta)) instead, and the CG recurrence restarts
+/// (returns true).
+bool slide_cg_step(const qp::Problem& problem, double abar, double a_cg, const Vec& p, const Vec& Ap, Vec& x,
+                   Vec& g, const Vec& phi, double& gradient_error, IterationCounts& counts) {
+  const Vec& b = problem.b;
+  const double a_norm = problem.hessian_norm;
+  const double g_p = g.dot(p);
+  Vec moved = x - a_cg * p;
+  Vec moved_gradient = g - a_cg * Ap;  // at moved, before the projection
+  const Vec before_projection = moved;
+  if (qp::project_onto_discs(moved, problem.constraints) == 0) {  // no pair slid: a plain CG step
+    x.swap(moved);
+    g.swap(moved_gradient);
+    return false;
+  }
+  const Vec delta = moved - before_projection;
+  const double delta_norm = delta.norm();
+  const double decrease_bound = a_cg * g_p - 0.5 * a_cg * a_cg * p.dot(Ap) - moved_gradient.dot(delta) -
+                                0.5 * a_norm * delta_norm * delta_norm;
+  Vec A_x(x.size());
+  if (decrease_bound >= 0.25 * a_cg * g_p) {
+    x.swap(moved);
+    g.swap(moved_gradient);
+    gradient_error += a_norm * delta_norm;
+    if (gradient_error > kSlideGradientError * projected_gradient(x, g, problem.constraints).norm()) {
+      problem.hessian(x, A_x);
+      ++counts.hessian;
+      g = A_x - b;
+      gradient_error = 0;
+    }
+    return false;
+  }
+  fixed_projected_step(x, g, phi, problem.constraints, abar);
+  problem.hessian(x, A_x);
+  ++counts.hessian;
+  g = A_x - b;
+  gradient_error = 0;
+  return true;
 }
 }  // namespace
 
@@ -144,18 +210,37 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
   IterationCounts& counts = result.counts;
 
   auto multiply = [&](const Vec& v, Vec& Av) { A(v, Av); ++counts.hessian; };
-  Vec phi(n), beta(n), p(n), Ap(n), z(n), trial, trial_gradient, A_trial;
+  Vec phi(n), beta(n), p(n), Ap(n), z(n), trial, trial_gradient, A_trial, curved_Ap;
   // z = M phi on the free set, 0 on the active set (z = phi without a preconditioner).
+  // With discs z is also divided by 1 + the circles' curvature / ||A|| on the pairs on a
+  // circle (qp::precondition_circle_curvature: without it a pair of small radius and large
+  // -n'g, a row slipping fast under a small bound, sets every CG step: the 3D forced slide
+  // did not converge in 10000 multiplications).
   const auto precondition_in_face = [&]() -> const Vec& {
-    if (!preconditioner) return phi;
-    preconditioner(phi, z);
-    ++counts.preconditioner;
+    if (!preconditioner && !bounds.has_discs()) return phi;
+    if (preconditioner) {
+      preconditioner(phi, z);
+      ++counts.preconditioner;
+    } else {
+      z = phi;
+    }
     for (Eigen::Index i = 0; i < n; ++i)
       if (!bounds.free(i, x[i])) z[i] = 0.0;
-    if (bounds.has_discs()) qp::zero_held_disc_pairs(x, bounds, z);
+    if (bounds.has_discs()) {
+      qp::restrict_to_disc_faces(x, bounds, z);
+      qp::precondition_circle_curvature(x, g, bounds, a_norm, z);
+    }
     return z;
   };
 
+  // Bound on the part of g that sliding CG steps left out (slide_cg_step); 0 without discs.
+  double gradient_error = 0;
+  const auto exact_gradient = [&]() {
+    if (gradient_error == 0) return;
+    multiply(x, Ap);
+    g = Ap - b;
+    gradient_error = 0;
+  };
   if (!gradient_is_current) {
     project_onto_bounds(x, bounds);
     g.resize(n);
@@ -190,10 +275,12 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
     if (monitor) monitor({"mprgp", iteration, result.gradient_norm, 0.0, counts.hessian, off_bound_count(x, lower)});
     if (stop(x, g, result.gradient_norm)) {
       result.status = SolveStatus::converged;
+      exact_gradient();
       return result;
     }
     if (counts.hessian >= budget.max_hessian()) {
       result.status = SolveStatus::max_iterations;
+      exact_gradient();
       return result;
     }
     if (iteration == 0 && settings.settle_rounds > 0) {  // a start that passes the test is kept as is
@@ -208,26 +295,40 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
       // Not conjugate_gradient(): each step chooses among CG, expansion and proportioning on a
       // face that changes, and conjugacy is kept only within a face.
       multiply(p, Ap);
-      const double pAp = p.dot(Ap);
+      // With discs the step and the conjugacy use A plus the circles' curvature (the Hessian
+      // round them, qp::circle_curvature); Ap alone updates g.
+      if (bounds.has_discs()) curved_Ap = Ap + qp::circle_curvature(x, g, bounds, p);
+      const Vec& step_Ap = bounds.has_discs() ? curved_Ap : Ap;
+      const double pAp = p.dot(step_Ap);
       if (!(pAp > 0)) {
         result.status = SolveStatus::not_positive_definite;
+        exact_gradient();
         return result;
       }
       const double g_p = g.dot(p);
       const double a_cg = g_p / pAp;
-      const double a_f = feasible_step(x, p, bounds);
+      const double a_f = feasible_step(x, p, bounds, true);
       if (a_cg <= a_f) {
         // Exact line search decreases f by (g'p)^2 / (2 p'Ap); the fixed step's guarantee:
         const bool guaranteed = 0.5 * a_cg * g_p >= abar * phit_phi - 0.5 * a_norm * abar * abar * phit_sq;
-        x -= a_cg * p;   // x_{k+1} = x_k - a_cg p
-        g -= a_cg * Ap;  // g = A x - b
+        bool restart = continued && !guaranteed;
+        if (bounds.has_discs()) {
+          restart = slide_cg_step(problem, abar, a_cg, p, Ap, x, g, phi, gradient_error, counts) || restart;
+        } else {
+          x -= a_cg * p;   // x_{k+1} = x_k - a_cg p
+          g -= a_cg * Ap;  // g = A x - b
+        }
         free_gradient(x, g, bounds, phi);
         const Vec& direction = precondition_in_face();
-        if (continued && !guaranteed) {
+        if (restart) {
           p = direction;
           continued = false;
         } else {
-          p = direction - (direction.dot(Ap) / pAp) * p;  // A-conjugate to the previous direction
+          p = direction - (direction.dot(step_Ap) / pAp) * p;  // A-conjugate to the previous direction
+          if (bounds.has_discs()) {  // round the circles the face has turned: p on its new tangents
+            qp::restrict_to_disc_faces(x, bounds, p);
+            if (!(p.dot(g) > 0)) p = direction;
+          }
         }
         ++counts.cg;
       } else {
@@ -243,6 +344,9 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
           project_onto_bounds(trial, bounds);
           x -= a_f * p;
           g -= a_f * Ap;
+          // Pairs sliding on their circle went a little out (second order in a_f): back onto
+          // it, g there inexact by A times that, until the step below recomputes it.
+          if (bounds.has_discs()) qp::project_onto_discs(x, bounds);
           free_gradient(x, g, bounds, phi);
           const ReducedFreeGradient at_half = reduced_free_gradient(x, phi, bounds, abar);  // at x - a_f p
           const double guaranteed =
@@ -259,14 +363,15 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
         } else {
           x -= a_f * p;
           g -= a_f * Ap;
+          if (bounds.has_discs()) qp::project_onto_discs(x, bounds);  // as above
           free_gradient(x, g, bounds, phi);
         }
         if (!expanded) {
-          x -= abar * phi;  // expansion: fixed-step projected gradient step
-          project_onto_bounds(x, bounds);
+          fixed_projected_step(x, g, phi, bounds, abar);  // expansion: fixed-step projected gradient step
           multiply(x, Ap);
           g = Ap - b;
         }
+        gradient_error = 0;  // g computed anew at the new x, either way
         free_gradient(x, g, bounds, phi);
         const Vec& direction = precondition_in_face();
         continued = false;
@@ -276,39 +381,30 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
           // step (the large contact zone: 1.7 times the multiplications, docs/algorithms.md).
           for (Eigen::Index i = 0; i < n; ++i)
             if (!bounds.free(i, x[i])) p[i] = 0.0;
-          if (bounds.has_discs()) qp::zero_held_disc_pairs(x, bounds, p);
-          trial = direction - (direction.dot(Ap) / pAp) * p;  // Ap = A p of the last direction
+          if (bounds.has_discs()) qp::restrict_to_disc_faces(x, bounds, p);
+          trial = direction - (direction.dot(step_Ap) / pAp) * p;  // Ap = A p of the last direction
           continued = trial.dot(g) > 0;                       // a descent direction, or restart
         }
         if (continued) p.swap(trial);
         else p = direction;
       }
     } else {
-      // Proportioning: release components of the active set along the chopped gradient.
-      if (bounds.has_discs()) {
-        // With discs (MPGP): on a circle the chopped gradient's tangential part leaves the
-        // disc at once, so no step along it is feasible; the projected gradient step with the
-        // fixed step abar <= 2/||A|| releases the held pairs whose gradient points inward and
-        // decreases f by at least (1/abar - ||A||/2) ||x_new - x||^2.
-        x -= abar * g;  // x = P(x - abar g)
-        project_onto_bounds(x, bounds);
-        multiply(x, Ap);
-        g = Ap - b;  // g = A x - b
-      } else {
-        multiply(beta, Ap);
-        const double dAd = beta.dot(Ap);
-        if (!(dAd > 0)) {
-          result.status = SolveStatus::not_positive_definite;
-          return result;
-        }
-        // Exact line search along beta, held inside the box: with upper bounds a component
-        // released from one bound could otherwise pass the other (lower bounds only: no cap).
-        const double a_feasible = feasible_step(x, beta, bounds);
-        const double a = std::min(g.dot(beta) / dAd, a_feasible);
-        x -= a * beta;
-        if (a == a_feasible) project_onto_bounds(x, bounds);  // the bound reached exactly, not round-off past it
-        g -= a * Ap;
+      // Proportioning: release components of the active set along the chopped gradient (on a
+      // disc pair on its circle its inward normal part: the tangential part is free).
+      multiply(beta, Ap);
+      const double dAd = beta.dot(Ap);
+      if (!(dAd > 0)) {
+        result.status = SolveStatus::not_positive_definite;
+        exact_gradient();
+        return result;
       }
+      // Exact line search along beta, held inside the box: with upper bounds a component
+      // released from one bound could otherwise pass the other (lower bounds only: no cap).
+      const double a_feasible = feasible_step(x, beta, bounds, false);
+      const double a = std::min(g.dot(beta) / dAd, a_feasible);
+      x -= a * beta;
+      if (a == a_feasible) project_onto_bounds(x, bounds);  // the bound reached exactly, not round-off past it
+      g -= a * Ap;
       free_gradient(x, g, bounds, phi);
       p = precondition_in_face();
       continued = false;

@@ -60,8 +60,10 @@ int off_bound_count(const Vec& x, const Vec& lower);
 /// unchanged. With box blocks this is Dostal's MPRGP for bounds on both sides: the free set
 /// excludes both bounds, the chopped gradient points into the box, the reduced free
 /// gradient and the feasible step respect both. With disc blocks this is MPGP: the same
-/// steps with the disc's geometry (qp/disc.h), except proportioning, which takes the
-/// projected gradient step P(x - abar g) (a tangential move leaves a circle at once).
+/// steps with the disc's geometry (qp/disc.h), the tangent of a pair on its circle free: CG
+/// moves such a pair along it with the circle's curvature added to A and projects it back
+/// (g then known to 1e-2 ||gP|| between recomputations, exact on return), the fixed step
+/// goes along g - beta, and proportioning releases pairs radially into their discs.
 MprgpResult mprgp(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, const qp::Budget& budget,
                   const StopTest& stop, const Monitor& monitor = {});
 
