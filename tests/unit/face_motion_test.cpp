@@ -3,11 +3,14 @@
 // faces), and on the face's boundary the motions that keep the slave on it; refused, a slave
 // on an edge or a corner moving across it relative to the face (it changes face on one side
 // of the design: a one-sided derivative) and a moving slave beyond the face's edges.
+#include "base/errors.h"
 #include "constraints/contact/node_to_face.h"
+#include "sens/contact_derivative.h"
 
 #include <gtest/gtest.h>
 
 #include <array>
+#include <memory>
 
 namespace ffeti {
 namespace {
@@ -55,6 +58,20 @@ TEST(FaceMotion, AMovingSlaveBeyondTheFaceIsRefused) {
   const FaceGeometry beyond = face_row({3, 1, 0.1});
   EXPECT_NE(beyond.unverified_motion({kUp, kStill, kStill, kStill}).find("beyond"), std::string::npos);
   EXPECT_EQ(beyond.unverified_motion({kStill, kStill, kStill, kStill}), "");
+}
+
+// The sensitivities refuse a one-sided row only where its derivative is used: a row neither
+// kept nor carrying a force (inactive) may slide across an edge.
+TEST(FaceMotion, OnlyRowsInUseAreRefused) {
+  Constraints constraints;
+  constraints.geometry = {std::make_shared<const FaceGeometry>(face_row({1, 1, 0}))};  // over the edge b-c
+  const std::vector<std::vector<double>> vx = {{1, 1, 1}, std::vector<double>(9, 0.0)};  // the slave slides along x
+  const std::vector<std::vector<double>> still = {{0, 0, 0}, std::vector<double>(9, 0.0)};
+  const SerialCommunicator comm;
+  EXPECT_THROW(contact_row_derivatives(constraints, {0, 1}, {&vx, &still, &still}, {true}, comm), InputError);
+  const auto unused = contact_row_derivatives(constraints, {0, 1}, {&vx, &still, &still}, {false}, comm);
+  ASSERT_EQ(unused.size(), 1u);
+  EXPECT_FALSE(unused[0].entries.empty());  // computed all the same, for whoever would read it
 }
 
 }  // namespace

@@ -9,7 +9,8 @@
 namespace ffeti {
 std::vector<RowDerivative> contact_row_derivatives(const Constraints& constraints,
                                                    const std::vector<int>& global_ids,
-                                                   const NodeVelocities& velocities, const Communicator& comm) {
+                                                   const NodeVelocities& velocities, const std::vector<bool>& in_use,
+                                                   const Communicator& comm) {
   std::vector<RowDerivative> result(constraints.geometry.size());
   bool moves_here = false;
   for (const auto* field : velocities)
@@ -72,6 +73,7 @@ std::vector<RowDerivative> contact_row_derivatives(const Constraints& constraint
   for (const NodeMotion& v : velocity)
     for (const Point3& w : v) fastest = std::max(fastest, std::hypot(w[0], w[1], w[2]));
   for (size_t row = 0; row < result.size(); ++row) {
+    if (!in_use[row]) continue;
     const ContactRowGeometry& g = *constraints.geometry[row];
     NodeMotion significant = velocity[row];
     for (Point3& w : significant)
