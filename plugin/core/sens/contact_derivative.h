@@ -26,10 +26,13 @@ using NodeVelocities = std::array<const std::vector<std::vector<double>>*, 3>;
 /// the row's closed form (ContactRowGeometry::row_at of its kind) with a step of 1e-6 of
 /// its length() (truncation ~1e-12, round-off ~1e-10 relative): no assembly. Rows without
 /// moving nodes (node to node) do not depend on positions; kinds without a derivative are
-/// refused before (capability_table()). Collective: the velocities of the contact nodes are
-/// gathered, so every rank gets every row.
+/// refused before (capability_table()). A row in use (`in_use`, per inequality row: the
+/// sensitivity keeps it or it carries a force) whose motion gives no two-sided derivative
+/// (ContactRowGeometry::unverified_motion) is refused; the others' derivatives go unused.
+/// Collective: the velocities of the contact nodes are gathered, so every rank gets every row.
 std::vector<RowDerivative> contact_row_derivatives(const Constraints& constraints,
                                                    const std::vector<int>& global_ids,
-                                                   const NodeVelocities& velocities, const Communicator& comm);
+                                                   const NodeVelocities& velocities, const std::vector<bool>& in_use,
+                                                   const Communicator& comm);
 
 }  // namespace ffeti

@@ -162,8 +162,13 @@ SensitivityProblem::DirectionData SensitivityProblem::direction_data(const Desig
   const Constraints& full = problem_.constraints();
   const auto& inputs = problem_.inputs();
   const auto& ids = problem_.global_ids();
-  const std::vector<RowDerivative> rows =
-      contact_row_derivatives(full, ids, {&d.velocity_x, &d.velocity_y, &d.velocity_z}, problem_.communicator());
+  // The rows whose derivatives enter: the kept ones (c~) and those carrying a force (B''lambda).
+  std::vector<bool> in_use(full.geometry.size(), false);
+  for (size_t r = 0; r < in_use.size(); ++r) in_use[r] = lambda_[full.equality_rows + static_cast<int>(r)] != 0;
+  for (size_t j = static_cast<size_t>(full.equality_rows); j < kept_.size(); ++j)
+    in_use[static_cast<size_t>(kept_[j] - full.equality_rows)] = true;
+  const std::vector<RowDerivative> rows = contact_row_derivatives(
+      full, ids, {&d.velocity_x, &d.velocity_y, &d.velocity_z}, in_use, problem_.communicator());
   std::map<int, size_t> local_index;
   for (size_t k = 0; k < ids.size(); ++k) local_index[ids[k]] = k;
 

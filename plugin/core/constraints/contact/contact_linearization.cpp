@@ -57,23 +57,22 @@ std::array<double, 3> closest_point_weights(const Point3& s, const Point3& a, co
   return {1 - v - w, v, w};
 }
 
+std::array<double, 3> plane_weights(const Point3& s, const Point3& a, const Point3& b, const Point3& c) {
+  // The normal equations of ab, ac for the projection p - a = w_b ab + w_c ac.
+  const Point3 ab = minus(b, a), ac = minus(c, a), as = minus(s, a);
+  const double d00 = dot(ab, ab), d01 = dot(ab, ac), d11 = dot(ac, ac), d20 = dot(as, ab), d21 = dot(as, ac);
+  const double denominator = d00 * d11 - d01 * d01;
+  const double wb = (d11 * d20 - d01 * d21) / denominator, wc = (d00 * d21 - d01 * d20) / denominator;
+  return {1 - wb - wc, wb, wc};
+}
+
 LinearizedFaceRow node_to_face_row(const Point3& s, const Point3& a, const Point3& b, const Point3& c,
                                    bool clamp) {
   const Point3 ab = minus(b, a), ac = minus(c, a);
   Point3 n = cross(ab, ac);
   const double length = std::sqrt(dot(n, n));
   for (double& component : n) component /= length;
-  std::array<double, 3> w{};
-  if (clamp) {
-    w = closest_point_weights(s, a, b, c);
-  } else {  // barycentric weights of the projection on the plane (the normal equations of ab, ac)
-    const Point3 as = minus(s, a);
-    const double d00 = dot(ab, ab), d01 = dot(ab, ac), d11 = dot(ac, ac), d20 = dot(as, ab), d21 = dot(as, ac);
-    const double denominator = d00 * d11 - d01 * d01;
-    w[1] = (d11 * d20 - d01 * d21) / denominator;
-    w[2] = (d00 * d21 - d01 * d20) / denominator;
-    w[0] = 1 - w[1] - w[2];
-  }
+  const std::array<double, 3> w = clamp ? closest_point_weights(s, a, b, c) : plane_weights(s, a, b, c);
   Point3 p{};
   for (size_t i = 0; i < 3; ++i) p[i] = w[0] * a[i] + w[1] * b[i] + w[2] * c[i];
   LinearizedFaceRow row{};

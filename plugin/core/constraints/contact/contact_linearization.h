@@ -39,6 +39,9 @@ struct LinearizedFaceRow {
 /// and differentiates the unclamped formula (p the projection on the triangle's plane).
 LinearizedFaceRow node_to_face_row(const Point3& s, const Point3& a, const Point3& b, const Point3& c,
                                    bool clamp = true);
+/// The barycentric weights (w_a, w_b, w_c) of s's projection on the plane of triangle a, b, c:
+/// negative outside the triangle (a row's derivative keeps them unclamped).
+std::array<double, 3> plane_weights(const Point3& s, const Point3& a, const Point3& b, const Point3& c);
 /// The closest point of triangle a, b, c to s as barycentric weights (w_a, w_b, w_c).
 std::array<double, 3> closest_point_weights(const Point3& s, const Point3& a, const Point3& b, const Point3& c);
 

@@ -59,8 +59,9 @@ class ContactRowGeometry {
   /// step's state (gap 0): one in a plane problem, two in three dimensions along
   /// tangent_pair(n) of the row's normal n, t1 then t2 (their multipliers form one disc).
   virtual std::vector<RowAt> slip_rows() const = 0;
-  /// Why the derivative of this row along `velocities` is not to be trusted yet, or "" when
-  /// it is: the sensitivities refuse such a motion rather than answer wrongly.
+  /// Why the derivative of this row along `velocities` is not the cost's (one-sided: the
+  /// pairing would change on one side), or "" when it is: the sensitivities refuse such a
+  /// motion of a row they use rather than answer wrongly.
   virtual std::string unverified_motion(const NodeMotion& /*velocities*/) const { return ""; }
 
  private:

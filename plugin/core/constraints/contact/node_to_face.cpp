@@ -8,6 +8,18 @@
 #include <cmath>
 
 namespace ffeti {
+namespace {
+
+/// A barycentric weight this close to 0 puts a point on the triangle's boundary.
+constexpr double kEdge = 1e-9;
+
+/// s projects along the face's normal inside the triangle (its edges included).
+bool over_face(const Point3& s, const std::array<Point3, 3>& corners) {
+  const std::array<double, 3> w = plane_weights(s, corners[0], corners[1], corners[2]);
+  return *std::min_element(w.begin(), w.end()) >= -kEdge;
+}
+
+}  // namespace
 
 RowAt FaceGeometry::row_at(const NodeMotion& v, double t) const {
   const LinearizedFaceRow r = node_to_face_row(moved(slave_position(), v[0], t), moved(corners[0], v[1], t),
@@ -18,13 +30,33 @@ RowAt FaceGeometry::row_at(const NodeMotion& v, double t) const {
 }
 
 std::string FaceGeometry::unverified_motion(const NodeMotion& v) const {
-  const auto moves = [&](size_t node) { return v[node][0] != 0 || v[node][1] != 0 || v[node][2] != 0; };
-  if (!moves(0) || !(moves(1) || moves(2) || moves(3))) return "";
-  const std::array<double, 3> w = closest_point_weights(slave_position(), corners[0], corners[1], corners[2]);
-  if (*std::max_element(w.begin(), w.end()) > 1 - 1e-9) return "";  // over a corner: matching faces
-  return "the slave node and its master face both move, the slave not over a corner of the face (non-matching "
-         "faces): such a row's derivative was measured 7 % off finite differences and is not trusted yet; move "
-         "one side of the interface only, or use matching faces there";
+  double speed = 0;
+  for (const Point3& w : v) speed = std::max(speed, std::hypot(w[0], w[1], w[2]));
+  if (speed == 0) return "";
+  const Point3& s = slave_position();
+  const std::array<double, 3> w = plane_weights(s, corners[0], corners[1], corners[2]);
+  if (*std::min_element(w.begin(), w.end()) >= kEdge) return "";  // over the face's interior
+  if (*std::min_element(w.begin(), w.end()) < -kEdge)
+    return "the slave node lies beyond the edges of its master face (its row projects it on the face's boundary, "
+           "whose motion the derivative does not follow): give master faces that cover the slave nodes, or keep "
+           "this row's nodes still";
+  // On an edge or a corner: the pairing holds on both sides of the design only while the slave
+  // moves along the face's boundary, its zero weights staying zero. Moving across, it passes to
+  // the neighbouring face on one side: the gradient has two one-sided values, and the row's
+  // derivative is one of them.
+  const double step = 1e-6 * length() / speed;
+  const auto at = [&](double t) {
+    return plane_weights(moved(s, v[0], t), moved(corners[0], v[1], t), moved(corners[1], v[2], t),
+                         moved(corners[2], v[3], t));
+  };
+  const std::array<double, 3> plus = at(step), minus = at(-step);
+  for (size_t k = 0; k < 3; ++k)
+    if (w[k] < kEdge && std::abs(plus[k] - minus[k]) / (2 * step) > 1e-6 * speed / length())
+      return "the slave node lies on an edge or a corner of its master face and moves across it relative to the "
+             "face (the slave's velocity differs from the face's there): on one side of the design it pairs with "
+             "the neighbouring face, so the gradient has no two-sided value; give meshes whose slave nodes lie "
+             "inside the master faces, or a motion that moves this slave and its face alike";
+  return "";
 }
 
 double FaceGeometry::length() const {
@@ -53,20 +85,6 @@ std::vector<RowAt> FaceGeometry::slip_rows() const {
   }
   return rows;
 }
-
-namespace {
-
-/// s projects along the face's normal inside the triangle (its edges included).
-bool over_face(const Point3& s, const std::array<Point3, 3>& corners) {
-  const Point3 u = minus(corners[1], corners[0]), v = minus(corners[2], corners[0]), w = minus(s, corners[0]);
-  const double uu = dot(u, u), uv = dot(u, v), vv = dot(v, v), wu = dot(w, u), wv = dot(w, v);
-  const double det = uu * vv - uv * uv;
-  const double beta = (vv * wu - uv * wv) / det, gamma = (uu * wv - uv * wu) / det;
-  constexpr double kEdge = 1e-9;
-  return beta >= -kEdge && gamma >= -kEdge && beta + gamma <= 1 + kEdge;
-}
-
-}  // namespace
 
 bool NodeToFace::selected(const ContactRecords& in) const {
   return !in.faces.empty() && std::none_of(in.faces.begin(), in.faces.end(), [](const FaceRecord& f) { return f.slave; });

@@ -25,8 +25,9 @@ class FaceGeometry final : public ContactRowGeometry {
   /// t.(u_s - sum_i w_i u_i) along tangent_pair(n) of the face's normal, w the weights of
   /// the slave's closest point on the face.
   std::vector<RowAt> slip_rows() const override;
-  /// Refuses the slave and the face moving together while the slave is not over a corner
-  /// (non-matching faces): measured 7 % off finite differences, cause not found yet.
+  /// Refuses a motion whose derivative is one-sided: the slave on an edge or a corner of its
+  /// face moving across it relative to the face (it changes face on one side), or a slave
+  /// beyond the face's edges (its clamped projection is not what row_at differentiates).
   std::string unverified_motion(const NodeMotion& velocities) const override;
 
   const std::array<DofRef, 3> slave;  ///< the slave's x, y, z dofs
