@@ -71,6 +71,10 @@ std::vector<RowDerivative> contact_row_derivatives(const Constraints& constraint
       }
   }
 
+  double fastest = 0;
+  for (const NodeMotion& v : velocity)
+    for (const Point3& w : v) fastest = std::max(fastest, std::hypot(w[0], w[1], w[2]));
+  for (NodeMotion& v : velocity) v.reference_speed = fastest;
   for (size_t row = 0; row < result.size(); ++row) {
     const ContactRowGeometry& g = *constraints.geometry[row];
     const std::string reason = g.unverified_motion(velocity[row]);  // the same on every rank

@@ -39,6 +39,9 @@ class NodeMotion {
   Point3& operator[](size_t node) { return velocities_.at(node); }
   std::vector<Point3>::const_iterator begin() const { return velocities_.begin(); }
   std::vector<Point3>::const_iterator end() const { return velocities_.end(); }
+  /// The fastest node of the whole design (every row's), 0 if not known: a row whose own
+  /// nodes move by round-off only (a velocity field that vanishes there) is judged against it.
+  double reference_speed = 0;
 
  private:
   std::vector<Point3> velocities_;
