@@ -28,8 +28,9 @@ TEST(Capabilities, OneEntryPerKindAndPerRegisteredDiscretization) {
 }
 
 TEST(Capabilities, OneMessageFormNamingTheDimensionWhereTheFeatureWorksInTheOther) {
-  EXPECT_EQ(unsupported(ContactKind::mortar, Feature::sensitivity, 3),
-            "mortar contact does not support sensitivity yet (see the capability table in docs/reference.md)");
+  EXPECT_EQ(unsupported(ContactKind::mortar, Feature::sensitivity_with_friction, 3),
+            "mortar contact does not support sensitivity with friction yet (see the capability table in "
+            "docs/reference.md)");
   EXPECT_EQ(unsupported(ContactKind::node_to_node, Feature::ffeti_solve, 3),
             "node-to-node contact does not support ffeti-solve in three dimensions yet (see the capability table in "
             "docs/reference.md)");
@@ -37,10 +38,11 @@ TEST(Capabilities, OneMessageFormNamingTheDimensionWhereTheFeatureWorksInTheOthe
             "node-to-face contact does not support plane problems yet (see the capability table in docs/reference.md)");
   EXPECT_TRUE(supports(ContactKind::node_to_segment, Feature::friction, 2));
   EXPECT_FALSE(supports(ContactKind::node_to_segment, Feature::rows, 3));
-  EXPECT_FALSE(supports(ContactKind::mortar, Feature::sensitivity, 3));
+  EXPECT_TRUE(supports(ContactKind::mortar, Feature::sensitivity, 3));
+  EXPECT_FALSE(supports(ContactKind::mortar, Feature::sensitivity_with_friction, 3));
   EXPECT_NO_THROW(require(ContactKind::obstacle, Feature::friction, 2, "friction"));
-  EXPECT_EQ(refusal([] { require(ContactKind::mortar, Feature::sensitivity, 3, "P"); }),
-            "P: " + unsupported(ContactKind::mortar, Feature::sensitivity, 3));
+  EXPECT_EQ(refusal([] { require(ContactKind::mortar, Feature::sensitivity_with_friction, 3, "P"); }),
+            "P: " + unsupported(ContactKind::mortar, Feature::sensitivity_with_friction, 3));
 }
 
 TEST(Capabilities, FrictionWorksWhereverAKindHasRows) {

@@ -51,8 +51,8 @@ const std::vector<KindCapabilities>& capability_table() {
       {ContactKind::ball, "ball", "contactSlave, obstacleBall", kBoth, kBoth, kBoth, kNone, kBoth, kNone, kPlane},
       {ContactKind::node_to_face, "node-to-face", "contactSlave, contactFaces", kSolid, kSolid, kSolid, kNone, kSolid,
        kSolid, kNone},
-      {ContactKind::mortar, "mortar", "contactSlaveFaces, contactFaces", kSolid, kSolid, kNone, kNone, kSolid, kNone,
-       kNone},
+      {ContactKind::mortar, "mortar", "contactSlaveFaces, contactFaces", kSolid, kSolid, kSolid, kNone, kSolid,
+       kNone, kNone},
   };
   return table;
 }

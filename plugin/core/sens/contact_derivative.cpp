@@ -41,8 +41,13 @@ std::vector<RowDerivative> contact_row_derivatives(const Constraints& constraint
     }
   }
   const std::vector<double> all = comm.allgather(packed);
-  std::vector<NodeMotion> velocity(result.size());
-  std::vector<std::array<int, 4>> missing(result.size(), {-1, -1, -1, -1});  // subdomain of a node without velocities
+  std::vector<NodeMotion> velocity;
+  std::vector<std::vector<int>> missing;  // per node, the subdomain of a node without velocities (or -1)
+  for (const auto& g : constraints.geometry) {
+    const size_t nodes = g->moving_nodes().size();
+    velocity.emplace_back(nodes);
+    missing.emplace_back(nodes, -1);
+  }
   for (size_t p = 0; p + 6 <= all.size(); p += 6) {
     const auto row = static_cast<size_t>(all[p]), node = static_cast<size_t>(all[p + 1]);
     velocity[row][node] = {all[p + 2], all[p + 3], all[p + 4]};
@@ -72,12 +77,16 @@ std::vector<RowDerivative> contact_row_derivatives(const Constraints& constraint
   double fastest = 0;
   for (const NodeMotion& v : velocity)
     for (const Point3& w : v) fastest = std::max(fastest, std::hypot(w[0], w[1], w[2]));
+  for (NodeMotion& v : velocity) v.reference_speed = fastest;
   for (size_t row = 0; row < result.size(); ++row) {
     if (!in_use[row]) continue;
     const ContactRowGeometry& g = *constraints.geometry[row];
-    NodeMotion significant = velocity[row];
-    for (Point3& w : significant)
-      if (std::hypot(w[0], w[1], w[2]) <= 1e-12 * fastest) w = {0, 0, 0};
+    NodeMotion significant(g.moving_nodes().size());
+    significant.reference_speed = fastest;
+    for (size_t node = 0; node < g.moving_nodes().size(); ++node) {
+      const Point3& w = velocity[row][node];
+      if (std::hypot(w[0], w[1], w[2]) > 1e-12 * fastest) significant[node] = w;
+    }
     const std::string reason = g.unverified_motion(significant);  // the same on every rank
     if (!reason.empty()) {
       const Point3& s = g.slave_position();
@@ -88,10 +97,8 @@ std::vector<RowDerivative> contact_row_derivatives(const Constraints& constraint
   for (size_t row = 0; row < result.size(); ++row) {
     const ContactRowGeometry& g = *constraints.geometry[row];
     const auto& v = velocity[row];
-    double speed = 0;
-    for (const Point3& w : v) speed = std::max(speed, std::hypot(w[0], w[1], w[2]));
-    if (speed == 0) continue;
-    const double step = 1e-6 * g.length() / speed;
+    const double step = difference_step(g, v);
+    if (step == 0) continue;
     const RowAt plus = g.row_at(v, step), minus = g.row_at(v, -step);
     RowDerivative& d = result[row];
     for (size_t k = 0; k < plus.dofs.size(); ++k) {

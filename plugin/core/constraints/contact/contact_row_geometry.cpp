@@ -1,5 +1,8 @@
 #include "constraints/contact/contact_row_geometry.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace ffeti {
 
 std::vector<Point3> slip_directions(const Point3& n, bool three_d) {
@@ -19,6 +22,12 @@ std::vector<RowAt> rigid_slip_rows(const std::array<DofRef, 3>& slave, const Poi
 std::array<Point3, 2> ContactRowGeometry::tangents() const {
   const std::vector<Point3> t = slip_directions(normal(), three_d_);
   return {t[0], t.size() > 1 ? t[1] : Point3{0, 0, 0}};
+}
+
+double difference_step(const ContactRowGeometry& g, const NodeMotion& velocities) {
+  double speed = 0;
+  for (const Point3& w : velocities) speed = std::max(speed, std::hypot(w[0], w[1], w[2]));
+  return speed == 0 ? 0.0 : 1e-6 * g.length() / speed;
 }
 
 }  // namespace ffeti

@@ -7,6 +7,7 @@
 #include "constraints/contact/point3.h"
 
 #include <array>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -23,8 +24,28 @@ struct RowAt {
   double gap = 0;
 };
 
-/// The velocities of a row's moving nodes, in moving_nodes() order (at most four).
-using NodeMotion = std::array<Point3, 4>;
+/// The velocities of a row's moving nodes, in moving_nodes() order; a node past the end
+/// stands still (so {} is no motion). Any number of nodes: a mortar row moves with every
+/// corner of its slave faces and of the master faces they overlap.
+class NodeMotion {
+ public:
+  NodeMotion() = default;
+  NodeMotion(std::initializer_list<Point3> velocities) : velocities_(velocities) {}
+  explicit NodeMotion(size_t nodes) : velocities_(nodes, Point3{0, 0, 0}) {}
+  const Point3& operator[](size_t node) const {
+    static const Point3 still{0, 0, 0};
+    return node < velocities_.size() ? velocities_[node] : still;
+  }
+  Point3& operator[](size_t node) { return velocities_.at(node); }
+  std::vector<Point3>::const_iterator begin() const { return velocities_.begin(); }
+  std::vector<Point3>::const_iterator end() const { return velocities_.end(); }
+  /// The fastest node of the whole design (every row's), 0 if not known: a row whose own
+  /// nodes move by round-off only (a velocity field that vanishes there) is judged against it.
+  double reference_speed = 0;
+
+ private:
+  std::vector<Point3> velocities_;
+};
 
 class ContactRowGeometry {
  public:
@@ -80,6 +101,11 @@ std::vector<Point3> slip_directions(const Point3& n, bool three_d);
 /// at the slave: the surface does not move. `slave`: its x, y, z dofs (z {-1, -1} in a plane
 /// problem).
 std::vector<RowAt> rigid_slip_rows(const std::array<DofRef, 3>& slave, const Point3& n, bool three_d);
+
+/// The step of the central differences of `g`'s row along `velocities`: the fastest node
+/// moves by 1e-6 of g.length() (truncation ~1e-12, round-off ~1e-10 relative); 0 when
+/// nothing moves.
+double difference_step(const ContactRowGeometry& g, const NodeMotion& velocities);
 
 inline Point3 moved(const Point3& p, const Point3& velocity, double t) {
   return {p[0] + t * velocity[0], p[1] + t * velocity[1], p[2] + t * velocity[2]};

@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <stdexcept>
 #include <tuple>
 
 namespace ffeti {
@@ -46,28 +45,37 @@ bool by_identity(const FaceRecord& a, const FaceRecord& b) {
   return std::tie(a.subdomain, a.dofs) < std::tie(b.subdomain, b.dofs);
 }
 
-/// Adds one (slave face, master face) pair's integrals to the rows of the slave's corners.
+/// Adds one (slave face, master face) pair's integrals to the row of the slave's corner j.
 /// `friction`: also the jump.
-void add_pair(const FaceRecord& slave, const FaceRecord& master, const MortarIntegrals& in,
-              const std::array<size_t, 3>& corner_rows, bool friction, std::vector<MortarRow>& pending) {
+void add_pair(const FaceRecord& slave, const FaceRecord& master, const MortarIntegrals& in, size_t j, bool friction,
+              MortarRow& row) {
   const Point3& n = in.normal;
-  for (size_t j = 0; j < 3; ++j) {
-    MortarRow& row = pending[corner_rows[j]];
-    for (size_t k = 0; k < 3; ++k) {
-      row.weight += in.D[j][k];
-      for (size_t i = 0; i < 3; ++i) row.normal[i] += in.D[j][k] * n[i];
-      for (size_t i = 0; i < 3; ++i) {
-        row.coefficients[{slave.subdomain, slave.dofs[3 * k + i]}] -= in.D[j][k] * n[i];
-        row.coefficients[{master.subdomain, master.dofs[3 * k + i]}] += in.M[j][k] * n[i];
-        if (!friction) continue;
-        auto& s = row.jump[{slave.subdomain, slave.dofs[3 * k + i]}];
-        auto& m = row.jump[{master.subdomain, master.dofs[3 * k + i]}];
-        s = {static_cast<int>(i), s.second + in.D[j][k]};
-        m = {static_cast<int>(i), m.second - in.M[j][k]};
-      }
+  for (size_t k = 0; k < 3; ++k) {
+    row.weight += in.D[j][k];
+    for (size_t i = 0; i < 3; ++i) row.normal[i] += in.D[j][k] * n[i];
+    for (size_t i = 0; i < 3; ++i) {
+      row.coefficients[{slave.subdomain, slave.dofs[3 * k + i]}] -= in.D[j][k] * n[i];
+      row.coefficients[{master.subdomain, master.dofs[3 * k + i]}] += in.M[j][k] * n[i];
+      if (!friction) continue;
+      auto& s = row.jump[{slave.subdomain, slave.dofs[3 * k + i]}];
+      auto& m = row.jump[{master.subdomain, master.dofs[3 * k + i]}];
+      s = {static_cast<int>(i), s.second + in.D[j][k]};
+      m = {static_cast<int>(i), m.second - in.M[j][k]};
     }
-    row.gap += dot(n, in.G[j]);
   }
+  row.gap += dot(n, in.G[j]);
+}
+
+/// The slave triangle scaled by 1 + 1e-4 about its centroid: its edges move out by far more
+/// than the differences' step (1e-6 of the shortest edge), so a master it meets overlaps it
+/// or may come to overlap it within that step.
+Triangle3 enlarged(const Triangle3& t) {
+  Triangle3 out = t;
+  for (size_t d = 0; d < 3; ++d) {
+    const double centre = (t[0][d] + t[1][d] + t[2][d]) / 3;
+    for (Point3& p : out) p[d] = centre + (1 + 1e-4) * (p[d] - centre);
+  }
+  return out;
 }
 
 }  // namespace
@@ -77,9 +85,101 @@ Point3 MortarGeometry::normal() const {
   return {weighted_normal[0] / length, weighted_normal[1] / length, weighted_normal[2] / length};
 }
 
-RowAt MortarGeometry::row_at(const NodeMotion&, double) const {
-  // No caller: moving_nodes() is empty and the capability table refuses mortar's sensitivity.
-  throw std::logic_error("mortar rows have no motion derivative yet");
+MortarGeometry::MortarGeometry(DofRef slave, const Point3& s, std::shared_ptr<const MortarSurface> surface,
+                               std::vector<MortarPair> pairs, double snap, std::vector<JumpEntry> jump,
+                               const Point3& weighted_normal)
+    : ContactRowGeometry(ContactKind::mortar, slave, s, true),
+      jump(std::move(jump)),
+      weighted_normal(weighted_normal),
+      surface_(std::move(surface)),
+      pairs_(std::move(pairs)),
+      length_(INFINITY) {
+  std::map<DofRef, size_t> node_of;
+  std::map<NodeKey, int> physical_of;
+  const auto node = [&](const FaceRecord& f, size_t corner) {
+    const DofRef x{f.subdomain, f.dofs[3 * corner]};
+    const auto [it, added] = node_of.emplace(x, nodes_.size());
+    if (added) {
+      const Point3& p = f.corners[corner];
+      const NodeKey key{f.body, std::llround(p[0] / snap), std::llround(p[1] / snap), std::llround(p[2] / snap)};
+      physical_.push_back(physical_of.emplace(key, static_cast<int>(physical_of.size())).first->second);
+      nodes_.push_back(x);
+    }
+    return it->second;
+  };
+  for (const MortarPair& pair : pairs_) {
+    const FaceRecord &f = surface_->slaves[static_cast<size_t>(pair.slave)],
+                     &m = surface_->masters[static_cast<size_t>(pair.master)];
+    std::array<size_t, 6> corners{};
+    for (size_t c = 0; c < 3; ++c) corners[c] = node(f, c);
+    for (size_t c = 0; c < 3; ++c) corners[3 + c] = node(m, c);
+    pair_nodes_.push_back(corners);
+    for (const FaceRecord* face : {&f, &m})
+      for (size_t c = 0; c < 3; ++c) {
+        const Point3 edge = minus(face->corners[(c + 1) % 3], face->corners[c]);
+        length_ = std::min(length_, std::sqrt(dot(edge, edge)));
+      }
+  }
+}
+
+RowAt MortarGeometry::row_at(const NodeMotion& v, double t) const {
+  MortarRow row;
+  for (size_t p = 0; p < pairs_.size(); ++p) {
+    const MortarPair& pair = pairs_[p];
+    const FaceRecord &f = surface_->slaves[static_cast<size_t>(pair.slave)],
+                     &m = surface_->masters[static_cast<size_t>(pair.master)];
+    Triangle3 slave_at, master_at;
+    for (size_t c = 0; c < 3; ++c) {
+      slave_at[c] = moved(f.corners[c], v[pair_nodes_[p][c]], t);
+      master_at[c] = moved(m.corners[c], v[pair_nodes_[p][3 + c]], t);
+    }
+    // Every pair adds all its dofs, zero or not: the rows at t and -t list the same dofs.
+    add_pair(f, m, integrate_mortar_pair(slave_at, master_at), static_cast<size_t>(pair.corner), false, row);
+  }
+  RowAt out;
+  for (const auto& [dof, coefficient] : row.coefficients) {
+    out.dofs.push_back({dof.first, dof.second});
+    out.coefficients.push_back(coefficient / row.weight);
+  }
+  out.gap = row.gap / row.weight;  // without the node's gap (contactGap), which does not move
+  return out;
+}
+
+std::string MortarGeometry::unverified_motion(const NodeMotion& v) const {
+  const double step = difference_step(*this, v);
+  if (step == 0) return "";
+  const RowAt minus = row_at(v, -step), centre = row_at(v, 0), plus = row_at(v, step);
+  // Second differences per physical node and component (the subdomains' copies of a node
+  // share its force through the gluing rows, so a kink in how the copies split it is no
+  // kink of the problem): ~step^2 where the row is smooth, ~step times the jump of the
+  // slope at a kink.
+  std::map<DofRef, std::pair<int, int>> node_component;  // dof -> (physical node, component)
+  for (size_t p = 0; p < pairs_.size(); ++p) {
+    const MortarPair& pair = pairs_[p];
+    const FaceRecord* faces[2] = {&surface_->slaves[static_cast<size_t>(pair.slave)],
+                                  &surface_->masters[static_cast<size_t>(pair.master)]};
+    for (size_t side = 0; side < 2; ++side)
+      for (size_t c = 0; c < 3; ++c)
+        for (int i = 0; i < 3; ++i)
+          node_component[{faces[side]->subdomain, faces[side]->dofs[3 * c + static_cast<size_t>(i)]}] = {
+              physical_[pair_nodes_[p][3 * side + c]], i};
+  }
+  std::map<std::pair<int, int>, double> second;
+  for (size_t k = 0; k < centre.dofs.size(); ++k)
+    second[node_component.at(centre.dofs[k])] += plus.coefficients[k] - 2 * centre.coefficients[k] + minus.coefficients[k];
+  double worst = 0;
+  for (const auto& entry : second) worst = std::max(worst, std::abs(entry.second));
+  // Coefficients are of order 1 and the gap changes by the motion: a kink whose slope jumps
+  // by 1 % of those scales is caught, a smooth row's 1e-12 is not. Scales are those of the
+  // design's fastest node: a row moving by round-off only (its velocities ~1e-17 where the
+  // field vanishes) changes the derivative by nothing, kink or not.
+  const double speed = 1e-6 * length_ / step;
+  const double kink = 1e-8 * std::max(1.0, v.reference_speed / speed);
+  if (worst <= kink && std::abs(plus.gap - 2 * centre.gap + minus.gap) <= kink * length_) return "";
+  return "the mortar row has a kink along this motion (one-sided derivatives differ: a slave face's edge lies on "
+         "a master face's edge where the master surface bends or ends, and the motion moves it across): its "
+         "derivative is not defined; move the faces along the edge or the surface without bending there, or mesh "
+         "the slave and master sides so that their edges do not coincide";
 }
 
 std::vector<RowAt> MortarGeometry::slip_rows() const {
@@ -109,7 +209,8 @@ void Mortar::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
   if (std::all_of(faces.begin(), faces.end(), [](const FaceRecord& f) { return f.slave; }))
     throw InputError("contactSlaveFaces: mortar contact needs the master faces too (contactFaces=)");
   // Sorted, so that the sums and the rows do not depend on how faces are spread over ranks.
-  std::vector<FaceRecord> slaves, masters;
+  const auto surface = std::make_shared<MortarSurface>();
+  std::vector<FaceRecord>&slaves = surface->slaves, &masters = surface->masters;
   for (const FaceRecord& f : faces) (f.slave ? slaves : masters).push_back(f);
   std::sort(slaves.begin(), slaves.end(), by_identity);
   std::sort(masters.begin(), masters.end(), by_identity);
@@ -135,8 +236,10 @@ void Mortar::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
                        "one or the other on every rank");
 
   std::vector<MortarRow> pending(nodes.size());
+  std::vector<std::vector<MortarPair>> pairs(nodes.size());  // per row, for its motion derivative
   std::vector<double> full_weight(nodes.size(), 0.0);  // int phi_j over all of its slave faces
-  for (const FaceRecord& f : slaves) {
+  for (size_t slave_index = 0; slave_index < slaves.size(); ++slave_index) {
+    const FaceRecord& f = slaves[slave_index];
     std::array<size_t, 3> corner_rows{};
     for (size_t c = 0; c < 3; ++c) corner_rows[c] = node_at.at(key(f.body, f.corners[c]));  // corners are slave dofs
     const Point3 n = unit_normal(f.corners);
@@ -161,11 +264,19 @@ void Mortar::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
     grid.for_each_in_box(lo, hi, [&](const FaceRecord& m) {
       if (m.body == f.body || dot(unit_normal(m.corners), n) >= 0) return;  // only masters facing the slave
       const MortarIntegrals in = integrate_mortar_pair(f.corners, m.corners);
-      if (!(in.area > 0)) return;
+      // A pair that only touches (a shared edge or corner) adds nothing, but a motion may
+      // make it overlap: the rows' derivatives keep it.
+      const bool overlaps = in.area > 0;
+      const MortarIntegrals near = overlaps ? in : integrate_mortar_pair(enlarged(f.corners), m.corners);
+      if (!(near.area > 0)) return;
       double gap = 0;
-      for (const Point3& g : in.G) gap += dot(in.normal, g);
-      if (std::abs(gap / in.area) > reach) return;  // its mean normal gap
-      add_pair(f, m, in, corner_rows, contact.has_friction(), pending);
+      for (const Point3& g : near.G) gap += dot(near.normal, g);
+      if (std::abs(gap / near.area) > reach) return;  // its mean normal gap
+      const int master_index = static_cast<int>(&m - masters.data());
+      for (size_t j = 0; j < 3; ++j) {
+        pairs[corner_rows[j]].push_back({static_cast<int>(slave_index), master_index, static_cast<int>(j)});
+        if (overlaps) add_pair(f, m, in, j, contact.has_friction(), pending[corner_rows[j]]);
+      }
     });
   }
 
@@ -178,9 +289,9 @@ void Mortar::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
     std::vector<JumpEntry> jump;  // divided by int phi_j like the row
     for (const auto& [dof, share] : pending_row.jump)
       if (share.second != 0) jump.push_back({{dof.first, dof.second}, share.first, share.second / pending_row.weight});
-    const auto geometry = std::make_shared<const MortarGeometry>(DofRef{node.x_dof->subdomain, node.x_dof->dof},
-                                                                 Point3{node.x_dof->x, node.x_dof->y, node.x_dof->z},
-                                                                 std::move(jump), pending_row.normal);
+    const auto geometry = std::make_shared<const MortarGeometry>(
+        DofRef{node.x_dof->subdomain, node.x_dof->dof}, Point3{node.x_dof->x, node.x_dof->y, node.x_dof->z}, surface,
+        std::move(pairs[j]), snap, std::move(jump), pending_row.normal);
     // Divided by int phi_j, so that the multiplier is a force like the other rows'.
     Row row{{}, pending_row.gap / pending_row.weight + node.x_dof->gap, RowKind::contact, false, geometry,
             -1, node.x_dof->friction};

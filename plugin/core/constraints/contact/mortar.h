@@ -6,6 +6,9 @@
 #include "constraints/contact/contact_discretization.h"
 #include "constraints/contact/contact_row_geometry.h"
 
+#include "constraints/constraint_records.h"
+
+#include <memory>
 #include <utility>
 
 namespace ffeti {
@@ -17,25 +20,56 @@ struct JumpEntry {
   double coefficient;
 };
 
-/// A mortar row sums over the pairs of faces its slave's faces overlap; its motion
-/// derivative is not derived (the capability table refuses the sensitivity analysis).
+/// The faces of a mortar problem, sorted by (subdomain, dofs): its rows name their faces by
+/// index into these lists (shared by all rows).
+struct MortarSurface {
+  std::vector<FaceRecord> slaves, masters;
+};
+
+/// One (slave face, master face) pair of a row: the faces' indices in the MortarSurface, and
+/// the row's node as a corner of the slave face.
+struct MortarPair {
+  int slave, master, corner;
+};
+
+/// A mortar row sums over the pairs of faces its slave's faces overlap (or touch: a motion
+/// may make them overlap). Its motion derivative re-integrates those pairs with their
+/// corners moved (docs/algorithms.md, "Mortar", sensitivities).
 class MortarGeometry final : public ContactRowGeometry {
  public:
   /// With friction: `jump`, the row's weighted jump (1/w_j) int phi_j (u_s - u_m) as entries
   /// per dof and component; `weighted_normal`, its pairs' normals weighted by int phi_j.
-  MortarGeometry(DofRef slave, const Point3& s, std::vector<JumpEntry> jump, const Point3& weighted_normal)
-      : ContactRowGeometry(ContactKind::mortar, slave, s, true), jump(std::move(jump)), weighted_normal(weighted_normal) {}
+  /// `snap`: the distance within which corners of different subdomains are one node.
+  MortarGeometry(DofRef slave, const Point3& s, std::shared_ptr<const MortarSurface> surface,
+                 std::vector<MortarPair> pairs, double snap, std::vector<JumpEntry> jump,
+                 const Point3& weighted_normal);
 
-  std::vector<DofRef> moving_nodes() const override { return {}; }
+  /// The corners of the row's faces, each subdomain's copy of a node apart: per pair, its
+  /// slave face's corners then its master face's, each node where it first appears.
+  std::vector<DofRef> moving_nodes() const override { return nodes_; }
+  /// Every pair re-integrated with its corners moved, the pairing kept.
   RowAt row_at(const NodeMotion& v, double t) const override;
-  double length() const override { return 1.0; }
+  /// The shortest edge of the row's faces.
+  double length() const override { return length_; }
   /// weighted_normal normalized (a flat contact: the master's normal).
   Point3 normal() const override;
   /// t.(the weighted jump) along tangent_pair(normal) (docs/algorithms.md, "Mortar", friction).
   std::vector<RowAt> slip_rows() const override;
+  /// Refuses a motion along which the row has a kink: its one-sided differences, summed per
+  /// node over the subdomains' copies, disagree (a slave edge on a master edge where the
+  /// master kinks or ends, moving across it).
+  std::string unverified_motion(const NodeMotion& velocities) const override;
 
   const std::vector<JumpEntry> jump;
   const Point3 weighted_normal;
+
+ private:
+  std::shared_ptr<const MortarSurface> surface_;
+  std::vector<MortarPair> pairs_;
+  std::vector<DofRef> nodes_;                        // moving_nodes()
+  std::vector<std::array<size_t, 6>> pair_nodes_;    // per pair, its slave's then its master's corners in nodes_
+  std::vector<int> physical_;                        // per node of nodes_, one index per physical node
+  double length_ = 0;
 };
 
 class Mortar final : public ContactDiscretization {
