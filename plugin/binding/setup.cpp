@@ -1,5 +1,6 @@
 // fetiSetup (the problem's data into the core, which checks it, builds the constraints and
-// factorizes), fetiSetLoads (new loads on the same factorizations) and fetiFree.
+// factorizes), fetiSetLoads (new loads, prescribed values or contact gaps on the same
+// factorizations) and fetiFree.
 #include "binding/arguments.h"
 #include "binding/convert.h"
 #include "binding/functions.h"
@@ -252,7 +253,8 @@ NamedParameters FetiSetup::name_param = named_parameters(
      {"slipBoundField", &typeid(KN<KN<double>>*)}},
     OptionScope::setup);
 
-// ---- fetiSetLoads(P, F, dirichletValues=D): the next load case or load step -----------
+// ---- fetiSetLoads(P, F, dirichletValues=D, contactGap=G): the next load case, load step
+// or gap design -------------------------------------------------------------------------
 class FetiSetLoads : public WithNamedArguments {
  public:
   typedef long Result;
@@ -268,36 +270,45 @@ class FetiSetLoads : public WithNamedArguments {
     return SetAny<long>(guarded("fetiSetLoads", [&] {
       Handle& h = handle(GetAny<long>((*id)(stack)));
       const auto& loads = *GetAny<KN<KN<double>>*>((*loads_in)(stack));
-      const auto* values = optional_pointer<KN<KN<double>>>(nargs[0], stack);
+      const auto* values = optional_pointer<KN<KN<double>>>(nargs[kDirichletValues], stack);
+      const auto* gaps = optional_pointer<KN<KN<double>>>(nargs[kContactGap], stack);
       const int count = h.problem->subdomain_count();
       // One entry per subdomain, as fetiSetup's F; each rank takes its own subdomains' (with
       // all of them handed to the core, a second rank refused the array).
       collectively(h.problem->communicator(), [&] {
-        if (loads.N() != count)
-          throw InputError("F: has " + std::to_string(loads.N()) + " entries for " + std::to_string(count) + " subdomains");
-        if (values && values->N() != count)
-          throw InputError("dirichletValues: has " + std::to_string(values->N()) + " entries for " +
-                           std::to_string(count) + " subdomains");
+        const std::pair<const char*, long> sizes[] = {{"F", loads.N()},
+                                                      {"dirichletValues", values ? values->N() : count},
+                                                      {"contactGap", gaps ? gaps->N() : count}};
+        for (const auto& [name, n] : sizes)
+          if (n != count)
+            throw InputError(std::string(name) + ": has " + std::to_string(n) + " entries for " +
+                             std::to_string(count) + " subdomains");
       });
       std::vector<Vec> f;
-      std::vector<std::vector<double>> prescribed;
+      std::vector<std::vector<double>> prescribed, gap_field;
       for (int s : h.problem->global_ids()) {
         f.push_back(to_vec(loads[s]));
         if (values) prescribed.push_back(to_std((*values)[s]));
+        if (gaps) gap_field.push_back(to_std((*gaps)[s]));
       }
       // With friction new loads are the next load step: the last solve's state is where its
       // slip is measured from (before any solve, the unloaded state still is).
       if (h.problem->has_friction() && h.result) h.problem->start_load_step(*h.result);
       if (values) h.problem->set_dirichlet_values(prescribed);
+      if (gaps) h.problem->set_contact_gaps(gap_field);
       h.problem->set_loads(f);
       h.sensitivity.reset();
       h.result.reset();
       return 0L;
     }));
   }
+
+ private:
+  enum Named { kDirichletValues, kContactGap };
 };
 
-NamedParameters FetiSetLoads::name_param = {{"dirichletValues", &typeid(KN<KN<double>>*)}};
+NamedParameters FetiSetLoads::name_param = {{"dirichletValues", &typeid(KN<KN<double>>*)},
+                                            {"contactGap", &typeid(KN<KN<double>>*)}};
 
 /// Frees the problem behind `id`; the handle stays invalid for the life of the process.
 long feti_free(const long& id) {

@@ -96,5 +96,33 @@ TEST(ConjugateGradient, BlockRunsEachSystemAsOnItsOwn) {
   EXPECT_EQ(block_columns, total);   // finished runs are not multiplied any more
 }
 
+TEST(ConjugateGradient, PreconditionedBlockRunsEachSystemAsOnItsOwn) {
+  // The same with a preconditioner (Jacobi of an operator with a wide diagonal): each column
+  // repeats the preconditioned single run, and takes fewer steps than unpreconditioned.
+  Eigen::MatrixXd A = test::random_spd(60, 1e2, 7);
+  for (int i = 0; i < 60; ++i) A(i, i) *= 1 + 100.0 * i / 59;
+  const Vec inverse_diagonal = A.diagonal().cwiseInverse();
+  const LinearOperator jacobi = [&](const Vec& g, Vec& z) { z = inverse_diagonal.cwiseProduct(g); };
+  const std::vector<Vec> b = {A * Vec::LinSpaced(60, -1, 1), Vec::Ones(60)};
+  const std::vector<StopTest> stop(2, [&](const Vec&, const Vec&, double norm) { return norm <= 1e-10 * 60; });
+  std::vector<Vec> x(b.size(), Vec::Zero(60));
+  const std::vector<CgResult> block = conjugate_gradient_block(
+      [&](const Eigen::MatrixXd& X, Eigen::MatrixXd& Y) { Y = A * X; }, b, x, CgSettings{}, test::kLargeBudget, stop,
+      jacobi);
+  for (size_t j = 0; j < b.size(); ++j) {
+    qp::Problem preconditioned = test::free_problem(test::dense_operator(A), b[j]);
+    preconditioned.preconditioner = jacobi;
+    Vec alone = Vec::Zero(60), plain = Vec::Zero(60);
+    const CgResult single = conjugate_gradient(preconditioned, CgSettings{}, alone, test::kLargeBudget, stop[j]);
+    const CgResult unpreconditioned = conjugate_gradient(test::free_problem(test::dense_operator(A), b[j]), CgSettings{},
+                                                         plain, test::kLargeBudget, stop[j]);
+    EXPECT_EQ(block[j].status, SolveStatus::converged) << "system " << j;
+    EXPECT_EQ(block[j].counts.hessian, single.counts.hessian) << "system " << j;
+    EXPECT_EQ(block[j].counts.preconditioner, single.counts.preconditioner) << "system " << j;
+    EXPECT_LT((x[j] - alone).norm(), 1e-12 * alone.norm()) << "system " << j;
+    EXPECT_LT(single.counts.hessian, unpreconditioned.counts.hessian) << "system " << j;
+  }
+}
+
 }  // namespace
 }  // namespace ffeti

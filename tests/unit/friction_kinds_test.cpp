@@ -97,23 +97,6 @@ TEST_P(FrictionKinds, NodeToNode3DMatchesTheUndividedDual) {
 
 // ---- Node to node in the plane: a block pressed and dragged over another -----------------
 
-constexpr double kDrag = 0.004, kPush = -0.01;
-
-/// Body 0: [0, 1] x [0, 0.5] (4 x 2 cells), top edge moved by (kDrag, kPush); body 1 its mirror
-/// image below y = 0, bottom fixed; each in `parts` slices along x.
-std::vector<SubdomainInput> stacked_plates(int parts) {
-  std::vector<SubdomainInput> out;
-  for (int body = 0; body < 2; ++body)
-    for (int k = 0; k < parts; ++k) {
-      const double w = 1.0 / parts;
-      SubdomainInput s = elastic_block(k * w, w, 0.5, 4 / parts, 2, body == 0 ? kDrag : 0.0, body == 0 ? kPush : 0.0);
-      if (body == 1) s = mirrored(s);
-      s.body = body;
-      out.push_back(std::move(s));
-    }
-  return out;
-}
-
 /// n = -e_y: t = (-n_y, n_x) = e_x.
 std::vector<Point3> node_to_node_2d_tangent(int) { return {{1, 0, 0}}; }
 

@@ -1,6 +1,7 @@
 #include "friction_scenes.h"
 
 #include "feti/friction.h"
+#include "plane_block.h"
 #include "solid_block.h"
 
 #include <gtest/gtest.h>
@@ -123,6 +124,19 @@ std::vector<SubdomainInput> stacked_blocks(int parts) {
     for (int k = 0; k < parts; ++k) {
       const double w = 1.0 / parts;
       SubdomainInput s = solid_block(k * w, {w, 0.5, 0.25}, {4 / parts, 2, 1}, body == 0 ? kTop3 : std::array<double, 3>{0, 0, 0});
+      if (body == 1) s = mirrored(s);
+      s.body = body;
+      out.push_back(std::move(s));
+    }
+  return out;
+}
+
+std::vector<SubdomainInput> stacked_plates(int parts) {
+  std::vector<SubdomainInput> out;
+  for (int body = 0; body < 2; ++body)
+    for (int k = 0; k < parts; ++k) {
+      const double w = 1.0 / parts;
+      SubdomainInput s = elastic_block(k * w, w, 0.5, 4 / parts, 2, body == 0 ? kDrag : 0.0, body == 0 ? kPush : 0.0);
       if (body == 1) s = mirrored(s);
       s.body = body;
       out.push_back(std::move(s));

@@ -80,4 +80,9 @@ inline const std::array<double, 3> kTop3{0.004, 0.002, -0.01};
 /// mirror image below z = 0, bottom fixed; each in `parts` slices along x.
 std::vector<SubdomainInput> stacked_blocks(int parts);
 
+/// The plane version: body 0 [0, 1] x [0, 0.5] (4 x 2 cells), top edge moved by (kDrag,
+/// kPush); body 1 its mirror image below y = 0, bottom fixed; each in `parts` slices along x.
+constexpr double kDrag = 0.004, kPush = -0.01;
+std::vector<SubdomainInput> stacked_plates(int parts);
+
 }  // namespace ffeti

@@ -111,13 +111,23 @@ void check_dof_field(const std::vector<std::vector<double>>& field, const std::v
   }
 }
 
+/// Local subdomain k's name in messages: global_ids[k], or k itself.
+std::vector<size_t> message_ids(size_t count, const std::vector<int>& global_ids) {
+  std::vector<size_t> ids;
+  for (size_t k = 0; k < count; ++k) ids.push_back(global_ids.empty() ? k : static_cast<size_t>(global_ids[k]));
+  return ids;
+}
+
 }  // namespace
+
+void validate_contact_gaps(const std::vector<std::vector<double>>& gaps, const std::vector<SubdomainInput>& subdomains,
+                           const std::vector<int>& global_ids) {
+  check_dof_field(gaps, message_ids(subdomains.size(), global_ids), subdomains, "contactGap", -INFINITY);
+}
 
 void validate_input(const std::vector<SubdomainInput>& subdomains, const ContactInput& contact,
                     const std::vector<int>& global_ids) {
-  std::vector<size_t> ids;
-  for (size_t k = 0; k < subdomains.size(); ++k)
-    ids.push_back(global_ids.empty() ? k : static_cast<size_t>(global_ids[k]));
+  const std::vector<size_t> ids = message_ids(subdomains.size(), global_ids);
   for (size_t k = 0; k < subdomains.size(); ++k) {
     const size_t s = ids[k];
     const SubdomainInput& sub = subdomains[k];
@@ -201,7 +211,7 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
     throw InputError("contactMaster: node-to-node contact cannot be combined with contactSegments, contactFaces or "
                      "obstacle in one problem (the slave dofs would belong to both)");
   if (!std::isfinite(contact.gap)) throw InputError("gap: must be finite");
-  check_dof_field(contact.gap_field, ids, subdomains, "contactGap", -INFINITY);
+  validate_contact_gaps(contact.gap_field, subdomains, global_ids);
   for (const auto& [name, value] : {std::pair<const char*, double>{"friction", contact.friction},
                                     std::pair<const char*, double>{"slipBound", contact.slip_bound}})
     if (!std::isfinite(value) || (value < 0 && value != -1))

@@ -12,4 +12,9 @@ namespace ffeti {
 void validate_input(const std::vector<SubdomainInput>& subdomains, const ContactInput& contact,
                     const std::vector<int>& global_ids = {});
 
+/// contactGap's layout (ContactInput::gap_field): none, or one entry per subdomain, each
+/// empty or one finite value per dof.
+void validate_contact_gaps(const std::vector<std::vector<double>>& gaps, const std::vector<SubdomainInput>& subdomains,
+                           const std::vector<int>& global_ids = {});
+
 }  // namespace ffeti

@@ -41,6 +41,15 @@ DualSystem::Formulation DualSystem::plain_qp(const DualData& data, const DualSol
   return f;
 }
 
+LinearOperator DualSystem::projected_preconditioner() const {
+  if (!preconditioner_) return {};
+  return [this](const Vec& x, Vec& y) {  // P M^{-1} P on Ker G
+    coarse_->project(x, projected_);
+    preconditioner_->apply(projected_, applied_);
+    coarse_->project(applied_, y);
+  };
+}
+
 DualSystem::Formulation DualSystem::projected_qp(const DualData& data, const DualSolveSettings& settings) const {
   // CG on P F P: every iterate stays in Ker G, where the balance holds (docs/algorithms.md).
   Formulation f;
@@ -48,12 +57,7 @@ DualSystem::Formulation DualSystem::projected_qp(const DualData& data, const Dua
   qp.constraints.add_free(rows());
   qp.hessian = [this](const Vec& x, Vec& y) { apply_PFP(x, y); };
   qp.b = data.b;
-  if (preconditioner_)  // P M^{-1} P on Ker G
-    qp.preconditioner = [this](const Vec& x, Vec& y) {
-      coarse_->project(x, projected_);
-      preconditioner_->apply(projected_, applied_);
-      coarse_->project(applied_, y);
-    };
+  qp.preconditioner = projected_preconditioner();
   f.start = shifted_start(settings, data, rows());
   if (settings.start.size() > 0) coarse_->project(Vec(f.start), f.start);  // G mu = 0
   return f;

@@ -204,16 +204,21 @@ std::vector<DualSolution> DualSystem::solve(const std::vector<DualData>& data,
   }
   Stopwatch solve_clock;
   const double operator_start = F_->application_seconds();
+  const double preconditioner_start = preconditioner_ ? preconditioner_->application_seconds() : 0.0;
   const std::vector<CgResult> cg_results = conjugate_gradient_block(
       [&](const Eigen::MatrixXd& x, Eigen::MatrixXd& y) {
         if (coarse_) apply_PFP(x, y);
         else F_->apply(x, y);
       },
-      b, mu, CgSettings{}, qp::Budget(settings.max_hessian), stop);
+      b, mu, CgSettings{}, qp::Budget(settings.max_hessian), stop,
+      coarse_ ? projected_preconditioner() : preconditioner_operator());
   const double seconds = solve_clock.seconds() / static_cast<double>(data.size());
   const double operator_seconds = (F_->application_seconds() - operator_start) / static_cast<double>(data.size());
   for (size_t j = 0; j < data.size(); ++j) {
     results[j].times.dual_operator = operator_seconds;
+    if (preconditioner_)
+      results[j].times.preconditioner =
+          (preconditioner_->application_seconds() - preconditioner_start) / static_cast<double>(data.size());
     results[j].status = cg_results[j].status;
     results[j].counts = cg_results[j].counts;
     results[j].gradient_norm = cg_results[j].gradient_norm;

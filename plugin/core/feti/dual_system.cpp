@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace ffeti {
 
@@ -47,6 +48,20 @@ DualSystem::DualSystem(const SubdomainList& subdomains, const std::vector<int>& 
   for (const auto& s : subdomains_) local_floating += s->floating() ? 1 : 0;
   if (comm.sum(local_floating) > 0)
     coarse_ = std::make_unique<CoarseSpace>(subdomains_, local_, global_ids, constraints_.rows(), bodies, comm);
+}
+
+void DualSystem::replace_right_hand_side(Constraints rebuilt) {
+  const auto same_entry = [](const ConstraintEntry& a, const ConstraintEntry& b) {
+    return a.subdomain == b.subdomain && a.dof == b.dof && a.coefficient == b.coefficient;
+  };
+  if (rebuilt.row_start != constraints_.row_start || rebuilt.kind != constraints_.kind ||
+      rebuilt.geometry.size() != constraints_.geometry.size() ||
+      !std::equal(rebuilt.entries.begin(), rebuilt.entries.end(), constraints_.entries.begin(),
+                  constraints_.entries.end(), same_entry))
+    throw std::logic_error("replace_right_hand_side: the rebuilt rows differ from the factorized ones");
+  constraints_.rhs = std::move(rebuilt.rhs);
+  constraints_.geometry = std::move(rebuilt.geometry);
+  constraints_.beyond_reach = std::move(rebuilt.beyond_reach);
 }
 
 void DualSystem::use_preconditioner(DualPreconditioner kind, const std::vector<const SparseMatrix*>& operator_matrices,

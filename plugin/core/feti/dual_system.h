@@ -145,6 +145,11 @@ class DualSystem {
              int threads, const Communicator& comm);
 
   const Constraints& constraints() const { return constraints_; }
+  /// The same rows with other right-hand sides (new contact gaps or prescribed values):
+  /// `rebuilt` must have this B, entry for entry (std::logic_error otherwise); its c, row
+  /// geometries and watched rows replace these. Nothing factorized, projected or estimated
+  /// depends on c, so every cached part stays valid.
+  void replace_right_hand_side(Constraints rebuilt);
   const std::vector<LocalConstraints>& local() const { return local_; }
   const DualOperator& F() const { return *F_; }
   const CoarseSpace* coarse() const { return coarse_.get(); }
@@ -169,10 +174,11 @@ class DualSystem {
   /// Collective.
   DualSolution solve(const DualData& data, const DualSolveSettings& settings, const DualWarmStart& warm = {}) const;
 
-  /// Solves the dual problems of several right-hand sides. On the CG paths their CG runs go
-  /// in lockstep and share each application of F (a block of vectors, one pass over each
-  /// factor); each one's iterations and counts are those of solve() alone, its solve time
-  /// the block's time divided by the count. Other paths solve one after the other. Collective.
+  /// Solves the dual problems of several right-hand sides. On the CG paths with the seed's
+  /// test their CG runs go in lockstep and share each application of F (a block of vectors,
+  /// one pass over each factor), preconditioned as solve() is; each one's iterations and
+  /// counts are those of solve() alone, its solve time the block's time divided by the
+  /// count. Other paths solve one after the other. Collective.
   std::vector<DualSolution> solve(const std::vector<DualData>& data, const DualSolveSettings& settings) const;
 
  private:
@@ -186,6 +192,7 @@ class DualSystem {
   void apply_PFP(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const;
   DualSolution prepared(const DualData& data, const DualSolveSettings& settings) const;  // path, references
   LinearOperator preconditioner_operator() const;  // M^{-1}, or empty without a preconditioner
+  LinearOperator projected_preconditioner() const;  // P M^{-1} P, or empty without a preconditioner
   void recover(const DualData& data, Vec lambda, DualSolution& result) const;
   const FreeRowProjector& free_rows() const;  // built at first use
   PrimalCheck primal_check(const DualData& data, const Vec& lambda) const;  // of the recovered u(lambda)

@@ -133,20 +133,7 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   (dual_->coarse() ? setup_times_.coarse_space : setup_times_.constraints) += coarse_clock.seconds();
   if (settings_.preconditioner != DualPreconditioner::none) {
     Stopwatch preconditioner_clock;
-    // The K the dual operator sees, copied only where FETI-1 eliminates Dirichlet dofs (a
-    // copy of every K cost as much as the lumped preconditioner's whole set-up).
-    std::vector<SparseMatrix> eliminated;
-    eliminated.reserve(inputs_.size());  // the pointers below stay valid
-    std::vector<const SparseMatrix*> operator_matrices;
-    for (const SubdomainInput& in : inputs_) {
-      if (settings_.variant == FetiVariant::feti1 && !in.dirichlet_dofs.empty()) {
-        eliminated.push_back(eliminate_dirichlet(in.K, in.dirichlet_dofs));
-        operator_matrices.push_back(&eliminated.back());
-      } else {
-        operator_matrices.push_back(&in.K);
-      }
-    }
-    dual_->use_preconditioner(settings_.preconditioner, operator_matrices, settings_.threads);
+    precondition(*dual_, settings_.preconditioner);
     setup_times_.factorization += preconditioner_clock.seconds();
   }
   compute_dual_data();
@@ -160,6 +147,23 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   gather_rank_statistics(0.0);
   setup_times_ = {comm.max(setup_times_.constraints), comm.max(setup_times_.factorization),
                   comm.max(setup_times_.coarse_space), comm.max(setup_times_.dual_data), 0, 0, 0, 0};
+}
+
+void FetiProblem::precondition(DualSystem& system, DualPreconditioner kind) const {
+  // The K the dual operator sees, copied only where FETI-1 eliminates Dirichlet dofs (a
+  // copy of every K cost as much as the lumped preconditioner's whole set-up).
+  std::vector<SparseMatrix> eliminated;
+  eliminated.reserve(inputs_.size());  // the pointers below stay valid
+  std::vector<const SparseMatrix*> operator_matrices;
+  for (const SubdomainInput& in : inputs_) {
+    if (settings_.variant == FetiVariant::feti1 && !in.dirichlet_dofs.empty()) {
+      eliminated.push_back(eliminate_dirichlet(in.K, in.dirichlet_dofs));
+      operator_matrices.push_back(&eliminated.back());
+    } else {
+      operator_matrices.push_back(&in.K);
+    }
+  }
+  system.use_preconditioner(kind, operator_matrices, settings_.threads);
 }
 
 Constraints FetiProblem::build_rows(std::vector<DofRecord>* gathered) const {
@@ -261,15 +265,35 @@ void FetiProblem::set_dirichlet_values(const std::vector<std::vector<double>>& v
   });
   const ThreadLimit limit(settings_.threads);
   for (size_t k = 0; k < values.size(); ++k) inputs_[k].dirichlet_values = values[k];
-  // c is affine in the prescribed values: the rows built anew with them differ from the
-  // current ones by exactly the values' change, whatever the last load step left in c.
+  rebuild_right_hand_side();
+}
+
+void FetiProblem::set_contact_gaps(const std::vector<std::vector<double>>& gaps) {
+  collectively(*comm_, [&] {
+    if (gaps.size() != inputs_.size())
+      throw InputError("contactGap: has " + std::to_string(gaps.size()) + " entries for " +
+                       std::to_string(inputs_.size()) + " subdomains");
+    validate_contact_gaps(gaps, inputs_, global_ids_);
+  });
+  const ThreadLimit limit(settings_.threads);
+  local_contact_.gap_field = gaps;
+  rebuild_right_hand_side();
+}
+
+void FetiProblem::rebuild_right_hand_side() {
   Constraints rebuilt;
   collectively(*comm_, [&] { rebuilt = build_rows(); });
-  if (rebuilt.rows() != constraints().rows() || rebuilt.kind != constraints().kind)
-    throw std::logic_error("set_dirichlet_values: the same dofs built other rows");
   const Vec now = Eigen::Map<const Vec>(rebuilt.rhs.data(), rebuilt.rows());
-  rhs_ += now - built_rhs_;
+  if (now.size() != rhs_.size()) throw std::logic_error("rebuild_right_hand_side: the same input built other rows");
+  // Only load steps move c from its build, and only on the friction rows (their slip is
+  // measured from the last step's state): the other rows take the new build as it is, so a
+  // re-solve equals a fresh set-up's bit for bit; c is affine in the prescribed values and
+  // gaps, so the friction rows take the build's change.
+  const int first_friction = constraints().first_friction_row();
+  rhs_.head(first_friction) = now.head(first_friction);
+  rhs_.tail(rhs_.size() - first_friction) += now.tail(now.size() - first_friction) - built_rhs_.tail(now.size() - first_friction);
   built_rhs_ = now;
+  dual_->replace_right_hand_side(std::move(rebuilt));
   compute_dual_data();
 }
 

@@ -84,6 +84,13 @@ class FetiProblem {
   /// Keeps every factorization. With friction call start_load_step first. Collective.
   void set_dirichlet_values(const std::vector<std::vector<double>>& values);
 
+  /// New contact gaps (ContactInput::gap_field's layout: per local subdomain one value per
+  /// dof, or empty for none), same rows: K does not depend on them, so only the contact
+  /// rows' right-hand sides change (every contact kind adds its slave's entry to its c). Keeps
+  /// every factorization, the coarse space and the norm estimates: the next solve equals a
+  /// fresh set-up's with these gaps. With friction call start_load_step first. Collective.
+  void set_contact_gaps(const std::vector<std::vector<double>>& gaps);
+
   /// With friction: `last` (a converged solve of this problem) becomes the state the next
   /// load step starts from: the slip of the friction rows is measured from its u, and its
   /// multipliers start the next solve. Collective.
@@ -133,6 +140,11 @@ class FetiProblem {
   /// The solver path the data call for (ALGORITHMS.md section 6).
   DualPath path() const { return dual_->path(); }
 
+  /// Gives `system`, a dual system over this problem's factorized subdomains (the
+  /// sensitivity problem's), the preconditioner `kind` built from K as its dual operator sees
+  /// it. Collective.
+  void precondition(DualSystem& system, DualPreconditioner kind) const;
+
   /// The loads as the dual operators see them: FETI-1 eliminates the Dirichlet dofs of
   /// `loads` (with the prescribed values, or zero if `homogeneous`). This rank's.
   std::vector<Vec> operator_loads(const std::vector<Vec>& loads, bool homogeneous) const;
@@ -142,6 +154,9 @@ class FetiProblem {
   /// B and c from the current inputs (the records of all ranks gathered, also into
   /// `gathered` if given). Collective.
   Constraints build_rows(std::vector<DofRecord>* gathered = nullptr) const;
+  /// The rows built anew from the current inputs take over c (B must come out the same);
+  /// then the dual right-hand side. Collective.
+  void rebuild_right_hand_side();
   void factorize();
   void compute_dual_data();
   void gather_rank_statistics(double solve_seconds) const;

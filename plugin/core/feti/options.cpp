@@ -65,8 +65,9 @@ std::vector<Option> make_options() {
        "application; `\"dirichlet\"`: K_s replaced by its Schur complement on the constrained dofs, one more "
        "factorization per subdomain (without contact: iterations bounded in h); `\"none\"`. Measured in "
        "[scalability](results/scalability.md), [large contact](results/large-contact.md) and on [every "
-       "scene](results/accuracy-and-time.md); [algorithms](algorithms.md). Sensitivity and adjoint solves stay "
-       "unpreconditioned",
+       "scene](results/accuracy-and-time.md); [algorithms](algorithms.md). Sensitivity and adjoint solves take the "
+       "lumped one unless `\"none\"` (no factorization: half the multiplications per direction, "
+       "`tests/edp/sensitivity-many-directions.edp`)",
        [](SolverSettings& s, const OptionValue& v) {
          s.setup.preconditioner =
              pick(v, {DualPreconditioner::lumped, DualPreconditioner::dirichlet, DualPreconditioner::none},

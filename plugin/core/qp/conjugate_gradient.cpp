@@ -125,16 +125,16 @@ CgResult conjugate_gradient(const qp::Problem& problem, const CgSettings& settin
 
 std::vector<CgResult> conjugate_gradient_block(const BlockOperator& A, const std::vector<Vec>& b,
                                                std::vector<Vec>& x, const CgSettings& settings,
-                                               const qp::Budget& budget, const std::vector<StopTest>& stop) {
+                                               const qp::Budget& budget, const std::vector<StopTest>& stop,
+                                               const LinearOperator& preconditioner) {
   settings.validate();
   if (x.size() != b.size() || stop.size() != b.size())
     throw std::invalid_argument("CG block: b, x and stop differ in count");
   const Monitor no_monitor;
-  const LinearOperator no_preconditioner;
   std::vector<CgRun> runs;
   runs.reserve(b.size());
   for (size_t j = 0; j < b.size(); ++j)
-    runs.emplace_back(b[j], x[j], settings, budget, stop[j], no_monitor, no_preconditioner);
+    runs.emplace_back(b[j], x[j], settings, budget, stop[j], no_monitor, preconditioner);
   Eigen::MatrixXd block, products;
   for (;;) {
     std::vector<size_t> open;

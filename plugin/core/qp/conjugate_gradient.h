@@ -37,12 +37,13 @@ CgResult conjugate_gradient(const qp::Problem& problem, const CgSettings& settin
 using BlockOperator = std::function<void(const Eigen::MatrixXd& x, Eigen::MatrixXd& y)>;
 
 /// conjugate_gradient for the systems A x_j = b_j, j = 0..k-1, with stop test stop[j] and
-/// the budget for each:
+/// the budget for each, preconditioned by M (applied to one vector at a time; empty: none):
 /// every step multiplies the vectors of the unfinished systems as one block (A is called as
 /// often as the longest run needs). Each system runs the same iteration, with the same
 /// counts, as on its own.
 std::vector<CgResult> conjugate_gradient_block(const BlockOperator& A, const std::vector<Vec>& b,
                                                std::vector<Vec>& x, const CgSettings& settings,
-                                               const qp::Budget& budget, const std::vector<StopTest>& stop);
+                                               const qp::Budget& budget, const std::vector<StopTest>& stop,
+                                               const LinearOperator& preconditioner = {});
 
 }  // namespace ffeti

@@ -104,6 +104,11 @@ SensitivityProblem::SensitivityProblem(const FetiProblem& problem, const FetiRes
     throw InputError(std::string("sensitivity: without its inactive contact rows the problem is singular, ") +
                      "so u has no unique derivative: " + error.what());
   }
+  // Preconditioned as the state's solves are (a direction took twice the state's Hessian
+  // multiplications without), by the lumped preconditioner also behind a Dirichlet one: it
+  // factorizes nothing, where the Dirichlet one would factorize each K_ii of these rows anew.
+  if (problem.settings().preconditioner != DualPreconditioner::none)
+    problem.precondition(*system_, DualPreconditioner::lumped);
   counters_.setup_seconds = problem.communicator().max(clock.seconds());
 }
 
