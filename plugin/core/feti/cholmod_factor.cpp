@@ -72,11 +72,13 @@ class SerialRegionsOnOneThread {
 
 double supernodal_switch() {
   // scripts/factor_kinds.py on this machine (loaded; docs/log.md, 2026-11-27), one thread,
-  // under the reference BLAS and OpenMP OpenBLAS alike: simplicial faster at 41 (2D scalar,
-  // 4225 dofs) and 64 flops per nonzero (3D elasticity, 375 dofs), supernodal from 82 (2D
-  // elasticity, 8450 dofs: 2 and 3.6 times faster) up (3D elasticity, 2187 dofs at 245:
-  // 4.6 and 1.9 times; 14,739 dofs at 669: 2.3 and 15 times). CHOLMOD's own default is 40.
-  return 80;
+  // under the reference BLAS and OpenMP OpenBLAS: simplicial faster at 41 (2D scalar, 4225
+  // dofs) and 64 flops per nonzero (3D elasticity, 375 dofs); at 82 (2D elasticity, 8450
+  // dofs) supernodal won 1.4 to 3.6 times under OpenBLAS but tied under the reference BLAS
+  // in one of two runs, and its solves (one per Hessian multiplication) were up to 2 times
+  // slower; from 137 (3D elasticity, 1029 dofs) up supernodal won under both. CHOLMOD's
+  // own default is 40.
+  return 120;
 }
 
 CholmodFactor::CholmodFactor(FactorKind kind) {

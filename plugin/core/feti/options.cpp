@@ -55,7 +55,7 @@ std::vector<Option> make_options() {
        }},
       {"factor", S::setup, K::word, {kFactors[0], kFactors[1], kFactors[2]}, 0, 0, false, false, "`\"auto\"`",
        "CHOLMOD factor kind per subdomain; `\"auto\"`: after CHOLMOD's analysis, supernodal (dense blocks through "
-       "the BLAS) where the factorization's flops per factor nonzero reach 80 (measured: 3D elasticity subdomains), "
+       "the BLAS) where the factorization's flops per factor nonzero reach 120 (measured: 3D elasticity subdomains), "
        "simplicial below (small and scalar 2D subdomains); fetiInfo's `supernodal_factors` counts the supernodal ones "
        "([algorithms](algorithms.md)). Under Debian's serial OpenBLAS `\"supernodal\"` runs on one thread and "
        "`\"auto\"` is simplicial when more threads run",
