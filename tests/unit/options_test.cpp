@@ -75,7 +75,9 @@ TEST(Options, StatedDefaultsAreTheSettingsDefaults) {
   for (const auto& [name, value] : numbers) EXPECT_EQ(leading_number(find_option(name)->default_text), value) << name;
   const std::pair<const char*, std::string> words[] = {
       {"preconditioner", preconditioner_name(setup.preconditioner)},
-      {"factor", setup.factor == FactorKind::simplicial ? "simplicial" : "supernodal"},
+      {"factor", setup.factor == FactorKind::automatic    ? "auto"
+                 : setup.factor == FactorKind::simplicial ? "simplicial"
+                                                          : "supernodal"},
       {"variant", "feti1"},  // scalar field; "tfeti" for a vector field (below)
       {"algorithm", defaults.solve.smalbe.variant == SmalbeVariant::smalbe_m ? "smalbe-m" : "seed"},
       {"coarse", defaults.solve.coarse_constraints == CoarseConstraints::free_rows ? "free-rows" : "penalty"},

@@ -1,5 +1,7 @@
 #include "feti/cholmod_factor.h"
 
+#include <omp.h>
+
 #include <atomic>
 #include <cstring>
 #include <stdexcept>
@@ -42,13 +44,51 @@ cholmod_dense view_columns(const double* values, Eigen::Index rows, Eigen::Index
   return view;
 }
 
+/// CHOLMOD 3's supernodal numeric factorization opens OpenMP regions of its own, of a fixed 4
+/// threads (CHOLMOD_OMP_NUM_THREADS), whatever the plugin's thread count. Inside the
+/// plugin's loop over subdomains on several threads they are nested, hence serial; on one
+/// thread (threads = 1, or the default on a loaded machine) they are not, and their threads
+/// spin for cores others hold: 9.1 s instead of 0.9 s (OMP_WAIT_POLICY=passive) for two
+/// subdomains of 2187 dofs beside other processes. While it lives, and only where this
+/// thread runs alone on one thread, every region it opens runs serially.
+class SerialRegionsOnOneThread {
+ public:
+  SerialRegionsOnOneThread() {
+    if (omp_get_active_level() > 0 || omp_get_max_threads() > 1) return;
+    previous_ = omp_get_max_active_levels();
+    omp_set_max_active_levels(0);
+  }
+  ~SerialRegionsOnOneThread() {
+    if (previous_ >= 0) omp_set_max_active_levels(previous_);
+  }
+  SerialRegionsOnOneThread(const SerialRegionsOnOneThread&) = delete;
+  SerialRegionsOnOneThread& operator=(const SerialRegionsOnOneThread&) = delete;
+
+ private:
+  int previous_ = -1;
+};
+
 }  // namespace
+
+double supernodal_switch() {
+  // scripts/factor_kinds.py on this machine (loaded; docs/log.md, 2026-11-27), one thread,
+  // under the reference BLAS and OpenMP OpenBLAS: simplicial faster at 41 (2D scalar, 4225
+  // dofs) and 64 flops per nonzero (3D elasticity, 375 dofs); at 82 (2D elasticity, 8450
+  // dofs) supernodal won 1.4 to 3.6 times under OpenBLAS but tied under the reference BLAS
+  // in one of two runs, and its solves (one per Hessian multiplication) were up to 2 times
+  // slower; from 137 (3D elasticity, 1029 dofs) up supernodal won under both. CHOLMOD's
+  // own default is 40.
+  return 120;
+}
 
 CholmodFactor::CholmodFactor(FactorKind kind) {
   cholmod_start(&common_);
   common_.print = 0;  // the core never prints; failures are returned as values
   common_.error_handler = nullptr;
-  common_.supernodal = kind == FactorKind::simplicial ? CHOLMOD_SIMPLICIAL : CHOLMOD_SUPERNODAL;
+  common_.supernodal = kind == FactorKind::simplicial   ? CHOLMOD_SIMPLICIAL
+                       : kind == FactorKind::supernodal ? CHOLMOD_SUPERNODAL
+                                                        : CHOLMOD_AUTO;
+  common_.supernodal_switch = supernodal_switch();  // read by CHOLMOD_AUTO only
 }
 
 CholmodFactor::~CholmodFactor() {
@@ -61,17 +101,25 @@ CholmodFactor::~CholmodFactor() {
   cholmod_finish(&common_);
 }
 
-int CholmodFactor::factorize(const SparseMatrix& A) {
+int CholmodFactor::factorize(const SparseMatrix& A, SharedAnalyses* shared) {
   if (A.rows() != A.cols()) throw std::invalid_argument("CholmodFactor: matrix is not square");
   if (!A.isCompressed()) throw std::invalid_argument("CholmodFactor: matrix is not compressed");
   cholmod_sparse view = view_lower(A);
   if (!factor_ || size_ != A.rows()) {
     cholmod_free_factor(&factor_, &common_);
-    factor_ = cholmod_analyze(&view, &common_);
-    if (!factor_) throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
+    if (shared) factor_ = shared->copy(view, common_.supernodal, &common_, &analysis_flops_, &analysis_nonzeros_);
+    if (!factor_) {
+      factor_ = cholmod_analyze(&view, &common_);
+      if (!factor_) throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
+      analysis_flops_ = common_.fl, analysis_nonzeros_ = common_.lnz;
+      if (shared) shared->keep(view, common_.supernodal, *factor_, analysis_flops_, analysis_nonzeros_);
+    }
     size_ = A.rows();
   }
-  cholmod_factorize(&view, factor_, &common_);
+  {
+    const SerialRegionsOnOneThread serial;
+    cholmod_factorize(&view, factor_, &common_);
+  }
   ++numeric_factorizations;
   if (common_.status == CHOLMOD_NOT_POSDEF) return static_cast<int>(factor_->minor);
   if (common_.status < CHOLMOD_OK) throw std::runtime_error("CHOLMOD factorize failed");

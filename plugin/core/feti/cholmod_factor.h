@@ -4,14 +4,20 @@
 #pragma once
 
 #include "base/linear_algebra.h"
+#include "feti/shared_analyses.h"
 
 #include <cholmod.h>
 
 namespace ffeti {
 
-/// Simplicial is the default: for 2D subdomains of a few thousand dofs it factors and
-/// solves several times faster than supernodal here (docs/results/model-problem.md).
-enum class FactorKind { simplicial, supernodal };
+/// `automatic` lets CHOLMOD choose after its analysis: supernodal (dense blocks through the
+/// BLAS) when the flops per factor nonzero reach supernodal_switch(), simplicial below
+/// (2D subdomains of a few thousand dofs: several times faster, docs/results/model-problem.md).
+enum class FactorKind { simplicial, supernodal, automatic };
+
+/// Flops per nonzero of L from which an automatic factor is supernodal (measured by
+/// scripts/factor_kinds.py; docs/algorithms.md).
+double supernodal_switch();
 
 /// Owns one cholmod_common, so distinct objects may be used from distinct threads.
 /// Not copyable; a solve is not thread-safe on the same object (it reuses workspace).
@@ -24,7 +30,10 @@ class CholmodFactor {
 
   /// Factorizes A (its lower triangle is read; A must be square and compressed).
   /// Returns -1 on success, else the column at which A was found not positive definite.
-  int factorize(const SparseMatrix& A);
+  /// The symbolic analysis runs on the first call (or a new size); with `shared`, it is
+  /// copied from there when a matrix of A's pattern was analyzed before, and kept there
+  /// otherwise.
+  int factorize(const SparseMatrix& A, SharedAnalyses* shared = nullptr);
 
   /// x = A^{-1} b. Precondition: the last factorize succeeded.
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
@@ -38,6 +47,11 @@ class CholmodFactor {
 
   Eigen::Index size() const { return size_; }
   double factor_nonzeros() const;  ///< nnz(L), for reports
+  bool supernodal() const { return factor_ && factor_->is_super; }
+  /// The analysis' flop count of the factorization and nnz(L) without the supernodes'
+  /// padding (CHOLMOD's Common->fl and ->lnz): what an automatic choice judged.
+  double analysis_flops() const { return analysis_flops_; }
+  double analysis_nonzeros() const { return analysis_nonzeros_; }
   /// CHOLMOD's cheap estimate (min diag L / max diag L)^2; ~eps for a numerically singular A.
   double reciprocal_condition() const;
 
@@ -53,6 +67,7 @@ class CholmodFactor {
 
   mutable Workspace vector_workspace_, block_workspace_;
   Eigen::Index size_ = 0;
+  double analysis_flops_ = 0, analysis_nonzeros_ = 0;
 };
 
 }  // namespace ffeti

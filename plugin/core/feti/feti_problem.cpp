@@ -2,6 +2,7 @@
 
 #include "constraints/surface_checks.h"
 
+#include "feti/blas_library.h"
 #include "feti/dirichlet.h"
 #include "base/errors.h"
 #include "constraints/input_checks.h"
@@ -32,7 +33,16 @@ FetiProblem::FetiProblem(std::vector<SubdomainInput> local, std::vector<int> glo
 }
 
 void FetiProblem::set_up(const ContactInput& local_contact) {
-  if (settings_.factor == FactorKind::supernodal) settings_.threads = 1;
+  // Debian's serial OpenBLAS is not safe to call from concurrent threads (observed: spurious
+  // "not positive definite" failures): supernodal factors, which call it, then run on one
+  // thread, and an automatic choice with more threads stays simplicial. The reference BLAS
+  // and OpenMP OpenBLAS gave bitwise the same solves from two threads at once
+  // (scripts/factor_kinds.py); OpenBLAS's threaded builds lock their own state.
+  if (loaded_blas() == BlasLibrary::openblas_sequential) {
+    if (settings_.factor == FactorKind::supernodal) settings_.threads = 1;
+    if (settings_.factor == FactorKind::automatic && resolve_thread_count(settings_.threads) > 1)
+      settings_.factor = FactorKind::simplicial;
+  }
   const ThreadLimit limit(settings_.threads);
   const Communicator& comm = *comm_;
   Stopwatch constraints_clock;
@@ -184,6 +194,7 @@ void FetiProblem::factorize() {
   const int count = local_subdomain_count();
   subdomains_.resize(inputs_.size());
   std::vector<std::exception_ptr> failures(inputs_.size());
+  SharedAnalyses shared;  // boxes of one shape order and analyze once
 #pragma omp parallel for schedule(dynamic) num_threads(resolve_thread_count(settings_.threads))
   for (int k = 0; k < count; ++k) {
     const SubdomainInput& in = inputs_[static_cast<size_t>(k)];
@@ -191,7 +202,7 @@ void FetiProblem::factorize() {
       const bool eliminated = eliminate && !in.dirichlet_dofs.empty();
       subdomains_[static_cast<size_t>(k)] = std::make_unique<Subdomain>(
           global_ids_[static_cast<size_t>(k)], eliminated ? eliminate_dirichlet(in.K, in.dirichlet_dofs) : in.K,
-          candidate_kernel(in.x, in.y, in.component, in.z), settings_.factor);
+          candidate_kernel(in.x, in.y, in.component, in.z), settings_.factor, &shared);
     } catch (...) {
       failures[static_cast<size_t>(k)] = std::current_exception();
     }
@@ -201,6 +212,9 @@ void FetiProblem::factorize() {
       if (failure) std::rethrow_exception(failure);
   });
   factorizations_ = static_cast<long>(comm_->sum(double(CholmodFactor::factorizations_in_process() - before)));
+  const auto supernodal = std::count_if(subdomains_.begin(), subdomains_.end(), [](const auto& s) { return s->supernodal(); });
+  supernodal_factors_ = static_cast<long>(comm_->sum(static_cast<double>(supernodal)));
+  symbolic_analyses_ = static_cast<long>(comm_->sum(static_cast<double>(shared.analyses())));
 }
 
 void FetiProblem::gather_rank_statistics(double solve_seconds) const {

@@ -19,9 +19,9 @@ namespace ffeti {
 
 struct FetiSetupSettings {
   FetiVariant variant = FetiVariant::feti1;
-  FactorKind factor = FactorKind::simplicial;
-  /// OpenMP threads over subdomains; 0: the runtime default. Supernodal factors run on one
-  /// thread: they call BLAS, and Debian's serial OpenBLAS is not safe to call concurrently.
+  FactorKind factor = FactorKind::automatic;
+  /// OpenMP threads over subdomains; 0: the runtime default. Under Debian's serial OpenBLAS,
+  /// not safe to call concurrently, supernodal factors run on one thread (set_up).
   int threads = 0;
   /// Preconditioner of the dual problem (docs/algorithms.md): Dirichlet (iterations bounded
   /// in h and in the number of subdomains, one more factorization per subdomain) or lumped
@@ -115,6 +115,10 @@ class FetiProblem {
   /// Numeric factorizations of subdomain matrices this problem ran, over all ranks: one
   /// per subdomain at set-up, and never another (sensitivities and load cases reuse them).
   long factorizations() const { return factorizations_; }
+  /// Of those, the ones CHOLMOD made supernodal, and the symbolic analyses they took (the
+  /// others copied the analysis of a subdomain with the same pattern). Over all ranks.
+  long supernodal_factors() const { return supernodal_factors_; }
+  long symbolic_analyses() const { return symbolic_analyses_; }
   /// Per-rank figures gathered at set-up and after each solve (rank order).
   const std::vector<RankStatistics>& rank_statistics() const { return rank_statistics_; }
   const Constraints& constraints() const { return dual_->constraints(); }
@@ -182,7 +186,7 @@ class FetiProblem {
   FrictionLaw friction_;
   Vec step_start_;                      // friction: multipliers of the last load step (empty: none)
   long primal_dimension_ = 0;
-  long factorizations_ = 0;
+  long factorizations_ = 0, supernodal_factors_ = 0, symbolic_analyses_ = 0;
   double factor_nonzeros_ = 0;
   mutable std::vector<RankStatistics> rank_statistics_;
   PhaseTimes setup_times_;

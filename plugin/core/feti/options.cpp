@@ -35,7 +35,7 @@ T pick(const OptionValue& v, std::initializer_list<T> choices, const char* const
 // are the user defaults; default_text repeats them for the reference, and a unit test
 // checks that each default_text parses to the settings' value.
 const char* const kVariants[] = {"feti1", "tfeti"};
-const char* const kFactors[] = {"simplicial", "supernodal"};
+const char* const kFactors[] = {"auto", "simplicial", "supernodal"};
 const char* const kPreconditioners[] = {"lumped", "dirichlet", "none"};
 const char* const kAlgorithms[] = {"smalbe-m", "seed"};
 const char* const kExpansions[] = {"projected-cg", "projected-cg-restart", "fixed"};
@@ -53,10 +53,14 @@ std::vector<Option> make_options() {
        [](SolverSettings& s, const OptionValue& v) {
          s.setup.variant = pick(v, {FetiVariant::feti1, FetiVariant::tfeti}, kVariants);
        }},
-      {"factor", S::setup, K::word, {kFactors[0], kFactors[1]}, 0, 0, false, false, "`\"simplicial\"`",
-       "CHOLMOD factor kind; `\"supernodal\"` is slower for 2D subdomains (see the benchmark) and runs on one thread",
+      {"factor", S::setup, K::word, {kFactors[0], kFactors[1], kFactors[2]}, 0, 0, false, false, "`\"auto\"`",
+       "CHOLMOD factor kind per subdomain; `\"auto\"`: after CHOLMOD's analysis, supernodal (dense blocks through "
+       "the BLAS) where the factorization's flops per factor nonzero reach 120 (measured: 3D elasticity subdomains), "
+       "simplicial below (small and scalar 2D subdomains); fetiInfo's `supernodal_factors` counts the supernodal ones "
+       "([algorithms](algorithms.md)). Under Debian's serial OpenBLAS `\"supernodal\"` runs on one thread and "
+       "`\"auto\"` is simplicial when more threads run",
        [](SolverSettings& s, const OptionValue& v) {
-         s.setup.factor = pick(v, {FactorKind::simplicial, FactorKind::supernodal}, kFactors);
+         s.setup.factor = pick(v, {FactorKind::automatic, FactorKind::simplicial, FactorKind::supernodal}, kFactors);
        }},
       {"preconditioner", S::setup, K::word, {kPreconditioners[0], kPreconditioners[1], kPreconditioners[2]}, 0, 0,
        false, false, "`\"lumped\"`",

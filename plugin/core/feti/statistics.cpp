@@ -26,6 +26,8 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
       {"coarse", problem.coarse_dimension()},
       {"factor_nnz", problem.factor_nonzeros()},
       {"factorizations", static_cast<double>(problem.factorizations())},
+      {"supernodal_factors", static_cast<double>(problem.supernodal_factors())},
+      {"symbolic_analyses", static_cast<double>(problem.symbolic_analyses())},
       {"time_constraints", setup.constraints},
       {"time_factor", setup.factorization},
       {"time_coarse", setup.coarse_space},

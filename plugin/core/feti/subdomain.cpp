@@ -47,13 +47,13 @@ SparseMatrix remove_dofs(const SparseMatrix& K, const std::vector<int>& removed,
 }  // namespace
 
 Subdomain::Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& kernel_candidates,
-                     FactorKind factor_kind)
+                     FactorKind factor_kind, SharedAnalyses* shared)
     : index_(index), size_(K.rows()), factor_(factor_kind) {
   const std::string name = "K[" + std::to_string(index_) + "]";
   R_ = kernel_in_span(K, kernel_candidates);
   fixing_ = fixing_dofs(R_);
   const SparseMatrix reduced = remove_dofs(K, fixing_, reduced_to_full_);
-  const int failed = factor_.factorize(reduced);
+  const int failed = factor_.factorize(reduced, shared);
   // Some candidate modes outside the kernel of a matrix that is still singular: the modes
   // built from the coordinates do not fit the matrix (Z scaled by 1000 gave this), more
   // likely than a wrong matrix.

@@ -17,8 +17,9 @@ class Subdomain {
   /// factorizes. K is the operator the dual problem uses (for FETI-1 with the Dirichlet
   /// dofs eliminated). Throws InputError naming "K[index]" if the factorization fails or
   /// the generalized inverse does not verify. The object keeps the factor and the kernel.
+  /// With `shared`, subdomains whose factorized block has one pattern share its analysis.
   Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& kernel_candidates,
-            FactorKind factor_kind);
+            FactorKind factor_kind, SharedAnalyses* shared = nullptr);
 
   Eigen::Index size() const { return size_; }
   /// Orthonormal basis of Ker K_s (n_s x r_s); r_s = 0 for a regular subdomain.
@@ -36,6 +37,7 @@ class Subdomain {
   /// subdomain was built from (the check run at set-up).
   double pseudo_inverse_residual(const SparseMatrix& K) const;
   double factor_nonzeros() const { return factor_.factor_nonzeros(); }
+  bool supernodal() const { return factor_.supernodal(); }
 
  private:
   int index_;
