@@ -24,7 +24,7 @@ COARSE_SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_COARSE_SIZES
 MPI_SIZE = int(os.environ.get("FFETI_ELASTICITY_3D_MPI_SIZE", SIZES[-1]))
 PEERS = [("UMFPACK", []), ("MUMPS", ["-DwithMUMPS=1"])]
 PRECONDITIONERS = ["lumped", "dirichlet", "none"]
-FACTORS = ["simplicial", "supernodal"]
+FACTORS = ["simplicial", "supernodal", "auto"]
 FETI = "ffeti (FETI)"
 
 
@@ -214,8 +214,9 @@ def section(memory_gib):
         f"## 3D elasticity: preconditioners and factor kinds, n = {VARIANT_SIZE}",
         "",
         "The same scene with each preconditioner (lumped: a sparse product; Dirichlet: a factorized",
-        "interior block per subdomain) and each CHOLMOD factor kind (simplicial, or supernodal with",
-        f"dense blocks through the BLAS, here {blas}).",
+        "interior block per subdomain) and each CHOLMOD factor kind (simplicial; supernodal with",
+        f"dense blocks through the BLAS, here {blas}; auto, the default, chooses by CHOLMOD's flops per",
+        "factor nonzero).",
         "",
         *markdown_table(variants, [
             ("case", "case"), ("Hessian mult.", "hessian"), ("factor nnz", ("factor_nnz", ".3g")),
