@@ -191,12 +191,13 @@ void MprgpSettings::validate() const {
 MprgpResult mprgp(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, const qp::Budget& budget,
                   const StopTest& stop, const Monitor& monitor) {
   Vec g;
-  return mprgp_with_gradient(problem, settings, x, g, false, budget, stop, monitor);
+  double g_unused_error = 0;  // g is not returned: not recomputed at the end either
+  return mprgp_with_gradient(problem, settings, x, g, false, budget, stop, monitor, &g_unused_error);
 }
 
 MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, Vec& g,
                                 bool gradient_is_current, const qp::Budget& budget, const StopTest& stop,
-                                const Monitor& monitor) {
+                                const Monitor& monitor, double* inexact_gradient) {
   const LinearOperator& A = problem.hessian;
   const Vec& b = problem.b;
   const qp::ConstraintSet& bounds = problem.constraints;
@@ -239,12 +240,17 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
   };
 
   // Bound on the part of g that sliding CG steps left out (slide_cg_step); 0 without discs.
-  double gradient_error = 0;
-  const auto exact_gradient = [&]() {
-    if (gradient_error == 0) return;
+  // With `inexact_gradient` it comes in with g and goes out with it instead of a
+  // multiplication on every return (SMALBE's inner solves: one per outer iteration).
+  double gradient_error = gradient_is_current && inexact_gradient ? *inexact_gradient : 0.0;
+  const auto recompute_gradient = [&]() {
     multiply(x, Ap);
     g = Ap - b;
     gradient_error = 0;
+  };
+  const auto exact_gradient = [&]() {
+    if (inexact_gradient) *inexact_gradient = gradient_error;
+    else if (gradient_error > 0) recompute_gradient();
   };
   if (!gradient_is_current) {
     project_onto_bounds(x, bounds);
@@ -277,6 +283,14 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
     const ReducedFreeGradient reduced = reduced_free_gradient(x, phi, bounds, abar);
     const double phit_phi = reduced.dot_phi, phit_sq = reduced.squared_norm;
     result.gradient_norm = std::sqrt(gp_sq);
+    if (gradient_error > kSlideGradientError * result.gradient_norm) {  // g carried in, or gP fell since
+      recompute_gradient();  // no stop decision on a g off by more
+      free_gradient(x, g, bounds, a_norm, phi);
+      p = precondition_in_face();
+      continued = false;
+      --iteration;
+      continue;
+    }
     if (monitor) monitor({"mprgp", iteration, result.gradient_norm, 0.0, counts.hessian, off_bound_count(x, lower)});
     if (stop(x, g, result.gradient_norm)) {
       result.status = SolveStatus::converged;
