@@ -12,7 +12,7 @@ constexpr double kCircleTolerance = 1e-12;
 
 /// A pair on its circle whose curvature there, -n'g / ||d||, exceeds this times ||A|| has its
 /// tangent held (hold_stiff_circle_pairs). Measured on the 3D friction scenes ([log](docs/log.md),
-/// 2026-11-27, "stiff circles"): 1 and 0.5 kept fewer pairs out of CG and cost more on the
+/// 2026-11-27, "stiff circles"): the lowest sum of 0.1 ... 3; 1 and 0.5 cost more on the
 /// Cattaneo-Mindlin scene's step 2 (166, 160 against 121), 0.1 more on the sheared blocks.
 constexpr double kStiffCircle = 0.3;
 
