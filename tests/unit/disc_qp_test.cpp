@@ -133,6 +133,23 @@ TEST(DiscQp, PairsSlippingHardOnSmallCirclesAgree) {
   }
 }
 
+TEST(DiscQp, StiffAndSoftCirclesTogetherAgree) {
+  // Pairs 1 and 3 on small circles (their tangent held, turned by the projected step), pairs
+  // 2 and 4 of the random radii (CG round their circles where they reach them): both rules
+  // in one solve.
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    test::DiscQp qp = test::random_disc_qp(kCondition, seed);
+    for (const int j : {1, 3}) qp.set.disc_radius.segment<2>(5 + 2 * j) *= 1e-3;
+    const Vec reference = test::accelerated_projected_gradient(qp);
+    ASSERT_LT(test::kkt_violation(qp, reference), 1e-9) << "seed " << seed;
+    Vec x = Vec::Zero(15);
+    const MprgpResult r = solve(qp, x);
+    ASSERT_EQ(r.status, SolveStatus::converged) << "seed " << seed;
+    EXPECT_LT((x - reference).norm(), 1e-8 * reference.norm()) << "seed " << seed;
+    EXPECT_LT(test::kkt_violation(qp, x), 1e-10) << "seed " << seed;
+  }
+}
+
 TEST(DiscQp, PreconditionedMpgpAgrees) {
   const test::DiscQp qp = test::random_disc_qp(kCondition, 7);
   const Vec reference = test::accelerated_projected_gradient(qp);

@@ -10,6 +10,12 @@ namespace {
 /// A pair within this relative distance of its circle counts as on it.
 constexpr double kCircleTolerance = 1e-12;
 
+/// A pair on its circle whose curvature there, -n'g / ||d||, exceeds this times ||A|| has its
+/// tangent held (hold_stiff_circle_pairs). Measured on the 3D friction scenes ([log](docs/log.md),
+/// 2026-11-27, "stiff circles"): the lowest sum of 0.1 ... 3; 1 and 0.5 cost more on the
+/// Cattaneo-Mindlin scene's step 2 (166, 160 against 121), 0.1 more on the sheared blocks.
+constexpr double kStiffCircle = 0.3;
+
 /// Calls visit(i) with the first component i of every disc pair, in order.
 template <class Visit>
 void for_each_disc_pair(const ConstraintSet& set, Visit visit) {
@@ -67,6 +73,31 @@ void precondition_circle_curvature(const Vec& x, const Vec& g, const ConstraintS
     const double holding = std::max(-d.dot(g.segment<2>(i)) / norm, 0.0);
     v.segment<2>(i) /= 1 + holding / norm / a_norm;
   }
+}
+
+namespace {
+/// Calls visit(i) with the first component i of every pair on its circle whose curvature
+/// there exceeds kStiffCircle a_norm.
+template <class Visit>
+void for_each_stiff_circle_pair(const Vec& x, const Vec& g, const ConstraintSet& set, double a_norm, Visit visit) {
+  for (const Eigen::Index i : held_disc_pairs(x, set)) {
+    const Eigen::Vector2d d = offset_from_centre(x, set, i);
+    const double norm = d.norm();
+    if (set.disc_radius[i] == 0 || norm == 0) continue;
+    const double holding = std::max(-d.dot(g.segment<2>(i)) / norm, 0.0);
+    if (holding / norm > kStiffCircle * a_norm) visit(i);
+  }
+}
+}  // namespace
+
+void hold_stiff_circle_pairs(const Vec& x, const Vec& g, const ConstraintSet& set, double a_norm, Vec& v) {
+  for_each_stiff_circle_pair(x, g, set, a_norm, [&](Eigen::Index i) { v.segment<2>(i).setZero(); });
+}
+
+bool has_stiff_circle_pairs(const Vec& x, const Vec& g, const ConstraintSet& set, double a_norm) {
+  bool found = false;
+  for_each_stiff_circle_pair(x, g, set, a_norm, [&](Eigen::Index) { found = true; });
+  return found;
 }
 
 int project_onto_discs(Vec& x, const ConstraintSet& set) {

@@ -33,6 +33,16 @@ Vec circle_curvature(const Vec& x, const Vec& g, const ConstraintSet& set, const
 /// with a small radius and a large -n'g exceeds ||A|| by orders and would set every CG step.
 void precondition_circle_curvature(const Vec& x, const Vec& g, const ConstraintSet& set, double a_norm, Vec& v);
 
+/// Sets v to 0 on the pairs on their circle whose curvature there (circle_curvature's
+/// factor) exceeds kStiffCircle = 0.3 times a_norm: their tangent is held
+/// rather than free. Such a pair, a row slipping fast under a small bound, turns best by the
+/// projected step P(x - abar g), which round its circle is close to Newton's step
+/// abar g_t / (||d|| + abar |n'g|); CG round it, the curvature changing with every g, took
+/// 231 multiplications of the 3D forced slide against 83.
+void hold_stiff_circle_pairs(const Vec& x, const Vec& g, const ConstraintSet& set, double a_norm, Vec& v);
+/// Whether any pair is held so (MPGP's proportioning then takes the projected step).
+bool has_stiff_circle_pairs(const Vec& x, const Vec& g, const ConstraintSet& set, double a_norm);
+
 /// Moves every disc pair outside its disc radially onto the circle (the Euclidean
 /// projection); returns how many pairs moved.
 int project_onto_discs(Vec& x, const ConstraintSet& set);

@@ -10,10 +10,14 @@ namespace ffeti {
 namespace {
 
 /// Free gradient phi: g on the free set, 0 on the active set; on a disc pair on its circle
-/// g's tangential part (the circle's tangent is free, qp::restrict_to_disc_faces).
-void free_gradient(const Vec& x, const Vec& g, const qp::ConstraintSet& bounds, Vec& phi) {
+/// g's tangential part (the circle's tangent is free, qp::restrict_to_disc_faces), but 0 where
+/// the circle curves much more than A (qp::hold_stiff_circle_pairs: the tangent held).
+void free_gradient(const Vec& x, const Vec& g, const qp::ConstraintSet& bounds, double a_norm, Vec& phi) {
   for (Eigen::Index i = 0; i < x.size(); ++i) phi[i] = bounds.free(i, x[i]) ? g[i] : 0.0;
-  if (bounds.has_discs()) qp::restrict_to_disc_faces(x, bounds, phi);
+  if (bounds.has_discs()) {
+    qp::restrict_to_disc_faces(x, bounds, phi);
+    qp::hold_stiff_circle_pairs(x, g, bounds, a_norm, phi);
+  }
 }
 
 /// phi'phit and ||phit||^2 of the reduced free gradient on the free set: phit_i =
@@ -187,12 +191,13 @@ void MprgpSettings::validate() const {
 MprgpResult mprgp(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, const qp::Budget& budget,
                   const StopTest& stop, const Monitor& monitor) {
   Vec g;
-  return mprgp_with_gradient(problem, settings, x, g, false, budget, stop, monitor);
+  double g_unused_error = 0;  // g is not returned: not recomputed at the end either
+  return mprgp_with_gradient(problem, settings, x, g, false, budget, stop, monitor, &g_unused_error);
 }
 
 MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, Vec& g,
                                 bool gradient_is_current, const qp::Budget& budget, const StopTest& stop,
-                                const Monitor& monitor) {
+                                const Monitor& monitor, double* inexact_gradient) {
   const LinearOperator& A = problem.hessian;
   const Vec& b = problem.b;
   const qp::ConstraintSet& bounds = problem.constraints;
@@ -228,18 +233,24 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
       if (!bounds.free(i, x[i])) z[i] = 0.0;
     if (bounds.has_discs()) {
       qp::restrict_to_disc_faces(x, bounds, z);
+      qp::hold_stiff_circle_pairs(x, g, bounds, a_norm, z);
       qp::precondition_circle_curvature(x, g, bounds, a_norm, z);
     }
     return z;
   };
 
   // Bound on the part of g that sliding CG steps left out (slide_cg_step); 0 without discs.
-  double gradient_error = 0;
-  const auto exact_gradient = [&]() {
-    if (gradient_error == 0) return;
+  // With `inexact_gradient` it comes in with g and goes out with it instead of a
+  // multiplication on every return (SMALBE's inner solves: one per outer iteration).
+  double gradient_error = gradient_is_current && inexact_gradient ? *inexact_gradient : 0.0;
+  const auto recompute_gradient = [&]() {
     multiply(x, Ap);
     g = Ap - b;
     gradient_error = 0;
+  };
+  const auto exact_gradient = [&]() {
+    if (inexact_gradient) *inexact_gradient = gradient_error;
+    else if (gradient_error > 0) recompute_gradient();
   };
   if (!gradient_is_current) {
     project_onto_bounds(x, bounds);
@@ -247,7 +258,7 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
     multiply(x, Ap);
     g = Ap - b;  // g = A x - b
   }
-  free_gradient(x, g, bounds, phi);
+  free_gradient(x, g, bounds, a_norm, phi);
   p = precondition_in_face();
 
   // True while the direction descends from one carried across a face change (expansion
@@ -272,6 +283,14 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
     const ReducedFreeGradient reduced = reduced_free_gradient(x, phi, bounds, abar);
     const double phit_phi = reduced.dot_phi, phit_sq = reduced.squared_norm;
     result.gradient_norm = std::sqrt(gp_sq);
+    if (gradient_error > kSlideGradientError * result.gradient_norm) {  // g carried in, or gP fell since
+      recompute_gradient();  // no stop decision on a g off by more
+      free_gradient(x, g, bounds, a_norm, phi);
+      p = precondition_in_face();
+      continued = false;
+      --iteration;
+      continue;
+    }
     if (monitor) monitor({"mprgp", iteration, result.gradient_norm, 0.0, counts.hessian, off_bound_count(x, lower)});
     if (stop(x, g, result.gradient_norm)) {
       result.status = SolveStatus::converged;
@@ -285,7 +304,7 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
     }
     if (iteration == 0 && settings.settle_rounds > 0) {  // a start that passes the test is kept as is
       settle_start(A, b, bounds, settings.settle_rounds, budget.max_hessian(), x, g, counts, preconditioner, monitor);
-      free_gradient(x, g, bounds, phi);
+      free_gradient(x, g, bounds, a_norm, phi);
       p = precondition_in_face();
       continue;
     }
@@ -318,7 +337,7 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
           x -= a_cg * p;   // x_{k+1} = x_k - a_cg p
           g -= a_cg * Ap;  // g = A x - b
         }
-        free_gradient(x, g, bounds, phi);
+        free_gradient(x, g, bounds, a_norm, phi);
         const Vec& direction = precondition_in_face();
         if (restart) {
           p = direction;
@@ -327,6 +346,7 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
           p = direction - (direction.dot(step_Ap) / pAp) * p;  // A-conjugate to the previous direction
           if (bounds.has_discs()) {  // round the circles the face has turned: p on its new tangents
             qp::restrict_to_disc_faces(x, bounds, p);
+            qp::hold_stiff_circle_pairs(x, g, bounds, a_norm, p);
             if (!(p.dot(g) > 0)) p = direction;
           }
         }
@@ -347,7 +367,7 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
           // Pairs sliding on their circle went a little out (second order in a_f): back onto
           // it, g there inexact by A times that, until the step below recomputes it.
           if (bounds.has_discs()) qp::project_onto_discs(x, bounds);
-          free_gradient(x, g, bounds, phi);
+          free_gradient(x, g, bounds, a_norm, phi);
           const ReducedFreeGradient at_half = reduced_free_gradient(x, phi, bounds, abar);  // at x - a_f p
           const double guaranteed =
               f_half - abar * at_half.dot_phi + 0.5 * a_norm * abar * abar * at_half.squared_norm;
@@ -364,7 +384,7 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
           x -= a_f * p;
           g -= a_f * Ap;
           if (bounds.has_discs()) qp::project_onto_discs(x, bounds);  // as above
-          free_gradient(x, g, bounds, phi);
+          free_gradient(x, g, bounds, a_norm, phi);
         }
         if (!expanded) {
           fixed_projected_step(x, g, phi, bounds, abar);  // expansion: fixed-step projected gradient step
@@ -372,7 +392,7 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
           g = Ap - b;
         }
         gradient_error = 0;  // g computed anew at the new x, either way
-        free_gradient(x, g, bounds, phi);
+        free_gradient(x, g, bounds, a_norm, phi);
         const Vec& direction = precondition_in_face();
         continued = false;
         if (expanded && settings.expansion == MprgpExpansion::projected_cg) {
@@ -381,7 +401,10 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
           // step (the large contact zone: 1.7 times the multiplications, docs/algorithms.md).
           for (Eigen::Index i = 0; i < n; ++i)
             if (!bounds.free(i, x[i])) p[i] = 0.0;
-          if (bounds.has_discs()) qp::restrict_to_disc_faces(x, bounds, p);
+          if (bounds.has_discs()) {
+            qp::restrict_to_disc_faces(x, bounds, p);
+            qp::hold_stiff_circle_pairs(x, g, bounds, a_norm, p);
+          }
           trial = direction - (direction.dot(step_Ap) / pAp) * p;  // Ap = A p of the last direction
           continued = trial.dot(g) > 0;                       // a descent direction, or restart
         }
@@ -391,6 +414,23 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
     } else {
       // Proportioning: release components of the active set along the chopped gradient (on a
       // disc pair on its circle its inward normal part: the tangential part is free).
+      // Where stiff circle pairs hold their tangent, the projected step P(x - abar (g - phi))
+      // instead (the free components stay; phi, tangential on the other circle pairs, does
+      // not change f to first order along their radial moves): it turns those pairs by
+      // about Newton's step round their circles and decreases f by at least
+      // (1/abar - ||A||/2) ||dx||^2 (the projection's variational inequality).
+      if (bounds.has_discs() && qp::has_stiff_circle_pairs(x, g, bounds, a_norm)) {
+        x -= abar * (g - phi);
+        project_onto_bounds(x, bounds);
+        multiply(x, Ap);
+        g = Ap - b;
+        gradient_error = 0;
+        free_gradient(x, g, bounds, a_norm, phi);
+        p = precondition_in_face();
+        continued = false;
+        ++counts.proportioning;
+        continue;
+      }
       multiply(beta, Ap);
       const double dAd = beta.dot(Ap);
       if (!(dAd > 0)) {
@@ -405,7 +445,7 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
       x -= a * beta;
       if (a == a_feasible) project_onto_bounds(x, bounds);  // the bound reached exactly, not round-off past it
       g -= a * Ap;
-      free_gradient(x, g, bounds, phi);
+      free_gradient(x, g, bounds, a_norm, phi);
       p = precondition_in_face();
       continued = false;
       ++counts.proportioning;

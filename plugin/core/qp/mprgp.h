@@ -62,16 +62,20 @@ int off_bound_count(const Vec& x, const Vec& lower);
 /// gradient and the feasible step respect both. With disc blocks this is MPGP: the same
 /// steps with the disc's geometry (qp/disc.h), the tangent of a pair on its circle free: CG
 /// moves such a pair along it with the circle's curvature added to A and projects it back
-/// (g then known to 1e-2 ||gP|| between recomputations, exact on return), the fixed step
-/// goes along g - beta, and proportioning releases pairs radially into their discs.
+/// (g then known to 1e-2 ||gP|| between recomputations and at every stop decision), a pair
+/// whose circle curves more than 0.3 ||A|| holds its tangent instead, the fixed step
+/// goes along g - beta, and proportioning releases pairs radially into their discs (with
+/// held stiff pairs, the projected step P(x - abar (g - phi)) that also turns them).
 MprgpResult mprgp(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, const qp::Budget& budget,
                   const StopTest& stop, const Monitor& monitor = {});
 
 /// The same, continued from an iterate whose gradient is known: if `gradient_is_current`,
 /// g on entry must equal Ax - b at the (feasible) x, saving one multiplication (SMALBE's
 /// inner solves after a multiplier update); g = Ax - b at the last iterate on return.
+/// With `inexact_gradient` (discs only make it nonzero) g may be off by up to that bound, in
+/// and out: g is recomputed only when the bound exceeds 1e-2 ||gP||, not on every return.
 MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, Vec& g,
                                 bool gradient_is_current, const qp::Budget& budget, const StopTest& stop,
-                                const Monitor& monitor = {});
+                                const Monitor& monitor = {}, double* inexact_gradient = nullptr);
 
 }  // namespace ffeti

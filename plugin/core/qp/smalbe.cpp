@@ -41,6 +41,7 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
   Vec shifted_b = b - nu;          // linear term of the inner problem
   Vec Qx(n), Qv(n), g(n);  // Qx: Q at the iterate; Qv: scratch of the operator A
   bool gradient_is_current = false;
+  double gradient_error = 0;  // of g, left by MPGP's sliding steps (discs): carried, not recomputed
   double previous_lagrangian = std::numeric_limits<double>::infinity();
   double best_q_norm = std::numeric_limits<double>::infinity();
   int stalled_rounds = 0;
@@ -101,7 +102,7 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
     inner_problem.hessian_norm = std::max(problem.hessian_norm, rho);
     const MprgpResult inner_result =
         mprgp_with_gradient(inner_problem, inner, x, g, gradient_is_current,
-                            qp::Budget(budget.remaining(result.counts.hessian)), inner_stop);
+                            qp::Budget(budget.remaining(result.counts.hessian)), inner_stop, {}, &gradient_error);
     result.counts += inner_result.counts;
     result.rho = rho;
     if (globally_done) {
