@@ -2,7 +2,9 @@
 # Benchmarks (not tests: they measure and report). Each writes a page with tables and
 # plots into docs/results/ from one run on this machine.
 #   ./scripts/benchmark.sh model-problem   numerical scalability, accuracy against time,
-#                                          solver variants, direct-solver floor (~2 min)
+#                                          solver variants, direct-solver floor, the dual operator
+#                                          against the memory bandwidth (~2 min; "model-problem
+#                                          --only bandwidth": that last part alone, ~2 min)
 #   ./scripts/benchmark.sh parallel        MPI ranks and OpenMP threads, h = 1/1024 (~3 min)
 #   ./scripts/benchmark.sh hertz           cylinder on a block against Hertz, mesh refinement
 #   ./scripts/benchmark.sh multibody       three stacked bodies: figures and a von Mises picture
@@ -37,7 +39,7 @@ dpkg-query -W -f='${Status}' python3-matplotlib 2>/dev/null | grep -q "install o
   "${as_root[@]}" apt-get install -y -qq python3-matplotlib >/dev/null
 }
 case "${1:-all}" in
-  model-problem) /usr/bin/python3 "$root/scripts/model_problem_benchmark.py" ;;
+  model-problem) /usr/bin/python3 "$root/scripts/model_problem_benchmark.py" "${@:2}" ;;
   parallel) /usr/bin/python3 "$root/scripts/parallel_benchmark.py" ;;
   hertz) /usr/bin/python3 "$root/scripts/hertz_benchmark.py" ;;
   multibody) /usr/bin/python3 "$root/scripts/multibody_picture.py" ;;

@@ -3,7 +3,9 @@
 writes them as raw data (docs/results/model-problem-<table>.csv, one per table) and renders
 docs/results/model-problem.md with tables and plots from those files (--render: again from
 the CSVs, no run). Every figure in that page comes from this one run on this machine; the
-reading (model-problem-reading.md, written by hand) is appended."""
+reading (model-problem-reading.md, written by hand) is appended. Its last part, the dual
+operator against the memory bandwidth (scripts/bandwidth_bound.py), runs at the end and
+records its own load; --only bandwidth runs that part alone and re-renders the page."""
 import argparse
 import os
 
@@ -14,6 +16,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from ffeti_bench import (OUT, PHASES, READINGS, begin_run, end_run, f, machine_line, markdown_table,  # noqa: E402
                          model_problem, phase_table, read_csv, run, save_page, write_csv)
+import bandwidth_bound  # noqa: E402
 
 SIZES = [64, 128, 256, 512]
 # The whole scene's phases at these sizes (FFETI_MODEL_PROBLEM_PHASE_SIZES overrides; --quick:
@@ -32,9 +35,13 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--quick", action="store_true", help="sizes up to 256, fewer tolerances")
     parser.add_argument("--render", action="store_true", help="re-render the page from its CSVs, no run")
+    parser.add_argument("--only", choices=("bandwidth",), help="run this part alone, keep the other tables")
     options = parser.parse_args()
-    if not options.render:
+    if options.only == "bandwidth" and not options.render:
+        bandwidth_bound.measure()
+    elif not options.render:
         measure(SIZES[:3] if options.quick else SIZES, options.quick)
+        bandwidth_bound.measure()  # last, on its own load record: the machine as quiet as it gets
     render()
 
 
@@ -263,6 +270,7 @@ def render():
             ("setup [s]", ("time_setup", ".3f")), ("solve [s]", ("time_solve", ".3f")),
             ("energy", ("energy", ".8f")), ("status", "status")]),
         "",
+        *bandwidth_bound.section(),
     ]
     with open(os.path.join(READINGS, "model-problem-reading.md")) as reading:
         lines.append(reading.read())

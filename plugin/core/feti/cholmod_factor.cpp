@@ -168,4 +168,13 @@ double CholmodFactor::factor_nonzeros() const {
   return total;
 }
 
+double CholmodFactor::factor_bytes() const {
+  if (!factor_) return 0;
+  const double value = sizeof(double), index = sizeof(int);  // CHOLMOD_INT factors (view_lower)
+  if (factor_->is_super)  // blocks x, row indices s, and per supernode super, pi and px
+    return static_cast<double>(factor_->xsize) * value + static_cast<double>(factor_->ssize) * index +
+           3.0 * static_cast<double>(factor_->nsuper + 1) * index;
+  return factor_nonzeros() * (value + index) + 2.0 * static_cast<double>(factor_->n) * index;  // x, i; p, nz
+}
+
 }  // namespace ffeti

@@ -47,6 +47,12 @@ class CholmodFactor {
 
   Eigen::Index size() const { return size_; }
   double factor_nonzeros() const;  ///< nnz(L), for reports
+  /// Bytes one triangular solve (forward or backward) reads of the factor: its values and
+  /// the integer indices that locate them (simplicial: a row index per entry and a start
+  /// and count per column; supernodal: dense blocks of values, a row index per block row and
+  /// a few pointers per supernode). A Hessian multiplication reads it at least once (twice,
+  /// L then L', where it does not stay in cache): the memory-bandwidth bound of a solve.
+  double factor_bytes() const;
   bool supernodal() const { return factor_ && factor_->is_super; }
   /// The analysis' flop count of the factorization and nnz(L) without the supernodes'
   /// padding (CHOLMOD's Common->fl and ->lnz): what an automatic choice judged.

@@ -21,18 +21,23 @@ DualOperator::DualOperator(const SubdomainList& subdomains, const std::vector<Lo
 void DualOperator::apply(const Vec& x, Vec& y) const {
   Stopwatch clock;
   const int count = static_cast<int>(subdomains_.size());
-#pragma omp parallel for schedule(dynamic) num_threads(threads_)
+  double solves = 0;
+#pragma omp parallel for schedule(dynamic) num_threads(threads_) reduction(+ : solves)
   for (int s = 0; s < count; ++s) {
     const auto i = static_cast<size_t>(s);
     if (local_[i].rows.empty()) continue;
     for (size_t k = 0; k < local_[i].rows.size(); ++k)
       gathered_[i][static_cast<Eigen::Index>(k)] = x[local_[i].rows[k]];
     local_rhs_[i].noalias() = local_[i].B.transpose() * gathered_[i];  // B_s' x
+    const Stopwatch solve_clock;
     subdomains_[i]->apply_pseudo_inverse(local_rhs_[i], local_solution_[i]);
+    solves += solve_clock.seconds();
     local_result_[i].noalias() = local_[i].B * local_solution_[i];     // B_s K_s^+ B_s' x
   }
   sum_local_results(y);
   application_seconds_ += clock.seconds();
+  solve_seconds_ += solves;
+  ++applications_;
 }
 
 void DualOperator::apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
@@ -40,7 +45,8 @@ void DualOperator::apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
   const int count = static_cast<int>(subdomains_.size());
   block_gathered_.resize(subdomains_.size()), block_rhs_.resize(subdomains_.size());
   block_solution_.resize(subdomains_.size()), block_result_.resize(subdomains_.size());
-#pragma omp parallel for schedule(dynamic) num_threads(threads_)
+  double solves = 0;
+#pragma omp parallel for schedule(dynamic) num_threads(threads_) reduction(+ : solves)
   for (int s = 0; s < count; ++s) {
     const auto i = static_cast<size_t>(s);
     if (local_[i].rows.empty()) continue;
@@ -49,7 +55,9 @@ void DualOperator::apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
     for (size_t k = 0; k < local_[i].rows.size(); ++k)
       gathered.row(static_cast<Eigen::Index>(k)) = x.row(local_[i].rows[k]);
     block_rhs_[i].noalias() = local_[i].B.transpose() * gathered;
+    const Stopwatch solve_clock;
     subdomains_[i]->apply_pseudo_inverse(block_rhs_[i], block_solution_[i]);
+    solves += solve_clock.seconds();
     block_result_[i].noalias() = local_[i].B * block_solution_[i];
   }
   y.resize(rows_, x.cols());
@@ -63,6 +71,8 @@ void DualOperator::apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
     y.col(j) = column;
   }
   application_seconds_ += clock.seconds();
+  solve_seconds_ += solves;
+  applications_ += x.cols();
 }
 
 void DualOperator::apply_B_pseudo_inverse(const std::vector<Vec>& v, Vec& y) const {

@@ -40,6 +40,13 @@ class DualOperator {
   /// Wall-clock seconds spent in apply() (both forms) since construction: a solve's share
   /// of its time that is the dual operator itself, apart from the vector and coarse work.
   double application_seconds() const { return application_seconds_; }
+  /// Columns F was applied to in apply() (both forms) since construction.
+  long applications() const { return applications_; }
+  /// Of application_seconds(), the subdomain solves K_s^+ (CHOLMOD's forward and backward
+  /// triangular solves with the reduced-to-full copies around them), summed over
+  /// subdomains: thread-seconds, the wall-clock share only on one thread. The rest of an
+  /// application is B_s', B_s and the sum over subdomains.
+  double solve_seconds() const { return solve_seconds_; }
 
   /// sum_s ||B_s' x||^2 over this rank's subdomains (callers sum over the ranks).
   double local_transpose_squared_norm(const Vec& x) const;
@@ -59,7 +66,8 @@ class DualOperator {
   mutable std::vector<Vec> gathered_, local_rhs_, local_solution_, local_result_;
   mutable std::vector<Eigen::MatrixXd> block_gathered_, block_rhs_, block_solution_, block_result_;
   mutable Vec column_;
-  mutable double application_seconds_ = 0;
+  mutable double application_seconds_ = 0, solve_seconds_ = 0;
+  mutable long applications_ = 0;
   mutable std::vector<double> flat_;
 };
 

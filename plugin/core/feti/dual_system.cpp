@@ -119,15 +119,22 @@ double DualSystem::estimated_norm(CachedNorm& cache, const LinearOperator& H,
                                   DualSolution& result) const {
   if (!cache.norm) {
     Stopwatch clock;
-    const double operator_start = F_->application_seconds();
+    const OperatorUse operator_start = operator_use();
     const NormEstimate estimate = estimate_norm(H, rows(), settings, start_filter);
     cache.norm = estimate.norm;
     cache.cost = estimate.multiplications;
     result.times.norm_estimate = clock.seconds();
-    result.times.dual_operator -= F_->application_seconds() - operator_start;  // the estimate's, not the solve's
+    charge_operator_use(operator_start, -1, 1, result);  // the estimate's, not the solve's
   }
   result.counts.hessian_norm_estimate += cache.cost;
   return *cache.norm;
+}
+
+void DualSystem::charge_operator_use(const OperatorUse& start, double sign, int runs, DualSolution& result) const {
+  const OperatorUse now = operator_use();
+  result.times.dual_operator += sign * (now.seconds - start.seconds) / runs;
+  result.times.factor_solves += sign * (now.solve_seconds - start.solve_seconds) / runs;
+  result.dual_operator_applications += static_cast<long>(sign) * (now.applications - start.applications) / runs;
 }
 
 void DualSystem::apply_PFP(const Vec& x, Vec& y) const {

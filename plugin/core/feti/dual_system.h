@@ -86,14 +86,16 @@ struct PhaseTimes {  ///< wall-clock seconds; in a problem's result over several
   double dual_operator = 0;   ///< the part of solve spent applying F
   double preconditioner = 0;  ///< the part of solve spent applying the preconditioner
   double primal_checks = 0;   ///< the part of solve spent in the stopping test's primal checks
+  double hessian = 0;         ///< the part of solve in the solver's Hessian multiplications (F, projections)
+  double factor_solves = 0;   ///< of dual_operator, the subdomain solves (thread-seconds: DualOperator)
 
   /// Several solves of one problem (friction's fixed point) add up phase by phase.
   PhaseTimes& operator+=(const PhaseTimes& o) {
     double* mine[] = {&constraints, &factorization, &coarse_space, &dual_data, &norm_estimate, &free_rows, &solve,
-                      &recovery, &kkt, &dual_operator, &preconditioner, &primal_checks};
+                      &recovery, &kkt, &dual_operator, &preconditioner, &primal_checks, &hessian, &factor_solves};
     const double* theirs[] = {&o.constraints, &o.factorization, &o.coarse_space, &o.dual_data, &o.norm_estimate,
                               &o.free_rows, &o.solve, &o.recovery, &o.kkt, &o.dual_operator, &o.preconditioner,
-                              &o.primal_checks};
+                              &o.primal_checks, &o.hessian, &o.factor_solves};
     for (size_t k = 0; k < sizeof(mine) / sizeof(mine[0]); ++k) *mine[k] += *theirs[k];
     return *this;
   }
@@ -125,6 +127,7 @@ struct DualSolution {
   double equality_reference = 0;
   double violation = -1;         ///< relative_kkt: the last check's measure (-1: no check ran)
   int scale_evaluations = 0;     ///< relative_kkt: primal checks (a K^+ application each)
+  long dual_operator_applications = 0;  ///< columns F was applied to in the solve (times.dual_operator's)
   Vec lambda;                    ///< multipliers, rows ordered as constraints()
   /// SMALBE path: the solver's final multiplier term of the equality part (qp/smalbe.h);
   /// empty on the other paths. The next solve of the same system with other bounds starts
@@ -188,6 +191,14 @@ class DualSystem {
   };
   double estimated_norm(CachedNorm& cache, const LinearOperator& H, const std::function<void(Vec&)>& start_filter,
                         const NormEstimateSettings& settings, DualSolution& result) const;
+  struct OperatorUse {  // F's running totals (DualOperator), to charge a solve their difference
+    double seconds, solve_seconds;
+    long applications;
+  };
+  OperatorUse operator_use() const { return {F_->application_seconds(), F_->solve_seconds(), F_->applications()}; }
+  /// Adds F's use since `start`, times `sign` (-1: the norm estimate's, not the solve's), to
+  /// result's dual_operator, factor_solves and dual_operator_applications, divided by `runs`.
+  void charge_operator_use(const OperatorUse& start, double sign, int runs, DualSolution& result) const;
   void apply_PFP(const Vec& x, Vec& y) const;  // the projected dual operator, on reused buffers
   void apply_PFP(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const;
   DualSolution prepared(const DualData& data, const DualSolveSettings& settings) const;  // path, references

@@ -149,11 +149,12 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   compute_dual_data();
 
   long local_primal = 0;
-  double local_nonzeros = 0;
+  double local_nonzeros = 0, local_bytes = 0;
   for (size_t k = 0; k < inputs_.size(); ++k) local_primal += inputs_[k].K.rows();
-  for (const auto& s : subdomains_) local_nonzeros += s->factor_nonzeros();
+  for (const auto& s : subdomains_) local_nonzeros += s->factor_nonzeros(), local_bytes += s->factor_bytes();
   primal_dimension_ = static_cast<long>(comm.sum(static_cast<double>(local_primal)));
   factor_nonzeros_ = comm.sum(local_nonzeros);
+  factor_bytes_ = comm.sum(local_bytes);
   gather_rank_statistics(0.0);
   setup_times_ = {comm.max(setup_times_.constraints), comm.max(setup_times_.factorization),
                   comm.max(setup_times_.coarse_space), comm.max(setup_times_.dual_data), 0, 0, 0, 0};
@@ -378,7 +379,7 @@ FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
   gather_rank_statistics(result.times.norm_estimate + result.times.solve);
   PhaseTimes& t = result.times;  // the slowest rank's, by name (a positional list broke once a phase was added)
   for (double* phase : {&t.norm_estimate, &t.free_rows, &t.solve, &t.dual_operator, &t.preconditioner, &t.primal_checks, &t.recovery,
-                         &t.kkt})
+                         &t.kkt, &t.hessian, &t.factor_solves})
     *phase = comm_->max(*phase);
   return result;
 }

@@ -141,6 +141,8 @@ class FetiProblem {
   const FetiSetupSettings& settings() const { return settings_; }
   FetiVariant variant() const { return settings_.variant; }
   double factor_nonzeros() const { return factor_nonzeros_; }
+  /// Bytes one pass over every subdomain's factor reads (CholmodFactor::factor_bytes).
+  double factor_bytes() const { return factor_bytes_; }
   /// The solver path the data call for (ALGORITHMS.md section 6).
   DualPath path() const { return dual_->path(); }
 
@@ -187,7 +189,7 @@ class FetiProblem {
   Vec step_start_;                      // friction: multipliers of the last load step (empty: none)
   long primal_dimension_ = 0;
   long factorizations_ = 0, supernodal_factors_ = 0, symbolic_analyses_ = 0;
-  double factor_nonzeros_ = 0;
+  double factor_nonzeros_ = 0, factor_bytes_ = 0;
   mutable std::vector<RankStatistics> rank_statistics_;
   PhaseTimes setup_times_;
   double local_factor_seconds_ = 0;  // this rank's, for the rank report

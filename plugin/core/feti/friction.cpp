@@ -60,6 +60,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
   Vec g = law.coulomb() ? coulomb_bounds(c, settings.start) : law.slip_bound;
   IterationCounts counts;
   PhaseTimes times;
+  long applications = 0;  // of F, summed like the counts and times
   // maxit holds over the whole fixed point: each Tresca solve gets what the ones before left.
   settings.validate();
   const qp::Budget budget(settings.max_hessian);
@@ -77,6 +78,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
     counts += solved.counts;
     counts.hessian_norm_estimate = out.iterations == 1 ? solved.counts.hessian_norm_estimate : estimate;
     times += solved.times;
+    applications += solved.dual_operator_applications;
     out.dual = std::move(solved);
     out.slip_bound = g;
     if (!law.coulomb() || out.dual.status != SolveStatus::converged) break;
@@ -100,6 +102,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
   }
   out.dual.counts = counts;
   out.dual.times = times;
+  out.dual.dual_operator_applications = applications;
   return out;
 }
 

@@ -37,6 +37,7 @@ class Subdomain {
   /// subdomain was built from (the check run at set-up).
   double pseudo_inverse_residual(const SparseMatrix& K) const;
   double factor_nonzeros() const { return factor_.factor_nonzeros(); }
+  double factor_bytes() const { return factor_.factor_bytes(); }
   bool supernodal() const { return factor_.supernodal(); }
 
  private:

@@ -1,0 +1,153 @@
+#!/usr/bin/env python3
+"""The dual operator against the memory-bandwidth bound: one part of the model-problem page
+(scripts/model_problem_benchmark.py; alone: scripts/benchmark.sh model-problem --only
+bandwidth). Each Hessian multiplication applies F = B K^+ B' once: per subdomain a forward and
+a backward triangular solve with its CHOLMOD factor, which reads every factor at least once
+(twice, L then L', where a factor does not stay in cache). So no multiplication can take less
+than (bytes of all factors) / (memory bandwidth). This part measures the bandwidth with
+build/tests/stream_triad (STREAM's triad, arrays far larger than the caches, best of several
+runs) and runs the 2D model problem (edp/model-problem.edp) and the 3D elasticity cubes
+(edp/cubes-elasticity-3d.edp), both on one thread (like the bandwidth), for their factor bytes
+and their times per multiplication: the whole Hessian multiplication (F with the coarse
+projections), F alone, and the triangular solves inside F.
+  scripts/bandwidth_bound.py [--render]   measure (CSV into FFETI_RESULTS or docs/results) and
+                                          print the page's section in Markdown
+FFETI_BANDWIDTH_2D / FFETI_BANDWIDTH_3D: the sizes n (default "256 512 1024" and "16 32");
+FFETI_BUILD: the build tree holding tests/stream_triad (default build/)."""
+import argparse
+import glob
+import os
+import subprocess
+
+from ffeti_bench import ROOT, begin_run, end_run, f, machine_line, markdown_table, read_csv, run, write_csv
+from three_dimensions_elasticity import blas_library
+
+PAGE = "model-problem"
+SIZES_2D = [int(n) for n in os.environ.get("FFETI_BANDWIDTH_2D", "256 512 1024").split()]
+SIZES_3D = [int(n) for n in os.environ.get("FFETI_BANDWIDTH_3D", "16 32").split()]
+BUILD = os.environ.get("FFETI_BUILD", os.path.join(ROOT, "build"))
+ARRAY_MB, STREAM_RUNS = 256, 10  # three arrays of 256 MB: 24 times the 32 MiB L3 here
+
+
+def cache_sizes():
+    """{level: bytes} of cpu0's data and unified caches (/sys/devices/system/cpu)."""
+    sizes = {}
+    for folder in glob.glob("/sys/devices/system/cpu/cpu0/cache/index*"):
+        with open(os.path.join(folder, "type")) as kind, open(os.path.join(folder, "level")) as level, \
+                open(os.path.join(folder, "size")) as size:
+            if kind.read().strip() in ("Data", "Unified"):
+                text = size.read().strip()
+                scale = {"K": 2**10, "M": 2**20}.get(text[-1], 1)
+                sizes[int(level.read())] = int(text.rstrip("KM")) * scale
+    return sizes
+
+
+def bandwidth():
+    """One row: stream_triad's best triad and read-only bandwidths on one thread, the caches."""
+    binary = os.path.join(BUILD, "tests", "stream_triad")
+    if not os.path.exists(binary):
+        raise SystemExit(f"bandwidth_bound.py: {binary} is missing: build it (cmake --build build --target stream_triad)")
+    out = subprocess.run([binary, str(ARRAY_MB), str(STREAM_RUNS), "1"], check=True, capture_output=True,
+                         text=True).stdout.splitlines()
+    row = dict(zip(out[0].split(","), out[1].split(",")))
+    caches = cache_sizes()
+    row.update(l2_bytes=caches.get(2, ""), l3_bytes=caches.get(3, ""), blas=blas_library())
+    return row
+
+
+def per_multiplication(row, triad_gb_s):
+    """The scene's result row with its times per multiplication and its bound (seconds)."""
+    applications = f(row, "dual_operator_applications")
+    row["t_hessian"] = f(row, "time_hessian") / f(row, "hessian")
+    row["t_operator"] = f(row, "time_dual_operator") / applications
+    row["t_solves"] = f(row, "time_factor_solves") / applications
+    row["t_bound"] = f(row, "factor_bytes") / (triad_gb_s * 1e9)
+    return row
+
+
+def measure():
+    begun = begin_run()
+    stream = write_csv(PAGE, "bandwidth", [bandwidth()])[0]
+    triad = f(stream, "triad_gb_s")
+    rows = []
+    for n in SIZES_2D:
+        result = run("model-problem.edp", "-n", n, "-threads", 1)["RESULT"][0]
+        rows.append(per_multiplication(dict(problem="2D model problem", **result), triad))
+    for n in SIZES_3D:
+        result = run("cubes-elasticity-3d.edp", "-n", n, "-threads", 1)["RESULT"][0]
+        result["primal"] = result["unknowns"]
+        rows.append(per_multiplication(dict(problem="3D elasticity cubes", **result), triad))
+    write_csv(PAGE, "bandwidth-bound", rows)
+    end_run(PAGE, begun, table="bandwidth-run")
+
+
+def cache_note(row, stream):
+    """Where the factors stand against the caches: all of them within L3 beat the DRAM bound."""
+    total, each = f(row, "factor_bytes"), f(row, "factor_bytes") / f(row, "subdomains")
+    if stream["l3_bytes"] and total <= float(stream["l3_bytes"]):
+        return "all in L3"
+    if stream["l2_bytes"] and each <= float(stream["l2_bytes"]):
+        return "each in L2"
+    return "each in L3" if stream["l3_bytes"] and each <= float(stream["l3_bytes"]) else "none"
+
+
+def section():
+    """The page's section, rendered from the part's CSVs."""
+    stream = read_csv(PAGE, "bandwidth")[0]
+    rows = read_csv(PAGE, "bandwidth-bound")
+    run_row = read_csv(PAGE, "bandwidth-run")[0]
+    mib = 2**20
+    caches = (f"L2 {float(stream['l2_bytes']) / mib:.0f} MiB per core, L3 {float(stream['l3_bytes']) / mib:.0f} MiB shared"
+              if stream["l2_bytes"] and stream["l3_bytes"] else "cache sizes unknown")
+    return [
+        "## The dual operator against the memory bandwidth",
+        "",
+        f"Measured apart from the tables above ({machine_line(run_row)})",
+        "A Hessian multiplication applies F = B K^+ B' once: per subdomain a forward and a backward",
+        "triangular solve with its CHOLMOD factor. Each reads the whole factor, so no multiplication",
+        "takes less than the bound = (bytes of all factors) / (memory bandwidth), when the factors do not",
+        "fit in cache together (once L is read, L' may come from cache where one subdomain's factor fits:",
+        "one pass is the bound; two passes from memory would double it). Factor bytes: values (8 bytes)",
+        "and the integer indices locating them (4 bytes per entry of a simplicial factor and per row of a",
+        "supernode), `fetiInfo(P, \"factor_bytes\")`. Bandwidth: `tests/stream_triad.cpp`, STREAM's triad",
+        f"a = b + s c on three arrays of {float(stream['array_mb']):.0f} MB, best of {stream['runs']} runs, one thread:",
+        f"**{f(stream, 'triad_gb_s'):.2f} GB/s** (24 bytes per element; a read-only sum reached",
+        f"{f(stream, 'read_gb_s'):.2f} GB/s). Caches: {caches}. BLAS (supernodal solves): {stream['blas']}. Both scenes",
+        "run on one thread (`-threads 1`) at their default options. Per multiplication: `Hessian` the solver's whole multiplication",
+        "(`time_hessian / hessian`: F and the coarse projections around it), `F` the dual operator",
+        "(`time_dual_operator / dual_operator_applications`: gathers, B_s', the solves, B_s and the sum),",
+        "`solves` the triangular solves inside F (`time_factor_solves / dual_operator_applications`,",
+        "with the copies between a subdomain's dofs and its factor's). `in cache`: where the factors",
+        "fit (all of them in L3: the DRAM bound does not hold; each in L2 or L3: L' after L from cache).",
+        f"Raw data: [{PAGE}-bandwidth-bound.csv]({PAGE}-bandwidth-bound.csv),",
+        f"[{PAGE}-bandwidth.csv]({PAGE}-bandwidth.csv).",
+        "",
+        *markdown_table(rows, [
+            ("problem", "problem"), ("n", "n"), ("subdomains", "subdomains"), ("unknowns", "primal"),
+            ("supernodal", lambda r: f"{r['supernodal_factors']} of {r['subdomains']}"),
+            ("factor MB", lambda r: f"{f(r, 'factor_bytes') / 1e6:.1f}"),
+            ("per subdomain MB", lambda r: f"{f(r, 'factor_bytes') / f(r, 'subdomains') / 1e6:.2f}"),
+            ("in cache", lambda r: cache_note(r, stream)),
+            ("Hessian mult.", "hessian"), ("F applied", "dual_operator_applications"),
+            ("Hessian [ms]", lambda r: f"{1e3 * f(r, 't_hessian'):.2f}"),
+            ("F [ms]", lambda r: f"{1e3 * f(r, 't_operator'):.2f}"),
+            ("solves [ms]", lambda r: f"{1e3 * f(r, 't_solves'):.2f}"),
+            ("bound [ms]", lambda r: f"{1e3 * f(r, 't_bound'):.2f}"),
+            ("solves / bound", lambda r: f"{f(r, 't_solves') / f(r, 't_bound'):.2f}"),
+            ("F / bound", lambda r: f"{f(r, 't_operator') / f(r, 't_bound'):.2f}"),
+            ("Hessian / bound", lambda r: f"{f(r, 't_hessian') / f(r, 't_bound'):.2f}"),
+            ("solves' GB/s", lambda r: f"{f(r, 'factor_bytes') / f(r, 't_solves') / 1e9:.2f}")]),
+        "",
+    ]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--render", action="store_true", help="print the section from the CSVs, no run")
+    if not parser.parse_args().render:
+        measure()
+    print("\n".join(section()))
+
+
+if __name__ == "__main__":
+    main()
