@@ -15,7 +15,9 @@ projections), F alone, and the triangular solves inside F.
 FFETI_BANDWIDTH_2D / FFETI_BANDWIDTH_3D: the sizes n (default "256 512 1024" and "16 32");
 FFETI_BUILD: the build tree holding tests/stream_triad (default build/)."""
 import argparse
+import csv
 import glob
+import io
 import os
 import subprocess
 
@@ -27,6 +29,9 @@ SIZES_2D = [int(n) for n in os.environ.get("FFETI_BANDWIDTH_2D", "256 512 1024")
 SIZES_3D = [int(n) for n in os.environ.get("FFETI_BANDWIDTH_3D", "16 32").split()]
 BUILD = os.environ.get("FFETI_BUILD", os.path.join(ROOT, "build"))
 ARRAY_MB, STREAM_RUNS = 256, 10  # three arrays of 256 MB: 24 times the 32 MiB L3 here
+# One subdomain of each scene as build/tests/factor_kinds_probe builds it (dimension,
+# components, cells per side): the model problem's H/h = 64 squares, the cubes' 8^3 boxes.
+SUBDOMAINS = {"2D model problem": (2, 1, 64), "3D elasticity cubes": (3, 3, 8)}
 
 
 def cache_sizes():
@@ -55,6 +60,17 @@ def bandwidth():
     return row
 
 
+def cache_hot_solves():
+    """Per scene, one subdomain-like factor of each kind solved right after its factorization
+    (its factor in cache; best of 10, one thread): the triangular solves' speed without memory."""
+    binary = os.path.join(BUILD, "tests", "factor_kinds_probe")
+    rows = []
+    for problem, case in SUBDOMAINS.items():
+        out = subprocess.run([binary, *map(str, case), "1", "10"], check=True, capture_output=True, text=True).stdout
+        rows += [dict(problem=problem, **r) for r in csv.DictReader(io.StringIO(out))]
+    return rows
+
+
 def per_multiplication(row, triad_gb_s):
     """The scene's result row with its times per multiplication and its bound (seconds)."""
     applications = f(row, "dual_operator_applications")
@@ -68,6 +84,7 @@ def per_multiplication(row, triad_gb_s):
 def measure():
     begun = begin_run()
     stream = write_csv(PAGE, "bandwidth", [bandwidth()])[0]
+    write_csv(PAGE, "bandwidth-in-cache", cache_hot_solves())
     triad = f(stream, "triad_gb_s")
     rows = []
     for n in SIZES_2D:
@@ -91,36 +108,52 @@ def cache_note(row, stream):
     return "each in L3" if stream["l3_bytes"] and each <= float(stream["l3_bytes"]) else "none"
 
 
+def cache_hot(row, hot):
+    """The probe's cache-hot solve of the kind the scene's factors have (all of one kind)."""
+    kind = "supernodal" if row["supernodal_factors"] == row["subdomains"] else "simplicial"
+    return next((r for r in hot if r["problem"] == row["problem"] and r["kind"] == kind), None)
+
+
 def section():
     """The page's section, rendered from the part's CSVs."""
     stream = read_csv(PAGE, "bandwidth")[0]
     rows = read_csv(PAGE, "bandwidth-bound")
+    hot = [r for r in read_csv(PAGE, "bandwidth-in-cache") if r["kind"] != "automatic"]
     run_row = read_csv(PAGE, "bandwidth-run")[0]
     mib = 2**20
     caches = (f"L2 {float(stream['l2_bytes']) / mib:.0f} MiB per core, L3 {float(stream['l3_bytes']) / mib:.0f} MiB shared"
               if stream["l2_bytes"] and stream["l3_bytes"] else "cache sizes unknown")
+
+    def hot_ms(r):  # the scene's subdomains times one cache-hot solve of its kind
+        h = cache_hot(r, hot)
+        return f"{1e3 * f(r, 'subdomains') * f(h, 'solve_s'):.2f}" if h else "-"
+
     return [
         "## The dual operator against the memory bandwidth",
         "",
-        f"Measured apart from the tables above ({machine_line(run_row)})",
+        f"Measured apart from the tables above: {machine_line(run_row)}",
+        "",
         "A Hessian multiplication applies F = B K^+ B' once: per subdomain a forward and a backward",
         "triangular solve with its CHOLMOD factor. Each reads the whole factor, so no multiplication",
-        "takes less than the bound = (bytes of all factors) / (memory bandwidth), when the factors do not",
-        "fit in cache together (once L is read, L' may come from cache where one subdomain's factor fits:",
+        "takes less than the bound = (bytes of all factors) / (memory bandwidth) once the factors",
+        "together outgrow the caches (L' after L may come from cache where one subdomain's factor fits:",
         "one pass is the bound; two passes from memory would double it). Factor bytes: values (8 bytes)",
         "and the integer indices locating them (4 bytes per entry of a simplicial factor and per row of a",
         "supernode), `fetiInfo(P, \"factor_bytes\")`. Bandwidth: `tests/stream_triad.cpp`, STREAM's triad",
         f"a = b + s c on three arrays of {float(stream['array_mb']):.0f} MB, best of {stream['runs']} runs, one thread:",
         f"**{f(stream, 'triad_gb_s'):.2f} GB/s** (24 bytes per element; a read-only sum reached",
-        f"{f(stream, 'read_gb_s'):.2f} GB/s). Caches: {caches}. BLAS (supernodal solves): {stream['blas']}. Both scenes",
-        "run on one thread (`-threads 1`) at their default options. Per multiplication: `Hessian` the solver's whole multiplication",
-        "(`time_hessian / hessian`: F and the coarse projections around it), `F` the dual operator",
-        "(`time_dual_operator / dual_operator_applications`: gathers, B_s', the solves, B_s and the sum),",
-        "`solves` the triangular solves inside F (`time_factor_solves / dual_operator_applications`,",
-        "with the copies between a subdomain's dofs and its factor's). `in cache`: where the factors",
-        "fit (all of them in L3: the DRAM bound does not hold; each in L2 or L3: L' after L from cache).",
+        f"{f(stream, 'read_gb_s'):.2f} GB/s). Caches: {caches}. BLAS (supernodal solves): {stream['blas']}.",
+        "Both scenes run on one thread (`-threads 1`), their other options the defaults. Per multiplication:",
+        "`Hessian` the solver's whole multiplication (`time_hessian / hessian`: F and the coarse",
+        "projections around it), `F` the dual operator (`time_dual_operator / dual_operator_applications`:",
+        "gathers, B_s', the solves, B_s and the sum), `solves` the triangular solves inside F",
+        "(`time_factor_solves / dual_operator_applications`, with the copies between a subdomain's dofs",
+        "and its factor's). `in cache`: where the factors fit (all of them in L3: the DRAM bound does not",
+        "hold; each in L2 or L3: L' after L from cache). `cache-hot solves`: the subdomains times one",
+        "solve with a factor of the same kind and shape right after its factorization, the factor still in",
+        "cache (`tests/factor_kinds_probe`, table below): what the solves cost without waiting for memory.",
         f"Raw data: [{PAGE}-bandwidth-bound.csv]({PAGE}-bandwidth-bound.csv),",
-        f"[{PAGE}-bandwidth.csv]({PAGE}-bandwidth.csv).",
+        f"[{PAGE}-bandwidth.csv]({PAGE}-bandwidth.csv), [{PAGE}-bandwidth-in-cache.csv]({PAGE}-bandwidth-in-cache.csv).",
         "",
         *markdown_table(rows, [
             ("problem", "problem"), ("n", "n"), ("subdomains", "subdomains"), ("unknowns", "primal"),
@@ -132,11 +165,23 @@ def section():
             ("Hessian [ms]", lambda r: f"{1e3 * f(r, 't_hessian'):.2f}"),
             ("F [ms]", lambda r: f"{1e3 * f(r, 't_operator'):.2f}"),
             ("solves [ms]", lambda r: f"{1e3 * f(r, 't_solves'):.2f}"),
+            ("cache-hot solves [ms]", hot_ms),
             ("bound [ms]", lambda r: f"{1e3 * f(r, 't_bound'):.2f}"),
             ("solves / bound", lambda r: f"{f(r, 't_solves') / f(r, 't_bound'):.2f}"),
             ("F / bound", lambda r: f"{f(r, 't_operator') / f(r, 't_bound'):.2f}"),
             ("Hessian / bound", lambda r: f"{f(r, 't_hessian') / f(r, 't_bound'):.2f}"),
-            ("solves' GB/s", lambda r: f"{f(r, 'factor_bytes') / f(r, 't_solves') / 1e9:.2f}")]),
+            ("factor read by the solves [GB/s]", lambda r: f"{f(r, 'factor_bytes') / f(r, 't_solves') / 1e9:.2f}")]),
+        "",
+        "One subdomain's factor solved in cache, by kind (`tests/factor_kinds_probe DIM COMPONENTS CELLS`,",
+        "the scenes' subdomain shapes: the model problem's 64 x 64 squares, the cubes' 8^3 boxes of",
+        "elasticity; one pass over the factor per solve counted):",
+        "",
+        *markdown_table(hot, [
+            ("problem", "problem"), ("dofs", "dofs"), ("kind", "kind"),
+            ("factor MB", lambda r: f"{f(r, 'factor_bytes') / 1e6:.2f}"),
+            ("solve [ms]", lambda r: f"{1e3 * f(r, 'solve_s'):.3f}"),
+            ("factor read [GB/s]", lambda r: f"{f(r, 'factor_bytes') / f(r, 'solve_s') / 1e9:.2f}"),
+            ("factorization [ms]", lambda r: f"{1e3 * f(r, 'factor_s'):.2f}")]),
         "",
     ]
 

@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
   const Eigen::MatrixXd block = Eigen::MatrixXd::Ones(A.rows(), 6);
   const char* names[] = {"simplicial", "supernodal", "automatic"};
   std::printf("dim,components,cells,dofs,nnz_A,flops,nnz_L,flops_per_nnz_L,kind,supernodal,analyze_s,factor_s,"
-              "solve_s,solve6_s,blas,threads,concurrent_round_s,concurrent_difference\n");
+              "solve_s,solve6_s,blas,threads,concurrent_round_s,concurrent_difference,factor_bytes\n");
   for (FactorKind kind : {FactorKind::simplicial, FactorKind::supernodal, FactorKind::automatic}) {
     // One thread, as inside the plugin's loop over subdomains (an OpenMP OpenBLAS runs on
     // one thread there); the best of `repeat` runs, the machine being shared.
@@ -115,11 +115,11 @@ int main(int argc, char** argv) {
       difference = std::max(difference, (y - reference).cwiseAbs().maxCoeff() / reference.cwiseAbs().maxCoeff());
     }
     const double concurrent = together.seconds() / repeat;
-    std::printf("%d,%d,%d,%ld,%ld,%.6g,%.6g,%.1f,%s,%d,%.6f,%.6f,%.6f,%.6f,%s,%d,%.6f,%.2g\n", dim, components, cells,
+    std::printf("%d,%d,%d,%ld,%ld,%.6g,%.6g,%.1f,%s,%d,%.6f,%.6f,%.6f,%.6f,%s,%d,%.6f,%.2g,%.17g\n", dim, components, cells,
                 static_cast<long>(A.rows()), static_cast<long>(A.nonZeros()), factor->analysis_flops(),
                 factor->analysis_nonzeros(), factor->analysis_flops() / factor->analysis_nonzeros(), names[int(kind)],
                 factor->supernodal() ? 1 : 0, first - numeric, numeric, solve, solve6, blas_name(loaded_blas()),
-                threads, concurrent, difference);
+                threads, concurrent, difference, factor->factor_bytes());
   }
   return 0;
 }
