@@ -22,6 +22,7 @@ import os
 import subprocess
 
 from ffeti_bench import ROOT, begin_run, end_run, f, machine_line, markdown_table, read_csv, run, write_csv
+from factor_kinds import blas_variants
 from three_dimensions_elasticity import blas_library
 
 PAGE = "model-problem"
@@ -62,12 +63,16 @@ def bandwidth():
 
 def cache_hot_solves():
     """Per scene, one subdomain-like factor of each kind solved right after its factorization
-    (its factor in cache; best of 10, one thread): the triangular solves' speed without memory."""
+    (its factor in cache; best of 10, one thread): the triangular solves' speed without memory,
+    under the system's BLAS (system_blas 1: the scenes') and each OpenBLAS build installed."""
     binary = os.path.join(BUILD, "tests", "factor_kinds_probe")
     rows = []
-    for problem, case in SUBDOMAINS.items():
-        out = subprocess.run([binary, *map(str, case), "1", "10"], check=True, capture_output=True, text=True).stdout
-        rows += [dict(problem=problem, **r) for r in csv.DictReader(io.StringIO(out))]
+    for _, library in blas_variants():
+        env = dict(os.environ, **({"LD_LIBRARY_PATH": library} if library else {}))
+        for problem, case in SUBDOMAINS.items():
+            out = subprocess.run([binary, *map(str, case), "1", "10"], env=env, check=True, capture_output=True,
+                                 text=True).stdout
+            rows += [dict(problem=problem, system_blas=0 if library else 1, **r) for r in csv.DictReader(io.StringIO(out))]
     return rows
 
 
@@ -111,7 +116,7 @@ def cache_note(row, stream):
 def cache_hot(row, hot):
     """The probe's cache-hot solve of the kind the scene's factors have (all of one kind)."""
     kind = "supernodal" if row["supernodal_factors"] == row["subdomains"] else "simplicial"
-    return next((r for r in hot if r["problem"] == row["problem"] and r["kind"] == kind), None)
+    return next((r for r in hot if r["problem"] == row["problem"] and r["kind"] == kind and r["system_blas"] == "1"), None)
 
 
 def section():
@@ -172,12 +177,14 @@ def section():
             ("Hessian / bound", lambda r: f"{f(r, 't_hessian') / f(r, 't_bound'):.2f}"),
             ("factor read by the solves [GB/s]", lambda r: f"{f(r, 'factor_bytes') / f(r, 't_solves') / 1e9:.2f}")]),
         "",
-        "One subdomain's factor solved in cache, by kind (`tests/factor_kinds_probe DIM COMPONENTS CELLS`,",
-        "the scenes' subdomain shapes: the model problem's 64 x 64 squares, the cubes' 8^3 boxes of",
-        "elasticity; one pass over the factor per solve counted):",
+        "One subdomain's factor solved in cache, by kind and BLAS (`tests/factor_kinds_probe DIM COMPONENTS",
+        "CELLS`, the scenes' subdomain shapes: the model problem's 64 x 64 squares, the cubes' 8^3 boxes of",
+        "elasticity; one pass over the factor per solve counted; the scenes ran under the system's BLAS,",
+        "the OpenBLAS builds installed beside it loaded for the probe alone, as `scripts/factor_kinds.py` does):",
         "",
         *markdown_table(hot, [
             ("problem", "problem"), ("dofs", "dofs"), ("kind", "kind"),
+            ("BLAS", lambda r: r["blas"] + (" (the scenes')" if r["system_blas"] == "1" else "")),
             ("factor MB", lambda r: f"{f(r, 'factor_bytes') / 1e6:.2f}"),
             ("solve [ms]", lambda r: f"{1e3 * f(r, 'solve_s'):.3f}"),
             ("factor read [GB/s]", lambda r: f"{f(r, 'factor_bytes') / f(r, 'solve_s') / 1e9:.2f}"),
