@@ -119,6 +119,16 @@ def cache_hot(row, hot):
     return next((r for r in hot if r["problem"] == row["problem"] and r["kind"] == kind and r["system_blas"] == "1"), None)
 
 
+def ms(key):
+    """A table cell: the row's seconds under `key` in milliseconds."""
+    return lambda r: f"{1e3 * f(r, key):.2f}"
+
+
+def over_bound(key):
+    """A table cell: the row's seconds under `key` over its bandwidth bound."""
+    return lambda r: f"{f(r, key) / f(r, 't_bound'):.2f}"
+
+
 def section():
     """The page's section, rendered from the part's CSVs."""
     stream = read_csv(PAGE, "bandwidth")[0]
@@ -167,14 +177,10 @@ def section():
             ("per subdomain MB", lambda r: f"{f(r, 'factor_bytes') / f(r, 'subdomains') / 1e6:.2f}"),
             ("in cache", lambda r: cache_note(r, stream)),
             ("Hessian mult.", "hessian"), ("F applied", "dual_operator_applications"),
-            ("Hessian [ms]", lambda r: f"{1e3 * f(r, 't_hessian'):.2f}"),
-            ("F [ms]", lambda r: f"{1e3 * f(r, 't_operator'):.2f}"),
-            ("solves [ms]", lambda r: f"{1e3 * f(r, 't_solves'):.2f}"),
-            ("cache-hot solves [ms]", hot_ms),
-            ("bound [ms]", lambda r: f"{1e3 * f(r, 't_bound'):.2f}"),
-            ("solves / bound", lambda r: f"{f(r, 't_solves') / f(r, 't_bound'):.2f}"),
-            ("F / bound", lambda r: f"{f(r, 't_operator') / f(r, 't_bound'):.2f}"),
-            ("Hessian / bound", lambda r: f"{f(r, 't_hessian') / f(r, 't_bound'):.2f}"),
+            ("Hessian [ms]", ms("t_hessian")), ("F [ms]", ms("t_operator")), ("solves [ms]", ms("t_solves")),
+            ("cache-hot solves [ms]", hot_ms), ("bound [ms]", ms("t_bound")),
+            ("solves / bound", over_bound("t_solves")), ("F / bound", over_bound("t_operator")),
+            ("Hessian / bound", over_bound("t_hessian")),
             ("factor read by the solves [GB/s]", lambda r: f"{f(r, 'factor_bytes') / f(r, 't_solves') / 1e9:.2f}")]),
         "",
         "One subdomain's factor solved in cache, by kind and BLAS (`tests/factor_kinds_probe DIM COMPONENTS",
