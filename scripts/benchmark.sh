@@ -3,7 +3,7 @@
 # plots into docs/results/ from one run on this machine.
 #   ./scripts/benchmark.sh model-problem   numerical scalability, accuracy against time,
 #                                          solver variants, direct-solver floor, the dual operator
-#                                          against the memory bandwidth (~2 min; "model-problem
+#                                          against the memory bandwidth (~4 min; "model-problem
 #                                          --only bandwidth": that last part alone, ~2 min)
 #   ./scripts/benchmark.sh parallel        MPI ranks and OpenMP threads, h = 1/1024 (~3 min)
 #   ./scripts/benchmark.sh hertz           cylinder on a block against Hertz, mesh refinement
