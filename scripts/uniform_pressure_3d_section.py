@@ -4,7 +4,9 @@ B-spline surface as the contact gap) on two meshes, the same loop with adjoint, 
 and finite-difference gradients side by side, and the gradient checks including lambda'.
 measure() writes the raw data (docs/results/shape-optimization-uniform-pressure-3d.csv,
 one row per loop; ...-3d-profiles.csv, pressure and surface per contact node; ...-3d-checks.csv,
-the gradient checks); section() draws the picture and renders the section from them.
+the gradient checks; ...-3d-variants.csv, the Newton loops and the mortar punch, one row per
+loop; ...-3d-mortar-checks.csv, the mortar punch's gradient checks); section() draws the
+picture and renders the section from them.
 
 Run alone for development (the page is written by scripts/shape_optimization_benchmark.py):
     FFETI_RUN_DIR=build/edp-tests FFETI_RESULTS=/tmp/so3d python3 scripts/shape_optimization_benchmark.py --only-3d
@@ -18,7 +20,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.tri import Triangulation  # noqa: E402
 
-from ffeti_bench import OUT, f, markdown_table, read_csv  # noqa: E402
+from ffeti_bench import OUT, f, markdown_table, read_csv, run, write_csv  # noqa: E402
 from uniform_pressure_section import measure_loops  # noqa: E402
 
 SCRIPT = "uniform-pressure-3d.edp"
@@ -32,6 +34,13 @@ OPTIMA = [("energy", 8, 4, "adjoint"), ("pressure", 8, 4, "adjoint"), ("energy",
 PEERS = [("energy", 4, 4, gradient) for gradient in ("adjoint", "direct", "fd")]
 LOOPS = OPTIMA + [loop for loop in PEERS if loop not in OPTIMA]
 CHECKS = [(cost, m) for cost in ("energy", "pressure") for m in (4, 8)]
+# The Newton loop (-optimizer newton: the energy's exact Hessian from one direct sensitivity
+# call per step, edp/design-newton.idp) on the energy's meshes of OPTIMA, beside IPOPT's.
+NEWTON = [loop for loop in OPTIMA if loop[0] == "energy"]
+# The punch on a block meshed apart (-contact mortar: m + 1 cells per 10 mm, mortar rows) on
+# the default mesh, beside the node-to-node loop of OPTIMA[0]; its gradient checks on m = 4.
+MORTAR = [OPTIMA[0]]
+MORTAR_CHECKS = [(cost, 4) for cost in ("energy", "pressure")]
 
 
 def key(r):
@@ -48,6 +57,22 @@ def measure(folder):
     """Runs every loop of LOOPS and the gradient checks; writes their raw data (one row per
     loop, the pressure and surface per contact node and loop, one row per check)."""
     measure_loops(SCRIPT, TABLE, LOOPS, CHECKS, folder)
+    measure_variants(folder)
+
+
+def measure_variants(folder):
+    """Runs the Newton loops and the mortar punch; writes ...-3d-variants.csv (one row per
+    loop, `variant` newton or mortar) and ...-3d-mortar-checks.csv (its gradient checks)."""
+    rows = []
+    for variant, loops, options in (("newton", NEWTON, ("-optimizer", "newton")), ("mortar", MORTAR, ("-contact", "mortar"))):
+        for cost, m, k, gradient in loops:
+            history = os.path.join(folder, f"{TABLE}-{variant}-{cost}-m{m}-k{k}-{gradient}.history")
+            rows.append(dict(variant=variant, **run(SCRIPT, *options, "-cost", cost, "-m", m, "-k", k, "-gradient", gradient,
+                                                    "-history", history)["RESULT"][0]))
+    write_csv(PAGE, f"{TABLE}-variants", rows)
+    write_csv(PAGE, f"{TABLE}-mortar-checks", [
+        run(SCRIPT, "-contact", "mortar", "-gradcheck", 1e-5, "-cost", cost, "-m", m, prefixes=("GRADCHECK",))["GRADCHECK"][0]
+        for cost, m in MORTAR_CHECKS])
 
 
 def mirrored(rows, column):
@@ -102,6 +127,78 @@ def multiplier_error(r):
         return "–"
     error = abs(f(r, "multiplier") / f(r, "pressure_uniform") - 1)
     return f"{error:.1e}" if error > 0 else "< 5e-8"
+
+
+def optimum_columns():
+    """The columns shared by the Newton and the mortar tables: the optimum each loop reached."""
+    return [("cv before → after", lambda r: f"{f(r, 'pressure_cv0'):.3f} → {f(r, 'pressure_cv'):.1e}"),
+            ("material / material0", ("material_ratio", ".4f")), ("bound's multiplier [MPa]", ("multiplier", ".4f")),
+            ("\\|multiplier / q − 1\\|", multiplier_error), ("stationarity", ("stationarity", ".1e"))]
+
+
+def variant_lines(results):
+    """The Markdown lines of the Newton-against-IPOPT and the mortar tables, from the variants'
+    CSV and the loops of OPTIMA in results (their IPOPT and node-to-node counterparts)."""
+    variants = read_csv(PAGE, f"{TABLE}-variants")
+    mortar_checks = read_csv(PAGE, f"{TABLE}-mortar-checks")
+    pairs = []
+    for r in variants:
+        if r["variant"] == "newton":
+            pairs += [results[key(r)], r]
+    mortar = []
+    for r in variants:
+        if r["variant"] == "mortar":
+            mortar += [results[key(r)], r]
+    return [
+        "### Newton against IPOPT",
+        "",
+        "The energy's loops of the table above again with `-optimizer newton`",
+        "(`edp/design-newton.idp`): a trust-region Newton loop on the energy's exact Hessian,",
+        "H = −Φ'λ' with all k x k columns λ' from one direct `fetiSensitivity` call per Hessian",
+        "(docs/algorithms.md); IPOPT uses L-BFGS on the adjoint gradients. Designs: the analyses",
+        "the loop asked for (each with its adjoint gradient); sensitivity solves: the adjoint's",
+        "and the Hessians' directions. Newton stops at stationarity 1e-6 (`-newtontol`), IPOPT",
+        "at its own tolerance. The dual Hessian multiplications are not recorded per loop.",
+        "",
+        *markdown_table(pairs, [
+            ("optimizer", "optimizer"), ("m", "m"), ("variables", lambda r: f"{r['k']} x {r['k']}"),
+            ("designs", "steps"), ("Newton steps / Hessians", lambda r: f"{r['newton_steps']} / {r['hessians']}"
+                                   if r["optimizer"] == "newton" else "–"),
+            ("sensitivity solves", lambda r: int(r["sensitivity_solves"]) + int(r.get("hessian_solves") or 0)),
+            ("total [s]", ("time_total", ".1f")), ("of it Hessians [s]", ("time_hessian", ".1f")),
+            ("final cost", ("cost", ".8g")), *optimum_columns(), ("status", "status")]),
+        "",
+        "### Mortar contact on a block meshed apart",
+        "",
+        "`-contact mortar`: the block meshed with m + 1 cells per 10 mm, so that its top's nodes",
+        "lie off the punch's (but on the symmetry planes and the punch's edges), mortar rows",
+        "(`contactSlaveFaces`: the punch's bottom, the coarser side, as slave). A mortar row's gap",
+        "is its normal gap weighted over the slave node's support and divided by the support's",
+        "integral, plus the node's design gap h(x_n, y_n) (`contactGap`, unweighted): the design",
+        "enters as at a node-to-node row, its derivative the B-splines at the node; the pressure",
+        "is the row's force over the node's share of the punch's face, the nodal value of the",
+        "linear traction the rows transmit. Same start, same loop (IPOPT, adjoint gradients) as",
+        "the node-to-node row beside it. The optimum's conditions hold alike (the multiplier q,",
+        "stationarity), but mortar's nodal pressures keep a ripple near the punch's edges and the",
+        "symmetry planes that the smooth surface does not remove, on matching meshes too",
+        "(`-blockcells` equal to m; docs/log.md, 2026-11-27): its cv after is the larger.",
+        "",
+        *markdown_table(mortar, [
+            ("contact", lambda r: "mortar, non-matching" if r["contact"] == "mortar" else "node to node, matching"),
+            ("block cells per 10 mm", "block_cells"), ("m", "m"), ("variables", lambda r: f"{r['k']} x {r['k']}"),
+            ("contact rows", "couples"), ("designs", "steps"), *optimum_columns(),
+            ("total [s]", ("time_total", ".1f")), ("status", "status")]),
+        "",
+        "Its gradient checks at the crowned start (`-contact mortar -gradcheck`; `ctest -R",
+        "uniform_pressure_3d_gradients_mortar` asserts 1e-5 on the energy's):",
+        "",
+        *markdown_table(mortar_checks, [
+            ("cost", "cost_name"), ("m", "m"), ("variables", "variables"),
+            ("active / contact rows", lambda c: f"{c['active']} / {c['rows']}"),
+            ("adjoint vs direct", ("adjoint_vs_direct", ".1e")), ("direct vs finite differences", ("direct_vs_fd", ".1e")),
+            ("lambda' vs finite differences", ("dlambda_vs_fd", ".1e")), ("status", "status")]),
+        "",
+    ]
 
 
 def section():
@@ -162,6 +259,7 @@ def section():
             ("final cost", ("cost", ".8g")), ("cv after", ("pressure_cv", ".1e")),
             ("multiplier [MPa]", ("multiplier", ".4f")), ("status", "status")]),
         "",
+        *variant_lines(results),
         "### Gradient checks in three dimensions",
         "",
         "At the crowned start (`-gradcheck`), as in the plane: adjoint against direct, direct",
