@@ -6,18 +6,19 @@ UMFPACK and with MUMPS, beside FETI, each run alone, one after the other, on
   (FFETI_PEER_CUBES_SIZES),
 - the Hertz sphere on the rigid plane and on the elastic block (edp/hertz-sphere.edp -feti 0
   -peers 1) at h = 0.2, 0.1, 0.07 (FFETI_PEER_SPHERE_SIZES).
-Sizes grow within each problem; before a peer runs a size, its time and peak memory there are
-projected from its two largest sizes run so far (a power of the unknowns, FETI's unknowns as
-the size: known before the peer runs), and the peer stops at the first size projected above
-FFETI_PEER_TIME_LIMIT_S (1800 s) or FFETI_PEER_MEMORY_LIMIT_GIB (20 GiB): a row with status
-"stopped" and the projection that stopped it. Table: three-dimensions-peers.csv, one row per
+Sizes grow within each problem; a peer stops at the first size where it would pass
+FFETI_PEER_TIME_LIMIT_S (1800 s) or FFETI_PEER_MEMORY_LIMIT_GIB (20 GiB): projected from its
+two largest sizes run so far (a power of the unknowns, FETI's unknowns as the size: known
+before the peer runs), it is not started; else it runs under these limits (killed at the time
+limit; the memory one as an address-space limit) and a run that reaches one stops it too: a
+row with status "stopped", the limit and the projection or the seconds it ran. Table: three-dimensions-peers.csv, one row per
 (problem, size, solver); plot three-dimensions-peers.png (time over unknowns, log-log)."""
 import math
 import os
 
 import matplotlib.pyplot as plt  # the driver chooses the backend first
 
-from ffeti_bench import OUT, ROOT, end_run, f, markdown_table, read_csv, run, write_csv
+from ffeti_bench import OUT, ROOT, OverLimit, end_run, f, markdown_table, read_csv, run, write_csv
 
 PAGE = "three-dimensions"
 TABLE = "peers"
@@ -30,13 +31,18 @@ FETI = "FETI"
 PROBLEMS = ["cubes", "sphere on plane", "sphere on block"]
 
 
+def limits(options):
+    """The limits of a run: a peer's (-feti 0) runs under them, FETI's runs free."""
+    return dict(seconds=TIME_LIMIT_S, memory_mb=MEMORY_LIMIT_MB) if options.get("feti") == 0 else {}
+
+
 def cubes(size, *flags, **options):
     """One run of the cubes, the size and options as the scene's arguments; the common keys
     (size, unknowns, time_total, energy, active) added to its RESULT row."""
     args = [*flags, "-n", size]
     for key, value in options.items():
         args += [f"-{key}", value]
-    row = run("cubes-elasticity-3d.edp", *args)["RESULT"][0]
+    row = run("cubes-elasticity-3d.edp", *args, **limits(options))["RESULT"][0]
     if "time_scene" in row:
         return dict(row, problem="cubes", size=str(size), time_total=row["time_scene"])
     return dict(row, problem="cubes", size=str(size), time_total=row["time_reference"],
@@ -48,7 +54,7 @@ def sphere(block, size, *flags, **options):
     args = [*flags, "-h", size, "-block", block, "-meshes", os.path.join(ROOT, "meshes")]
     for key, value in options.items():
         args += [f"-{key}", value]
-    row = run("hertz-sphere.edp", *args)["RESULT"][0]
+    row = run("hertz-sphere.edp", *args, **limits(options))["RESULT"][0]
     problem = "sphere on block" if block else "sphere on plane"
     if "time_scene" in row:
         return dict(row, problem=problem, size=str(size), time_total=row["time_scene"])
@@ -76,15 +82,22 @@ def measure_problem(sizes, solve, feti_options, peer_options):
         peers = []
         for name, flags in PEERS:
             projected = projection(done[name], unknowns)
-            if name in stopped or (projected and (projected[0] > TIME_LIMIT_S or projected[1] > MEMORY_LIMIT_MB)):
-                if name not in stopped:
-                    rows.append(dict(problem=feti["problem"], size=str(size), solver=name, status="stopped",
-                                     feti_unknowns=repr(unknowns), projected_time_s=repr(projected[0]),
-                                     projected_memory_mb=repr(projected[1]), time_power=repr(projected[2]),
-                                     memory_power=repr(projected[3])))
+            if name in stopped:
+                continue
+            stop = dict(problem=feti["problem"], size=str(size), solver=name, status="stopped",
+                        feti_unknowns=repr(unknowns))
+            if projected and (projected[0] > TIME_LIMIT_S or projected[1] > MEMORY_LIMIT_MB):
+                rows.append(dict(stop, stop="projected", projected_time_s=repr(projected[0]),
+                                 projected_memory_mb=repr(projected[1]), time_power=repr(projected[2]),
+                                 memory_power=repr(projected[3])))
                 stopped.add(name)
                 continue
-            peer = dict(solve(size, *flags, **peer_options), solver=name)
+            try:
+                peer = dict(solve(size, *flags, **peer_options), solver=name)
+            except OverLimit as limit:
+                rows.append(dict(stop, stop=f"{limit.what} limit", ran_s=repr(limit.seconds)))
+                stopped.add(name)
+                continue
             done[name].append((unknowns, f(peer, "time_total"), f(peer, "process_peak_mb")))
             peers.append(dict(peer, feti_unknowns=repr(unknowns)))
         umfpack = next((p for p in peers if p["solver"] == "UMFPACK"), None)
@@ -139,7 +152,10 @@ def ratios(rows):
                 if r is feti:
                     continue
                 label = f"{problem}, {'n' if problem == 'cubes' else 'h'} = {size}"
-                if r.get("status") == "stopped":
+                if r.get("stop") in ("time limit", "memory limit"):
+                    lines.append(f"- {label}: {r['solver']} stopped by the {r['stop']} after {f(r, 'ran_s') / 60:.0f} min "
+                                 f"(limits {TIME_LIMIT_S / 60:.0f} min, {MEMORY_LIMIT_MB / 1024:.0f} GiB of address space).")
+                elif r.get("status") == "stopped":
                     lines.append(
                         f"- {label}: {r['solver']} not run: from its two largest sizes it grew as unknowns^"
                         f"{f(r, 'time_power'):.2f} in time and ^{f(r, 'memory_power'):.2f} in memory, which projects "
