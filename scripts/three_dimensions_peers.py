@@ -124,52 +124,69 @@ def ran(rows):
 
 
 def plot(rows, name):
-    figure, axes = plt.subplots(1, len(PROBLEMS), figsize=(13, 4.2))
-    for ax, problem in zip(axes, PROBLEMS):
+    """Time (top) and peak memory (bottom) over FETI's unknowns, log-log, one column per problem."""
+    figure, axes = plt.subplots(2, len(PROBLEMS), figsize=(13, 7.5))
+    for column, problem in enumerate(PROBLEMS):
         for solver, style in ((FETI, "o-"), ("UMFPACK", "s--"), ("MUMPS", "^--")):
             points = [r for r in ran(rows) if r["problem"] == problem and r["solver"] == solver]
-            if points:
-                ax.loglog([f(r, "feti_unknowns") for r in points], [f(r, "time_total") for r in points], style,
-                          label=solver if solver == FETI else f"active set, {solver}")
-        ax.set_title(problem)
-        ax.set_xlabel("unknowns (FETI's count)")
-        ax.grid(True, which="both", alpha=0.3)
-    axes[0].set_ylabel("wall-clock time [s]")
-    axes[0].legend(fontsize=8)
+            label = solver if solver == FETI else f"active set, {solver}"
+            for row, key in ((0, "time_total"), (1, "process_peak_mb")):
+                if points:
+                    axes[row][column].loglog([f(r, "feti_unknowns") for r in points], [f(r, key) for r in points],
+                                             style, label=label)
+        axes[0][column].set_title(problem)
+        axes[1][column].set_xlabel("unknowns (FETI's count)")
+        for row in (0, 1):
+            axes[row][column].grid(True, which="both", alpha=0.3)
+    axes[0][0].set_ylabel("wall-clock time [s]")
+    axes[1][0].set_ylabel("peak resident memory [MB]")
+    axes[0][0].legend(fontsize=8)
     figure.tight_layout()
     figure.savefig(os.path.join(OUT, name), dpi=90)
     plt.close(figure)
 
 
-def ratios(rows):
-    """Per problem and size, each peer's time and memory over FETI's, and why a peer stopped."""
-    lines = []
+def ratio_rows(rows):
+    """Per problem and size, each peer's time and peak memory over FETI's ("stopped" where it
+    did not run to the end)."""
+    table = []
     for problem in PROBLEMS:
         for size in dict.fromkeys(r["size"] for r in rows if r["problem"] == problem):
-            here = [r for r in rows if r["problem"] == problem and r["size"] == size]
-            feti = next(r for r in here if r["solver"] == FETI)
-            for r in here:
-                if r is feti:
-                    continue
-                label = f"{problem}, {'n' if problem == 'cubes' else 'h'} = {size}"
-                if r.get("stop") in ("time limit", "memory limit"):
-                    lines.append(f"- {label}: {r['solver']} stopped by the {r['stop']} after {f(r, 'ran_s') / 60:.0f} min "
-                                 f"(limits {TIME_LIMIT_S / 60:.0f} min, {MEMORY_LIMIT_MB / 1024:.0f} GiB of address space).")
-                elif r.get("status") == "stopped":
-                    lines.append(
-                        f"- {label}: {r['solver']} not run: from its two largest sizes it grew as unknowns^"
-                        f"{f(r, 'time_power'):.2f} in time and ^{f(r, 'memory_power'):.2f} in memory, which projects "
-                        f"{f(r, 'projected_time_s') / 60:.0f} min and {f(r, 'projected_memory_mb') / 1024:.1f} GiB here "
-                        f"(limits {TIME_LIMIT_S / 60:.0f} min, {MEMORY_LIMIT_MB / 1024:.0f} GiB).")
+            here = {r["solver"]: r for r in rows if r["problem"] == problem and r["size"] == size}
+            feti = here[FETI]
+            line = dict(problem=problem, size=size, unknowns=feti["unknowns"], time=f"{f(feti, 'time_total'):.2f}",
+                        memory=f"{f(feti, 'process_peak_mb'):.0f}")
+            for name, _ in PEERS:
+                peer = here.get(name)
+                if peer is None or peer.get("status") == "stopped":
+                    line[f"{name} time"] = line[f"{name} memory"] = "stopped" if peer else "-"
                 else:
-                    lines.append(f"- {label}: {r['solver']} takes {f(r, 'time_total') / f(feti, 'time_total'):.1f} times "
-                                 f"FETI's time and {f(r, 'process_peak_mb') / f(feti, 'process_peak_mb'):.1f} times its "
-                                 "peak memory.")
+                    line[f"{name} time"] = f"{f(peer, 'time_total') / f(feti, 'time_total'):.1f}"
+                    line[f"{name} memory"] = f"{f(peer, 'process_peak_mb') / f(feti, 'process_peak_mb'):.1f}"
+            table.append(line)
+    return table
+
+
+def stops(rows):
+    """Why each peer stopped where it did."""
+    lines = []
+    for r in rows:
+        if r.get("status") != "stopped":
+            continue
+        label = f"{r['problem']}, {'n' if r['problem'] == 'cubes' else 'h'} = {r['size']}"
+        if r["stop"] == "projected":
+            lines.append(f"- {label}: {r['solver']} not run: over its two largest sizes run it grew as unknowns^"
+                         f"{f(r, 'time_power'):.2f} in time and ^{f(r, 'memory_power'):.2f} in peak memory, which "
+                         f"projects {f(r, 'projected_time_s') / 60:.0f} min and {f(r, 'projected_memory_mb') / 1024:.1f} "
+                         f"GiB here (limits {TIME_LIMIT_S / 60:.0f} min, {MEMORY_LIMIT_MB / 1024:.0f} GiB); nor larger sizes.")
+        else:
+            lines.append(f"- {label}: {r['solver']} stopped by the {r['stop']} after {f(r, 'ran_s') / 60:.0f} min (limits "
+                         f"{TIME_LIMIT_S / 60:.0f} min, {MEMORY_LIMIT_MB / 1024:.0f} GiB of address space); nor larger sizes.")
     return lines
 
 
 def growth(rows):
-    """The time ratio's growth per problem: first and last size where both ran."""
+    """The time ratio's growth per problem and peer: its first and last size where both ran."""
     lines = []
     for problem in PROBLEMS:
         for name, _ in PEERS:
@@ -182,8 +199,8 @@ def growth(rows):
             if len(pairs) >= 2:
                 (x1, q1), (x2, q2) = pairs[0], pairs[-1]
                 lines.append(f"{problem}, {name}: the time ratio goes from {q1:.1f} to {q2:.1f} as the unknowns grow "
-                             f"{x2 / x1:.0f} times (the ratio itself as unknowns^{math.log(q2 / q1) / math.log(x2 / x1):.2f}).")
-    return lines
+                             f"{x2 / x1:.1f} times (the ratio as unknowns^{math.log(q2 / q1) / math.log(x2 / x1):.2f}).")
+    return lines or ["no problem ran two sizes with a peer."]
 
 
 def section():
@@ -222,9 +239,16 @@ def section():
             ("energy error", lambda r: f"{f(r, 'energy_error'):.1e}" if r.get("energy_error") else "-"),
             ("active", "active")]),
         "",
-        *ratios(rows),
+        "The peers' time and peak memory over FETI's (times FETI's), per size:",
         "",
-        f"![time over unknowns]({PAGE}-peers.png)",
+        *markdown_table(ratio_rows(rows), [
+            ("problem", "problem"), ("n or h", "size"), ("FETI unknowns", "unknowns"), ("FETI time [s]", "time"),
+            ("FETI peak MB", "memory"), ("UMFPACK: time", "UMFPACK time"), ("UMFPACK: memory", "UMFPACK memory"),
+            ("MUMPS: time", "MUMPS time"), ("MUMPS: memory", "MUMPS memory")]),
+        "",
+        *stops(rows),
+        "",
+        f"![time and memory over unknowns]({PAGE}-peers.png)",
         "",
         "How the gap grows: " + " ".join(growth(rows)),
         "",
