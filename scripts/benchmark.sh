@@ -24,7 +24,8 @@
 #                                          MUMPS) beside FETI on the cubes and the sphere; the model problem as two cubes up to
 #                                          6 million unknowns, factor kinds in 3D, against 2D, Hertz for a
 #                                          sphere on a plane and on a block, a rigid ball, the patch test,
-#                                          3D gradients and a picture (~20 min, 13 GB; "three-dimensions
+#                                          3D gradients and a picture (~20 min, 13 GB, and the peers up to
+#                                          about 2 h more: each peer stops at 30 min or 20 GiB; "three-dimensions
 #                                          --only PART": one part alone, PART cubes, sphere, elasticity, peers or
 #                                          mpi, the largest elasticity case on 1 process and 2 MPI ranks,
 #                                          which the full run leaves out)
