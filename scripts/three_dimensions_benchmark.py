@@ -2,9 +2,9 @@
 """Three dimensions, as far as they go. Opens with 3D elasticity contact at scale
 (edp/cubes-elasticity-3d.edp, scripts/three_dimensions_elasticity.py: weak scaling, the whole
 scene's phases, the coarse problem, preconditioners and factor kinds; MPI optionally) and
-the direct peers beside FETI on the cubes and the sphere (scripts/three_dimensions_peers.py); then the seed's model problem as two cubes (edp/model-problem-3d.edp) at fixed
-H/h against the undivided cubes' active set solution, the Hessian count, the phases and times
-as h falls to a problem above a million unknowns, CHOLMOD's simplicial against supernodal
+the direct peers beside FETI on the cubes and the sphere (scripts/three_dimensions_peers.py);
+then the seed's model problem as two cubes (edp/model-problem-3d.edp) at fixed H/h against
+the undivided cubes' active set solution, the Hessian count, the phases and times as h falls to a problem above a million unknowns, CHOLMOD's simplicial against supernodal
 factors on 3D subdomains, and the 2D model problem of about the same size beside it; Hertz for
 a sphere (edp/hertz-sphere.edp) on a rigid plane and on an elastic block (mortar contact) with
 a picture of its stress and contact pressure; the contact patch test and the 3D gradient
