@@ -22,11 +22,13 @@
 #                                          loaded machine, load average 10 on 2 cores)
 #   ./scripts/benchmark.sh three-dimensions  3D elasticity contact (two cubes) at H/h = 8 up to 2.2 million
 #                                          unknowns: phases, memory, the coarse problem, preconditioners,
-#                                          factor kinds, direct peers; the model problem as two cubes up to
+#                                          factor kinds; the direct peers (active set method with UMFPACK and
+#                                          MUMPS) beside FETI on the cubes and the sphere; the model problem as two cubes up to
 #                                          6 million unknowns, factor kinds in 3D, against 2D, Hertz for a
 #                                          sphere on a plane and on a block, a rigid ball, the patch test,
-#                                          3D gradients and a picture (~20 min, 13 GB; "three-dimensions
-#                                          --only PART": one part alone, PART cubes, sphere, elasticity or
+#                                          3D gradients and a picture (~20 min, 13 GB, and the peers up to
+#                                          about 2 h more: each peer stops at 30 min or 20 GiB; "three-dimensions
+#                                          --only PART": one part alone, PART cubes, sphere, elasticity, peers or
 #                                          mpi, the largest elasticity case on 1 process and 2 MPI ranks,
 #                                          which the full run leaves out)
 #   ./scripts/benchmark.sh elasticity-3d   the same as "three-dimensions --only elasticity"

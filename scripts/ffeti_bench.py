@@ -16,8 +16,10 @@ import datetime
 import os
 import platform
 import re
+import resource
 import subprocess
 import tempfile
+import threading
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -28,11 +30,24 @@ OUT = os.environ.get("FFETI_RESULTS", READINGS)
 MPI_ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 
 
-def run(script, *args, ranks=0, prefixes=("RESULT", "DIRECT", "RANK")):
+class OverLimit(Exception):
+    """A run stopped by run()'s limits: `what` is "time" (killed after `seconds`) or "memory"
+    (under an address space limit, the process died by a signal or failed naming memory or an
+    allocation)."""
+
+    def __init__(self, what, seconds):
+        super().__init__(f"{what} limit reached after {seconds:.0f} s")
+        self.what, self.seconds = what, seconds
+
+
+def run(script, *args, ranks=0, prefixes=("RESULT", "DIRECT", "RANK"), seconds=None, memory_mb=None):
     """Runs an .edp script (under mpirun with `ranks` > 0) and returns {prefix: [dict, ...]}
     of its key=value result lines, each with the process's peak resident memory as
     'process_peak_mb' (of FreeFEM alone; of mpirun, not its ranks, under MPI), and its whole
-    standard output under 'output' (progress lines)."""
+    standard output under 'output' (progress lines). Optional limits (OverLimit when reached):
+    `seconds` of wall clock (the process is killed), `memory_mb` of address space (RLIMIT_AS,
+    which the process's allocations then fail against: a bound on its virtual memory, which is at
+    least its resident set)."""
     # FFETI_RUN_DIR: run from that folder instead (a build tree's edp-tests folder, whose
     # freefem++.pref loads that build's plugin rather than the installed one).
     run_dir = os.environ.get("FFETI_RUN_DIR")
@@ -40,11 +55,28 @@ def run(script, *args, ranks=0, prefixes=("RESULT", "DIRECT", "RANK")):
     if ranks:
         command = ["mpirun", "--oversubscribe", "-np", str(ranks), "FreeFem++-mpi", *command[1:]]
     with tempfile.TemporaryFile(mode="w+") as output:
-        process = subprocess.Popen(command, cwd=run_dir or EDP, stdout=output, stderr=subprocess.DEVNULL, text=True, env=MPI_ENV)
+        def limit_memory():
+            size = int(memory_mb * 1024 * 1024)
+            resource.setrlimit(resource.RLIMIT_AS, (size, size))
+
+        started = time.time()
+        process = subprocess.Popen(command, cwd=run_dir or EDP, stdout=output, stderr=subprocess.DEVNULL, text=True,
+                                   env=MPI_ENV, preexec_fn=limit_memory if memory_mb else None)
+        killer = threading.Timer(seconds, process.kill) if seconds else None
+        if killer:
+            killer.start()
         _, status, usage = os.wait4(process.pid, 0)
+        if killer:
+            killer.cancel()
+        elapsed = time.time() - started
+        if seconds and elapsed >= seconds:
+            raise OverLimit("time", elapsed)
         process.returncode = os.waitstatus_to_exitcode(status)
         output.seek(0)
         text = output.read()
+    # FreeFEM dies by a signal (a segmentation fault) when an allocation fails, or names it.
+    if memory_mb and (process.returncode < 0 or (process.returncode != 0 and re.search("memory|alloc", text, re.I))):
+        raise OverLimit("memory", elapsed)
     if process.returncode != 0:
         raise subprocess.CalledProcessError(process.returncode, command, text)
     peak_mb = usage.ru_maxrss / 1024  # kB on Linux: MB, unrounded

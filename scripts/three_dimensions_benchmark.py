@@ -1,20 +1,21 @@
 #!/usr/bin/env python3
 """Three dimensions, as far as they go. Opens with 3D elasticity contact at scale
 (edp/cubes-elasticity-3d.edp, scripts/three_dimensions_elasticity.py: weak scaling, the whole
-scene's phases, the coarse problem, preconditioners and factor kinds, the direct peers; MPI
-optionally); then the seed's model problem as two cubes (edp/model-problem-3d.edp) at fixed
-H/h against the undivided cubes' active set solution, the Hessian count, the phases and times
-as h falls to a problem above a million unknowns, CHOLMOD's simplicial against supernodal
+scene's phases, the coarse problem, preconditioners and factor kinds; MPI optionally) and
+the direct peers beside FETI on the cubes and the sphere (scripts/three_dimensions_peers.py);
+then the seed's model problem as two cubes (edp/model-problem-3d.edp) at fixed H/h against
+the undivided cubes' active set solution, the Hessian count, the phases and times as h falls to a problem above a million unknowns, CHOLMOD's simplicial against supernodal
 factors on 3D subdomains, and the 2D model problem of about the same size beside it; Hertz for
 a sphere (edp/hertz-sphere.edp) on a rigid plane and on an elastic block (mortar contact) with
 a picture of its stress and contact pressure; the contact patch test and the 3D gradient
 checks (tests/edp/). Writes docs/results/three-dimensions.md and its plots from one run on
 this machine (--only PART: that part alone, the other tables kept: cubes, sphere, elasticity,
-or mpi, the two-rank elasticity run, which the full run leaves out; --sphere: --only sphere;
+peers, or mpi, the two-rank elasticity run, which the full run leaves out; --sphere: --only sphere;
 --render: from the CSVs, no run). Smaller runs to try it: FFETI_THREE_DIMENSIONS_SIZES,
 FFETI_THREE_DIMENSIONS_FACTOR_SIZES, FFETI_THREE_DIMENSIONS_SEARCH_SIZES,
 FFETI_THREE_DIMENSIONS_PLANE ("n H/h") and the
-FFETI_ELASTICITY_3D_* variables of three_dimensions_elasticity.py."""
+FFETI_ELASTICITY_3D_* variables of three_dimensions_elasticity.py and FFETI_PEER_* of
+three_dimensions_peers.py."""
 import argparse
 import math
 import os
@@ -32,6 +33,7 @@ from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, listing, machine_line, markdown_table,  # noqa: E402
                          read_csv, run, save_page, span, write_csv)
 import three_dimensions_elasticity as elasticity  # noqa: E402
+import three_dimensions_peers as peers  # noqa: E402
 
 PAGE = "three-dimensions"
 HH = 8
@@ -195,7 +197,7 @@ def run_cubes():
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--render", action="store_true", help="re-render the page from its CSVs, no run")
-    parser.add_argument("--only", choices=("cubes", "sphere", "elasticity", "mpi"),
+    parser.add_argument("--only", choices=("cubes", "sphere", "elasticity", "peers", "mpi"),
                         help="run this part alone, keep the other tables (mpi: the largest elasticity case on one "
                              "process and on two ranks, left out of the full run)")
     parser.add_argument("--sphere", action="store_true", help="the same as --only sphere")
@@ -204,8 +206,8 @@ def main():
     if not options.render:
         begun = begin_run()
         parts = {"elasticity": lambda: elasticity.measure(begin_run()), "cubes": run_cubes, "sphere": run_sphere,
-                 "mpi": lambda: elasticity.measure_mpi(begin_run())}
-        for name in [only] if only else ["elasticity", "cubes", "sphere"]:
+                 "mpi": lambda: elasticity.measure_mpi(begin_run()), "peers": lambda: peers.measure(begin_run())}
+        for name in [only] if only else ["elasticity", "cubes", "sphere", "peers"]:
             parts[name]()
         if not only:
             end_run(PAGE, begun)

@@ -4,8 +4,7 @@ weak scaling at H/h = 8 (n = 16, 32, 64 cells per cube side; FFETI_ELASTICITY_3D
 overrides) with the whole scene's phases (FreeFEM's assembly, the plugin's set-up, factorization,
 solve, recovery) and peak memory, the coarse problem at H/h = 4 (8 times the subdomains; n = 16,
 32, FFETI_ELASTICITY_3D_COARSE_SIZES), the preconditioners and CHOLMOD's factor kinds side by
-side at n = 32, and the direct peers (the undivided cubes by the primal-dual active set method
-with UMFPACK and with MUMPS, each run alone) at n = 8, 16 (FFETI_ELASTICITY_3D_PEER_SIZES).
+side at n = 32 (the direct peers: scripts/three_dimensions_peers.py).
 Optional (--only mpi, not in the page's full run): the largest size (FFETI_ELASTICITY_3D_MPI_SIZE,
 default the largest weak-scaling size) on one process and on two MPI ranks, the same answer
 and each rank's memory. Each table is the CSV three-dimensions-elasticity-<table>.csv."""
@@ -14,18 +13,16 @@ import subprocess
 
 import matplotlib.pyplot as plt  # the driver chooses the backend first
 
-from ffeti_bench import OUT, PHASES, end_run, f, listing, markdown_table, phase_table, read_csv, run, write_csv
+from ffeti_bench import OUT, PHASES, end_run, f, markdown_table, phase_table, read_csv, run, write_csv
+import three_dimensions_peers as peers
 
 PAGE = "three-dimensions"
 SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_SIZES", "16 32 64").split()]
 VARIANT_SIZE = 32 if 32 in SIZES else SIZES[-1]
-PEER_SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_PEER_SIZES", "8 16").split()]
 COARSE_SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_COARSE_SIZES", "16 32").split()]
 MPI_SIZE = int(os.environ.get("FFETI_ELASTICITY_3D_MPI_SIZE", SIZES[-1]))
-PEERS = [("UMFPACK", []), ("MUMPS", ["-DwithMUMPS=1"])]
 PRECONDITIONERS = ["lumped", "dirichlet", "none"]
 FACTORS = ["simplicial", "supernodal", "auto"]
-FETI = "ffeti (FETI)"
 
 
 def table(name):
@@ -55,34 +52,15 @@ def scene(n, *extra, ranks=0, **options):
     return row
 
 
-def measure_peers():
-    """Each size's FETI run beside the direct peers, each run alone, one after the other (so
-    that they see the same load); FETI's energy and contact set are compared with UMFPACK's
-    answer."""
-    rows = []
-    for n in PEER_SIZES:
-        feti = scene(n, check=1)
-        peers = [dict(scene(n, *flags, feti=0, reference=1), solver=f"primal-dual active set, {name}")
-                 for name, flags in PEERS]
-        reference = f(peers[0], "energy_reference")
-        rows.append(dict(feti, solver=FETI, time_total=feti["time_scene"], memory_mb=feti["process_peak_mb"],
-                         energy_error=repr(abs(f(feti, "energy") - reference) / abs(reference)),
-                         same_contact_set=str(int(feti["active"]) == int(peers[0]["active_reference"]))))
-        rows += [dict(p, time_total=p["time_reference"], memory_mb=p["process_peak_mb"]) for p in peers]
-    return rows
-
-
 def measure(begun):
     """The elasticity part's tables and its own run row (elasticity-run)."""
     weak = [dict(scene(n, check=1), case="default") for n in SIZES]
     coarse = [dict(scene(n, check=1, Hh=4), case="H/h = 4") for n in COARSE_SIZES]
     variants = [dict(scene(VARIANT_SIZE, preconditioner=p), case=f"preconditioner {p}") for p in PRECONDITIONERS]
     variants += [dict(scene(VARIANT_SIZE, factor=k), case=f"factor {k}") for k in FACTORS]
-    peers = measure_peers()
     write_csv(PAGE, table("weak"), weak)
     write_csv(PAGE, table("coarse"), coarse)
     write_csv(PAGE, table("variants"), variants)
-    write_csv(PAGE, table("peers"), peers)
     write_csv(PAGE, table("blas"), [{"blas": blas_library()}])
     end_run(PAGE, begun, table("run"))
 
@@ -137,27 +115,21 @@ def next_size(last, memory_gib):
 def headline():
     """The page's opening lines: the largest 3D elasticity contact solved, its Hessian count
     against the smallest size's, its time against the direct peers where both ran."""
-    weak, peers = read_csv(PAGE, table("weak")), read_csv(PAGE, table("peers"))
+    weak = read_csv(PAGE, table("weak"))
     first, last = weak[0], weak[-1]
     growth = f(last, "hessian") / f(first, "hessian")
-    shared = max((r["n"] for r in peers), key=int)
-    feti = next(r for r in peers if r["n"] == shared and r["solver"] == FETI)
-    against = [f"{r['solver'].split(', ')[-1]} {f(r, 'time_total') / f(feti, 'time_total'):.0f} times"
-               for r in peers if r["n"] == shared and r["solver"] != FETI]
     return [f"**Headline.** The largest 3D elasticity contact solved here: two elastic cubes, n = {last['n']} cells per "
             f"side, {int(f(last, 'unknowns')):,} unknowns in {last['subdomains']} subdomains (Total FETI, six rigid "
             f"modes each), the whole scene in {f(last, 'time_scene'):.0f} s and {f(last, 'process_peak_mb') / 1024:.1f} GB. "
             f"Its dual solve took {last['hessian']} Hessian multiplications against {first['hessian']} at n = "
-            f"{first['n']} ({int(f(first, 'unknowns')):,} unknowns): {growth:.2f} times (aim: at most 1.5). The direct "
-            f"peers (the undivided cubes by the primal-dual active set method) ran up to n = {shared}, where they took "
-            f"{listing(against)} FETI's whole-scene time ({f(feti, 'time_total'):.1f} s); "
-            f"[below](#3d-elasticity-the-direct-peers) how the gap grows."]
+            f"{first['n']} ({int(f(first, 'unknowns')):,} unknowns): {growth:.2f} times (aim: at most 1.5)."
+            + peers.headline_words()]
 
 
 def section(memory_gib):
     """The page's lines of the elasticity part, rendered from its CSVs."""
     weak, variants = read_csv(PAGE, table("weak")), read_csv(PAGE, table("variants"))
-    coarse, peers = read_csv(PAGE, table("coarse")), read_csv(PAGE, table("peers"))
+    coarse = read_csv(PAGE, table("coarse"))
     run_row, blas = read_csv(PAGE, table("run"))[0], read_csv(PAGE, table("blas"))[0]["blas"]
     plot_phases(weak, f"{PAGE}-elasticity.png")
     last = weak[-1]
@@ -172,7 +144,7 @@ def section(memory_gib):
         f"This part ran on its own: {run_row['date']}, {float(run_row['elapsed_s']):.0f} s, load average "
         f"{float(run_row['load_at_start']):.1f} as it started, {float(run_row['load_at_end']):.1f} as it ended. Raw data:",
         f"[{PAGE}-elasticity-weak.csv]({PAGE}-elasticity-weak.csv), [{PAGE}-elasticity-coarse.csv]({PAGE}-elasticity-coarse.csv),",
-        f"[{PAGE}-elasticity-variants.csv]({PAGE}-elasticity-variants.csv), [{PAGE}-elasticity-peers.csv]({PAGE}-elasticity-peers.csv).",
+        f"[{PAGE}-elasticity-variants.csv]({PAGE}-elasticity-variants.csv).",
         "",
         *markdown_table(weak, [
             ("n", "n"), ("unknowns", "unknowns"), ("subdomains", "subdomains"), ("dual", "dual"),
@@ -224,39 +196,9 @@ def section(memory_gib):
             ("solve per mult. [ms]", lambda r: f"{1000 * f(r, 'time_solve') / f(r, 'hessian'):.0f}"),
             ("peak MB", ("process_peak_mb", ".0f")), ("status", "status")]),
         "",
-        "## 3D elasticity: the direct peers",
-        "",
-        "The undivided cubes (one mesh each) by the primal-dual active set method, each Newton step",
-        "a sparse direct solve of the KKT system (`edp/active-set.idp`), with UMFPACK and with MUMPS",
-        "(both ship with FreeFEM), each run alone; the FETI row is the whole scene (assembly,",
-        "set-up, solve, recovery), its energy compared with UMFPACK's answer (energy error) and its",
-        "contact set's size with UMFPACK's. Memory: each process's peak resident set. FETI's unknowns",
-        "count the copies of interface nodes in every subdomain, the peers' each node once.",
-        "",
-        *markdown_table(peers, [
-            ("n", "n"), ("unknowns", "unknowns"), ("solver", "solver"), ("time [s]", ("time_total", ".2f")),
-            ("of which last solve [s]", lambda r: f"{f(r, 'time_reference_last_solve'):.2f}" if r["solver"] != FETI else "-"),
-            ("Newton steps", lambda r: r["pdas_iterations"] if r["solver"] != FETI else "-"),
-            ("peak MB", ("memory_mb", ".0f")),
-            ("energy error", lambda r: f"{f(r, 'energy_error'):.1e}" if r["solver"] == FETI else "-"),
-            ("active", lambda r: r["active"] if r["solver"] == FETI else r["active_reference"])]),
-        "",
-        *peer_ratios(peers),
-        "",
+        *peers.section(),
     ]
     return lines + mpi_section()
-
-
-def peer_ratios(peers):
-    """Per size, the peers' time and memory over FETI's."""
-    lines = []
-    for n in sorted({r["n"] for r in peers}, key=int):
-        feti = next(r for r in peers if r["n"] == n and r["solver"] == FETI)
-        for r in peers:
-            if r["n"] == n and r is not feti:
-                lines.append(f"- n = {n}: {r['solver']} takes {f(r, 'time_total') / f(feti, 'time_total'):.1f} times "
-                             f"FETI's time and {f(r, 'memory_mb') / f(feti, 'memory_mb'):.1f} times its memory.")
-    return lines
 
 
 def mpi_section():
