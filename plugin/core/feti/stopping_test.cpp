@@ -37,4 +37,11 @@ bool RelativeKktStop::operator()(const Vec& x, double gradient, double equality)
   return false;
 }
 
+void RelativeKktStop::set_tolerance(double tolerance) {
+  target_ *= tolerance / tolerance_;
+  equality_target_ *= tolerance / tolerance_;
+  tolerance_ = tolerance;
+  passed_.resize(0);
+}
+
 }  // namespace ffeti

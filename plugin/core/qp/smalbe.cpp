@@ -22,7 +22,7 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
   settings.validate();
   if (!problem.hessian || !problem.range_projector) throw std::invalid_argument("SMALBE: incomplete problem");
   const Vec& b = problem.b;
-  const qp::ConstraintSet& bounds = problem.constraints;
+  qp::ConstraintSet bounds = problem.constraints;  // moves only with problem.follow_constraints
   const Vec& lower = bounds.lower;
   const Eigen::Index n = b.size();
   if (x.size() != n || lower.size() != n || (bounds.upper.size() && bounds.upper.size() != n))
@@ -45,6 +45,11 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
   double previous_lagrangian = std::numeric_limits<double>::infinity();
   double best_q_norm = std::numeric_limits<double>::infinity();
   int stalled_rounds = 0;
+  // follow_constraints: the set and iterate a converged x calls for, applied after its inner solve.
+  qp::ConstraintSet next_bounds;
+  Vec next_x;
+  bool bounds_pending = false;
+  bool lagrangian_from_other_constraints = false;
 
   // A = H + rho Q: on Ker C it acts as H, on Im C' as rho, so ||A|| <= max(||H||, rho).
   int applications = 0;  // of A, for the progress lines
@@ -84,7 +89,14 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
       result.equality_norm = q_norm;
       if (monitor)
         monitor({"smalbe", outer, result.gradient_norm, q_norm, applications, off_bound_count(xi, lower)});
-      if (stop(xi, gp0, result.gradient_norm)) return globally_done = true;
+      if (stop(xi, gp0, result.gradient_norm)) {
+        if (!problem.follow_constraints) return globally_done = true;
+        // Converged for these constraints: done if they fit x, else end the inner solve and move them.
+        next_x = xi;
+        next_bounds = bounds;
+        if (!problem.follow_constraints(next_x, next_bounds)) return globally_done = true;
+        return bounds_pending = true;
+      }
       // At least one inner step per outer iteration: a multiplier update that the inner
       // solver does not answer only grows nu, and can stall the outer loop for many rounds.
       if (first_call) return first_call = false;
@@ -127,9 +139,24 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
     g += rho * Qx;           // g = A x - (b - nu) with the new nu
     gradient_is_current = true;
 
+    // Constraints that follow x move where the stop test held (Coulomb's bounds inside the
+    // augmented Lagrangian loop): x moves into them, its gradient is recomputed, and L of the
+    // next round belongs to another problem, so M is not judged by it.
+    const bool constraints_moved = bounds_pending;
+    if (bounds_pending) {
+      x = next_x;
+      bounds = std::move(next_bounds);
+      inner_problem.constraints = bounds;
+      gradient_is_current = false;
+      gradient_error = 0;
+      ++result.counts.constraint_updates;
+      bounds_pending = false;
+    }
+
     if (settings.variant == SmalbeVariant::smalbe_m) {
-      if (outer > 0 && lagrangian < previous_lagrangian + 0.5 * rho * q_norm * q_norm)
+      if (outer > 0 && !lagrangian_from_other_constraints && lagrangian < previous_lagrangian + 0.5 * rho * q_norm * q_norm)
         M /= settings.beta;
+      lagrangian_from_other_constraints = constraints_moved;
       previous_lagrangian = lagrangian;
       // With rho fixed, ||Qx|| can stall while the inner problems are solved well: the
       // multiplier grows by rho Qx per round and must move far before an active bound lets
