@@ -38,10 +38,9 @@ bool RelativeKktStop::operator()(const Vec& x, double gradient, double equality)
 }
 
 void RelativeKktStop::set_tolerance(double tolerance) {
-  target_ *= tolerance / tolerance_;
-  equality_target_ *= tolerance / tolerance_;
-  tolerance_ = tolerance;
-  passed_.resize(0);
+  const int evaluations = evaluations_;
+  *this = RelativeKktStop(tolerance, std::move(check_));
+  evaluations_ = evaluations;
 }
 
 }  // namespace ffeti

@@ -55,7 +55,7 @@ class RelativeKktStop {
 
   int evaluations() const { return evaluations_; }
   /// Another tolerance, or other constraints at the same (bounds that follow the answer): the
-  /// predictions' targets scale with it and the iterate that passed is checked again.
+  /// test starts over as a new solve's would (its checks still counted).
   void set_tolerance(double tolerance);
   /// The larger of the last check's violation and equilibrium residual (both relative); -1
   /// before any check.

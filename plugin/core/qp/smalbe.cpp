@@ -131,18 +131,10 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
     }
     ++result.counts.outer;
 
-    // Q x is current: the inner stop test computed it at this x.
-    const double q_norm = Qx.norm();
-    const double lagrangian = 0.5 * x.dot(g - shifted_b);  // L(x, nu, rho) = 1/2 x'Ax - x'(b - nu)
-    nu += rho * Qx;          // multiplier update mu <- mu + rho C x
-    shifted_b = b - nu;
-    g += rho * Qx;           // g = A x - (b - nu) with the new nu
-    gradient_is_current = true;
-
     // Constraints that follow x move where the stop test held (Coulomb's bounds inside the
-    // augmented Lagrangian loop): x moves into them, its gradient is recomputed, and L of the
-    // next round belongs to another problem, so M is not judged by it.
-    const bool constraints_moved = bounds_pending;
+    // augmented Lagrangian loop): x moves into them, and SMALBE goes on as a new solve would
+    // from x and nu (its gradient recomputed, M at its start, the multiplier not updated:
+    // the equality part was met to the stop test), except that rho stays.
     if (bounds_pending) {
       x = next_x;
       bounds = std::move(next_bounds);
@@ -151,12 +143,23 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
       gradient_error = 0;
       ++result.counts.constraint_updates;
       bounds_pending = false;
+      M = settings.M_factor * std::max(problem.hessian_norm, rho);
+      lagrangian_from_other_constraints = true;  // L of the next round belongs to another problem
+      continue;
     }
+
+    // Q x is current: the inner stop test computed it at this x.
+    const double q_norm = Qx.norm();
+    const double lagrangian = 0.5 * x.dot(g - shifted_b);  // L(x, nu, rho) = 1/2 x'Ax - x'(b - nu)
+    nu += rho * Qx;          // multiplier update mu <- mu + rho C x
+    shifted_b = b - nu;
+    g += rho * Qx;           // g = A x - (b - nu) with the new nu
+    gradient_is_current = true;
 
     if (settings.variant == SmalbeVariant::smalbe_m) {
       if (outer > 0 && !lagrangian_from_other_constraints && lagrangian < previous_lagrangian + 0.5 * rho * q_norm * q_norm)
         M /= settings.beta;
-      lagrangian_from_other_constraints = constraints_moved;
+      lagrangian_from_other_constraints = false;
       previous_lagrangian = lagrangian;
       // With rho fixed, ||Qx|| can stall while the inner problems are solved well: the
       // multiplier grows by rho Qx per round and must move far before an active bound lets
