@@ -155,6 +155,12 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
     shifted_b = b - nu;
     g += rho * Qx;           // g = A x - (b - nu) with the new nu
     gradient_is_current = true;
+    if (problem.follow_constraints && problem.follow_constraints(x, bounds)) {
+      inner_problem.constraints = bounds;
+      gradient_is_current = false;
+      gradient_error = 0;
+      ++result.counts.constraint_updates;
+    }
 
     if (settings.variant == SmalbeVariant::smalbe_m) {
       if (outer > 0 && !lagrangian_from_other_constraints && lagrangian < previous_lagrangian + 0.5 * rho * q_norm * q_norm)
