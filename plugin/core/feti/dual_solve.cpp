@@ -10,7 +10,6 @@
 #include "qp/smalbe.h"
 
 #include <algorithm>
-#include <optional>
 #include <stdexcept>
 
 namespace ffeti {
@@ -127,36 +126,11 @@ DualSolution DualSystem::solved_by_subdomains(const DualData& data, DualSolution
   return result;
 }
 
-bool DualSystem::follows_slip_bound(const DualSolveSettings& settings) const {
-  if (path() != DualPath::smalbe) return false;
-  return settings.coarse_constraints == CoarseConstraints::penalty || free_rows().remaining() > 0;
-}
-
-bool DualSystem::moved_slip_bound(Vec& x, const std::function<void(const Vec&, Vec&)>& to_multipliers,
-                                  DualData& data, qp::ConstraintSet& bounds, double& tolerance, bool at_stop) const {
-  Vec mu = x;
-  if (to_multipliers) to_multipliers(x, mu);
-  const Vec before = lambda_from_shifted(mu, bounds, data);
-  Vec lambda = before;
-  if (!data.follow_slip_bound(lambda, data.slip_bound, tolerance, at_stop)) return false;
-  // The friction rows come last, and there the solver's x is mu (the free-rows form's T
-  // changes free components only).
-  const Eigen::Index friction = constraints_.friction_rows;
-  x.tail(friction) += (lambda - before).tail(friction);
-  bounds = multiplier_constraints(data).shifted(data.lambda_tilde);
-  return true;
-}
-
-DualSolution DualSystem::solve(const DualData& given, const DualSolveSettings& settings,
+DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& settings,
                                const DualWarmStart& warm) const {
   settings.validate();
-  DualSolution result = prepared(given, settings);
+  DualSolution result = prepared(data, settings);
   const DualPath route = path();
-  // Bounds that follow the answer move during the solve: the stopping test, the constraint
-  // set and the recovery read this copy of the data.
-  std::optional<DualData> moving;
-  if (given.follow_slip_bound && follows_slip_bound(settings)) moving = given;
-  const DualData& data = moving ? *moving : given;
   if (route == DualPath::cholesky) return solved_by_subdomains(data, std::move(result));
   Stopwatch solve_clock;
   const double operator_start = F_->application_seconds();
@@ -166,7 +140,7 @@ DualSolution DualSystem::solve(const DualData& given, const DualSolveSettings& s
     throw InputError("slipBound: needs one bound per friction row (" + std::to_string(constraints_.friction_rows) +
                      "), got " + std::to_string(data.slip_bound.size()));
   const qp::ConstraintSet multiplier_bounds = multiplier_constraints(data);
-  qp::ConstraintSet bounds = multiplier_bounds.shifted(data.lambda_tilde);  // of mu = lambda - lambda~
+  const qp::ConstraintSet bounds = multiplier_bounds.shifted(data.lambda_tilde);  // of mu = lambda - lambda~
   // The primal check of the stopping test at shifted multipliers mu (lambda = mu + lambda~,
   // multipliers at a bound exactly there).
   RelativeKktStop kkt_stop(settings.tolerance, [&](const Vec& mu) {
@@ -197,29 +171,7 @@ DualSolution DualSystem::solve(const DualData& given, const DualSolveSettings& s
     Formulation qp = settings.coarse_constraints == CoarseConstraints::free_rows
                          ? free_rows_qp(data, settings, result, bounds)
                          : penalty_qp(data, settings, result, bounds);
-    DualStop stop = stop_for(result);
-    double tolerance = settings.tolerance;  // of the stopping test, which moving bounds may tighten
-    double infeasible = 0;                  // the distance of moved bounds without equilibrium
-    if (moving)
-      qp.qp.follow_constraints = [&, to_multipliers = qp.to_multipliers](Vec& x, qp::ConstraintSet& set, bool at_stop) {
-        if (!moved_slip_bound(x, to_multipliers, *moving, bounds, tolerance, at_stop)) return false;
-        // Bounds that hold no equilibrium end the solve as the test before SMALBE would.
-        const double moved_distance = coarse_->feasibility_residual(moving->e, multiplier_constraints(*moving), resolution);
-        if (moved_distance > resolution) {
-          infeasible = moved_distance;
-          return false;
-        }
-        set = bounds;
-        kkt_stop.set_tolerance(tolerance);
-        stop.set_tolerance(tolerance);
-        return true;
-      };
-    lambda = lambda_from_shifted(run(route, std::move(qp), stop, settings, warm, result), bounds, data);
-    if (infeasible > 0) {
-      result.status = SolveStatus::infeasible;
-      result.equality_norm = infeasible * result.equality_reference;
-      lambda = data.lambda_tilde;
-    }
+    lambda = lambda_from_shifted(run(route, std::move(qp), stop_for(result), settings, warm, result), bounds, data);
   }
   result.violation = kkt_stop.measure();
   result.scale_evaluations = kkt_stop.evaluations();

@@ -107,13 +107,6 @@ struct DualData {
   Vec c, e, lambda_tilde, b;
   double data_norm = 0;  ///< max(||B K^+ f||, ||c||): the size of what b was computed from
   Vec slip_bound;        ///< per friction row: g >= 0 of |lambda_t| <= g (empty without friction)
-  /// Bounds that follow the answer (Coulomb, g = mu lambda_N; feti/friction.h), where the
-  /// solve can move them (follows_slip_bound): given the multipliers of an iterate that met
-  /// the stopping test at `tolerance` (at first the settings'), and its bounds, either sets
-  /// the bounds they call for, moves the friction multipliers onto them and sets the
-  /// tolerance of the next test (returns true: the solve goes on), or returns false: the
-  /// iterate is the answer. Empty: fixed bounds.
-  std::function<bool(Vec& lambda, Vec& slip_bound, double& tolerance, bool at_stop)> follow_slip_bound;
 };
 
 /// What a solve of a sequence (friction's fixed point: one system, other bounds) carries
@@ -180,10 +173,6 @@ class DualSystem {
   /// Solves the dual problem and recovers u. Never throws for non-convergence: see status.
   /// Collective.
   DualSolution solve(const DualData& data, const DualSolveSettings& settings, const DualWarmStart& warm = {}) const;
-  /// Whether solve() moves DualData::follow_slip_bound's bounds inside its solver: on the
-  /// SMALBE path with an equality part left to SMALBE (its outer loop moves them). Elsewhere
-  /// the bounds stay those given. Builds the free-rows projector if the settings use it.
-  bool follows_slip_bound(const DualSolveSettings& settings) const;
 
   /// Solves the dual problems of several right-hand sides. On the CG paths with the seed's
   /// test their CG runs go in lockstep and share each application of F (a block of vectors,
@@ -206,10 +195,6 @@ class DualSystem {
   LinearOperator projected_preconditioner() const;  // P M^{-1} P, or empty without a preconditioner
   void recover(const DualData& data, Vec lambda, DualSolution& result) const;
   const FreeRowProjector& free_rows() const;  // built at first use
-  // DualData::follow_slip_bound at the solver's iterate x (mu = to_multipliers(x), or x):
-  // on a change, data's bounds, `bounds` (mu's), x's friction rows and `tolerance` follow.
-  bool moved_slip_bound(Vec& x, const std::function<void(const Vec&, Vec&)>& to_multipliers, DualData& data,
-                        qp::ConstraintSet& bounds, double& tolerance, bool at_stop) const;
   PrimalCheck primal_check(const DualData& data, const Vec& lambda) const;  // of the recovered u(lambda)
   // Of lambda: free on equality rows, lambda_I >= 0 on contact rows, |lambda_t| <= g on
   // friction rows.

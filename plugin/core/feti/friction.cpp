@@ -45,19 +45,10 @@ Vec start_on_new_bounds(const Constraints& c, Vec lambda, const Vec& old_bound, 
 /// solving for them to tol is wasted. Measured against 1e-3 and the user's tol on every
 /// friction scene ([log](docs/log.md), 2026-11-27).
 constexpr double kFirstSolveTolerance = 1e-2;
-/// The relative change ||g_new - g||_inf / ||g_new||_inf of Coulomb's bounds.
-double relative_change(const Vec& next, const Vec& g) {
-  if (next.size() == 0) return 0.0;
-  const double scale = next.lpNorm<Eigen::Infinity>();
-  const double change = (next - g).lpNorm<Eigen::Infinity>();
-  return scale > 0 ? change / scale : change;
-}
-
 /// Each later solve stops at max(tol, min(the last solve's tolerance, kBoundFollowing times
 /// the last relative change of the bounds)): as exact as the fixed point's progress can use.
 /// 0.1 left solves that stopped at once, their bounds crawling towards the fixed point.
 constexpr double kBoundFollowing = 1e-2;
-constexpr double kOuterMove = 10;
 
 }  // namespace
 
@@ -75,46 +66,24 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
   const double tol = settings.tolerance;
   if (law.coulomb()) settings.tolerance = std::max(tol, kFirstSolveTolerance);
   DualWarmStart warm;  // SMALBE's multiplier term, carried from solve to solve with the multipliers
-  // Where SMALBE's outer loop can move the bounds, one solve is the whole fixed point: where
-  // its iterate meets the stopping test at the current tolerance, g <- mu lambda_N and the
-  // tolerance follows as between solves below; it stops only where both tests below hold.
-  int moves = 0;  // of the bounds inside solves
-  double reached = settings.tolerance;  // the stopping test's tolerance at the end of a solve that moves them
-  if (law.coulomb() && dual.follows_slip_bound(settings)) {
-    data.follow_slip_bound = [&](Vec& lambda, Vec& bound, double& tolerance, bool at_stop) {
-      const Vec next = coulomb_bounds(c, lambda);
-      const double change = relative_change(next, bound);
-      if (tolerance <= tol && change <= tol) return false;  // the fixed point's stop test
-      if (!at_stop && change <= kOuterMove * tolerance) return false;
-      if (out.iterations + moves + 1 >= settings.friction_iterations) return false;  // reported after the solve
-      tolerance = std::max(tol, std::min(tolerance, kBoundFollowing * change));
-      reached = tolerance;
-      lambda = start_on_new_bounds(c, std::move(lambda), bound, next);
-      bound = next;
-      g = next;  // the bounds the solve goes on with
-      ++moves;
-      return true;
-    };
-  }
   for (;;) {
     data.slip_bound = g;
     settings.max_hessian = budget.remaining(counts.hessian);
-    moves = 0;
-    reached = settings.tolerance;
     DualSolution solved = dual.solve(data, settings, warm);
-    settings.tolerance = reached;
     warm.equality_multiplier = solved.equality_multiplier;
-    out.iterations += 1 + moves;
+    ++out.iterations;
     out.hessian.push_back(solved.counts.hessian);
     const int estimate = counts.hessian_norm_estimate;  // estimated once: the later solves reuse it
     counts += solved.counts;
-    counts.hessian_norm_estimate = out.hessian.size() == 1 ? solved.counts.hessian_norm_estimate : estimate;
+    counts.hessian_norm_estimate = out.iterations == 1 ? solved.counts.hessian_norm_estimate : estimate;
     times += solved.times;
     out.dual = std::move(solved);
     out.slip_bound = g;
     if (!law.coulomb() || out.dual.status != SolveStatus::converged) break;
     const Vec next = coulomb_bounds(c, out.dual.lambda);
-    out.bound_change = relative_change(next, g);
+    const double scale = next.size() ? next.lpNorm<Eigen::Infinity>() : 0.0;
+    const double change = next.size() ? (next - g).lpNorm<Eigen::Infinity>() : 0.0;
+    out.bound_change = scale > 0 ? change / scale : change;
     // Done only when a solve to tol itself gave bounds within tol of the ones it solved with.
     if (settings.tolerance <= tol && out.bound_change <= tol) break;
     if (out.iterations >= settings.friction_iterations || budget.remaining(counts.hessian) == 0) {

@@ -37,10 +37,4 @@ bool RelativeKktStop::operator()(const Vec& x, double gradient, double equality)
   return false;
 }
 
-void RelativeKktStop::set_tolerance(double tolerance) {
-  const int evaluations = evaluations_;
-  *this = RelativeKktStop(tolerance, std::move(check_));
-  evaluations_ = evaluations;
-}
-
 }  // namespace ffeti

@@ -54,9 +54,6 @@ class RelativeKktStop {
   double equality_target() const { return equality_target_; }
 
   int evaluations() const { return evaluations_; }
-  /// Another tolerance, or other constraints at the same (bounds that follow the answer): the
-  /// test starts over as a new solve's would (its checks still counted).
-  void set_tolerance(double tolerance);
   /// The larger of the last check's violation and equilibrium residual (both relative); -1
   /// before any check.
   double measure() const { return measure_; }
@@ -82,13 +79,7 @@ class RelativeKktStop {
 class DualStop {
  public:
   DualStop(StoppingTest kind, double tolerance, double gradient_reference, RelativeKktStop& kkt)
-      : kind_(kind), tolerance_(tolerance), gradient_reference_(gradient_reference),
-        gradient_tolerance_(tolerance * gradient_reference), kkt_(kkt) {}
-  /// Another tolerance for what follows (the KKT test's own is set apart: set_tolerance above).
-  void set_tolerance(double tolerance) {
-    tolerance_ = tolerance;
-    gradient_tolerance_ = tolerance * gradient_reference_;
-  }
+      : kind_(kind), tolerance_(tolerance), gradient_tolerance_(tolerance * gradient_reference), kkt_(kkt) {}
 
   bool operator()(const Vec& mu, double gradient_inf, double gradient_norm) const {
     return kind_ == StoppingTest::seed ? gradient_norm <= gradient_tolerance_ : kkt_(mu, gradient_inf);
@@ -101,7 +92,7 @@ class DualStop {
 
  private:
   StoppingTest kind_;
-  double tolerance_, gradient_reference_, gradient_tolerance_;
+  double tolerance_, gradient_tolerance_;
   RelativeKktStop& kkt_;
 };
 

@@ -10,7 +10,6 @@
 
 #include "qp/qp_types.h"
 
-#include <functional>
 #include <limits>
 #include <vector>
 
@@ -101,13 +100,6 @@ struct Problem {
   /// start is off by the whole of nu, and every solve costs as much as a cold one.
   Vec equality_multiplier;
   ConstraintSet constraints;       ///< one block per group of components
-  /// Constraints that follow the solution (Coulomb friction: disc radii mu lambda_N). Given
-  /// an iterate x that met the stop test, replaces `set` by the one x calls for and moves x
-  /// into it (returns true: SMALBE ends its inner solve, updates its multiplier and goes on
-  /// with the new set, the stop test perhaps tightened by the caller), or returns false:
-  /// x is the solution. SMALBE calls it wherever its stop test holds; the other solvers
-  /// ignore it. Empty: fixed constraints.
-  std::function<bool(Vec& x, ConstraintSet& set, bool at_stop)> follow_constraints;
 
   Eigen::Index size() const { return b.size(); }
 };

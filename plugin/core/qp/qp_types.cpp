@@ -27,7 +27,6 @@ IterationCounts& IterationCounts::operator+=(const IterationCounts& other) {
   expansion_fallback += other.expansion_fallback;
   settle += other.settle;
   penalty_increases += other.penalty_increases;
-  constraint_updates += other.constraint_updates;
   preconditioner += other.preconditioner;
   return *this;
 }

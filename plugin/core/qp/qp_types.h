@@ -47,7 +47,6 @@ struct IterationCounts {
   int settle = 0;       ///< conjugate gradient steps settling a given start (qp/start_settling.h)
   int expansion_fallback = 0;  ///< MPRGP projected-CG expansions rejected for the fixed step
   int penalty_increases = 0;  ///< SMALBE: times the penalty rho grew
-  int constraint_updates = 0;  ///< SMALBE: times qp::Problem::follow_constraints moved the constraints
   int preconditioner = 0;     ///< applications of a preconditioner (about the cost of one of F)
 
   IterationCounts& operator+=(const IterationCounts& other);

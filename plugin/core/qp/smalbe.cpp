@@ -22,7 +22,7 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
   settings.validate();
   if (!problem.hessian || !problem.range_projector) throw std::invalid_argument("SMALBE: incomplete problem");
   const Vec& b = problem.b;
-  qp::ConstraintSet bounds = problem.constraints;  // moves only with problem.follow_constraints
+  const qp::ConstraintSet& bounds = problem.constraints;
   const Vec& lower = bounds.lower;
   const Eigen::Index n = b.size();
   if (x.size() != n || lower.size() != n || (bounds.upper.size() && bounds.upper.size() != n))
@@ -45,11 +45,6 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
   double previous_lagrangian = std::numeric_limits<double>::infinity();
   double best_q_norm = std::numeric_limits<double>::infinity();
   int stalled_rounds = 0;
-  // follow_constraints: the set and iterate a converged x calls for, applied after its inner solve.
-  qp::ConstraintSet next_bounds;
-  Vec next_x;
-  bool bounds_pending = false;
-  bool lagrangian_from_other_constraints = false;
 
   // A = H + rho Q: on Ker C it acts as H, on Im C' as rho, so ||A|| <= max(||H||, rho).
   int applications = 0;  // of A, for the progress lines
@@ -89,14 +84,7 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
       result.equality_norm = q_norm;
       if (monitor)
         monitor({"smalbe", outer, result.gradient_norm, q_norm, applications, off_bound_count(xi, lower)});
-      if (stop(xi, gp0, result.gradient_norm)) {
-        if (!problem.follow_constraints) return globally_done = true;
-        // Converged for these constraints: done if they fit x, else end the inner solve and move them.
-        next_x = xi;
-        next_bounds = bounds;
-        if (!problem.follow_constraints(next_x, next_bounds, true)) return globally_done = true;
-        return bounds_pending = true;
-      }
+      if (stop(xi, gp0, result.gradient_norm)) return globally_done = true;
       // At least one inner step per outer iteration: a multiplier update that the inner
       // solver does not answer only grows nu, and can stall the outer loop for many rounds.
       if (first_call) return first_call = false;
@@ -131,23 +119,6 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
     }
     ++result.counts.outer;
 
-    // Constraints that follow x move where the stop test held (Coulomb's bounds inside the
-    // augmented Lagrangian loop): x moves into them, and SMALBE goes on as a new solve would
-    // from x and nu (its gradient recomputed, M at its start, the multiplier not updated:
-    // the equality part was met to the stop test), except that rho stays.
-    if (bounds_pending) {
-      x = next_x;
-      bounds = std::move(next_bounds);
-      inner_problem.constraints = bounds;
-      gradient_is_current = false;
-      gradient_error = 0;
-      ++result.counts.constraint_updates;
-      bounds_pending = false;
-      M = settings.M_factor * std::max(problem.hessian_norm, rho);
-      lagrangian_from_other_constraints = true;  // L of the next round belongs to another problem
-      continue;
-    }
-
     // Q x is current: the inner stop test computed it at this x.
     const double q_norm = Qx.norm();
     const double lagrangian = 0.5 * x.dot(g - shifted_b);  // L(x, nu, rho) = 1/2 x'Ax - x'(b - nu)
@@ -155,17 +126,10 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
     shifted_b = b - nu;
     g += rho * Qx;           // g = A x - (b - nu) with the new nu
     gradient_is_current = true;
-    if (problem.follow_constraints && problem.follow_constraints(x, bounds, false)) {
-      inner_problem.constraints = bounds;
-      gradient_is_current = false;
-      gradient_error = 0;
-      ++result.counts.constraint_updates;
-    }
 
     if (settings.variant == SmalbeVariant::smalbe_m) {
-      if (outer > 0 && !lagrangian_from_other_constraints && lagrangian < previous_lagrangian + 0.5 * rho * q_norm * q_norm)
+      if (outer > 0 && lagrangian < previous_lagrangian + 0.5 * rho * q_norm * q_norm)
         M /= settings.beta;
-      lagrangian_from_other_constraints = false;
       previous_lagrangian = lagrangian;
       // With rho fixed, ||Qx|| can stall while the inner problems are solved well: the
       // multiplier grows by rho Qx per round and must move far before an active bound lets
