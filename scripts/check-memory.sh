@@ -20,7 +20,8 @@ fi
 # Scenes: contact through FETI-1 and Total FETI, node-to-segment contact, obstacles,
 # sensitivities and adjoints, bad input caught by try, friction (Coulomb, Tresca, load
 # steps), three dimensions (elasticity, the cubes, node to face and mortar, the ball, their
-# sensitivities).
+# sensitivities), 3D friction on discs (mortar base, node to node), mortar sensitivities,
+# new gaps on kept factorizations, the 3D elasticity cubes (shared symbolic analyses).
 scenes=("$root/edp/example.edp"
         "$root/tests/edp/elastic-contact.edp"
         "$root/tests/edp/bad-input.edp"
@@ -36,7 +37,12 @@ scenes=("$root/edp/example.edp"
         "$root/tests/edp/patch-test-3d.edp"
         "$root/tests/edp/sensitivity-3d-faces.edp"
         "$root/edp/hertz-sphere.edp -h 0.2 -block 1 -meshes $root/meshes -check 0.1"
-        "$root/edp/hertz-indenter.edp -h 0.2 -meshes $root/meshes -check 0.05")
+        "$root/edp/hertz-indenter.edp -h 0.2 -meshes $root/meshes -check 0.05"
+        "$root/edp/block-on-slope-3d.edp -base 2 -theta 15 -phi 30 -mu 0.5 -check 1"
+        "$root/edp/block-shear.edp -dim 3 -mode slip -check 1"
+        "$root/tests/edp/sensitivity-3d-mortar.edp"
+        "$root/tests/edp/gap-resolve.edp"
+        "$root/edp/cubes-elasticity-3d.edp -n 8 -check 1")
 label() { local script=${1%% *}; echo "$(basename "$script")${1#"$script"}"; }
 failures=0
 log=$(mktemp)
