@@ -1,6 +1,5 @@
 #include "feti/friction.h"
 
-#include "feti/bound_acceleration.h"
 #include "feti/primal.h"
 
 #include <algorithm>
@@ -68,12 +67,11 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
   const double tol = settings.tolerance;
   if (law.coulomb()) settings.tolerance = std::max(tol, kFirstSolveTolerance);
   DualWarmStart warm;  // SMALBE's multiplier term, carried from solve to solve with the multipliers
-  BoundAcceleration acceleration;
-  Vec plain_bound, plain_start;  // the plain step G(g) and its start, while g is an extrapolated bound
   for (;;) {
     data.slip_bound = g;
     settings.max_hessian = budget.remaining(counts.hessian);
     DualSolution solved = dual.solve(data, settings, warm);
+    warm.equality_multiplier = solved.equality_multiplier;
     ++out.iterations;
     out.hessian.push_back(solved.counts.hessian);
     const int estimate = counts.hessian_norm_estimate;  // estimated once: the later solves reuse it
@@ -83,15 +81,6 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
     applications += solved.dual_operator_applications;
     out.dual = std::move(solved);
     out.slip_bound = g;
-    const bool budget_left = out.iterations < settings.friction_iterations && budget.remaining(counts.hessian) > 0;
-    if (law.coulomb() && out.dual.status != SolveStatus::converged && acceleration.accelerated() && budget_left) {
-      // An extrapolated bound too small to hold what friction holds (infeasible): the plain step instead.
-      g = plain_bound;
-      settings.start = plain_start;
-      acceleration.reset();
-      continue;
-    }
-    warm.equality_multiplier = out.dual.equality_multiplier;
     if (!law.coulomb() || out.dual.status != SolveStatus::converged) break;
     const Vec next = coulomb_bounds(c, out.dual.lambda);
     const double scale = next.size() ? next.lpNorm<Eigen::Infinity>() : 0.0;
@@ -99,18 +88,13 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
     out.bound_change = scale > 0 ? change / scale : change;
     // Done only when a solve to tol itself gave bounds within tol of the ones it solved with.
     if (settings.tolerance <= tol && out.bound_change <= tol) break;
-    if (!budget_left) {
+    if (out.iterations >= settings.friction_iterations || budget.remaining(counts.hessian) == 0) {
       out.dual.status = SolveStatus::max_iterations;
       break;
     }
     settings.tolerance = std::max(tol, std::min(settings.tolerance, kBoundFollowing * out.bound_change));
-    const Vec following = acceleration.next(g, next);
-    if (acceleration.accelerated()) {
-      plain_bound = next;
-      plain_start = start_on_new_bounds(c, out.dual.lambda, g, next);
-    }
-    settings.start = start_on_new_bounds(c, out.dual.lambda, g, following);  // from the last one's multipliers
-    g = following;
+    settings.start = start_on_new_bounds(c, out.dual.lambda, g, next);  // from the last one's multipliers
+    g = next;
     // ... not settled: settling it on its contact set (settle=, tuned for a start from another
     // problem) costs about a frictionless solve each time (11 of 11 multiplications per late
     // solve of a block forced to slide) and moves it little.
