@@ -193,13 +193,18 @@ def variant_lines(results):
         "Its gradient checks at the crowned start (`-contact mortar -gradcheck`; `ctest -R",
         "uniform_pressure_3d_gradients_mortar` asserts 1e-5 on the energy's):",
         "",
-        *markdown_table(mortar_checks, [
-            ("cost", "cost_name"), ("m", "m"), ("variables", "variables"),
-            ("active / contact rows", lambda c: f"{c['active']} / {c['rows']}"),
-            ("adjoint vs direct", ("adjoint_vs_direct", ".1e")), ("direct vs finite differences", ("direct_vs_fd", ".1e")),
-            ("lambda' vs finite differences", ("dlambda_vs_fd", ".1e")), ("status", "status")]),
+        *checks_table(mortar_checks),
         "",
     ]
+
+
+def checks_table(rows):
+    """The gradient checks' table (node to node's and mortar's alike)."""
+    return markdown_table(rows, [
+        ("cost", "cost_name"), ("m", "m"), ("variables", "variables"),
+        ("active / contact rows", lambda c: f"{c['active']} / {c['rows']}"),
+        ("adjoint vs direct", ("adjoint_vs_direct", ".1e")), ("direct vs finite differences", ("direct_vs_fd", ".1e")),
+        ("lambda' vs finite differences", ("dlambda_vs_fd", ".1e")), ("status", "status")])
 
 
 def section():
@@ -267,11 +272,7 @@ def section():
         "against central differences of re-solves, lambda' against differences of the contact",
         "forces; relative to the largest entry (`ctest -R uniform_pressure_3d` asserts 1e-5 on m = 4).",
         "",
-        *markdown_table(checks, [
-            ("cost", "cost_name"), ("m", "m"), ("variables", "variables"),
-            ("active / contact rows", lambda c: f"{c['active']} / {c['rows']}"),
-            ("adjoint vs direct", ("adjoint_vs_direct", ".1e")), ("direct vs finite differences", ("direct_vs_fd", ".1e")),
-            ("lambda' vs finite differences", ("dlambda_vs_fd", ".1e")), ("status", "status")]),
+        *checks_table(checks),
         "",
     ]
     return lines
