@@ -116,7 +116,13 @@ def measure(begun):
         rows += measure_problem(SPHERE_SIZES, lambda size, *flags, **options: sphere(block, size, *flags, **options),
                                 {}, dict(feti=0, peers=1))
     write_csv(PAGE, TABLE, rows)
-    end_run(PAGE, begun, f"{TABLE}-run")
+    run_row = end_run(PAGE, begun, f"{TABLE}-run")
+    write_csv(PAGE, f"{TABLE}-run", [dict(run_row, time_limit_s=repr(TIME_LIMIT_S), memory_limit_mb=repr(MEMORY_LIMIT_MB))])
+
+
+def run_limits(run_row):
+    """The limits the part ran with (its run row; the environment's for a row without them)."""
+    return (float(run_row.get("time_limit_s") or TIME_LIMIT_S), float(run_row.get("memory_limit_mb") or MEMORY_LIMIT_MB))
 
 
 def ran(rows):
@@ -167,8 +173,9 @@ def ratio_rows(rows):
     return table
 
 
-def stops(rows):
-    """Why each peer stopped where it did."""
+def stops(rows, limits):
+    """Why each peer stopped where it did (limits: seconds, MB)."""
+    time_limit_s, memory_limit_mb = limits
     lines = []
     for r in rows:
         if r.get("status") != "stopped":
@@ -178,10 +185,10 @@ def stops(rows):
             lines.append(f"- {label}: {r['solver']} not run: over its two largest sizes run it grew as unknowns^"
                          f"{f(r, 'time_power'):.2f} in time and ^{f(r, 'memory_power'):.2f} in peak memory, which "
                          f"projects {f(r, 'projected_time_s') / 60:.0f} min and {f(r, 'projected_memory_mb') / 1024:.1f} "
-                         f"GiB here (limits {TIME_LIMIT_S / 60:.0f} min, {MEMORY_LIMIT_MB / 1024:.0f} GiB); nor larger sizes.")
+                         f"GiB here (limits {time_limit_s / 60:.0f} min, {memory_limit_mb / 1024:.0f} GiB); nor larger sizes.")
         else:
             lines.append(f"- {label}: {r['solver']} stopped by the {r['stop']} after {f(r, 'ran_s') / 60:.0f} min (limits "
-                         f"{TIME_LIMIT_S / 60:.0f} min, {MEMORY_LIMIT_MB / 1024:.0f} GiB of address space); nor larger sizes.")
+                         f"{time_limit_s / 60:.0f} min, {memory_limit_mb / 1024:.0f} GiB of address space); nor larger sizes.")
     return lines
 
 
@@ -222,6 +229,7 @@ def section():
         return ["## The direct peers side by side", "",
                 "Not run yet: `scripts/three_dimensions_benchmark.py --only peers`.", ""]
     rows, run_row = read_csv(PAGE, TABLE), read_csv(PAGE, f"{TABLE}-run")[0]
+    time_limit_s, memory_limit_mb = run_limits(run_row)
     plot(rows, f"{PAGE}-peers.png")
     return [
         "## The direct peers side by side",
@@ -240,9 +248,9 @@ def section():
         "contact rows in the final contact set (mortar rows on the block). Newton steps: the method starts",
         "from every contact row active and factors the KKT system anew at each step; `of which last solve`",
         "is one factorization and solve, the floor of an active set method with that solver. A peer stops",
-        f"at the first size where its growth over its two largest sizes run projects more than {TIME_LIMIT_S / 60:.0f} min",
-        f"or {MEMORY_LIMIT_MB / 1024:.0f} GiB, or where it reaches a limit while it runs (killed at {TIME_LIMIT_S / 60:.0f} min;",
-        f"{MEMORY_LIMIT_MB / 1024:.0f} GiB of address space). This part ran on its own: {run_row['date']}, "
+        f"at the first size where its growth over its two largest sizes run projects more than {time_limit_s / 60:.0f} min",
+        f"or {memory_limit_mb / 1024:.0f} GiB, or where it reaches a limit while it runs (killed at {time_limit_s / 60:.0f} min;",
+        f"{memory_limit_mb / 1024:.0f} GiB of address space). This part ran on its own: {run_row['date']}, "
         f"{float(run_row['elapsed_s']):.0f} s, load average {float(run_row['load_at_start']):.1f} as it started, "
         f"{float(run_row['load_at_end']):.1f} as it ended. Raw data: [{PAGE}-{TABLE}.csv]({PAGE}-{TABLE}.csv).",
         "",
@@ -265,7 +273,7 @@ def section():
             ("FETI peak MB", "memory"), ("UMFPACK: time", "UMFPACK time"), ("UMFPACK: memory", "UMFPACK memory"),
             ("MUMPS: time", "MUMPS time"), ("MUMPS: memory", "MUMPS memory")]),
         "",
-        *stops(rows),
+        *stops(rows, (time_limit_s, memory_limit_mb)),
         "",
         f"![time and memory over unknowns]({PAGE}-peers.png)",
         "",
