@@ -92,6 +92,7 @@ def picture(profiles, uniform, name):
     along the diagonal and the mid-line of the quarter for every optimum."""
     rows = profile_rows(profiles, OPTIMA[0])
     fig, axes = plt.subplots(1, 3, figsize=(15, 4.4), layout="constrained", gridspec_kw={"width_ratios": [1, 1, 1.3]})
+    fig.get_layout_engine().set(wspace=0.06)  # room between the colour bar's label and the right panel's
     top = max(f(r, "pressure0") for r in rows)
     spread = max(top - uniform, uniform)
     for ax, column, title in zip(axes[:2], ("pressure0", "pressure"), ("crowned start", "optimum of the energy")):
