@@ -82,7 +82,7 @@ def per_multiplication(row, triad_gb_s):
     row["t_hessian"] = f(row, "time_hessian") / f(row, "hessian")
     row["t_operator"] = f(row, "time_dual_operator") / applications
     row["t_solves"] = f(row, "time_factor_solves") / applications
-    row["t_bound"] = f(row, "factor_bytes") / (triad_gb_s * 1e9)
+    row["t_bound"] = f(row, "operator_bytes") / (triad_gb_s * 1e9)
     return row
 
 
@@ -105,7 +105,7 @@ def measure():
 
 def cache_note(row, stream):
     """Where the factors stand against the caches: all of them within L3 beat the DRAM bound."""
-    total, each = f(row, "factor_bytes"), f(row, "factor_bytes") / f(row, "subdomains")
+    total, each = f(row, "operator_bytes"), f(row, "operator_bytes") / f(row, "subdomains")
     if stream["l3_bytes"] and total <= float(stream["l3_bytes"]):
         return "all in L3"
     if stream["l2_bytes"] and each <= float(stream["l2_bytes"]):
@@ -149,12 +149,14 @@ def section():
         f"Measured apart from the tables above: {machine_line(run_row)}",
         "",
         "A Hessian multiplication applies F = B K^+ B' once: per subdomain a forward and a backward",
-        "triangular solve with its CHOLMOD factor. Each reads the whole factor, so no multiplication",
-        "takes less than the bound = (bytes of all factors) / (memory bandwidth) once the factors",
-        "together outgrow the caches (L' after L may come from cache where one subdomain's factor fits:",
-        "one pass is the bound; two passes from memory would double it). Factor bytes: values (8 bytes)",
-        "and the integer indices locating them (4 bytes per entry of a simplicial factor and per row of a",
-        "supernode), `fetiInfo(P, \"factor_bytes\")`. Bandwidth: `tests/stream_triad.cpp`, STREAM's triad",
+        "triangular solve with its CHOLMOD factor. Each reads the part of the factor it needs: the whole",
+        "factor, or where the factor ordered the subdomain's interface last (`ordering`, the 2D subdomains",
+        "by default) the interface block alone. No multiplication takes less than the bound = (bytes the",
+        "solves read) / (memory bandwidth) once those bytes together outgrow the caches (L' after L may",
+        "come from cache where one subdomain's part fits: one pass is the bound; two passes from memory",
+        "would double it). Bytes: values (8 bytes) and the integer indices locating them (4 bytes per",
+        "entry of a simplicial factor and per row of a supernode): `fetiInfo(P, \"operator_bytes\")`, of",
+        "the whole factors' `factor_bytes`. Bandwidth: `tests/stream_triad.cpp`, STREAM's triad",
         f"a = b + s c on three arrays of {float(stream['array_mb']):.0f} MB, best of {stream['runs']} runs, one thread:",
         f"**{f(stream, 'triad_gb_s'):.2f} GB/s** (24 bytes per element; a read-only sum reached",
         f"{f(stream, 'read_gb_s'):.2f} GB/s). Caches: {caches}. BLAS (supernodal solves): {stream['blas']}.",
@@ -173,15 +175,17 @@ def section():
         *markdown_table(rows, [
             ("problem", "problem"), ("n", "n"), ("subdomains", "subdomains"), ("unknowns", "primal"),
             ("supernodal", lambda r: f"{r['supernodal_factors']} of {r['subdomains']}"),
+            ("interface solves", lambda r: f"{r['interface_factors']} of {r['subdomains']}"),
             ("factor MB", lambda r: f"{f(r, 'factor_bytes') / 1e6:.1f}"),
-            ("per subdomain MB", lambda r: f"{f(r, 'factor_bytes') / f(r, 'subdomains') / 1e6:.2f}"),
+            ("read per pass MB", lambda r: f"{f(r, 'operator_bytes') / 1e6:.1f}"),
+            ("per subdomain MB", lambda r: f"{f(r, 'operator_bytes') / f(r, 'subdomains') / 1e6:.2f}"),
             ("in cache", lambda r: cache_note(r, stream)),
             ("Hessian mult.", "hessian"), ("F applied", "dual_operator_applications"),
             ("Hessian [ms]", ms("t_hessian")), ("F [ms]", ms("t_operator")), ("solves [ms]", ms("t_solves")),
             ("cache-hot solves [ms]", hot_ms), ("bound [ms]", ms("t_bound")),
             ("solves / bound", over_bound("t_solves")), ("F / bound", over_bound("t_operator")),
             ("Hessian / bound", over_bound("t_hessian")),
-            ("factor read by the solves [GB/s]", lambda r: f"{f(r, 'factor_bytes') / f(r, 't_solves') / 1e9:.2f}")]),
+            ("factor read by the solves [GB/s]", lambda r: f"{f(r, 'operator_bytes') / f(r, 't_solves') / 1e9:.2f}")]),
         "",
         "One subdomain's factor solved in cache, by kind and BLAS (`tests/factor_kinds_probe DIM COMPONENTS",
         "CELLS`, the scenes' subdomain shapes: the model problem's 64 x 64 squares, the cubes' 8^3 boxes of",

@@ -58,5 +58,104 @@ TEST(CholmodFactor, SharedAnalysisGivesBitwiseTheSameFactor) {
   }
 }
 
+
+/// The 5-point Laplacian of a cells x cells grid of nodes plus `shift` on the diagonal
+/// (regular), and its boundary nodes: a 2D subdomain and its interface.
+SparseMatrix grid_laplacian(int nodes, double shift, std::vector<int>* boundary) {
+  std::vector<Eigen::Triplet<double, int>> entries;
+  const auto id = [nodes](int i, int j) { return i * nodes + j; };
+  for (int i = 0; i < nodes; ++i)
+    for (int j = 0; j < nodes; ++j) {
+      entries.emplace_back(id(i, j), id(i, j), 4.0 + shift);
+      if (i + 1 < nodes) entries.emplace_back(id(i + 1, j), id(i, j), -1.0), entries.emplace_back(id(i, j), id(i + 1, j), -1.0);
+      if (j + 1 < nodes) entries.emplace_back(id(i, j + 1), id(i, j), -1.0), entries.emplace_back(id(i, j), id(i, j + 1), -1.0);
+      if (i == 0 || j == 0 || i == nodes - 1 || j == nodes - 1) boundary->push_back(id(i, j));
+    }
+  SparseMatrix K(nodes * nodes, nodes * nodes);
+  K.setFromTriplets(entries.begin(), entries.end());
+  K.makeCompressed();
+  return K;
+}
+
+/// Boundary dofs of an eliminated 3D block: those on its four lateral faces (any component).
+std::vector<int> block_faces(const SparseMatrix& K, int cells) {
+  std::vector<int> faces;
+  const int side = cells + 1;
+  for (int dof = 0; dof < K.rows(); ++dof) {
+    const int node = dof / 3, i = node % side, j = (node / side) % side;
+    if (i == 0 || j == 0 || i == cells || j == cells) faces.push_back(dof);
+  }
+  return faces;
+}
+
+/// x(interface) of a solve on the interface against the whole solve of the same right-hand side.
+double interface_solve_error(const CholmodFactor& factor, const SparseMatrix& K, const std::vector<int>& interface) {
+  const auto t = static_cast<Eigen::Index>(interface.size());
+  const Vec b_on = Vec::LinSpaced(t, -1, 2);
+  Vec b = Vec::Zero(K.rows()), x, x_on;
+  for (Eigen::Index k = 0; k < t; ++k) b[interface[static_cast<size_t>(k)]] = b_on[k];
+  factor.solve(b, x);
+  factor.solve_on_interface(b_on, x_on);
+  double error = 0;
+  for (Eigen::Index k = 0; k < t; ++k) error = std::max(error, std::abs(x_on[k] - x[interface[static_cast<size_t>(k)]]));
+  return error / x.lpNorm<Eigen::Infinity>();
+}
+
+TEST(CholmodFactor, SolvesOnTheInterfaceAloneWhereItIsOrderedLast) {
+  std::vector<int> boundary;
+  const SparseMatrix K = grid_laplacian(65, 0.01, &boundary);  // the seed's subdomain: H/h = 64
+  CholmodFactor fill(FactorKind::simplicial, InterfaceOrdering::fill_reducing);
+  ASSERT_LT(fill.factorize(K, nullptr, boundary), 0);
+  EXPECT_FALSE(fill.interface_solves());
+  CholmodFactor automatic(FactorKind::automatic, InterfaceOrdering::automatic);
+  ASSERT_LT(automatic.factorize(K, nullptr, boundary), 0);
+  ASSERT_TRUE(automatic.interface_solves());  // a 2D grid: the boundary block is small against L
+  EXPECT_LT(interface_solve_error(automatic, K, boundary), 1e-13);
+  // The whole solve still holds on the reordered factor.
+  const Vec b = Vec::LinSpaced(K.rows(), -1, 2);
+  Vec x;
+  automatic.solve(b, x);
+  EXPECT_LT((K * x - b).norm(), 1e-12 * b.norm());
+  // The price: a larger factor than the fill-reducing one (the interface's Schur complement).
+  EXPECT_GT(automatic.factor_nonzeros(), fill.factor_nonzeros());
+}
+
+TEST(CholmodFactor, AutomaticKeepsTheFillReducingOrderingWhereTheInterfaceBlockIsLarge) {
+  // A 3D elastic block with its lateral faces as interface: their dense block would be more
+  // than half of the fill-reducing factor.
+  const int cells = 4;
+  const SparseMatrix K = block(cells);
+  const std::vector<int> faces = block_faces(K, cells);
+  CholmodFactor automatic(FactorKind::simplicial, InterfaceOrdering::automatic);
+  ASSERT_LT(automatic.factorize(K, nullptr, faces), 0);
+  EXPECT_FALSE(automatic.interface_solves());
+  CholmodFactor forced(FactorKind::simplicial, InterfaceOrdering::interface_last);
+  ASSERT_LT(forced.factorize(K, nullptr, faces), 0);
+  ASSERT_TRUE(forced.interface_solves());
+  EXPECT_LT(interface_solve_error(forced, K, faces), 1e-12);
+  // A supernodal factor keeps the fill-reducing ordering whatever is asked.
+  CholmodFactor supernodal(FactorKind::supernodal, InterfaceOrdering::interface_last);
+  ASSERT_LT(supernodal.factorize(K, nullptr, faces), 0);
+  EXPECT_FALSE(supernodal.interface_solves());
+}
+
+TEST(CholmodFactor, SharedAnalysisKeepsTheInterfaceOrdering) {
+  std::vector<int> boundary, same;
+  const SparseMatrix K = grid_laplacian(65, 0.01, &boundary);
+  const SparseMatrix K2 = 2.0 * grid_laplacian(65, 0.02, &same);
+  SharedAnalyses shared;
+  CholmodFactor first(FactorKind::simplicial, InterfaceOrdering::automatic);
+  CholmodFactor second(FactorKind::simplicial, InterfaceOrdering::automatic);
+  CholmodFactor other_interface(FactorKind::simplicial, InterfaceOrdering::automatic);
+  ASSERT_LT(first.factorize(K, &shared, boundary), 0);
+  ASSERT_LT(second.factorize(K2, &shared, boundary), 0);
+  const std::vector<int> half(boundary.begin(), boundary.begin() + static_cast<long>(boundary.size() / 2));
+  ASSERT_LT(other_interface.factorize(K, &shared, half), 0);
+  EXPECT_EQ(shared.reuses(), 1);  // the interface is part of the key
+  EXPECT_TRUE(second.interface_solves());
+  EXPECT_LT(interface_solve_error(second, K2, boundary), 1e-13);
+  EXPECT_LT(interface_solve_error(other_interface, K, half), 1e-13);
+}
+
 }  // namespace
 }  // namespace ffeti

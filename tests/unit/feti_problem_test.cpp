@@ -51,7 +51,9 @@ struct DualPieces {
   Eigen::MatrixXd B, Kplus_dense, R;
 };
 
-DualPieces dual_pieces(const test::MembraneOptions& o) {
+/// `ordering`: where each subdomain's factor puts its interface (forced last: the dual
+/// operator's solves on the interface alone, fixing dofs among it).
+DualPieces dual_pieces(const test::MembraneOptions& o, InterfaceOrdering ordering = InterfaceOrdering::fill_reducing) {
   DualPieces p;
   p.subs = test::membrane_subdomains(o);
   // Total FETI: Dirichlet conditions as rows, every subdomain floats (the hardest case).
@@ -62,8 +64,8 @@ DualPieces dual_pieces(const test::MembraneOptions& o) {
   p.local = split_by_subdomain(p.constraints, sizes);
   for (size_t s = 0; s < p.subs.size(); ++s)
     p.subdomains.push_back(std::make_unique<Subdomain>(
-        static_cast<int>(s), p.subs[s].K,
-        candidate_kernel(p.subs[s].x, p.subs[s].y, p.subs[s].component), FactorKind::simplicial));
+        static_cast<int>(s), p.subs[s].K, candidate_kernel(p.subs[s].x, p.subs[s].y, p.subs[s].component),
+        FactorKind::simplicial, ordering, nullptr, touched_dofs(p.local[s].B)));
   for (const auto& s : p.subdomains) r += static_cast<int>(s->kernel().cols());
   p.B = Eigen::MatrixXd::Zero(p.constraints.rows(), n);
   p.Kplus_dense = Eigen::MatrixXd::Zero(n, n);  // Moore-Penrose, independent of fixing dofs
@@ -83,8 +85,13 @@ DualPieces dual_pieces(const test::MembraneOptions& o) {
   return p;
 }
 
-TEST(DualOperator, ProjectedOperatorMatchesDenseExplicit) {
-  DualPieces p = dual_pieces(test::membrane_options(8, 2));
+class DualOperatorOrdering : public ::testing::TestWithParam<InterfaceOrdering> {};
+
+TEST_P(DualOperatorOrdering, ProjectedOperatorMatchesDenseExplicit) {
+  DualPieces p = dual_pieces(test::membrane_options(8, 2), GetParam());
+  const auto on_interface = std::count_if(p.subdomains.begin(), p.subdomains.end(),
+                                          [](const auto& s) { return s->interface_solves(); });
+  EXPECT_EQ(on_interface, GetParam() == InterfaceOrdering::interface_last ? static_cast<long>(p.subdomains.size()) : 0);
   std::vector<int> bodies;
   for (const auto& s : p.subs) bodies.push_back(s.body);
   const int m = p.constraints.rows();
@@ -122,7 +129,7 @@ TEST(DualOperator, ProjectedOperatorMatchesDenseExplicit) {
   EXPECT_LT((G * P_applied).norm(), 1e-12 * G.norm());
 }
 
-TEST(DualOperator, CoerciveOperatorMatchesDenseExplicit) {
+TEST_P(DualOperatorOrdering, CoerciveOperatorMatchesDenseExplicit) {
   test::MembraneOptions o = test::membrane_options(8, 2);
   o.with_contact = false;
   o.body2 = false;
@@ -139,7 +146,8 @@ TEST(DualOperator, CoerciveOperatorMatchesDenseExplicit) {
   SubdomainList subdomains;
   for (size_t s = 0; s < subs.size(); ++s)
     subdomains.push_back(std::make_unique<Subdomain>(static_cast<int>(s), subs[s].K,
-        candidate_kernel(subs[s].x, subs[s].y, subs[s].component), FactorKind::simplicial));
+        candidate_kernel(subs[s].x, subs[s].y, subs[s].component), FactorKind::simplicial, GetParam(), nullptr,
+        touched_dofs(local[s].B)));
   const int m = c.rows();
   const SerialCommunicator comm;
   const int S = static_cast<int>(subs.size());
@@ -159,6 +167,9 @@ TEST(DualOperator, CoerciveOperatorMatchesDenseExplicit) {
     EXPECT_LT((y - F_dense.col(j)).norm(), 1e-10 * F_dense.norm());
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(BothOrderings, DualOperatorOrdering,
+                         ::testing::Values(InterfaceOrdering::fill_reducing, InterfaceOrdering::interface_last));
 
 TEST(FetiProblem, MembraneMatchesMonolithicActiveSetReference) {
   const int n = 16;

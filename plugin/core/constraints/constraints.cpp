@@ -123,6 +123,13 @@ std::vector<LocalConstraints> split_by_subdomain(const Constraints& constraints,
   return local;
 }
 
+std::vector<int> touched_dofs(const SparseMatrix& B) {
+  std::vector<int> dofs;
+  for (int j = 0; j < B.outerSize(); ++j)
+    if (B.outerIndexPtr()[j + 1] > B.outerIndexPtr()[j]) dofs.push_back(j);
+  return dofs;
+}
+
 std::vector<std::vector<int>> rows_by_subdomain(const Constraints& constraints, int count) {
   std::vector<std::vector<int>> rows(static_cast<size_t>(count));
   for (int row = 0; row < constraints.rows(); ++row)

@@ -89,6 +89,9 @@ std::vector<LocalConstraints> split_by_subdomain(const Constraints& constraints,
                                                  const std::vector<Eigen::Index>& sizes,
                                                  const std::vector<int>& global_ids = {});
 
+/// The columns (dofs) where a block B_s has an entry, ascending: the subdomain's interface.
+std::vector<int> touched_dofs(const SparseMatrix& B);
+
 /// The rows touching each global subdomain (`count` subdomains), in row order.
 std::vector<std::vector<int>> rows_by_subdomain(const Constraints& constraints, int count);
 

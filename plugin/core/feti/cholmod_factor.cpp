@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstring>
 #include <stdexcept>
@@ -81,7 +82,7 @@ double supernodal_switch() {
   return 120;
 }
 
-CholmodFactor::CholmodFactor(FactorKind kind) {
+CholmodFactor::CholmodFactor(FactorKind kind, InterfaceOrdering ordering) : ordering_(ordering) {
   cholmod_start(&common_);
   common_.print = 0;  // the core never prints; failures are returned as values
   common_.error_handler = nullptr;
@@ -92,27 +93,51 @@ CholmodFactor::CholmodFactor(FactorKind kind) {
 }
 
 CholmodFactor::~CholmodFactor() {
-  for (Workspace* w : {&vector_workspace_, &block_workspace_}) {
+  for (Workspace* w : {&vector_workspace_, &block_workspace_, &interface_workspace_}) {
     cholmod_free_dense(&w->solution, &common_);
     cholmod_free_dense(&w->y, &common_);
     cholmod_free_dense(&w->e, &common_);
   }
+  cholmod_free_sparse(&interface_set_, &common_);
+  cholmod_free_dense(&interface_rhs_, &common_);
+  cholmod_free_sparse(&reached_, &common_);
   cholmod_free_factor(&factor_, &common_);
   cholmod_finish(&common_);
 }
 
-int CholmodFactor::factorize(const SparseMatrix& A, SharedAnalyses* shared) {
+int CholmodFactor::factorize(const SparseMatrix& A, SharedAnalyses* shared, const std::vector<int>& interface) {
   if (A.rows() != A.cols()) throw std::invalid_argument("CholmodFactor: matrix is not square");
   if (!A.isCompressed()) throw std::invalid_argument("CholmodFactor: matrix is not compressed");
   cholmod_sparse view = view_lower(A);
   if (!factor_ || size_ != A.rows()) {
     cholmod_free_factor(&factor_, &common_);
-    if (shared) factor_ = shared->copy(view, common_.supernodal, &common_, &analysis_flops_, &analysis_nonzeros_);
+    cholmod_free_sparse(&interface_set_, &common_);
+    cholmod_free_dense(&interface_rhs_, &common_);
+    bool interface_last = false;
+    if (shared)
+      factor_ = shared->copy(view, common_.supernodal, interface, &common_, &analysis_flops_, &analysis_nonzeros_,
+                             &interface_last);
     if (!factor_) {
       factor_ = cholmod_analyze(&view, &common_);
       if (!factor_) throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
       analysis_flops_ = common_.fl, analysis_nonzeros_ = common_.lnz;
-      if (shared) shared->keep(view, common_.supernodal, *factor_, analysis_flops_, analysis_nonzeros_);
+      if (ordering_ != InterfaceOrdering::fill_reducing && !interface.empty() && !factor_->is_super)
+        if (cholmod_factor* constrained = analyze_interface_last(view, interface)) {
+          cholmod_free_factor(&factor_, &common_);
+          factor_ = constrained, interface_last = true;
+          analysis_flops_ = common_.fl, analysis_nonzeros_ = common_.lnz;
+        }
+      if (shared)
+        shared->keep(view, common_.supernodal, interface, interface_last, *factor_, analysis_flops_, analysis_nonzeros_);
+    }
+    if (interface_last) {
+      const size_t n = static_cast<size_t>(A.rows());
+      interface_set_ = cholmod_allocate_sparse(n, 1, interface.size(), 1, 1, 0, CHOLMOD_PATTERN, &common_);
+      interface_rhs_ = cholmod_zeros(n, 1, CHOLMOD_REAL, &common_);
+      if (!interface_set_ || !interface_rhs_) throw std::runtime_error("CHOLMOD allocation failed (out of memory?)");
+      static_cast<int*>(interface_set_->p)[0] = 0;
+      static_cast<int*>(interface_set_->p)[1] = static_cast<int>(interface.size());
+      std::copy(interface.begin(), interface.end(), static_cast<int*>(interface_set_->i));
     }
     size_ = A.rows();
   }
@@ -133,6 +158,43 @@ int CholmodFactor::factorize(const SparseMatrix& A, SharedAnalyses* shared) {
       if (!(values[start[j]] > 0)) return static_cast<int>(j);
   }
   return -1;
+}
+
+cholmod_factor* CholmodFactor::analyze_interface_last(cholmod_sparse& A, const std::vector<int>& interface) {
+  const double unconstrained_nonzeros = common_.lnz;
+  std::vector<int> member(A.nrow, 0), order(A.nrow);
+  for (int column : interface) member[static_cast<size_t>(column)] = 1;
+  if (!cholmod_camd(&A, nullptr, 0, member.data(), order.data(), &common_))
+    throw std::runtime_error("CHOLMOD's CAMD ordering failed (out of memory?)");
+  const int methods = common_.nmethods, ordering = common_.method[0].ordering, supernodal = common_.supernodal;
+  common_.nmethods = 1, common_.method[0].ordering = CHOLMOD_GIVEN;
+  common_.supernodal = CHOLMOD_SIMPLICIAL;  // CHOLMOD solves on a subset of columns of simplicial factors only
+  cholmod_factor* constrained = cholmod_analyze_p(&A, order.data(), nullptr, 0, &common_);
+  common_.nmethods = methods, common_.method[0].ordering = ordering, common_.supernodal = supernodal;
+  if (!constrained) throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
+  // The interface columns are closed under the elimination tree's ancestors (they come last
+  // and postordering keeps ancestors), so a solve on them reads exactly their columns of L.
+  const auto* permutation = static_cast<const int*>(constrained->Perm);
+  const auto* column_counts = static_cast<const int*>(constrained->ColCount);
+  double interface_nonzeros = 0;
+  for (size_t k = 0; k < A.nrow; ++k)
+    if (member[static_cast<size_t>(permutation[k])]) interface_nonzeros += column_counts[k];
+  if (ordering_ == InterfaceOrdering::automatic && interface_nonzeros > 0.5 * unconstrained_nonzeros)
+    cholmod_free_factor(&constrained, &common_);
+  return constrained;
+}
+
+void CholmodFactor::solve_on_interface(const Eigen::VectorXd& b_on_interface, Eigen::VectorXd& x_on_interface) const {
+  const auto* columns = static_cast<const int*>(interface_set_->i);
+  const auto count = static_cast<Eigen::Index>(interface_set_->nzmax);
+  auto* rhs = static_cast<double*>(interface_rhs_->x);
+  for (Eigen::Index k = 0; k < count; ++k) rhs[columns[k]] = b_on_interface[k];
+  Workspace& w = interface_workspace_;
+  if (!cholmod_solve2(CHOLMOD_A, factor_, interface_rhs_, interface_set_, &w.solution, &reached_, &w.y, &w.e, &common_))
+    throw std::runtime_error("CHOLMOD solve failed");
+  const auto* solution = static_cast<const double*>(w.solution->x);
+  x_on_interface.resize(count);
+  for (Eigen::Index k = 0; k < count; ++k) x_on_interface[k] = solution[columns[k]];
 }
 
 void CholmodFactor::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
@@ -166,6 +228,20 @@ double CholmodFactor::factor_nonzeros() const {
   double total = 0;
   for (size_t j = 0; j < factor_->n; ++j) total += column_counts[j];
   return total;
+}
+
+double CholmodFactor::interface_bytes() const {
+  if (!interface_set_ || !factor_) return 0;
+  std::vector<char> on_interface(factor_->n, 0);
+  const auto* columns = static_cast<const int*>(interface_set_->i);
+  for (size_t k = 0; k < interface_set_->nzmax; ++k) on_interface[static_cast<size_t>(columns[k])] = 1;
+  const auto* permutation = static_cast<const int*>(factor_->Perm);
+  const auto* column_counts = static_cast<const int*>(factor_->nz);
+  const double value = sizeof(double), index = sizeof(int);
+  double bytes = 0;
+  for (size_t j = 0; j < factor_->n; ++j)
+    if (on_interface[static_cast<size_t>(permutation[j])]) bytes += column_counts[j] * (value + index) + 2 * index;
+  return bytes;
 }
 
 double CholmodFactor::factor_bytes() const {

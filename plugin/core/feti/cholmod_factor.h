@@ -8,12 +8,25 @@
 
 #include <cholmod.h>
 
+#include <vector>
+
 namespace ffeti {
 
 /// `automatic` lets CHOLMOD choose after its analysis: supernodal (dense blocks through the
 /// BLAS) when the flops per factor nonzero reach supernodal_switch(), simplicial below
 /// (2D subdomains of a few thousand dofs: several times faster, docs/results/model-problem.md).
 enum class FactorKind { simplicial, supernodal, automatic };
+
+/// Where the columns a dual-operator solve reads (the interface: where B_s touches the
+/// subdomain) go in the elimination order. `fill_reducing`: CHOLMOD's ordering alone, every
+/// solve reads all of L. `interface_last`: the interface eliminated last (CAMD), so that a
+/// solve on it reads only its block of L (about t^2/2 entries for t interface columns), for
+/// a costlier factorization (the Schur complement on the interface is formed: 2-3 times
+/// the flops on 2D subdomains) and a larger factor. `automatic`: interface last where that
+/// block is at most half of the fill-reducing factor (2D subdomains, not 3D ones, whose
+/// interfaces are large against their volume). Simplicial factors only: a supernodal
+/// factor keeps the fill-reducing ordering.
+enum class InterfaceOrdering { fill_reducing, interface_last, automatic };
 
 /// Flops per nonzero of L from which an automatic factor is supernodal (measured by
 /// scripts/factor_kinds.py; docs/algorithms.md).
@@ -23,7 +36,8 @@ double supernodal_switch();
 /// Not copyable; a solve is not thread-safe on the same object (it reuses workspace).
 class CholmodFactor {
  public:
-  explicit CholmodFactor(FactorKind kind = FactorKind::simplicial);
+  explicit CholmodFactor(FactorKind kind = FactorKind::simplicial,
+                         InterfaceOrdering ordering = InterfaceOrdering::fill_reducing);
   ~CholmodFactor();
   CholmodFactor(const CholmodFactor&) = delete;
   CholmodFactor& operator=(const CholmodFactor&) = delete;
@@ -33,7 +47,18 @@ class CholmodFactor {
   /// The symbolic analysis runs on the first call (or a new size); with `shared`, it is
   /// copied from there when a matrix of A's pattern was analyzed before, and kept there
   /// otherwise.
-  int factorize(const SparseMatrix& A, SharedAnalyses* shared = nullptr);
+  ///
+  /// `interface` (sorted, distinct columns of A; may be empty): the columns
+  /// solve_on_interface reads and writes, ordered as the InterfaceOrdering given at
+  /// construction says (a second analysis where the first comes out simplicial).
+  int factorize(const SparseMatrix& A, SharedAnalyses* shared = nullptr, const std::vector<int>& interface = {});
+
+  /// x(interface) of A x = b, b zero outside the interface given to factorize, its values
+  /// there `b_on_interface` (in the interface's order). CHOLMOD reads only the columns of L
+  /// that the interface reaches in the elimination tree. Precondition: interface_solves().
+  void solve_on_interface(const Eigen::VectorXd& b_on_interface, Eigen::VectorXd& x_on_interface) const;
+  /// True when the factor was ordered with its interface last (solve_on_interface applies).
+  bool interface_solves() const { return interface_set_ != nullptr; }
 
   /// x = A^{-1} b. Precondition: the last factorize succeeded.
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
@@ -53,6 +78,9 @@ class CholmodFactor {
   /// a few pointers per supernode). A Hessian multiplication reads it at least once (twice,
   /// L then L', where it does not stay in cache): the memory-bandwidth bound of a solve.
   double factor_bytes() const;
+  /// Of factor_bytes, what one triangular solve_on_interface reads: the interface block's
+  /// columns of L (0 without interface solves).
+  double interface_bytes() const;
   bool supernodal() const { return factor_ && factor_->is_super; }
   /// The analysis' flop count of the factorization and nnz(L) without the supernodes'
   /// padding (CHOLMOD's Common->fl and ->lnz): what an automatic choice judged.
@@ -63,6 +91,7 @@ class CholmodFactor {
 
  private:
   mutable cholmod_common common_;
+  InterfaceOrdering ordering_;
   cholmod_factor* factor_ = nullptr;
   struct Workspace {  // reused by cholmod_solve2 while the block width stays the same
     cholmod_dense* solution = nullptr;
@@ -71,7 +100,14 @@ class CholmodFactor {
   };
   void solve_columns(const double* b, Eigen::Index rows, Eigen::Index cols, double* x, Workspace& w) const;
 
-  mutable Workspace vector_workspace_, block_workspace_;
+  /// The analysis with the interface last (CAMD), or null where `automatic` keeps the
+  /// fill-reducing one (common_ holds the latter's statistics on entry).
+  cholmod_factor* analyze_interface_last(cholmod_sparse& A, const std::vector<int>& interface);
+
+  mutable Workspace vector_workspace_, block_workspace_, interface_workspace_;
+  cholmod_sparse* interface_set_ = nullptr;  ///< the interface as CHOLMOD's Bset (a pattern column)
+  mutable cholmod_dense* interface_rhs_ = nullptr;  ///< dense n-vector, read only on the interface
+  mutable cholmod_sparse* reached_ = nullptr;       ///< Xset: the columns a solve_on_interface reached
   Eigen::Index size_ = 0;
   double analysis_flops_ = 0, analysis_nonzeros_ = 0;
 };

@@ -2,19 +2,45 @@
 
 #include "base/stopwatch.h"
 
+#include <algorithm>
+
 namespace ffeti {
+namespace {
+
+/// B with its columns renumbered to positions in `interface` (sorted dofs), or an empty
+/// matrix when B touches a dof outside it (rows built after the factorization, e.g. a
+/// sensitivity problem's).
+SparseMatrix columns_on_interface(const SparseMatrix& B, const std::vector<int>& interface) {
+  std::vector<Eigen::Triplet<double, int>> entries;
+  for (int j = 0; j < B.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(B, j); it; ++it) {
+      const auto at = std::lower_bound(interface.begin(), interface.end(), j);
+      if (at == interface.end() || *at != j) return {};
+      entries.emplace_back(static_cast<int>(it.row()), static_cast<int>(at - interface.begin()), it.value());
+    }
+  SparseMatrix on_interface(B.rows(), static_cast<Eigen::Index>(interface.size()));
+  on_interface.setFromTriplets(entries.begin(), entries.end());
+  on_interface.makeCompressed();
+  return on_interface;
+}
+
+}  // namespace
 
 DualOperator::DualOperator(const SubdomainList& subdomains, const std::vector<LocalConstraints>& local,
                            const SubdomainSum& sum, int rows, int threads)
     : subdomains_(subdomains), local_(local), sum_(sum), rows_(rows), threads_(resolve_thread_count(threads)) {
   const size_t count = subdomains.size();
-  gathered_.resize(count), local_rhs_.resize(count);
+  gathered_.resize(count), local_rhs_.resize(count), interface_B_.resize(count);
+  interface_rhs_.resize(count), interface_solution_.resize(count);
   local_solution_.resize(count), local_result_.resize(count);
   for (size_t s = 0; s < count; ++s) {
     gathered_[s].resize(static_cast<Eigen::Index>(local[s].rows.size()));
     local_rhs_[s].resize(subdomains[s]->size());
     local_solution_[s].resize(subdomains[s]->size());
     local_result_[s].resize(static_cast<Eigen::Index>(local[s].rows.size()));
+    if (subdomains[s]->interface_solves() && !local[s].rows.empty())
+      interface_B_[s] = columns_on_interface(local[s].B, subdomains[s]->interface());
+    interface_rhs_[s].resize(interface_B_[s].cols()), interface_solution_[s].resize(interface_B_[s].cols());
   }
 }
 
@@ -28,11 +54,18 @@ void DualOperator::apply(const Vec& x, Vec& y) const {
     if (local_[i].rows.empty()) continue;
     for (size_t k = 0; k < local_[i].rows.size(); ++k)
       gathered_[i][static_cast<Eigen::Index>(k)] = x[local_[i].rows[k]];
-    local_rhs_[i].noalias() = local_[i].B.transpose() * gathered_[i];  // B_s' x
+    const bool on_interface = interface_B_[i].rows() > 0;
+    const SparseMatrix& B = on_interface ? interface_B_[i] : local_[i].B;
+    Vec& rhs = on_interface ? interface_rhs_[i] : local_rhs_[i];
+    Vec& solution = on_interface ? interface_solution_[i] : local_solution_[i];
+    rhs.noalias() = B.transpose() * gathered_[i];  // B_s' x
     const Stopwatch solve_clock;
-    subdomains_[i]->apply_pseudo_inverse(local_rhs_[i], local_solution_[i]);
+    if (on_interface)
+      subdomains_[i]->apply_pseudo_inverse_on_interface(rhs, solution);
+    else
+      subdomains_[i]->apply_pseudo_inverse(rhs, solution);
     solves += solve_clock.seconds();
-    local_result_[i].noalias() = local_[i].B * local_solution_[i];     // B_s K_s^+ B_s' x
+    local_result_[i].noalias() = B * solution;  // B_s K_s^+ B_s' x
   }
   sum_local_results(y);
   application_seconds_ += clock.seconds();

@@ -23,7 +23,9 @@ class DualOperator {
   int rows() const { return rows_; }
 
   /// y = F x: in parallel over subdomains w_s = K_s^+ B_s' x, then y = sum_s B_s w_s
-  /// added in global subdomain order (the same sum for any thread or rank count).
+  /// added in global subdomain order (the same sum for any thread or rank count). Where a
+  /// subdomain's factor ordered its interface last and B_s touches nothing else, w_s is
+  /// solved on the interface alone (Subdomain::apply_pseudo_inverse_on_interface).
   void apply(const Vec& x, Vec& y) const;
 
   /// Y = F X for a block of dual vectors (columns): one pass over each subdomain's factor
@@ -63,7 +65,10 @@ class DualOperator {
   const SubdomainSum& sum_;
   int rows_;
   int threads_;
-  mutable std::vector<Vec> gathered_, local_rhs_, local_solution_, local_result_;
+  /// Per subdomain, B_s with its columns renumbered to the subdomain's interface (rows x
+  /// interface size); empty where apply() takes the whole-subdomain solve.
+  std::vector<SparseMatrix> interface_B_;
+  mutable std::vector<Vec> gathered_, local_rhs_, local_solution_, local_result_, interface_rhs_, interface_solution_;
   mutable std::vector<Eigen::MatrixXd> block_gathered_, block_rhs_, block_solution_, block_result_;
   mutable Vec column_;
   mutable double application_seconds_ = 0, solve_seconds_ = 0;

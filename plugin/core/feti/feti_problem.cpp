@@ -127,7 +127,7 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   setup_times_.constraints = constraints_clock.seconds();
 
   Stopwatch factor_clock;
-  factorize();
+  factorize(constraints);
   setup_times_.factorization = local_factor_seconds_ = factor_clock.seconds();
 
   Stopwatch coarse_clock;
@@ -149,12 +149,14 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   compute_dual_data();
 
   long local_primal = 0;
-  double local_nonzeros = 0, local_bytes = 0;
+  double local_nonzeros = 0, local_bytes = 0, local_operator_bytes = 0;
   for (size_t k = 0; k < inputs_.size(); ++k) local_primal += inputs_[k].K.rows();
-  for (const auto& s : subdomains_) local_nonzeros += s->factor_nonzeros(), local_bytes += s->factor_bytes();
+  for (const auto& s : subdomains_)
+    local_nonzeros += s->factor_nonzeros(), local_bytes += s->factor_bytes(), local_operator_bytes += s->operator_bytes();
   primal_dimension_ = static_cast<long>(comm.sum(static_cast<double>(local_primal)));
   factor_nonzeros_ = comm.sum(local_nonzeros);
   factor_bytes_ = comm.sum(local_bytes);
+  operator_bytes_ = comm.sum(local_operator_bytes);
   gather_rank_statistics(0.0);
   setup_times_ = {comm.max(setup_times_.constraints), comm.max(setup_times_.factorization),
                   comm.max(setup_times_.coarse_space), comm.max(setup_times_.dual_data), 0, 0, 0, 0};
@@ -189,8 +191,11 @@ Constraints FetiProblem::build_rows(std::vector<DofRecord>* gathered) const {
   return build_constraints(std::move(records), segments, faces, local_contact_, settings_.variant, snap_);
 }
 
-void FetiProblem::factorize() {
+void FetiProblem::factorize(const Constraints& constraints) {
   const long before = CholmodFactor::factorizations_in_process();
+  std::vector<Eigen::Index> sizes;
+  for (const SubdomainInput& in : inputs_) sizes.push_back(in.K.rows());
+  const std::vector<LocalConstraints> local = split_by_subdomain(constraints, sizes, global_ids_);
   const bool eliminate = settings_.variant == FetiVariant::feti1;
   const int count = local_subdomain_count();
   subdomains_.resize(inputs_.size());
@@ -203,7 +208,8 @@ void FetiProblem::factorize() {
       const bool eliminated = eliminate && !in.dirichlet_dofs.empty();
       subdomains_[static_cast<size_t>(k)] = std::make_unique<Subdomain>(
           global_ids_[static_cast<size_t>(k)], eliminated ? eliminate_dirichlet(in.K, in.dirichlet_dofs) : in.K,
-          candidate_kernel(in.x, in.y, in.component, in.z), settings_.factor, &shared);
+          candidate_kernel(in.x, in.y, in.component, in.z), settings_.factor, settings_.ordering, &shared,
+          touched_dofs(local[static_cast<size_t>(k)].B));
     } catch (...) {
       failures[static_cast<size_t>(k)] = std::current_exception();
     }
@@ -215,6 +221,9 @@ void FetiProblem::factorize() {
   factorizations_ = static_cast<long>(comm_->sum(double(CholmodFactor::factorizations_in_process() - before)));
   const auto supernodal = std::count_if(subdomains_.begin(), subdomains_.end(), [](const auto& s) { return s->supernodal(); });
   supernodal_factors_ = static_cast<long>(comm_->sum(static_cast<double>(supernodal)));
+  const auto on_interface =
+      std::count_if(subdomains_.begin(), subdomains_.end(), [](const auto& s) { return s->interface_solves(); });
+  interface_factors_ = static_cast<long>(comm_->sum(static_cast<double>(on_interface)));
   symbolic_analyses_ = static_cast<long>(comm_->sum(static_cast<double>(shared.analyses())));
 }
 

@@ -20,6 +20,8 @@ namespace ffeti {
 struct FetiSetupSettings {
   FetiVariant variant = FetiVariant::feti1;
   FactorKind factor = FactorKind::automatic;
+  /// Where each subdomain's interface goes in its factor's elimination order (CholmodFactor).
+  InterfaceOrdering ordering = InterfaceOrdering::automatic;
   /// OpenMP threads over subdomains; 0: the runtime default. Under Debian's serial OpenBLAS,
   /// not safe to call concurrently, supernodal factors run on one thread (set_up).
   int threads = 0;
@@ -118,6 +120,8 @@ class FetiProblem {
   /// Of those, the ones CHOLMOD made supernodal, and the symbolic analyses they took (the
   /// others copied the analysis of a subdomain with the same pattern). Over all ranks.
   long supernodal_factors() const { return supernodal_factors_; }
+  /// Subdomains whose factor ordered the interface last (the dual operator solves on it).
+  long interface_factors() const { return interface_factors_; }
   long symbolic_analyses() const { return symbolic_analyses_; }
   /// Per-rank figures gathered at set-up and after each solve (rank order).
   const std::vector<RankStatistics>& rank_statistics() const { return rank_statistics_; }
@@ -143,6 +147,9 @@ class FetiProblem {
   double factor_nonzeros() const { return factor_nonzeros_; }
   /// Bytes one pass over every subdomain's factor reads (CholmodFactor::factor_bytes).
   double factor_bytes() const { return factor_bytes_; }
+  /// Of it, what one triangular pass of a dual-operator multiplication reads
+  /// (Subdomain::operator_bytes: less where the subdomains solve on their interface).
+  double operator_bytes() const { return operator_bytes_; }
   /// The solver path the data call for (ALGORITHMS.md section 6).
   DualPath path() const { return dual_->path(); }
 
@@ -163,7 +170,7 @@ class FetiProblem {
   /// The rows built anew from the current inputs take over c (B must come out the same);
   /// then the dual right-hand side. Collective.
   void rebuild_right_hand_side();
-  void factorize();
+  void factorize(const Constraints& constraints);
   void compute_dual_data();
   void gather_rank_statistics(double solve_seconds) const;
 
@@ -188,8 +195,8 @@ class FetiProblem {
   FrictionLaw friction_;
   Vec step_start_;                      // friction: multipliers of the last load step (empty: none)
   long primal_dimension_ = 0;
-  long factorizations_ = 0, supernodal_factors_ = 0, symbolic_analyses_ = 0;
-  double factor_nonzeros_ = 0, factor_bytes_ = 0;
+  long factorizations_ = 0, supernodal_factors_ = 0, interface_factors_ = 0, symbolic_analyses_ = 0;
+  double factor_nonzeros_ = 0, factor_bytes_ = 0, operator_bytes_ = 0;
   mutable std::vector<RankStatistics> rank_statistics_;
   PhaseTimes setup_times_;
   double local_factor_seconds_ = 0;  // this rank's, for the rank report

@@ -30,43 +30,45 @@ SharedAnalyses::~SharedAnalyses() {
   cholmod_finish(&common_);
 }
 
-const SharedAnalyses::Entry* SharedAnalyses::find(const cholmod_sparse& A, int supernodal, size_t hash) const {
+const SharedAnalyses::Entry* SharedAnalyses::find(const cholmod_sparse& A, int supernodal,
+                                                  const std::vector<int>& interface, size_t hash) const {
   const auto* start = static_cast<const int*>(A.p);
   const auto* index = static_cast<const int*>(A.i);
   const auto range = entries_.equal_range(hash);
   for (auto it = range.first; it != range.second; ++it) {
     const Entry& e = it->second;
-    if (e.supernodal != supernodal || e.start.size() != A.ncol + 1) continue;
+    if (e.supernodal != supernodal || e.start.size() != A.ncol + 1 || e.interface != interface) continue;
     if (std::equal(e.start.begin(), e.start.end(), start) && std::equal(e.index.begin(), e.index.end(), index)) return &e;
   }
   return nullptr;
 }
 
-cholmod_factor* SharedAnalyses::copy(const cholmod_sparse& A, int supernodal, cholmod_common* common, double* flops,
-                                     double* nonzeros) {
+cholmod_factor* SharedAnalyses::copy(const cholmod_sparse& A, int supernodal, const std::vector<int>& interface,
+                                     cholmod_common* common, double* flops, double* nonzeros, bool* interface_last) {
   const size_t hash = pattern_hash(A);
   const std::lock_guard<std::mutex> lock(mutex_);
-  const Entry* e = find(A, supernodal, hash);
+  const Entry* e = find(A, supernodal, interface, hash);
   if (!e) return nullptr;
   cholmod_factor* copy = cholmod_copy_factor(e->symbolic, common);
   if (!copy) throw std::runtime_error("CHOLMOD copy of a symbolic factor failed (out of memory?)");
-  *flops = e->flops, *nonzeros = e->nonzeros;
+  *flops = e->flops, *nonzeros = e->nonzeros, *interface_last = e->interface_last;
   ++reuses_;
   return copy;
 }
 
-void SharedAnalyses::keep(const cholmod_sparse& A, int supernodal, const cholmod_factor& symbolic, double flops,
-                          double nonzeros) {
+void SharedAnalyses::keep(const cholmod_sparse& A, int supernodal, const std::vector<int>& interface,
+                          bool interface_last, const cholmod_factor& symbolic, double flops, double nonzeros) {
   const size_t hash = pattern_hash(A);
   const std::lock_guard<std::mutex> lock(mutex_);
   ++analyses_;
-  if (find(A, supernodal, hash)) return;  // another thread analyzed the same pattern meanwhile
+  if (find(A, supernodal, interface, hash)) return;  // another thread analyzed the same pattern meanwhile
   const auto* start = static_cast<const int*>(A.p);
   const auto* index = static_cast<const int*>(A.i);
   cholmod_factor* kept = cholmod_copy_factor(const_cast<cholmod_factor*>(&symbolic), &common_);
   if (!kept) throw std::runtime_error("CHOLMOD copy of a symbolic factor failed (out of memory?)");
   entries_.emplace(hash, Entry{supernodal, std::vector<int>(start, start + A.ncol + 1),
-                      std::vector<int>(index, index + start[A.ncol]), kept, flops, nonzeros});
+                      std::vector<int>(index, index + start[A.ncol]), interface, interface_last, kept, flops,
+                                   nonzeros});
 }
 
 long SharedAnalyses::analyses() const {

@@ -23,10 +23,13 @@ class SharedAnalyses {
 
   /// The symbolic factor kept for A's pattern (and this supernodal setting), copied into
   /// memory of `common`, with the flop count and nnz(L) of its analysis; null if none kept.
-  cholmod_factor* copy(const cholmod_sparse& A, int supernodal, cholmod_common* common, double* flops,
-                       double* nonzeros);
+  /// `interface` is a part of the key (CholmodFactor::factorize); `interface_last` tells
+  /// whether the kept analysis ordered it last.
+  cholmod_factor* copy(const cholmod_sparse& A, int supernodal, const std::vector<int>& interface,
+                       cholmod_common* common, double* flops, double* nonzeros, bool* interface_last);
   /// Keeps a copy of `symbolic` (analyzed, not yet factorized) for A's pattern.
-  void keep(const cholmod_sparse& A, int supernodal, const cholmod_factor& symbolic, double flops, double nonzeros);
+  void keep(const cholmod_sparse& A, int supernodal, const std::vector<int>& interface, bool interface_last,
+            const cholmod_factor& symbolic, double flops, double nonzeros);
 
   long analyses() const;  ///< analyses kept (one per pattern, more if threads raced on one)
   long reuses() const;    ///< copies handed out instead of an analysis
@@ -35,10 +38,12 @@ class SharedAnalyses {
   struct Entry {
     int supernodal;
     std::vector<int> start, index;  // the pattern: compressed columns
+    std::vector<int> interface;
+    bool interface_last;
     cholmod_factor* symbolic;
     double flops, nonzeros;
   };
-  const Entry* find(const cholmod_sparse& A, int supernodal, size_t hash) const;
+  const Entry* find(const cholmod_sparse& A, int supernodal, const std::vector<int>& interface, size_t hash) const;
 
   mutable std::mutex mutex_;
   cholmod_common common_;  // the kept factors' memory

@@ -3,6 +3,7 @@
 #include "base/errors.h"
 #include "feti/kernel.h"
 
+#include <algorithm>
 #include <random>
 #include <string>
 
@@ -47,13 +48,22 @@ SparseMatrix remove_dofs(const SparseMatrix& K, const std::vector<int>& removed,
 }  // namespace
 
 Subdomain::Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& kernel_candidates,
-                     FactorKind factor_kind, SharedAnalyses* shared)
-    : index_(index), size_(K.rows()), factor_(factor_kind) {
+                     FactorKind factor_kind, InterfaceOrdering ordering, SharedAnalyses* shared,
+                     const std::vector<int>& interface)
+    : index_(index), size_(K.rows()), interface_(interface), factor_(factor_kind, ordering) {
   const std::string name = "K[" + std::to_string(index_) + "]";
   R_ = kernel_in_span(K, kernel_candidates);
   fixing_ = fixing_dofs(R_);
   const SparseMatrix reduced = remove_dofs(K, fixing_, reduced_to_full_);
-  const int failed = factor_.factorize(reduced, shared);
+  std::vector<int> reduced_interface;  // reduced_to_full_ is sorted: a binary search per dof
+  for (size_t k = 0; k < interface_.size(); ++k) {
+    const auto at = std::lower_bound(reduced_to_full_.begin(), reduced_to_full_.end(), interface_[k]);
+    if (at == reduced_to_full_.end() || *at != interface_[k]) continue;  // a fixing dof: K_s^+ is zero there
+    interface_kept_.push_back(static_cast<int>(k));
+    reduced_interface.push_back(static_cast<int>(at - reduced_to_full_.begin()));
+  }
+  interface_rhs_.resize(static_cast<Eigen::Index>(reduced_interface.size()));
+  const int failed = factor_.factorize(reduced, shared, reduced_interface);
   // Some candidate modes outside the kernel of a matrix that is still singular: the modes
   // built from the coordinates do not fit the matrix (Z scaled by 1000 gave this), more
   // likely than a wrong matrix.
@@ -91,6 +101,15 @@ void Subdomain::apply_pseudo_inverse(const Vec& b, Vec& x) const {
   x.setZero(size_);
   for (size_t k = 0; k < reduced_to_full_.size(); ++k)
     x[reduced_to_full_[k]] = reduced_solution_[static_cast<Eigen::Index>(k)];
+}
+
+void Subdomain::apply_pseudo_inverse_on_interface(const Vec& b, Vec& x) const {
+  for (size_t j = 0; j < interface_kept_.size(); ++j)
+    interface_rhs_[static_cast<Eigen::Index>(j)] = b[interface_kept_[j]];
+  factor_.solve_on_interface(interface_rhs_, interface_solution_);
+  x.setZero(static_cast<Eigen::Index>(interface_.size()));
+  for (size_t j = 0; j < interface_kept_.size(); ++j)
+    x[interface_kept_[j]] = interface_solution_[static_cast<Eigen::Index>(j)];
 }
 
 void Subdomain::apply_pseudo_inverse(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) const {

@@ -18,8 +18,11 @@ class Subdomain {
   /// dofs eliminated). Throws InputError naming "K[index]" if the factorization fails or
   /// the generalized inverse does not verify. The object keeps the factor and the kernel.
   /// With `shared`, subdomains whose factorized block has one pattern share its analysis.
-  Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& kernel_candidates,
-            FactorKind factor_kind, SharedAnalyses* shared = nullptr);
+  /// `interface` (sorted dofs): where the constraint rows B_s touch the subdomain; the factor
+  /// may order them last so that the dual operator solves on them alone.
+  Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& kernel_candidates, FactorKind factor_kind,
+            InterfaceOrdering ordering = InterfaceOrdering::fill_reducing, SharedAnalyses* shared = nullptr,
+            const std::vector<int>& interface = {});
 
   Eigen::Index size() const { return size_; }
   /// Orthonormal basis of Ker K_s (n_s x r_s); r_s = 0 for a regular subdomain.
@@ -33,11 +36,23 @@ class Subdomain {
   /// The same for every column of b, in one pass over the factor.
   void apply_pseudo_inverse(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) const;
 
+  /// The interface dofs given at construction.
+  const std::vector<int>& interface() const { return interface_; }
+  /// True when apply_pseudo_inverse_on_interface is available (the factor ordered the
+  /// interface last: CholmodFactor::factorize).
+  bool interface_solves() const { return factor_.interface_solves(); }
+  /// (K_s^+ b) on the interface for b zero elsewhere; b and x are indexed like interface().
+  /// Reads only the factor's interface block: the dual operator's solve.
+  void apply_pseudo_inverse_on_interface(const Vec& b, Vec& x) const;
+
   /// ||K K^+ K v - K v|| / ||K v|| for a fixed pseudo-random v, K the matrix this
   /// subdomain was built from (the check run at set-up).
   double pseudo_inverse_residual(const SparseMatrix& K) const;
   double factor_nonzeros() const { return factor_.factor_nonzeros(); }
   double factor_bytes() const { return factor_.factor_bytes(); }
+  /// The factor's bytes one triangular solve of the dual operator reads: the interface
+  /// block's with interface solves, else the whole factor's.
+  double operator_bytes() const { return interface_solves() ? factor_.interface_bytes() : factor_.factor_bytes(); }
   bool supernodal() const { return factor_.supernodal(); }
 
  private:
@@ -46,8 +61,10 @@ class Subdomain {
   Eigen::MatrixXd R_;
   std::vector<int> fixing_;
   std::vector<int> reduced_to_full_;  // dofs kept in the regular block
+  std::vector<int> interface_;
+  std::vector<int> interface_kept_;   // positions in interface_ that are not fixing dofs
   CholmodFactor factor_;
-  mutable Vec reduced_rhs_, reduced_solution_;
+  mutable Vec reduced_rhs_, reduced_solution_, interface_rhs_, interface_solution_;
   mutable Eigen::MatrixXd reduced_block_rhs_, reduced_block_solution_;
 };
 
