@@ -140,6 +140,8 @@ def section():
               if stream["l2_bytes"] and stream["l3_bytes"] else "cache sizes unknown")
 
     def hot_ms(r):  # the scene's subdomains times one cache-hot solve of its kind
+        if r.get("interface_factors", "0") not in ("", "0"):
+            return "-"  # the probe solves on the whole factor, these solves on the interface
         h = cache_hot(r, hot)
         return f"{1e3 * f(r, 'subdomains') * f(h, 'solve_s'):.2f}" if h else "-"
 
@@ -168,7 +170,8 @@ def section():
         "and its factor's). `in cache`: where the factors fit (all of them in L3: the DRAM bound does not",
         "hold; each in L2 or L3: L' after L from cache). `cache-hot solves`: the subdomains times one",
         "solve with a factor of the same kind and shape right after its factorization, the factor still in",
-        "cache (`tests/factor_kinds_probe`, table below): what the solves cost without waiting for memory.",
+        "cache (`tests/factor_kinds_probe`, table below): what the solves cost without waiting for memory",
+        "(whole-factor solves: `-` where the scene's subdomains solve on their interface).",
         f"Raw data: [{PAGE}-bandwidth-bound.csv]({PAGE}-bandwidth-bound.csv),",
         f"[{PAGE}-bandwidth.csv]({PAGE}-bandwidth.csv), [{PAGE}-bandwidth-in-cache.csv]({PAGE}-bandwidth-in-cache.csv).",
         "",
