@@ -87,11 +87,26 @@ void DualOperator::apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
     gathered.resize(static_cast<Eigen::Index>(local_[i].rows.size()), x.cols());
     for (size_t k = 0; k < local_[i].rows.size(); ++k)
       gathered.row(static_cast<Eigen::Index>(k)) = x.row(local_[i].rows[k]);
-    block_rhs_[i].noalias() = local_[i].B.transpose() * gathered;
+    // A block solve reads the whole factor once for all columns, interface solves read the
+    // interface block once per column: the cheaper of the two.
+    const Subdomain& subdomain = *subdomains_[i];
+    const bool on_interface = interface_B_[i].rows() > 0 &&
+                              static_cast<double>(x.cols()) * subdomain.operator_bytes() < subdomain.factor_bytes();
+    const SparseMatrix& B = on_interface ? interface_B_[i] : local_[i].B;
+    block_rhs_[i].noalias() = B.transpose() * gathered;
     const Stopwatch solve_clock;
-    subdomains_[i]->apply_pseudo_inverse(block_rhs_[i], block_solution_[i]);
+    if (on_interface) {
+      block_solution_[i].resize(block_rhs_[i].rows(), x.cols());
+      for (Eigen::Index j = 0; j < x.cols(); ++j) {
+        interface_rhs_[i] = block_rhs_[i].col(j);
+        subdomain.apply_pseudo_inverse_on_interface(interface_rhs_[i], interface_solution_[i]);
+        block_solution_[i].col(j) = interface_solution_[i];
+      }
+    } else {
+      subdomain.apply_pseudo_inverse(block_rhs_[i], block_solution_[i]);
+    }
     solves += solve_clock.seconds();
-    block_result_[i].noalias() = local_[i].B * block_solution_[i];
+    block_result_[i].noalias() = B * block_solution_[i];
   }
   y.resize(rows_, x.cols());
   Vec& column = column_;

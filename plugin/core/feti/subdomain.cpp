@@ -87,6 +87,7 @@ Subdomain::Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& ke
                      "). Is the subdomain mesh connected and the matrix a stiffness matrix?" + coordinates_hint);
   reduced_rhs_.resize(reduced.rows());
   reduced_solution_.resize(reduced.rows());
+  operator_bytes_ = interface_solves() ? factor_.interface_bytes() : factor_.factor_bytes();
   const double residual = pseudo_inverse_residual(K);
   if (!(residual <= 1e-6))
     throw InputError(name + ": the generalized inverse does not verify (||K K+ K v - K v|| / "

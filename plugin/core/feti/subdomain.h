@@ -52,7 +52,7 @@ class Subdomain {
   double factor_bytes() const { return factor_.factor_bytes(); }
   /// The factor's bytes one triangular solve of the dual operator reads: the interface
   /// block's with interface solves, else the whole factor's.
-  double operator_bytes() const { return interface_solves() ? factor_.interface_bytes() : factor_.factor_bytes(); }
+  double operator_bytes() const { return operator_bytes_; }
   bool supernodal() const { return factor_.supernodal(); }
 
  private:
@@ -64,6 +64,7 @@ class Subdomain {
   std::vector<int> interface_;
   std::vector<int> interface_kept_;   // positions in interface_ that are not fixing dofs
   CholmodFactor factor_;
+  double operator_bytes_ = 0;
   mutable Vec reduced_rhs_, reduced_solution_, interface_rhs_, interface_solution_;
   mutable Eigen::MatrixXd reduced_block_rhs_, reduced_block_solution_;
 };
