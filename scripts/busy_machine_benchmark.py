@@ -19,7 +19,8 @@ from ffeti_bench import EDP, begin_run, end_run, f, machine_line, markdown_table
 SCENES = [("lesson 3: accuracy", ["tutorial/03-accuracy.edp"], False),
           ("lesson 6: sensitivity", ["tutorial/06-sensitivity.edp"], False),
           ("model problem n = 256 (32 subdomains)", ["model-problem.edp", "-n", "256"], True),
-          ("3D elastic block, 8 boxes, Total FETI (block-3d.edp -m 8)", ["block-3d.edp", "-m", "8"], True)]
+          ("3D elastic block, 8 boxes, Total FETI (block-3d.edp -m 8)", ["block-3d.edp", "-m", "8"], True),
+          ("3D elasticity cubes n = 16 (16 supernodal subdomains)", ["cubes-elasticity-3d.edp", "-n", "16"], True)]
 # (label, environment, script arguments): the default adapts the threads to the cores other
 # processes keep busy; OMP_NUM_THREADS fixes them (2: the previous default on this machine);
 # fetiSetup's threads=1 must hold as OMP_NUM_THREADS=1 does, for the libraries' parallel

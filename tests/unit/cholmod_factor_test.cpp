@@ -59,16 +59,19 @@ TEST(CholmodFactor, SharedAnalysisGivesBitwiseTheSameFactor) {
 }
 
 
-/// The 5-point Laplacian of a cells x cells grid of nodes plus `shift` on the diagonal
-/// (regular), and its boundary nodes: a 2D subdomain and its interface.
+/// A P1-like stiffness on a nodes x nodes grid cut into triangles by one diagonal per cell
+/// (the model problem's pattern: each node coupled to six neighbours), plus `shift` on the
+/// diagonal (regular), and its boundary nodes: a 2D subdomain and its interface.
 SparseMatrix grid_laplacian(int nodes, double shift, std::vector<int>* boundary) {
   std::vector<Eigen::Triplet<double, int>> entries;
   const auto id = [nodes](int i, int j) { return i * nodes + j; };
   for (int i = 0; i < nodes; ++i)
     for (int j = 0; j < nodes; ++j) {
-      entries.emplace_back(id(i, j), id(i, j), 4.0 + shift);
-      if (i + 1 < nodes) entries.emplace_back(id(i + 1, j), id(i, j), -1.0), entries.emplace_back(id(i, j), id(i + 1, j), -1.0);
-      if (j + 1 < nodes) entries.emplace_back(id(i, j + 1), id(i, j), -1.0), entries.emplace_back(id(i, j), id(i, j + 1), -1.0);
+      entries.emplace_back(id(i, j), id(i, j), 5.0 + shift);
+      const auto couple = [&](int a, int b, double v) { entries.emplace_back(a, b, v), entries.emplace_back(b, a, v); };
+      if (i + 1 < nodes) couple(id(i + 1, j), id(i, j), -1.0);
+      if (j + 1 < nodes) couple(id(i, j + 1), id(i, j), -1.0);
+      if (i + 1 < nodes && j + 1 < nodes) couple(id(i + 1, j + 1), id(i, j), -0.5);
       if (i == 0 || j == 0 || i == nodes - 1 || j == nodes - 1) boundary->push_back(id(i, j));
     }
   SparseMatrix K(nodes * nodes, nodes * nodes);

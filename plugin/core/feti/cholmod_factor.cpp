@@ -12,6 +12,14 @@ namespace {
 
 std::atomic<long> numeric_factorizations{0};
 
+/// The most extra factorization flops per factor entry that a pass of the dual operator no
+/// longer reads for which `automatic` orders the interface last. Measured on the model
+/// problem (docs/log.md, 2026-11-27): simplicial factorization ran at ~2 GFlop/s and the solves
+/// read ~13 GB/s per thread, so a multiplication (two passes, 12 bytes an entry) saves about
+/// what 3.5 flops per entry cost: at 300 the ordering pays for itself within ~90
+/// multiplications, a solve at tight tol or a few solves on one factorization.
+constexpr double kExtraFlopsPerSavedEntry = 300;
+
 /// A cholmod_sparse header over Eigen's compressed column storage (no copy).
 cholmod_sparse view_lower(const SparseMatrix& A) {
   cholmod_sparse view;
@@ -161,7 +169,7 @@ int CholmodFactor::factorize(const SparseMatrix& A, SharedAnalyses* shared, cons
 }
 
 cholmod_factor* CholmodFactor::analyze_interface_last(cholmod_sparse& A, const std::vector<int>& interface) {
-  const double unconstrained_nonzeros = common_.lnz;
+  const double unconstrained_nonzeros = common_.lnz, unconstrained_flops = common_.fl;
   std::vector<int> member(A.nrow, 0), order(A.nrow);
   for (int column : interface) member[static_cast<size_t>(column)] = 1;
   if (!cholmod_camd(&A, nullptr, 0, member.data(), order.data(), &common_))
@@ -179,7 +187,13 @@ cholmod_factor* CholmodFactor::analyze_interface_last(cholmod_sparse& A, const s
   double interface_nonzeros = 0;
   for (size_t k = 0; k < A.nrow; ++k)
     if (member[static_cast<size_t>(permutation[k])]) interface_nonzeros += column_counts[k];
-  if (ordering_ == InterfaceOrdering::automatic && interface_nonzeros > 0.5 * unconstrained_nonzeros)
+  // automatic: the factorization's extra flops against the factor entries a pass of F no
+  // longer reads. At most kExtraFlopsPerSavedEntry: the 2D model problem's subdomains (65 to
+  // 233), not 3D boxes (390 and more: H/h = 8 scalar and elasticity boxes, 1700 for H/h = 16).
+  const double saved_entries = unconstrained_nonzeros - interface_nonzeros;
+  const double extra_flops = common_.fl - unconstrained_flops;
+  if (ordering_ == InterfaceOrdering::automatic &&
+      !(saved_entries > 0 && extra_flops <= kExtraFlopsPerSavedEntry * saved_entries))
     cholmod_free_factor(&constrained, &common_);
   return constrained;
 }

@@ -21,10 +21,11 @@ enum class FactorKind { simplicial, supernodal, automatic };
 /// subdomain) go in the elimination order. `fill_reducing`: CHOLMOD's ordering alone, every
 /// solve reads all of L. `interface_last`: the interface eliminated last (CAMD), so that a
 /// solve on it reads only its block of L (about t^2/2 entries for t interface columns), for
-/// a costlier factorization (the Schur complement on the interface is formed: 2-3 times
-/// the flops on 2D subdomains) and a larger factor. `automatic`: interface last where that
-/// block is at most half of the fill-reducing factor (2D subdomains, not 3D ones, whose
-/// interfaces are large against their volume). Simplicial factors only: a supernodal
+/// a costlier factorization (the Schur complement on the interface is formed: 2-5 times
+/// the flops on 2D subdomains) and a larger factor. `automatic`: interface last where the
+/// extra flops per factor entry a pass no longer reads stay below a measured bound, so that
+/// the ordering pays for itself within ~90 multiplications (2D subdomains, not 3D ones,
+/// whose interfaces are large against their volume). Simplicial factors only: a supernodal
 /// factor keeps the fill-reducing ordering.
 enum class InterfaceOrdering { fill_reducing, interface_last, automatic };
 
