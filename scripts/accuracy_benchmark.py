@@ -14,7 +14,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from ffeti_bench import (OUT, begin_run, end_run, f, machine_line, markdown_table, read_csv, run,  # noqa: E402
+from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, machine_line, markdown_table, read_csv, run,  # noqa: E402
                          save_page, write_csv)
 
 # (label, script, arguments, kind of independent check)
@@ -22,8 +22,8 @@ SCENES = [
     ("model problem h = 1/128", "model-problem.edp", ["-n", 128], "active set"),
     ("model problem h = 1/256", "model-problem.edp", ["-n", 256], "active set"),
     ("model problem h = 1/512", "model-problem.edp", ["-n", 512], "active set"),
-    ("Hertz h = 1 mm", "hertz.edp", ["-h", 1, "-meshes", "../meshes"], "Hertz"),
-    ("Hertz h = 0.5 mm", "hertz.edp", ["-h", 0.5, "-meshes", "../meshes"], "Hertz"),
+    ("Hertz h = 1 mm", "hertz.edp", ["-h", 1, "-meshes", os.path.join(ROOT, "meshes")], "Hertz"),
+    ("Hertz h = 0.5 mm", "hertz.edp", ["-h", 0.5, "-meshes", os.path.join(ROOT, "meshes")], "Hertz"),
     ("multibody (3 bodies)", "multibody.edp", [], "balance"),
     ("large contact zone n = 80", "large-contact.edp", ["-n", 80], "active set"),
 ]

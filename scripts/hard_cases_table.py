@@ -55,7 +55,7 @@ def incompressible_rows():
     rows = []
     for order in (1, 2):
         for nu in HERTZ_NU:
-            r = run("hertz.edp", "-h", 0.5, "-nu", nu, "-order", order, "-tol", HERTZ_TOL, "-meshes", "../meshes")["RESULT"][0]
+            r = run("hertz.edp", "-h", 0.5, "-nu", nu, "-order", order, "-tol", HERTZ_TOL, "-meshes", os.path.join(ROOT, "meshes"))["RESULT"][0]
             fields = {"status": r["status"], "path": "smalbe", "outer": r["outer"], "hessian": r["hessian"],
                       "kkt": r["kkt_max"], "error": r["pressure_l2_relerr"],
                       "check": "contact pressure against Hertz (relative L2)", "active": r["active"],
