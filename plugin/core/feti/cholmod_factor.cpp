@@ -189,7 +189,8 @@ cholmod_factor* CholmodFactor::analyze_interface_last(cholmod_sparse& A, const s
     if (member[static_cast<size_t>(permutation[k])]) interface_nonzeros += column_counts[k];
   // automatic: the factorization's extra flops against the factor entries a pass of F no
   // longer reads. At most kExtraFlopsPerSavedEntry: the 2D model problem's subdomains (65 to
-  // 233), not 3D boxes (390 and more: H/h = 8 scalar and elasticity boxes, 1700 for H/h = 16).
+  // 233), not 3D boxes (390 and more for H/h = 8 scalar boxes, 1700 for H/h = 16; elastic
+  // boxes are supernodal and never get here under factor = "auto").
   const double saved_entries = unconstrained_nonzeros - interface_nonzeros;
   const double extra_flops = common_.fl - unconstrained_flops;
   if (ordering_ == InterfaceOrdering::automatic &&

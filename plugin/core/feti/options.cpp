@@ -66,7 +66,7 @@ std::vector<Option> make_options() {
       {"ordering", S::setup, K::word, {kOrderings[0], kOrderings[1], kOrderings[2]}, 0, 0, false, false, "`\"auto\"`",
        "where each subdomain's interface (the dofs its constraint rows touch) goes in its factor's elimination order: "
        "`\"interface\"` last (CHOLMOD's constrained minimum degree), so that a multiplication by the dual operator "
-       "solves on the interface alone and reads only its block of the factor, for a factorization of 2-3 times the "
+       "solves on the interface alone and reads only its block of the factor, for a factorization of 2-5 times the "
        "flops and a larger factor; `\"fill\"`: CHOLMOD's fill-reducing ordering alone (every solve reads the whole "
        "factor); `\"auto\"`: interface last where the factor is simplicial and the extra factorization pays for "
        "itself within about 90 multiplications (at most 300 extra flops per factor entry a multiplication no longer "
