@@ -409,6 +409,46 @@ TEST(FetiProblem, ThreadCountDoesNotChangeTheResult) {
   EXPECT_EQ(one.lambda, two.lambda);  // bitwise: the scatter order is fixed
 }
 
+TEST(FetiProblem, IdenticalSubdomainsShareOneFactorAndGiveTheSameAnswerBitForBit) {
+  // h = 1/32, H = 1/4: coordinates exact in binary, so the boxes of one position class
+  // (interior, each side, each corner, per body) assemble bitwise equal matrices.
+  for (FetiVariant variant : {FetiVariant::feti1, FetiVariant::tfeti}) {
+    std::vector<FetiResult> results;
+    std::vector<long> factorizations, shared;
+    for (bool share : {true, false}) {
+      auto subs = test::membrane_subdomains(test::membrane_options(32, 4));
+      const ContactInput contact = test::membrane_contact(subs);
+      FetiSetupSettings setup;
+      setup.variant = variant;
+      setup.threads = 2;  // subdomains sharing a factor solve on both threads at once
+      setup.share_factors = share;
+      const FetiProblem problem(std::move(subs), contact, setup);
+      results.push_back(problem.solve());
+      factorizations.push_back(problem.factorizations());
+      shared.push_back(problem.shared_factors());
+      EXPECT_EQ(problem.factorizations() + problem.shared_factors(), problem.subdomain_count());
+    }
+    EXPECT_GT(shared[0], 16) << "of 32 subdomains, interior and side boxes repeat";
+    EXPECT_EQ(shared[1], 0);
+    ASSERT_EQ(results[0].status, SolveStatus::converged);
+    EXPECT_EQ(results[0].counts.hessian, results[1].counts.hessian);
+    EXPECT_EQ(results[0].lambda, results[1].lambda);  // bitwise: the same factor values
+  }
+}
+
+TEST(FetiProblem, SubdomainsDifferingInOneValueDoNotShare) {
+  auto subs = test::membrane_subdomains(test::membrane_options(32, 4));
+  const ContactInput contact = test::membrane_contact(subs);
+  // A stiffer material in one interior box of body 1: same pattern, other values.
+  const auto changed = static_cast<size_t>(16 + 5);
+  subs[changed].K *= 1.0 + 1e-15;
+  const FetiProblem problem(std::move(subs), contact);
+  auto same = test::membrane_subdomains(test::membrane_options(32, 4));
+  const FetiProblem reference(std::move(same), contact);
+  EXPECT_EQ(problem.shared_factors(), reference.shared_factors() - 1);
+  EXPECT_EQ(problem.factorizations() + problem.shared_factors(), problem.subdomain_count());
+}
+
 TEST(FetiProblem, AStartAtTheSolutionCostsAFewMultiplicationsAndAnyStartConverges) {
   // Every dual path: projected CG (glued, floating), MPRGP (both membranes fixed, pressed
   // into each other by a negative gap: some couples active), SMALBE-M with the free-rows

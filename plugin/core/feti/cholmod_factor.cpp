@@ -101,15 +101,25 @@ CholmodFactor::CholmodFactor(FactorKind kind, InterfaceOrdering ordering) : orde
 }
 
 CholmodFactor::~CholmodFactor() {
-  for (Workspace* w : {&vector_workspace_, &block_workspace_, &interface_workspace_}) {
-    cholmod_free_dense(&w->solution, &common_);
-    cholmod_free_dense(&w->y, &common_);
-    cholmod_free_dense(&w->e, &common_);
-  }
   cholmod_free_sparse(&interface_set_, &common_);
+  cholmod_free_factor(&factor_, &common_);
+  cholmod_finish(&common_);
+}
+
+CholmodSolveWorkspace::CholmodSolveWorkspace() {
+  cholmod_start(&common_);
+  common_.print = 0;
+  common_.error_handler = nullptr;
+}
+
+CholmodSolveWorkspace::~CholmodSolveWorkspace() {
+  for (Buffers* b : {&vector_, &block_, &interface_}) {
+    cholmod_free_dense(&b->solution, &common_);
+    cholmod_free_dense(&b->y, &common_);
+    cholmod_free_dense(&b->e, &common_);
+  }
   cholmod_free_dense(&interface_rhs_, &common_);
   cholmod_free_sparse(&reached_, &common_);
-  cholmod_free_factor(&factor_, &common_);
   cholmod_finish(&common_);
 }
 
@@ -120,7 +130,6 @@ int CholmodFactor::factorize(const SparseMatrix& A, SharedAnalyses* shared, cons
   if (!factor_ || size_ != A.rows()) {
     cholmod_free_factor(&factor_, &common_);
     cholmod_free_sparse(&interface_set_, &common_);
-    cholmod_free_dense(&interface_rhs_, &common_);
     bool interface_last = false;
     if (shared)
       factor_ = shared->copy(view, common_.supernodal, interface, &common_, &analysis_flops_, &analysis_nonzeros_,
@@ -141,8 +150,7 @@ int CholmodFactor::factorize(const SparseMatrix& A, SharedAnalyses* shared, cons
     if (interface_last) {
       const size_t n = static_cast<size_t>(A.rows());
       interface_set_ = cholmod_allocate_sparse(n, 1, interface.size(), 1, 1, 0, CHOLMOD_PATTERN, &common_);
-      interface_rhs_ = cholmod_zeros(n, 1, CHOLMOD_REAL, &common_);
-      if (!interface_set_ || !interface_rhs_) throw std::runtime_error("CHOLMOD allocation failed (out of memory?)");
+      if (!interface_set_) throw std::runtime_error("CHOLMOD allocation failed (out of memory?)");
       static_cast<int*>(interface_set_->p)[0] = 0;
       static_cast<int*>(interface_set_->p)[1] = static_cast<int>(interface.size());
       std::copy(interface.begin(), interface.end(), static_cast<int*>(interface_set_->i));
@@ -199,35 +207,44 @@ cholmod_factor* CholmodFactor::analyze_interface_last(cholmod_sparse& A, const s
   return constrained;
 }
 
-void CholmodFactor::solve_on_interface(const Eigen::VectorXd& b_on_interface, Eigen::VectorXd& x_on_interface) const {
+void CholmodFactor::solve_on_interface(const Eigen::VectorXd& b_on_interface, Eigen::VectorXd& x_on_interface,
+                                       CholmodSolveWorkspace& w) const {
+  if (!w.interface_rhs_ || w.interface_rhs_->nrow != factor_->n) {
+    cholmod_free_dense(&w.interface_rhs_, &w.common_);
+    w.interface_rhs_ = cholmod_zeros(factor_->n, 1, CHOLMOD_REAL, &w.common_);
+    if (!w.interface_rhs_) throw std::runtime_error("CHOLMOD allocation failed (out of memory?)");
+  }
   const auto* columns = static_cast<const int*>(interface_set_->i);
   const auto count = static_cast<Eigen::Index>(interface_set_->nzmax);
-  auto* rhs = static_cast<double*>(interface_rhs_->x);
+  auto* rhs = static_cast<double*>(w.interface_rhs_->x);
   for (Eigen::Index k = 0; k < count; ++k) rhs[columns[k]] = b_on_interface[k];
-  Workspace& w = interface_workspace_;
-  if (!cholmod_solve2(CHOLMOD_A, factor_, interface_rhs_, interface_set_, &w.solution, &reached_, &w.y, &w.e, &common_))
+  CholmodSolveWorkspace::Buffers& buffers = w.interface_;
+  if (!cholmod_solve2(CHOLMOD_A, factor_, w.interface_rhs_, interface_set_, &buffers.solution, &w.reached_,
+                      &buffers.y, &buffers.e, &w.common_))
     throw std::runtime_error("CHOLMOD solve failed");
-  const auto* solution = static_cast<const double*>(w.solution->x);
+  const auto* solution = static_cast<const double*>(buffers.solution->x);
   x_on_interface.resize(count);
   for (Eigen::Index k = 0; k < count; ++k) x_on_interface[k] = solution[columns[k]];
+  for (Eigen::Index k = 0; k < count; ++k) rhs[columns[k]] = 0;  // zero again: the workspace may serve another factor
 }
 
-void CholmodFactor::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+void CholmodFactor::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, CholmodSolveWorkspace& w) const {
   x.resize(b.size());
-  solve_columns(b.data(), b.size(), 1, x.data(), vector_workspace_);
+  solve_columns(b.data(), b.size(), 1, x.data(), w, w.vector_);
 }
 
-void CholmodFactor::solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) const {
+void CholmodFactor::solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x, CholmodSolveWorkspace& w) const {
   x.resize(b.rows(), b.cols());
-  solve_columns(b.data(), b.rows(), b.cols(), x.data(), block_workspace_);
+  solve_columns(b.data(), b.rows(), b.cols(), x.data(), w, w.block_);
 }
 
 void CholmodFactor::solve_columns(const double* b, Eigen::Index rows, Eigen::Index cols, double* x,
-                                  Workspace& w) const {
+                                  CholmodSolveWorkspace& w, CholmodSolveWorkspace::Buffers& buffers) const {
   cholmod_dense rhs = view_columns(b, rows, cols);
-  if (!cholmod_solve2(CHOLMOD_A, factor_, &rhs, nullptr, &w.solution, nullptr, &w.y, &w.e, &common_))
+  if (!cholmod_solve2(CHOLMOD_A, factor_, &rhs, nullptr, &buffers.solution, nullptr, &buffers.y, &buffers.e,
+                      &w.common_))
     throw std::runtime_error("CHOLMOD solve failed");
-  std::memcpy(x, w.solution->x, sizeof(double) * static_cast<size_t>(rows * cols));
+  std::memcpy(x, buffers.solution->x, sizeof(double) * static_cast<size_t>(rows * cols));
 }
 
 long CholmodFactor::factorizations_in_process() { return numeric_factorizations.load(); }

@@ -33,8 +33,33 @@ enum class InterfaceOrdering { fill_reducing, interface_last, automatic };
 /// scripts/factor_kinds.py; docs/algorithms.md).
 double supernodal_switch();
 
+/// What a solve writes besides its result: CHOLMOD's dense workspaces, its own
+/// cholmod_common (CHOLMOD's solves use the common's scratch space) and the interface
+/// solve's right-hand side. A factor may be solved from several threads at once, each with
+/// a workspace of its own (subdomains that share one factor: SharedFactors).
+class CholmodSolveWorkspace {
+ public:
+  CholmodSolveWorkspace();
+  ~CholmodSolveWorkspace();
+  CholmodSolveWorkspace(const CholmodSolveWorkspace&) = delete;
+  CholmodSolveWorkspace& operator=(const CholmodSolveWorkspace&) = delete;
+
+ private:
+  friend class CholmodFactor;
+  struct Buffers {  // reused by cholmod_solve2 while the block width stays the same
+    cholmod_dense* solution = nullptr;
+    cholmod_dense* y = nullptr;
+    cholmod_dense* e = nullptr;
+  };
+  cholmod_common common_;
+  Buffers vector_, block_, interface_;
+  cholmod_dense* interface_rhs_ = nullptr;  ///< dense n-vector, written only on the interface
+  cholmod_sparse* reached_ = nullptr;       ///< Xset: the columns a solve_on_interface reached
+};
+
 /// Owns one cholmod_common, so distinct objects may be used from distinct threads.
-/// Not copyable; a solve is not thread-safe on the same object (it reuses workspace).
+/// Not copyable. A solve without a workspace argument uses the factor's own, so is not
+/// thread-safe on the same object; solves given distinct workspaces are.
 class CholmodFactor {
  public:
   explicit CholmodFactor(FactorKind kind = FactorKind::simplicial,
@@ -57,16 +82,21 @@ class CholmodFactor {
   /// x(interface) of A x = b, b zero outside the interface given to factorize, its values
   /// there `b_on_interface` (in the interface's order). CHOLMOD reads only the columns of L
   /// that the interface reaches in the elimination tree. Precondition: interface_solves().
-  void solve_on_interface(const Eigen::VectorXd& b_on_interface, Eigen::VectorXd& x_on_interface) const;
+  void solve_on_interface(const Eigen::VectorXd& b_on_interface, Eigen::VectorXd& x_on_interface) const {
+    solve_on_interface(b_on_interface, x_on_interface, own_workspace_);
+  }
+  void solve_on_interface(const Eigen::VectorXd& b_on_interface, Eigen::VectorXd& x_on_interface,
+                          CholmodSolveWorkspace& workspace) const;
   /// True when the factor was ordered with its interface last (solve_on_interface applies).
   bool interface_solves() const { return interface_set_ != nullptr; }
 
   /// x = A^{-1} b. Precondition: the last factorize succeeded.
-  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const { solve(b, x, own_workspace_); }
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, CholmodSolveWorkspace& workspace) const;
   /// X = A^{-1} B for a block of right-hand sides in one pass over the factor: the factor
   /// is read once for all columns, cheaper per column than column after column.
-  void solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) const;
-
+  void solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) const { solve(b, x, own_workspace_); }
+  void solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x, CholmodSolveWorkspace& workspace) const;
   /// Numeric factorizations run by every CholmodFactor of this process so far (all
   /// threads): lets callers prove that a phase factorized nothing.
   static long factorizations_in_process();
@@ -94,21 +124,15 @@ class CholmodFactor {
   mutable cholmod_common common_;
   InterfaceOrdering ordering_;
   cholmod_factor* factor_ = nullptr;
-  struct Workspace {  // reused by cholmod_solve2 while the block width stays the same
-    cholmod_dense* solution = nullptr;
-    cholmod_dense* y = nullptr;
-    cholmod_dense* e = nullptr;
-  };
-  void solve_columns(const double* b, Eigen::Index rows, Eigen::Index cols, double* x, Workspace& w) const;
+  void solve_columns(const double* b, Eigen::Index rows, Eigen::Index cols, double* x, CholmodSolveWorkspace& w,
+                     CholmodSolveWorkspace::Buffers& buffers) const;
 
   /// The analysis with the interface last (CAMD), or null where `automatic` keeps the
   /// fill-reducing one (common_ holds the latter's statistics on entry).
   cholmod_factor* analyze_interface_last(cholmod_sparse& A, const std::vector<int>& interface);
 
-  mutable Workspace vector_workspace_, block_workspace_, interface_workspace_;
+  mutable CholmodSolveWorkspace own_workspace_;
   cholmod_sparse* interface_set_ = nullptr;  ///< the interface as CHOLMOD's Bset (a pattern column)
-  mutable cholmod_dense* interface_rhs_ = nullptr;  ///< dense n-vector, read only on the interface
-  mutable cholmod_sparse* reached_ = nullptr;       ///< Xset: the columns a solve_on_interface reached
   Eigen::Index size_ = 0;
   double analysis_flops_ = 0, analysis_nonzeros_ = 0;
 };

@@ -201,6 +201,7 @@ void FetiProblem::factorize(const Constraints& constraints) {
   subdomains_.resize(inputs_.size());
   std::vector<std::exception_ptr> failures(inputs_.size());
   SharedAnalyses shared;  // boxes of one shape order and analyze once
+  SharedFactors shared_factors;  // boxes of one matrix factorize once
 #pragma omp parallel for schedule(dynamic) num_threads(resolve_thread_count(settings_.threads))
   for (int k = 0; k < count; ++k) {
     const SubdomainInput& in = inputs_[static_cast<size_t>(k)];
@@ -209,7 +210,7 @@ void FetiProblem::factorize(const Constraints& constraints) {
       subdomains_[static_cast<size_t>(k)] = std::make_unique<Subdomain>(
           global_ids_[static_cast<size_t>(k)], eliminated ? eliminate_dirichlet(in.K, in.dirichlet_dofs) : in.K,
           candidate_kernel(in.x, in.y, in.component, in.z), settings_.factor, settings_.ordering, &shared,
-          touched_dofs(local[static_cast<size_t>(k)].B));
+          touched_dofs(local[static_cast<size_t>(k)].B), settings_.share_factors ? &shared_factors : nullptr);
     } catch (...) {
       failures[static_cast<size_t>(k)] = std::current_exception();
     }
@@ -219,6 +220,7 @@ void FetiProblem::factorize(const Constraints& constraints) {
       if (failure) std::rethrow_exception(failure);
   });
   factorizations_ = static_cast<long>(comm_->sum(double(CholmodFactor::factorizations_in_process() - before)));
+  shared_factors_ = static_cast<long>(comm_->sum(static_cast<double>(shared_factors.reused())));
   const auto supernodal = std::count_if(subdomains_.begin(), subdomains_.end(), [](const auto& s) { return s->supernodal(); });
   supernodal_factors_ = static_cast<long>(comm_->sum(static_cast<double>(supernodal)));
   const auto on_interface =

@@ -22,6 +22,9 @@ struct FetiSetupSettings {
   FactorKind factor = FactorKind::automatic;
   /// Where each subdomain's interface goes in its factor's elimination order (CholmodFactor).
   InterfaceOrdering ordering = InterfaceOrdering::automatic;
+  /// Subdomains of bitwise equal matrices, fixing dofs and interfaces share one factor
+  /// (SharedFactors): the same generalized inverse, factorized once.
+  bool share_factors = true;
   /// OpenMP threads over subdomains; 0: the runtime default. Under Debian's serial OpenBLAS,
   /// not safe to call concurrently, supernodal factors run on one thread (set_up).
   int threads = 0;
@@ -115,8 +118,12 @@ class FetiProblem {
   int floating_subdomains() const { return dual_->coarse() ? dual_->coarse()->floating_subdomains() : 0; }
   int coarse_dimension() const { return dual_->coarse() ? dual_->coarse()->dimension() : 0; }
   /// Numeric factorizations of subdomain matrices this problem ran, over all ranks: one
-  /// per subdomain at set-up, and never another (sensitivities and load cases reuse them).
+  /// per subdomain at set-up, except those that share an identical one (shared_factors()),
+  /// and never another (sensitivities and load cases reuse them).
   long factorizations() const { return factorizations_; }
+  /// Subdomains that took the factor of an identical subdomain instead of factorizing
+  /// (factorizations() + shared_factors() = subdomains). Over all ranks.
+  long shared_factors() const { return shared_factors_; }
   /// Of those, the ones CHOLMOD made supernodal, and the symbolic analyses they took (the
   /// others copied the analysis of a subdomain with the same pattern). Over all ranks.
   long supernodal_factors() const { return supernodal_factors_; }
@@ -195,7 +202,7 @@ class FetiProblem {
   FrictionLaw friction_;
   Vec step_start_;                      // friction: multipliers of the last load step (empty: none)
   long primal_dimension_ = 0;
-  long factorizations_ = 0, supernodal_factors_ = 0, interface_factors_ = 0, symbolic_analyses_ = 0;
+  long factorizations_ = 0, shared_factors_ = 0, supernodal_factors_ = 0, interface_factors_ = 0, symbolic_analyses_ = 0;
   double factor_nonzeros_ = 0, factor_bytes_ = 0, operator_bytes_ = 0;
   mutable std::vector<RankStatistics> rank_statistics_;
   PhaseTimes setup_times_;

@@ -37,6 +37,7 @@ T pick(const OptionValue& v, std::initializer_list<T> choices, const char* const
 const char* const kVariants[] = {"feti1", "tfeti"};
 const char* const kFactors[] = {"auto", "simplicial", "supernodal"};
 const char* const kOrderings[] = {"auto", "fill", "interface"};
+const char* const kSharing[] = {"on", "off"};
 const char* const kPreconditioners[] = {"lumped", "dirichlet", "none"};
 const char* const kAlgorithms[] = {"smalbe-m", "seed"};
 const char* const kExpansions[] = {"projected-cg", "projected-cg-restart", "fixed"};
@@ -77,6 +78,13 @@ std::vector<Option> make_options() {
              pick(v, {InterfaceOrdering::automatic, InterfaceOrdering::fill_reducing, InterfaceOrdering::interface_last},
                   kOrderings);
        }},
+      {"shareFactors", S::setup, K::word, {kSharing[0], kSharing[1]}, 0, 0, false, false, "`\"on\"`",
+       "`\"on\"`: subdomains whose stiffness matrices, fixing dofs and interfaces are bitwise equal (boxes of "
+       "`ffetiGrid`/`ffetiGrid3` at spacings exact in binary, such as 1/2^k: interior boxes, each face's, each "
+       "corner's) share one factorization, each solving through a workspace of its own: the same answer, bit for bit, "
+       "from fewer factorizations and less memory; `\"off\"`: one factorization per subdomain (to measure what "
+       "sharing saves). fetiInfo's `shared_factors` counts the subdomains that shared",
+       [](SolverSettings& s, const OptionValue& v) { s.setup.share_factors = pick(v, {true, false}, kSharing); }},
       {"preconditioner", S::setup, K::word, {kPreconditioners[0], kPreconditioners[1], kPreconditioners[2]}, 0, 0,
        false, false, "`\"lumped\"`",
        "the preconditioner of the dual problem on every path (CG and projected CG directly; MPRGP in face, also inside "

@@ -28,6 +28,7 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
       {"factor_bytes", problem.factor_bytes()},
       {"operator_bytes", problem.operator_bytes()},
       {"factorizations", static_cast<double>(problem.factorizations())},
+      {"shared_factors", static_cast<double>(problem.shared_factors())},
       {"supernodal_factors", static_cast<double>(problem.supernodal_factors())},
       {"interface_factors", static_cast<double>(problem.interface_factors())},
       {"symbolic_analyses", static_cast<double>(problem.symbolic_analyses())},

@@ -10,6 +10,9 @@
 namespace ffeti {
 namespace {
 
+/// Below this reciprocal condition estimate a factor that completed counts as singular.
+constexpr double kSingularReciprocalCondition = 1e-14;
+
 /// K with the rows and columns `removed` (sorted) taken out.
 SparseMatrix remove_dofs(const SparseMatrix& K, const std::vector<int>& removed,
                          std::vector<int>& reduced_to_full) {
@@ -49,8 +52,8 @@ SparseMatrix remove_dofs(const SparseMatrix& K, const std::vector<int>& removed,
 
 Subdomain::Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& kernel_candidates,
                      FactorKind factor_kind, InterfaceOrdering ordering, SharedAnalyses* shared,
-                     const std::vector<int>& interface)
-    : index_(index), size_(K.rows()), interface_(interface), factor_(factor_kind, ordering) {
+                     const std::vector<int>& interface, SharedFactors* shared_factors)
+    : index_(index), size_(K.rows()), interface_(interface) {
   const std::string name = "K[" + std::to_string(index_) + "]";
   R_ = kernel_in_span(K, kernel_candidates);
   fixing_ = fixing_dofs(R_);
@@ -63,7 +66,22 @@ Subdomain::Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& ke
     reduced_interface.push_back(static_cast<int>(at - reduced_to_full_.begin()));
   }
   interface_rhs_.resize(static_cast<Eigen::Index>(reduced_interface.size()));
-  const int failed = factor_.factorize(reduced, shared, reduced_interface);
+  reduced_rhs_.resize(reduced.rows());
+  reduced_solution_.resize(reduced.rows());
+  const auto build = [&] {
+    auto factor = std::make_shared<CholmodFactor>(factor_kind, ordering);
+    FactorOutcome outcome;
+    outcome.failed = factor->factorize(reduced, shared, reduced_interface);
+    // A singular block may factor with a tiny positive pivot instead of failing outright.
+    outcome.reciprocal_condition = outcome.failed < 0 ? factor->reciprocal_condition() : 0.0;
+    factor_ = factor;
+    outcome.factor = std::move(factor);
+    if (outcome.failed < 0 && outcome.reciprocal_condition >= kSingularReciprocalCondition)
+      outcome.residual = pseudo_inverse_residual(K);
+    return outcome;
+  };
+  const FactorOutcome outcome = shared_factors ? shared_factors->obtain(K, fixing_, interface_, build) : build();
+  factor_ = outcome.factor;
   // Some candidate modes outside the kernel of a matrix that is still singular: the modes
   // built from the coordinates do not fit the matrix (Z scaled by 1000 gave this), more
   // likely than a wrong matrix.
@@ -73,32 +91,28 @@ Subdomain::Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& ke
                 " rigid modes built from X, Y, Z and component lie in its kernel: check that the coordinates are "
                 "those of this matrix's dofs (not scaled, swapped or another mesh's)."
           : "";
-  // A singular block may factor with a tiny positive pivot instead of failing outright.
-  const double rcond = failed < 0 ? factor_.reciprocal_condition() : 0.0;
-  if (failed < 0 && rcond < 1e-14)
+  if (outcome.failed < 0 && outcome.reciprocal_condition < kSingularReciprocalCondition)
     throw InputError(name + ": singular outside its kernel (reciprocal condition estimate " +
-                     std::to_string(rcond) + " with kernel dimension " + std::to_string(R_.cols()) +
+                     std::to_string(outcome.reciprocal_condition) + " with kernel dimension " +
+                     std::to_string(R_.cols()) +
                      "): the matrix has a kernel outside the candidate rigid modes, e.g. a "
                      "disconnected subdomain mesh or a mechanism." + coordinates_hint);
-  if (failed >= 0)
+  if (outcome.failed >= 0)
     throw InputError(name + ": not positive definite outside its kernel (Cholesky pivot " +
-                     std::to_string(failed) + " of " + std::to_string(reduced.rows()) +
+                     std::to_string(outcome.failed) + " of " + std::to_string(reduced.rows()) +
                      " fails; kernel dimension found " + std::to_string(R_.cols()) +
                      "). Is the subdomain mesh connected and the matrix a stiffness matrix?" + coordinates_hint);
-  reduced_rhs_.resize(reduced.rows());
-  reduced_solution_.resize(reduced.rows());
-  operator_bytes_ = interface_solves() ? factor_.interface_bytes() : factor_.factor_bytes();
-  const double residual = pseudo_inverse_residual(K);
-  if (!(residual <= 1e-6))
+  operator_bytes_ = interface_solves() ? factor_->interface_bytes() : factor_->factor_bytes();
+  if (!(outcome.residual <= 1e-6))
     throw InputError(name + ": the generalized inverse does not verify (||K K+ K v - K v|| / "
-                     "||K v|| = " + std::to_string(residual) +
+                     "||K v|| = " + std::to_string(outcome.residual) +
                      "): the matrix has a kernel outside the candidate rigid modes");
 }
 
 void Subdomain::apply_pseudo_inverse(const Vec& b, Vec& x) const {
   for (size_t k = 0; k < reduced_to_full_.size(); ++k)
     reduced_rhs_[static_cast<Eigen::Index>(k)] = b[reduced_to_full_[k]];
-  factor_.solve(reduced_rhs_, reduced_solution_);
+  factor_->solve(reduced_rhs_, reduced_solution_, workspace_);
   x.setZero(size_);
   for (size_t k = 0; k < reduced_to_full_.size(); ++k)
     x[reduced_to_full_[k]] = reduced_solution_[static_cast<Eigen::Index>(k)];
@@ -107,7 +121,7 @@ void Subdomain::apply_pseudo_inverse(const Vec& b, Vec& x) const {
 void Subdomain::apply_pseudo_inverse_on_interface(const Vec& b, Vec& x) const {
   for (size_t j = 0; j < interface_kept_.size(); ++j)
     interface_rhs_[static_cast<Eigen::Index>(j)] = b[interface_kept_[j]];
-  factor_.solve_on_interface(interface_rhs_, interface_solution_);
+  factor_->solve_on_interface(interface_rhs_, interface_solution_, workspace_);
   x.setZero(static_cast<Eigen::Index>(interface_.size()));
   for (size_t j = 0; j < interface_kept_.size(); ++j)
     x[interface_kept_[j]] = interface_solution_[static_cast<Eigen::Index>(j)];
@@ -117,7 +131,7 @@ void Subdomain::apply_pseudo_inverse(const Eigen::MatrixXd& b, Eigen::MatrixXd& 
   const auto kept = static_cast<Eigen::Index>(reduced_to_full_.size());
   reduced_block_rhs_.resize(kept, b.cols());
   for (Eigen::Index k = 0; k < kept; ++k) reduced_block_rhs_.row(k) = b.row(reduced_to_full_[static_cast<size_t>(k)]);
-  factor_.solve(reduced_block_rhs_, reduced_block_solution_);
+  factor_->solve(reduced_block_rhs_, reduced_block_solution_, workspace_);
   x.setZero(size_, b.cols());
   for (Eigen::Index k = 0; k < kept; ++k) x.row(reduced_to_full_[static_cast<size_t>(k)]) = reduced_block_solution_.row(k);
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "feti/cholmod_factor.h"
+#include "feti/shared_factors.h"
 
 #include <Eigen/Dense>
 
@@ -20,9 +21,11 @@ class Subdomain {
   /// With `shared`, subdomains whose factorized block has one pattern share its analysis.
   /// `interface` (sorted dofs): where the constraint rows B_s touch the subdomain; the factor
   /// may order them last so that the dual operator solves on them alone.
+  /// With `shared_factors`, subdomains of bitwise equal K, fixing dofs and interface share
+  /// one factor (and the checks of its generalized inverse).
   Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& kernel_candidates, FactorKind factor_kind,
             InterfaceOrdering ordering = InterfaceOrdering::fill_reducing, SharedAnalyses* shared = nullptr,
-            const std::vector<int>& interface = {});
+            const std::vector<int>& interface = {}, SharedFactors* shared_factors = nullptr);
 
   Eigen::Index size() const { return size_; }
   /// Orthonormal basis of Ker K_s (n_s x r_s); r_s = 0 for a regular subdomain.
@@ -31,7 +34,7 @@ class Subdomain {
   const std::vector<int>& fixing() const { return fixing_; }
 
   /// x = K_s^+ b: zeros at the fixing dofs, the regular block's solution elsewhere.
-  /// Thread-safe across distinct subdomains, not on the same one.
+  /// Thread-safe across distinct subdomains (shared factors included), not on the same one.
   void apply_pseudo_inverse(const Vec& b, Vec& x) const;
   /// The same for every column of b, in one pass over the factor.
   void apply_pseudo_inverse(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) const;
@@ -40,7 +43,7 @@ class Subdomain {
   const std::vector<int>& interface() const { return interface_; }
   /// True when apply_pseudo_inverse_on_interface is available (the factor ordered the
   /// interface last: CholmodFactor::factorize).
-  bool interface_solves() const { return factor_.interface_solves(); }
+  bool interface_solves() const { return factor_->interface_solves(); }
   /// (K_s^+ b) on the interface for b zero elsewhere; b and x are indexed like interface().
   /// Reads only the factor's interface block: the dual operator's solve.
   void apply_pseudo_inverse_on_interface(const Vec& b, Vec& x) const;
@@ -48,12 +51,12 @@ class Subdomain {
   /// ||K K^+ K v - K v|| / ||K v|| for a fixed pseudo-random v, K the matrix this
   /// subdomain was built from (the check run at set-up).
   double pseudo_inverse_residual(const SparseMatrix& K) const;
-  double factor_nonzeros() const { return factor_.factor_nonzeros(); }
-  double factor_bytes() const { return factor_.factor_bytes(); }
+  double factor_nonzeros() const { return factor_->factor_nonzeros(); }
+  double factor_bytes() const { return factor_->factor_bytes(); }
   /// The factor's bytes one triangular solve of the dual operator reads: the interface
   /// block's with interface solves, else the whole factor's.
   double operator_bytes() const { return operator_bytes_; }
-  bool supernodal() const { return factor_.supernodal(); }
+  bool supernodal() const { return factor_->supernodal(); }
 
  private:
   int index_;
@@ -63,7 +66,8 @@ class Subdomain {
   std::vector<int> reduced_to_full_;  // dofs kept in the regular block
   std::vector<int> interface_;
   std::vector<int> interface_kept_;   // positions in interface_ that are not fixing dofs
-  CholmodFactor factor_;
+  std::shared_ptr<const CholmodFactor> factor_;  // possibly shared with identical subdomains
+  mutable CholmodSolveWorkspace workspace_;     // this subdomain's own: solves run concurrently
   double operator_bytes_ = 0;
   mutable Vec reduced_rhs_, reduced_solution_, interface_rhs_, interface_solution_;
   mutable Eigen::MatrixXd reduced_block_rhs_, reduced_block_solution_;
