@@ -164,6 +164,16 @@ int CholmodFactor::factorize(const SparseMatrix& A, SharedAnalyses* shared, cons
   ++numeric_factorizations;
   if (common_.status == CHOLMOD_NOT_POSDEF) return static_cast<int>(factor_->minor);
   if (common_.status < CHOLMOD_OK) throw std::runtime_error("CHOLMOD factorize failed");
+  if (interface_set_ && !factor_->IPerm) {
+    // cholmod_solve2 with a Bset builds the inverse permutation into L on its first call:
+    // a write into a factor that identical subdomains solve with from several threads at
+    // once (SharedFactors). Built here, every solve only reads L.
+    factor_->IPerm = cholmod_malloc(factor_->n, sizeof(int), &common_);
+    if (!factor_->IPerm) throw std::runtime_error("CHOLMOD allocation failed (out of memory?)");
+    const auto* permutation = static_cast<const int*>(factor_->Perm);
+    auto* inverse = static_cast<int*>(factor_->IPerm);
+    for (size_t k = 0; k < factor_->n; ++k) inverse[permutation[k]] = static_cast<int>(k);
+  }
   // A simplicial factor is LDL' by default, which completes on an indefinite matrix with
   // negative entries in D (CHOLMOD reports NOT_POSDEF only for LL'): check D, the first
   // entry of each column, so that an indefinite stiffness is an error, not a saddle point.

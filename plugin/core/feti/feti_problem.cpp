@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <unordered_set>
 
 namespace ffeti {
 
@@ -151,8 +152,10 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   long local_primal = 0;
   double local_nonzeros = 0, local_bytes = 0, local_operator_bytes = 0;
   for (size_t k = 0; k < inputs_.size(); ++k) local_primal += inputs_[k].K.rows();
+  std::unordered_set<const CholmodFactor*> counted;  // a factor shared by identical subdomains counts once
   for (const auto& s : subdomains_)
-    local_nonzeros += s->factor_nonzeros(), local_bytes += s->factor_bytes(), local_operator_bytes += s->operator_bytes();
+    if (counted.insert(&s->factor()).second)
+      local_nonzeros += s->factor_nonzeros(), local_bytes += s->factor_bytes(), local_operator_bytes += s->operator_bytes();
   primal_dimension_ = static_cast<long>(comm.sum(static_cast<double>(local_primal)));
   factor_nonzeros_ = comm.sum(local_nonzeros);
   factor_bytes_ = comm.sum(local_bytes);

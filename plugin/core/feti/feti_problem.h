@@ -151,11 +151,14 @@ class FetiProblem {
   const PhaseTimes& setup_times() const { return setup_times_; }
   const FetiSetupSettings& settings() const { return settings_; }
   FetiVariant variant() const { return settings_.variant; }
+  /// nnz(L) over the distinct factors (a factor shared by identical subdomains counts once).
   double factor_nonzeros() const { return factor_nonzeros_; }
-  /// Bytes one pass over every subdomain's factor reads (CholmodFactor::factor_bytes).
+  /// Bytes one pass over every distinct factor reads (CholmodFactor::factor_bytes): the
+  /// memory the factors hold.
   double factor_bytes() const { return factor_bytes_; }
   /// Of it, what one triangular pass of a dual-operator multiplication reads
-  /// (Subdomain::operator_bytes: less where the subdomains solve on their interface).
+  /// (Subdomain::operator_bytes: less where the subdomains solve on their interface), each
+  /// distinct factor once: what a pass must bring from memory unless it stays in cache.
   double operator_bytes() const { return operator_bytes_; }
   /// The solver path the data call for (ALGORITHMS.md section 6).
   DualPath path() const { return dual_->path(); }

@@ -51,6 +51,8 @@ class Subdomain {
   /// ||K K^+ K v - K v|| / ||K v|| for a fixed pseudo-random v, K the matrix this
   /// subdomain was built from (the check run at set-up).
   double pseudo_inverse_residual(const SparseMatrix& K) const;
+  /// The factor of K_s (with its fixing dofs removed), possibly shared with identical subdomains.
+  const CholmodFactor& factor() const { return *factor_; }
   double factor_nonzeros() const { return factor_->factor_nonzeros(); }
   double factor_bytes() const { return factor_->factor_bytes(); }
   /// The factor's bytes one triangular solve of the dual operator reads: the interface
