@@ -13,38 +13,37 @@ namespace {
 /// Below this reciprocal condition estimate a factor that completed counts as singular.
 constexpr double kSingularReciprocalCondition = 1e-14;
 
-/// K with the rows and columns `removed` (sorted) taken out.
-SparseMatrix remove_dofs(const SparseMatrix& K, const std::vector<int>& removed,
-                         std::vector<int>& reduced_to_full) {
-  const Eigen::Index n = K.rows();
-  std::vector<int> full_to_reduced(static_cast<size_t>(n), -1);
-  reduced_to_full.clear();
+/// The dofs of 0..n-1 not in `removed` (sorted), in order.
+std::vector<int> kept_dofs(Eigen::Index n, const std::vector<int>& removed) {
+  std::vector<int> kept;
+  kept.reserve(static_cast<size_t>(n) - removed.size());
   size_t next_removed = 0;
   for (int i = 0; i < n; ++i) {
-    if (next_removed < removed.size() && removed[next_removed] == i) {
+    if (next_removed < removed.size() && removed[next_removed] == i)
       ++next_removed;
-      continue;
-    }
-    full_to_reduced[static_cast<size_t>(i)] = static_cast<int>(reduced_to_full.size());
-    reduced_to_full.push_back(i);
+    else
+      kept.push_back(i);
   }
-  if (removed.empty()) {
-    SparseMatrix copy = K;
-    copy.makeCompressed();  // CHOLMOD reads compressed columns
-    return copy;
-  }
-  std::vector<Eigen::Triplet<double, int>> entries;
-  entries.reserve(static_cast<size_t>(K.nonZeros()));
-  for (int j = 0; j < n; ++j)
-    for (SparseMatrix::InnerIterator it(K, j); it; ++it) {
-      const int ri = full_to_reduced[static_cast<size_t>(it.row())];
-      const int rj = full_to_reduced[static_cast<size_t>(j)];
-      if (ri >= 0 && rj >= 0) entries.emplace_back(ri, rj, it.value());
-    }
-  const auto m = static_cast<Eigen::Index>(reduced_to_full.size());
+  return kept;
+}
+
+/// K restricted to the rows and columns `kept` (sorted), compressed: column by column, the
+/// entries of kept rows renumbered (the order within a column stays sorted).
+SparseMatrix restrict_to(const SparseMatrix& K, const std::vector<int>& kept) {
+  std::vector<int> full_to_kept(static_cast<size_t>(K.rows()), -1);
+  for (size_t k = 0; k < kept.size(); ++k) full_to_kept[static_cast<size_t>(kept[k])] = static_cast<int>(k);
+  const auto m = static_cast<Eigen::Index>(kept.size());
   SparseMatrix reduced(m, m);
-  reduced.setFromTriplets(entries.begin(), entries.end());
-  reduced.makeCompressed();
+  reduced.reserve(K.nonZeros());
+  for (Eigen::Index j = 0; j < m; ++j) {
+    reduced.startVec(j);
+    for (SparseMatrix::InnerIterator it(K, kept[static_cast<size_t>(j)]); it; ++it) {
+      const int row = full_to_kept[static_cast<size_t>(it.row())];
+      if (row >= 0) reduced.insertBack(row, j) = it.value();
+    }
+  }
+  reduced.finalize();
+  reduced.makeCompressed();  // CHOLMOD reads compressed columns
   return reduced;
 }
 
@@ -57,7 +56,7 @@ Subdomain::Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& ke
   const std::string name = "K[" + std::to_string(index_) + "]";
   R_ = kernel_in_span(K, kernel_candidates);
   fixing_ = fixing_dofs(R_);
-  const SparseMatrix reduced = remove_dofs(K, fixing_, reduced_to_full_);
+  reduced_to_full_ = kept_dofs(K.rows(), fixing_);
   std::vector<int> reduced_interface;  // reduced_to_full_ is sorted: a binary search per dof
   for (size_t k = 0; k < interface_.size(); ++k) {
     const auto at = std::lower_bound(reduced_to_full_.begin(), reduced_to_full_.end(), interface_[k]);
@@ -66,12 +65,13 @@ Subdomain::Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& ke
     reduced_interface.push_back(static_cast<int>(at - reduced_to_full_.begin()));
   }
   interface_rhs_.resize(static_cast<Eigen::Index>(reduced_interface.size()));
-  reduced_rhs_.resize(reduced.rows());
-  reduced_solution_.resize(reduced.rows());
-  const auto build = [&] {
+  const auto kept = static_cast<Eigen::Index>(reduced_to_full_.size());
+  reduced_rhs_.resize(kept);
+  reduced_solution_.resize(kept);
+  const auto build = [&] {  // run by the first subdomain of each set of identical ones
     auto factor = std::make_shared<CholmodFactor>(factor_kind, ordering);
     FactorOutcome outcome;
-    outcome.failed = factor->factorize(reduced, shared, reduced_interface);
+    outcome.failed = factor->factorize(restrict_to(K, reduced_to_full_), shared, reduced_interface);
     // A singular block may factor with a tiny positive pivot instead of failing outright.
     outcome.reciprocal_condition = outcome.failed < 0 ? factor->reciprocal_condition() : 0.0;
     factor_ = factor;
@@ -99,7 +99,7 @@ Subdomain::Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& ke
                      "disconnected subdomain mesh or a mechanism." + coordinates_hint);
   if (outcome.failed >= 0)
     throw InputError(name + ": not positive definite outside its kernel (Cholesky pivot " +
-                     std::to_string(outcome.failed) + " of " + std::to_string(reduced.rows()) +
+                     std::to_string(outcome.failed) + " of " + std::to_string(kept) +
                      " fails; kernel dimension found " + std::to_string(R_.cols()) +
                      "). Is the subdomain mesh connected and the matrix a stiffness matrix?" + coordinates_hint);
   operator_bytes_ = interface_solves() ? factor_->interface_bytes() : factor_->factor_bytes();
