@@ -107,9 +107,14 @@ def next_size(last, memory_gib):
     needed = per_unknown * unknowns / 1024
     if needed <= memory_gib:
         return []
+    factors = f"{f(last, 'factor_bytes') / 2**30:.2f}" if last.get("factor_bytes") else "?"
     return [f"n = {2 * int(last['n'])} ({unknowns / 1e6:.1f} million unknowns) was not run: at the "
             f"{per_unknown * 1024:.1f} KiB per unknown measured at n = {last['n']} it would need about "
-            f"{needed:.0f} GiB, more than this machine's {memory_gib:.0f} GiB."]
+            f"{needed:.0f} GiB, more than this machine's {memory_gib:.0f} GiB. Of the "
+            f"{f(last, 'process_peak_mb') / 1024:.1f} GiB at n = {last['n']} the factors hold {factors} GiB "
+            f"({last.get('factorizations', '?')} distinct factors for {last['subdomains']} subdomains: "
+            "identical boxes share one); the rest is the script's meshes and matrices and the plugin's "
+            "copies of the matrices and constraints."]
 
 
 def headline():
