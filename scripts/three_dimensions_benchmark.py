@@ -101,6 +101,24 @@ PLANE_COLUMNS = [("problem", "problem"), ("unknowns", "primal"), ("subdomains", 
                  ("peak MB", ("process_peak_mb", ".0f"))]
 
 
+
+def shared_factor_words(cubes):
+    """What the factorizations column shows: identical boxes share one factor where the grid
+    spacing is exact in binary; the sizes where it is not factorize most boxes on their own."""
+    runs = [r for r in cubes if r.get("factorizations")]
+    if not runs:
+        return []
+    exact = [r for r in runs if 2 ** round(math.log2(float(r["n"]))) == int(r["n"])]
+    inexact = [r for r in runs if r not in exact]
+    words = [f"Factorizations: boxes of one position class have bitwise equal matrices where h = 1/n is exact in "
+             f"binary and share one factor (`shareFactors`): {listing([r['factorizations'] for r in exact])} "
+             f"for {listing([r['subdomains'] for r in exact])} boxes at n = {listing([r['n'] for r in exact])}."]
+    for r in inexact:
+        words.append(f"At n = {r['n']} (h = 1/{r['n']}, not exact in binary) the translated coordinates round "
+                     f"differently and {r['factorizations']} of {r['subdomains']} boxes factorize on their own, "
+                     "hence its factorization time.")
+    return [" ".join(words)]
+
 def peak_radius(row):
     """The distance from the axis of the centroid of a sphere run's most stressed tetrahedron."""
     return math.hypot(f(row, "von_mises_max_x"), f(row, "von_mises_max_y"))
@@ -453,6 +471,7 @@ def render():
         f"{f(largest, 'time_assembly'):.1f} s, set up by the plugin in {f(largest, 'time_plugin_setup'):.1f} s besides its factorizations",
         f"({f(largest, 'time_factor'):.1f} s) and solved in {f(largest, 'time_solve'):.1f} s: {f(largest, 'time_scene'):.1f} s in all, "
         f"in {f(largest, 'process_peak_mb') / 1024:.1f} GB.",
+        *shared_factor_words(cubes),
         "",
         f"## Against the undivided cubes (tol = 1e-8, n ≤ {REFERENCE_UP_TO})",
         "",
