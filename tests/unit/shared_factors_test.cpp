@@ -37,22 +37,23 @@ struct CountingBuild {
 };
 
 TEST(SharedFactors, EqualTriplesBuildOnceAndAnyDifferenceBuildsAgain) {
+  // The matrices outlive `shared` (it keeps them by reference): declared before it.
+  const SparseMatrix K = path_laplacian(20, 1.0), copy = K, bigger = path_laplacian(21, 1.0);
+  SparseMatrix one_ulp = K;
+  one_ulp.valuePtr()[5] = std::nextafter(one_ulp.valuePtr()[5], 10.0);
   SharedFactors shared;
   CountingBuild build;
   const auto run = [&build] { return build(); };
-  const SparseMatrix K = path_laplacian(20, 1.0);
   const FactorOutcome first = shared.obtain(K, {0}, {3, 7}, run);
-  const FactorOutcome again = shared.obtain(SparseMatrix(K), {0}, {3, 7}, run);
+  const FactorOutcome again = shared.obtain(copy, {0}, {3, 7}, run);
   EXPECT_EQ(build.calls, 1);
   EXPECT_EQ(first.factor.get(), again.factor.get());
   EXPECT_EQ(again.residual, first.residual);
 
-  SparseMatrix one_ulp = K;
-  one_ulp.valuePtr()[5] = std::nextafter(one_ulp.valuePtr()[5], 10.0);
   const FactorOutcome other_value = shared.obtain(one_ulp, {0}, {3, 7}, run);
   const FactorOutcome other_fixing = shared.obtain(K, {1}, {3, 7}, run);
   const FactorOutcome other_interface = shared.obtain(K, {0}, {3, 8}, run);
-  const FactorOutcome other_size = shared.obtain(path_laplacian(21, 1.0), {0}, {3, 7}, run);
+  const FactorOutcome other_size = shared.obtain(bigger, {0}, {3, 7}, run);
   EXPECT_EQ(build.calls, 5);
   for (const FactorOutcome* o : {&other_value, &other_fixing, &other_interface, &other_size})
     EXPECT_NE(o->factor.get(), first.factor.get());
@@ -61,9 +62,9 @@ TEST(SharedFactors, EqualTriplesBuildOnceAndAnyDifferenceBuildsAgain) {
 }
 
 TEST(SharedFactors, ThreadsAskingForOneTripleWaitForASingleBuild) {
+  const SparseMatrix K = path_laplacian(50, 3.0);
   SharedFactors shared;
   std::atomic<int> calls{0};
-  const SparseMatrix K = path_laplacian(50, 3.0);
   const auto slow_build = [&calls] {
     ++calls;
     std::this_thread::sleep_for(std::chrono::milliseconds(50));  // the others arrive meanwhile
@@ -81,8 +82,8 @@ TEST(SharedFactors, ThreadsAskingForOneTripleWaitForASingleBuild) {
 }
 
 TEST(SharedFactors, AFailedBuildFailsEverySubdomainThatWouldShareIt) {
-  SharedFactors shared;
   const SparseMatrix K = path_laplacian(10, 1.0);
+  SharedFactors shared;
   int calls = 0;
   const auto failing = [&calls]() -> FactorOutcome {
     ++calls;

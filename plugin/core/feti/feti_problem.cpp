@@ -204,14 +204,18 @@ void FetiProblem::factorize(const Constraints& constraints) {
   subdomains_.resize(inputs_.size());
   std::vector<std::exception_ptr> failures(inputs_.size());
   SharedAnalyses shared;  // boxes of one shape order and analyze once
+  // The FETI-1 operators with Dirichlet dofs eliminated, kept while shared_factors compares
+  // matrices by reference (declared first: destroyed after it).
+  std::vector<SparseMatrix> eliminated(inputs_.size());
   SharedFactors shared_factors;  // boxes of one matrix factorize once
 #pragma omp parallel for schedule(dynamic) num_threads(resolve_thread_count(settings_.threads))
   for (int k = 0; k < count; ++k) {
     const SubdomainInput& in = inputs_[static_cast<size_t>(k)];
     try {
-      const bool eliminated = eliminate && !in.dirichlet_dofs.empty();
+      const bool eliminates = eliminate && !in.dirichlet_dofs.empty();
+      if (eliminates) eliminated[static_cast<size_t>(k)] = eliminate_dirichlet(in.K, in.dirichlet_dofs);
       subdomains_[static_cast<size_t>(k)] = std::make_unique<Subdomain>(
-          global_ids_[static_cast<size_t>(k)], eliminated ? eliminate_dirichlet(in.K, in.dirichlet_dofs) : in.K,
+          global_ids_[static_cast<size_t>(k)], eliminates ? eliminated[static_cast<size_t>(k)] : in.K,
           candidate_kernel(in.x, in.y, in.component, in.z), settings_.factor, settings_.ordering, &shared,
           touched_dofs(local[static_cast<size_t>(k)].B), settings_.share_factors ? &shared_factors : nullptr);
     } catch (...) {

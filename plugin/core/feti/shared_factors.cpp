@@ -44,12 +44,12 @@ FactorOutcome SharedFactors::obtain(const SparseMatrix& K, const std::vector<int
     const std::lock_guard<std::mutex> lock(mutex_);
     const auto range = entries_.equal_range(hash);
     for (auto it = range.first; it != range.second && !registered.valid(); ++it)
-      if (it->second.fixing == fixing && it->second.interface == interface && bitwise_equal(it->second.K, K))
+      if (it->second.fixing == fixing && it->second.interface == interface && bitwise_equal(*it->second.K, K))
         registered = it->second.outcome;
     if (registered.valid()) {
       ++reused_;
     } else {
-      entries_.emplace(hash, Entry{K, fixing, interface, promise.get_future().share()});
+      entries_.emplace(hash, Entry{&K, fixing, interface, promise.get_future().share()});
       ++built_;
     }
   }

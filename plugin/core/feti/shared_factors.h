@@ -33,7 +33,9 @@ class SharedFactors {
  public:
   /// The outcome for (K, fixing, interface): `build`'s, run on this thread, when no equal
   /// triple was registered before; otherwise the registered one, waiting while another thread
-  /// builds it (and rethrowing what its build threw).
+  /// builds it (and rethrowing what its build threw). K is kept by reference, not copied (a
+  /// copy of every subdomain's matrix would raise the set-up's peak memory where nothing is
+  /// shared): it must outlive this object.
   FactorOutcome obtain(const SparseMatrix& K, const std::vector<int>& fixing, const std::vector<int>& interface,
                        const std::function<FactorOutcome()>& build);
 
@@ -42,7 +44,7 @@ class SharedFactors {
 
  private:
   struct Entry {
-    SparseMatrix K;
+    const SparseMatrix* K;
     std::vector<int> fixing, interface;
     std::shared_future<FactorOutcome> outcome;
   };
