@@ -309,6 +309,41 @@ TEST_P(Tresca3D, CoulombFixedPointMeetsTheLawAndTheReference) {
   expect_same_forces(forces, undivided_dual([&](const std::array<double, 2>& at) { return mu * at_node(forces, at).force[0]; }, 0));
 }
 
+TEST_P(Tresca3D, AFloatingBlockTheDiscsCannotHoldIsInfeasibleWithoutIterating) {
+  // The block free (nothing fixes its top), weighed down and pushed along x by a load on every
+  // node: it stands only if the bottom rows' friction discs carry the push. Their least-norm
+  // forces meet the normal bounds but not the discs, so the feasibility test must read the
+  // discs: without them it let SMALBE iterate to maxit.
+  constexpr double push = 0.2, weight = 1.0;
+  std::vector<SubdomainInput> blocks = halves(0);
+  double total_push = 0;
+  for (SubdomainInput& block : blocks) {
+    block.dirichlet_dofs.clear();
+    block.dirichlet_values.clear();
+    for (Eigen::Index dof = 0; dof < block.K.rows(); dof += 3) {
+      block.f[dof] = push, block.f[dof + 2] = -weight;
+      total_push += push;
+    }
+  }
+  const ContactInput held = on_plane(blocks);
+  const int rows = static_cast<int>(held.slave_dofs[0].size() + held.slave_dofs[1].size()) / 3;
+  for (double capacity : {0.5, 2.0}) {  // the discs' sum against the push
+    SCOPED_TRACE("capacity " + std::to_string(capacity) + " x the push");
+    ContactInput contact = held;
+    contact.slip_bound = capacity * total_push / rows;  // 18 slave nodes for 15 rows: the discs' sum is 5/6 of that
+    FetiSetupSettings setup;
+    setup.variant = GetParam();
+    const FetiProblem problem(blocks, contact, setup);
+    const FetiResult r = problem.solve();
+    if (capacity < 1) {
+      EXPECT_EQ(r.status, SolveStatus::infeasible) << to_string(r.status);
+      EXPECT_EQ(r.counts.hessian, 0);
+    } else {
+      EXPECT_EQ(r.status, SolveStatus::converged) << to_string(r.status);
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Variants, Tresca3D, ::testing::Values(FetiVariant::feti1, FetiVariant::tfeti),
                          [](const auto& info) { return info.param == FetiVariant::feti1 ? "feti1" : "tfeti"; });
 

@@ -2,6 +2,7 @@
 
 #include "base/errors.h"
 #include "feti/semidefinite_kernel.h"
+#include "qp/disc.h"
 #include "qp/mprgp.h"
 #include "qp/norm_estimate.h"
 
@@ -151,6 +152,10 @@ double CoarseSpace::feasibility_residual(const Vec& e, const qp::ConstraintSet& 
   bool within = true;
   for (Eigen::Index i = 0; i < m; ++i)
     within = within && (lower[i] == kUnbounded || lambda[i] >= lower[i]) && (!bounds.has_upper(i) || lambda[i] <= bounds.upper[i]);
+  if (within && bounds.has_discs()) {  // the per-component bounds see a disc's pair as free
+    Vec projected = lambda;
+    within = qp::project_onto_discs(projected, bounds) == 0;
+  }
   if (within) return 0.0;  // G lambda = e already
   // min 1/2 ||G lambda - e||^2 = 1/2 lambda'G'G lambda - (G'e)'lambda + const, within the bounds.
   Vec Gv;
