@@ -7,6 +7,7 @@
 #include "binding/handles.h"
 
 #include "base/errors.h"
+#include "base/parallel_for.h"
 #include "parallel/mpi_communicator.h"
 #include "parallel/ownership.h"
 
@@ -63,14 +64,14 @@ class FetiSetup : public WithNamedArguments {
     ContactInput contact;
     FetiSetupSettings settings;
     collectively(*comm, [&] {
-      subdomains = subdomain_inputs(stack, ids);
+      settings = setup_settings(stack);
+      if (settings.threads == 0) settings.threads = default_threads_per_rank(*comm);
+      subdomains = subdomain_inputs(stack, ids, settings.threads);
       std::vector<long> dofs;
       for (const SubdomainInput& sub : subdomains) dofs.push_back(sub.K.rows());
       add_dirichlet_and_components(stack, count, ids, dofs, subdomains);
       contact = contact_input(stack, count, ids, dofs);
-      settings = setup_settings(stack);
     });
-    if (settings.threads == 0) settings.threads = default_threads_per_rank(*comm);
     return add_handle(std::make_unique<FetiProblem>(std::move(subdomains), ids, static_cast<int>(count), contact,
                                                     settings, comm));
   }
@@ -89,25 +90,26 @@ class FetiSetup : public WithNamedArguments {
                          std::to_string(count) + " subdomains");
   }
 
-  /// K, F, coordinates and body of the subdomains `ids` this rank holds.
-  std::vector<SubdomainInput> subdomain_inputs(Stack stack, const std::vector<int>& ids) const {
+  /// K, F, coordinates and body of the subdomains `ids` this rank holds, converted on
+  /// `threads` threads (FreeFEM's arrays are only read).
+  std::vector<SubdomainInput> subdomain_inputs(Stack stack, const std::vector<int>& ids, int threads) const {
     auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
     auto& Fs = *GetAny<KN<KN<double>>*>((*F)(stack));
     auto& Xs = *GetAny<KN<KN<double>>*>((*X)(stack));
     auto& Ys = *GetAny<KN<KN<double>>*>((*Y)(stack));
     auto& bodies = *GetAny<KN<long>*>((*body)(stack));
     const auto* Zs = optional_pointer<KN<KN<double>>>(nargs[kZ], stack);
-    std::vector<SubdomainInput> subdomains;
-    for (int s : ids) {
-      SubdomainInput sub;
+    std::vector<SubdomainInput> subdomains(ids.size());
+    parallel_for_each(static_cast<int>(ids.size()), threads, [&](int k) {
+      const int s = ids[static_cast<size_t>(k)];
+      SubdomainInput& sub = subdomains[static_cast<size_t>(k)];
       sub.K = to_sparse(Ks[s], "K[" + std::to_string(s) + "]");
       sub.f = to_vec(Fs[s]);
       sub.x = to_std(Xs[s]);
       sub.y = to_std(Ys[s]);
       if (Zs) sub.z = to_std((*Zs)[s]);
       sub.body = static_cast<int>(bodies[s]);
-      subdomains.push_back(std::move(sub));
-    }
+    });
     return subdomains;
   }
 

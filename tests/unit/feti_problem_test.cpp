@@ -520,6 +520,16 @@ TEST(FetiProblem, BadInputIsAnErrorNamingTheArgument) {
   wrong_start.start[0] = NAN;
   expect_input_error([&] { problem.solve(wrong_start); }, "start: has entries that are not finite");
   expect_input_error([&] { make([](auto& s) { s[2].K.coeffRef(0, 1) += 1.0; }); }, "K[2]: not symmetric");
+  // An entry whose mirror is not stored at all, above and below the diagonal.
+  expect_input_error([&] { make([](auto& s) { s[2].K.coeffRef(0, s[2].K.cols() - 1) = 1.0; }); }, "K[2]: not symmetric");
+  expect_input_error([&] { make([](auto& s) { s[1].K.coeffRef(s[1].K.rows() - 1, 0) = 1.0; }); }, "K[1]: not symmetric");
+  // Checked on threads, named as a serial loop would: the lowest bad subdomain.
+  expect_input_error([&] {
+    make([](auto& s) {
+      s[3].K.coeffRef(0, 1) += 1.0;
+      s[1].f[0] = NAN;
+    });
+  }, "F[1]");
   expect_input_error([&] { make([](auto& s) { s[1].f.conservativeResize(3); }); }, "F[1]");
   expect_input_error([&] { make([](auto& s) { s[3].f[0] = NAN; }); }, "F[3]");
   expect_input_error([&] { make([](auto& s) { s[0].K.coeffRef(0, 0) = INFINITY; }); }, "K[0]");

@@ -4,6 +4,7 @@
 #include "constraints/surface_checks.h"
 
 #include "base/errors.h"
+#include "base/parallel_for.h"
 
 #include <algorithm>
 #include <array>
@@ -22,22 +23,41 @@ void check_stiffness(const SparseMatrix& K, size_t s) {
   if (K.rows() != K.cols())
     throw InputError(name + ": not square (" + std::to_string(K.rows()) + " x " +
                      std::to_string(K.cols()) + ")");
+  if (!K.isCompressed()) {  // the walk below reads compressed columns
+    SparseMatrix compressed = K;
+    compressed.makeCompressed();
+    return check_stiffness(compressed, s);
+  }
   const double scale = K.coeffs().size() ? K.coeffs().cwiseAbs().maxCoeff() : 0.0;
   if (!std::isfinite(scale)) throw InputError(name + ": has a non-finite entry (nan or inf)");
-  // Each off-diagonal entry against its mirror, looked up in place (a binary search in
-  // the mirror's column): no transposed copy, which cost more than the rest of the set-up's
-  // checks on thousands of subdomains.
+  // Each entry against its mirror in one pass over K (no transposed copy, no search): the
+  // columns are walked in order, so the mirrors of column j's entries below the diagonal,
+  // (j, i) in column i, come up in ascending row order there; a cursor per column follows
+  // them. An entry a cursor steps over, or never reaches, has no stored mirror (0).
+  const auto asymmetric = [&](int i, int j, double value, double mirror) {
+    const double difference = mirror - value;
+    if (std::abs(difference) <= 1e-10 * scale) return;
+    throw InputError(name + ": not symmetric: K(" + std::to_string(i) + "," + std::to_string(j) + ") and K(" +
+                     std::to_string(j) + "," + std::to_string(i) + ") differ by " + std::to_string(difference) +
+                     " (assemble a symmetric bilinear form; Dirichlet by tgv=-1 breaks "
+                     "symmetry, pass the dofs as Dirichlet data instead)");
+  };
+  const int* start = K.outerIndexPtr();
+  const int* row = K.innerIndexPtr();
+  const double* value = K.valuePtr();
+  std::vector<int> cursor(start, start + K.outerSize());  // next entry above the diagonal, per column
   for (int j = 0; j < K.outerSize(); ++j)
-    for (SparseMatrix::InnerIterator it(K, j); it; ++it) {
-      const int i = static_cast<int>(it.row());
-      if (i == j) continue;
-      const double difference = K.coeff(j, i) - it.value();
-      if (std::abs(difference) > 1e-10 * scale)
-        throw InputError(name + ": not symmetric: K(" + std::to_string(i) + "," + std::to_string(j) + ") and K(" +
-                         std::to_string(j) + "," + std::to_string(i) + ") differ by " + std::to_string(difference) +
-                         " (assemble a symmetric bilinear form; Dirichlet by tgv=-1 breaks "
-                         "symmetry, pass the dofs as Dirichlet data instead)");
+    for (int p = start[j]; p < start[j + 1]; ++p) {
+      const int i = row[p];
+      if (i <= j) continue;
+      int& q = cursor[static_cast<size_t>(i)];  // column i, looking for row j
+      for (; q < start[i + 1] && row[q] < j; ++q) asymmetric(row[q], i, value[q], 0.0);
+      const bool stored = q < start[i + 1] && row[q] == j;
+      asymmetric(i, j, value[p], stored ? value[q] : 0.0);
+      if (stored) ++q;
     }
+  for (int i = 0; i < K.outerSize(); ++i)  // above-diagonal entries no lower entry claimed
+    for (int q = cursor[static_cast<size_t>(i)]; q < start[i + 1] && row[q] < i; ++q) asymmetric(row[q], i, value[q], 0.0);
   for (Eigen::Index i = 0; i < K.rows(); ++i)
     if (!(K.coeff(i, i) > 0))
       throw InputError(name + ": diagonal entry " + std::to_string(i) + " is " +
@@ -116,6 +136,50 @@ void check_dof_field(const std::vector<std::vector<double>>& field, const std::v
   }
 }
 
+/// One subdomain's own data: K, F, coordinates, body, components and Dirichlet lists;
+/// `first` (named `first_id`) is the subdomain whose dimension every other must share.
+void check_subdomain(const SubdomainInput& sub, size_t s, const SubdomainInput& first, size_t first_id) {
+  check_stiffness(sub.K, s);
+  const auto n = static_cast<size_t>(sub.K.rows());
+  if (static_cast<size_t>(sub.f.size()) != n)
+    throw InputError(indexed("F", s) + ": has " + std::to_string(sub.f.size()) +
+                     " entries, K" + "[" + std::to_string(s) + "] has " + std::to_string(n) + " rows");
+  if (!sub.f.allFinite()) throw InputError(indexed("F", s) + ": has a non-finite entry");
+  if (sub.x.size() != n || sub.y.size() != n)
+    throw InputError(indexed("X", s) + ", " + indexed("Y", s) + ": need one coordinate per dof (" +
+                     std::to_string(n) + "), got " + std::to_string(sub.x.size()) + " and " +
+                     std::to_string(sub.y.size()));
+  for (size_t i = 0; i < n; ++i)
+    if (!std::isfinite(sub.x[i]) || !std::isfinite(sub.y[i]))
+      throw InputError(indexed("X", s) + ", " + indexed("Y", s) + ": the coordinates of dof " + std::to_string(i) +
+                       " are not finite (" + std::to_string(sub.x[i]) + ", " + std::to_string(sub.y[i]) + ")");
+  if (!sub.z.empty() && sub.z.size() != n)
+    throw InputError(indexed("Z", s) + ": needs one coordinate per dof (" + std::to_string(n) + "), got " +
+                     std::to_string(sub.z.size()));
+  for (size_t i = 0; i < sub.z.size(); ++i)
+    if (!std::isfinite(sub.z[i]))
+      throw InputError(indexed("Z", s) + ": the coordinate of dof " + std::to_string(i) + " is not finite");
+  if (sub.z.empty() != first.z.empty())
+    throw InputError(indexed("Z", s) + ": " + (sub.z.empty() ? "missing" : "given") + " where Z[" +
+                     std::to_string(first_id) + "] is " + (sub.z.empty() ? "given" : "missing") +
+                     ": every subdomain of a problem is plane or every one has a third coordinate");
+  if (sub.body < 0)
+    throw InputError(indexed("body", s) + ": is " + std::to_string(sub.body) + ", body numbers must be >= 0");
+  if (!sub.component.empty() && sub.component.size() != n)
+    throw InputError(indexed("component", s) + ": needs one entry per dof");
+  const int components = sub.z.empty() ? 2 : 3;
+  for (int c : sub.component)
+    if (c < 0 || c >= components)
+      throw InputError(indexed("component", s) + ": components must be 0 or 1" + (sub.z.empty() ? "" : " or 2") +
+                       ", got " + std::to_string(c));
+  check_dofs(sub.dirichlet_dofs, sub.K.rows(), indexed("dirichlet", s));
+  if (!sub.dirichlet_values.empty() && sub.dirichlet_values.size() != sub.dirichlet_dofs.size())
+    throw InputError(indexed("dirichletValues", s) + ": needs one value per Dirichlet dof");
+  for (size_t i = 0; i < sub.dirichlet_values.size(); ++i)
+    if (!std::isfinite(sub.dirichlet_values[i]))
+      throw InputError(indexed("dirichletValues", s) + ": entry " + std::to_string(i) + " is not finite");
+}
+
 /// Local subdomain k's name in messages: global_ids[k], or k itself.
 std::vector<size_t> message_ids(size_t count, const std::vector<int>& global_ids) {
   std::vector<size_t> ids;
@@ -133,49 +197,11 @@ void validate_contact_gaps(const std::vector<std::vector<double>>& gaps, const s
 void validate_input(const std::vector<SubdomainInput>& subdomains, const ContactInput& contact,
                     const std::vector<int>& global_ids) {
   const std::vector<size_t> ids = message_ids(subdomains.size(), global_ids);
-  for (size_t k = 0; k < subdomains.size(); ++k) {
-    const size_t s = ids[k];
-    const SubdomainInput& sub = subdomains[k];
-    check_stiffness(sub.K, s);
-    const auto n = static_cast<size_t>(sub.K.rows());
-    if (static_cast<size_t>(sub.f.size()) != n)
-      throw InputError(indexed("F", s) + ": has " + std::to_string(sub.f.size()) +
-                       " entries, K" + "[" + std::to_string(s) + "] has " + std::to_string(n) + " rows");
-    if (!sub.f.allFinite()) throw InputError(indexed("F", s) + ": has a non-finite entry");
-    if (sub.x.size() != n || sub.y.size() != n)
-      throw InputError(indexed("X", s) + ", " + indexed("Y", s) + ": need one coordinate per dof (" +
-                       std::to_string(n) + "), got " + std::to_string(sub.x.size()) + " and " +
-                       std::to_string(sub.y.size()));
-    for (size_t i = 0; i < n; ++i)
-      if (!std::isfinite(sub.x[i]) || !std::isfinite(sub.y[i]))
-        throw InputError(indexed("X", s) + ", " + indexed("Y", s) + ": the coordinates of dof " + std::to_string(i) +
-                         " are not finite (" + std::to_string(sub.x[i]) + ", " + std::to_string(sub.y[i]) + ")");
-    if (!sub.z.empty() && sub.z.size() != n)
-      throw InputError(indexed("Z", s) + ": needs one coordinate per dof (" + std::to_string(n) + "), got " +
-                       std::to_string(sub.z.size()));
-    for (size_t i = 0; i < sub.z.size(); ++i)
-      if (!std::isfinite(sub.z[i]))
-        throw InputError(indexed("Z", s) + ": the coordinate of dof " + std::to_string(i) + " is not finite");
-    if (sub.z.empty() != subdomains.front().z.empty())
-      throw InputError(indexed("Z", s) + ": " + (sub.z.empty() ? "missing" : "given") + " where Z[" +
-                       std::to_string(ids.front()) + "] is " + (sub.z.empty() ? "given" : "missing") +
-                       ": every subdomain of a problem is plane or every one has a third coordinate");
-    if (sub.body < 0)
-      throw InputError(indexed("body", s) + ": is " + std::to_string(sub.body) + ", body numbers must be >= 0");
-    if (!sub.component.empty() && sub.component.size() != n)
-      throw InputError(indexed("component", s) + ": needs one entry per dof");
-    const int components = sub.z.empty() ? 2 : 3;
-    for (int c : sub.component)
-      if (c < 0 || c >= components)
-        throw InputError(indexed("component", s) + ": components must be 0 or 1" + (sub.z.empty() ? "" : " or 2") +
-                         ", got " + std::to_string(c));
-    check_dofs(sub.dirichlet_dofs, sub.K.rows(), indexed("dirichlet", s));
-    if (!sub.dirichlet_values.empty() && sub.dirichlet_values.size() != sub.dirichlet_dofs.size())
-      throw InputError(indexed("dirichletValues", s) + ": needs one value per Dirichlet dof");
-    for (size_t i = 0; i < sub.dirichlet_values.size(); ++i)
-      if (!std::isfinite(sub.dirichlet_values[i]))
-        throw InputError(indexed("dirichletValues", s) + ": entry " + std::to_string(i) + " is not finite");
-  }
+  // Thousands of subdomains check on the set-up's threads (the symmetry test reads every
+  // entry of every K); the error named is the lowest subdomain's, as in a serial loop.
+  parallel_for_each(static_cast<int>(subdomains.size()), 0, [&](int k) {
+    check_subdomain(subdomains[static_cast<size_t>(k)], ids[static_cast<size_t>(k)], subdomains.front(), ids.front());
+  });
   // contact.three_d: set by a parallel set-up for a rank that may hold no subdomain.
   const bool three_d = contact.three_d || (!subdomains.empty() && !subdomains.front().z.empty());
   const int dimension = three_d ? 3 : 2;

@@ -5,6 +5,7 @@
 #include "feti/blas_library.h"
 #include "feti/dirichlet.h"
 #include "base/errors.h"
+#include "base/parallel_for.h"
 #include "constraints/input_checks.h"
 #include "feti/kernel.h"
 #include "base/stopwatch.h"
@@ -12,7 +13,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <unordered_set>
 
 namespace ffeti {
@@ -202,29 +202,21 @@ void FetiProblem::factorize(const Constraints& constraints) {
   const bool eliminate = settings_.variant == FetiVariant::feti1;
   const int count = local_subdomain_count();
   subdomains_.resize(inputs_.size());
-  std::vector<std::exception_ptr> failures(inputs_.size());
   SharedAnalyses shared;  // boxes of one shape order and analyze once
   // The FETI-1 operators with Dirichlet dofs eliminated, kept while shared_factors compares
   // matrices by reference (declared first: destroyed after it).
   std::vector<SparseMatrix> eliminated(inputs_.size());
   SharedFactors shared_factors;  // boxes of one matrix factorize once
-#pragma omp parallel for schedule(dynamic) num_threads(resolve_thread_count(settings_.threads))
-  for (int k = 0; k < count; ++k) {
-    const SubdomainInput& in = inputs_[static_cast<size_t>(k)];
-    try {
+  collectively(*comm_, [&] {  // a failing subdomain fails the set-up on every rank alike
+    parallel_for_each(count, resolve_thread_count(settings_.threads), [&](int k) {
+      const SubdomainInput& in = inputs_[static_cast<size_t>(k)];
       const bool eliminates = eliminate && !in.dirichlet_dofs.empty();
       if (eliminates) eliminated[static_cast<size_t>(k)] = eliminate_dirichlet(in.K, in.dirichlet_dofs);
       subdomains_[static_cast<size_t>(k)] = std::make_unique<Subdomain>(
           global_ids_[static_cast<size_t>(k)], eliminates ? eliminated[static_cast<size_t>(k)] : in.K,
           candidate_kernel(in.x, in.y, in.component, in.z), settings_.factor, settings_.ordering, &shared,
           touched_dofs(local[static_cast<size_t>(k)].B), settings_.share_factors ? &shared_factors : nullptr);
-    } catch (...) {
-      failures[static_cast<size_t>(k)] = std::current_exception();
-    }
-  }
-  collectively(*comm_, [&] {
-    for (const auto& failure : failures)
-      if (failure) std::rethrow_exception(failure);
+    });
   });
   factorizations_ = static_cast<long>(comm_->sum(double(CholmodFactor::factorizations_in_process() - before)));
   shared_factors_ = static_cast<long>(comm_->sum(static_cast<double>(shared_factors.reused())));
