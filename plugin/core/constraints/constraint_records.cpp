@@ -1,5 +1,7 @@
 #include "constraints/constraint_records.h"
 
+#include "base/parallel_for.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -106,8 +108,11 @@ std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& 
                                              const std::vector<BoundingBox>& boxes,
                                              const std::vector<int>& bodies, double snap) {
   const BoxGrid grid(boxes, 4 * snap);
-  std::vector<DofRecord> records;
-  for (size_t k = 0; k < local.size(); ++k) {
+  // Per subdomain on the set-up's threads, joined in subdomain order.
+  std::vector<std::vector<DofRecord>> per_subdomain(local.size());
+  parallel_for_each(static_cast<int>(local.size()), 0, [&](int local_index) {
+    const auto k = static_cast<size_t>(local_index);
+    std::vector<DofRecord>& records = per_subdomain[k];
     const SubdomainInput& sub = local[k];
     const int s = global_ids[k];
     const size_t n = sub.x.size();
@@ -144,7 +149,12 @@ std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& 
                            sub.x[i], sub.y[i], z, fixed[i] != 0, slave[i] != 0, master[i] != 0, value[i],
                            gap ? (*gap)[i] : 0.0, friction ? (*friction)[i] : law_value});
     }
-  }
+  });
+  size_t total = 0;
+  for (const auto& part : per_subdomain) total += part.size();
+  std::vector<DofRecord> records;
+  records.reserve(total);
+  for (const auto& part : per_subdomain) records.insert(records.end(), part.begin(), part.end());
   return records;
 }
 
@@ -161,6 +171,7 @@ std::vector<double> pack(const std::vector<DofRecord>& records) {
 
 std::vector<DofRecord> unpack(const std::vector<double>& packed) {
   std::vector<DofRecord> records;
+  records.reserve(packed.size() / 11);
   for (size_t k = 0; k + 11 <= packed.size(); k += 11) {
     const int flags = static_cast<int>(packed[k + 7]);
     records.push_back({static_cast<int>(packed[k]), static_cast<int>(packed[k + 1]), static_cast<int>(packed[k + 2]),
