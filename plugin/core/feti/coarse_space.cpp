@@ -1,11 +1,13 @@
 #include "feti/coarse_space.h"
 
 #include "base/errors.h"
+#include "base/parallel_for.h"
 #include "feti/semidefinite_kernel.h"
 #include "qp/disc.h"
 #include "qp/mprgp.h"
 #include "qp/norm_estimate.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -18,34 +20,53 @@ CoarseSpace::CoarseSpace(const SubdomainList& subdomains, const std::vector<Loca
                          const Communicator& comm)
     : subdomains_(subdomains), comm_(comm) {
   // Each rank packs, per kernel vector of its floating subdomains, (s, j, nonzeros, then
-  // row/value pairs of B_s R_s e_j); every rank unpacks all of them in the same order.
+  // row/value pairs of the nonzeros of B_s R_s e_j); every rank unpacks all of them in the
+  // same order, straight into G's compressed rows (the rows of a block ascend).
+  std::vector<Eigen::MatrixXd> BR(subdomains.size());
+  parallel_for_each(static_cast<int>(subdomains.size()), 0, [&](int k) {
+    const auto s = static_cast<size_t>(k);
+    if (subdomains[s]->floating()) BR[s] = local[s].B * subdomains[s]->kernel();
+  });
   std::vector<double> packed;
-  for (size_t k = 0; k < subdomains.size(); ++k) {
-    if (!subdomains[k]->floating()) continue;
-    const Eigen::MatrixXd BR = local[k].B * subdomains[k]->kernel();
-    for (Eigen::Index j = 0; j < BR.cols(); ++j) {
-      packed.insert(packed.end(), {double(global_ids[k]), double(j), double(local[k].rows.size())});
+  for (size_t k = 0; k < subdomains.size(); ++k)
+    for (Eigen::Index j = 0; j < BR[k].cols(); ++j) {
+      packed.insert(packed.end(), {double(global_ids[k]), double(j), 0.0});
+      const size_t count_at = packed.size() - 1;
       for (size_t i = 0; i < local[k].rows.size(); ++i)
-        packed.insert(packed.end(), {double(local[k].rows[i]), BR(static_cast<Eigen::Index>(i), j)});
+        if (const double value = BR[k](static_cast<Eigen::Index>(i), j); value != 0)
+          packed.insert(packed.end(), {double(local[k].rows[i]), value});
+      packed[count_at] = static_cast<double>((packed.size() - count_at - 1) / 2);
     }
-  }
+  BR.clear();
   const std::vector<double> all = comm.allgather(packed);
-  std::map<std::pair<int, int>, size_t> start;  // (s, j) -> offset of its block: global order
+  struct Block {
+    std::pair<int, int> owner;  // (s, j)
+    size_t offset;              // of its (s, j, nonzeros) header in `all`
+  };
+  std::vector<Block> blocks;
   for (size_t p = 0; p < all.size(); p += 3 + 2 * static_cast<size_t>(all[p + 2]))
-    start[{static_cast<int>(all[p]), static_cast<int>(all[p + 1])}] = p;
-  std::map<int, int> local_index;
-  for (size_t k = 0; k < global_ids.size(); ++k) local_index[global_ids[k]] = static_cast<int>(k);
-  std::vector<Eigen::Triplet<double, int>> entries;
-  for (const auto& [key, p] : start) {
-    const int g_row = static_cast<int>(owner_.size());
-    owner_.push_back(key);
-    if (local_index.count(key.first)) local_rows_.emplace_back(g_row, local_index[key.first]);
-    const auto nonzeros = static_cast<size_t>(all[p + 2]);
-    for (size_t i = 0; i < nonzeros; ++i)
-      if (all[p + 4 + 2 * i] != 0) entries.emplace_back(g_row, static_cast<int>(all[p + 3 + 2 * i]), all[p + 4 + 2 * i]);
+    blocks.push_back({{static_cast<int>(all[p]), static_cast<int>(all[p + 1])}, p});
+  std::sort(blocks.begin(), blocks.end(), [](const Block& a, const Block& b) { return a.owner < b.owner; });
+  std::vector<int> local_index(static_cast<size_t>(bodies.size()), -1);
+  for (size_t k = 0; k < global_ids.size(); ++k) local_index[static_cast<size_t>(global_ids[k])] = static_cast<int>(k);
+  long nonzeros = 0;
+  for (const Block& b : blocks) nonzeros += static_cast<long>(all[b.offset + 2]);
+  G_.resize(static_cast<Eigen::Index>(blocks.size()), rows);
+  G_.resizeNonZeros(nonzeros);
+  G_.outerIndexPtr()[0] = 0;
+  for (size_t g_row = 0; g_row < blocks.size(); ++g_row) {
+    const auto [s, j] = blocks[g_row].owner;
+    owner_.push_back({s, j});
+    if (local_index[static_cast<size_t>(s)] >= 0) local_rows_.emplace_back(static_cast<int>(g_row), local_index[static_cast<size_t>(s)]);
+    const size_t p = blocks[g_row].offset;
+    const int start = G_.outerIndexPtr()[g_row];
+    const auto count = static_cast<int>(all[p + 2]);
+    for (int i = 0; i < count; ++i) {
+      G_.innerIndexPtr()[start + i] = static_cast<int>(all[p + 3 + 2 * static_cast<size_t>(i)]);
+      G_.valuePtr()[start + i] = all[p + 4 + 2 * static_cast<size_t>(i)];
+    }
+    G_.outerIndexPtr()[g_row + 1] = start + count;
   }
-  G_.resize(static_cast<Eigen::Index>(owner_.size()), rows);
-  G_.setFromTriplets(entries.begin(), entries.end());
   if (owner_.empty()) return;
 
   const Eigen::SparseMatrix<double> GGt_sparse = G_ * G_.transpose();

@@ -44,6 +44,24 @@ DualOperator::DualOperator(const SubdomainList& subdomains, const std::vector<Lo
   }
 }
 
+double DualOperator::apply_on_subdomain(size_t i, const Vec& x, Eigen::Ref<Vec> result) const {
+  for (size_t k = 0; k < local_[i].rows.size(); ++k)
+    gathered_[i][static_cast<Eigen::Index>(k)] = x[local_[i].rows[k]];
+  const bool on_interface = interface_B_[i].rows() > 0;
+  const SparseMatrix& B = on_interface ? interface_B_[i] : local_[i].B;
+  Vec& rhs = on_interface ? interface_rhs_[i] : local_rhs_[i];
+  Vec& solution = on_interface ? interface_solution_[i] : local_solution_[i];
+  rhs.noalias() = B.transpose() * gathered_[i];  // B_s' x
+  const Stopwatch solve_clock;
+  if (on_interface)
+    subdomains_[i]->apply_pseudo_inverse_on_interface(rhs, solution);
+  else
+    subdomains_[i]->apply_pseudo_inverse(rhs, solution);
+  const double seconds = solve_clock.seconds();
+  result.noalias() = B * solution;  // B_s K_s^+ B_s' x
+  return seconds;
+}
+
 void DualOperator::apply(const Vec& x, Vec& y) const {
   Stopwatch clock;
   const int count = static_cast<int>(subdomains_.size());
@@ -51,21 +69,7 @@ void DualOperator::apply(const Vec& x, Vec& y) const {
 #pragma omp parallel for schedule(dynamic) num_threads(threads_) reduction(+ : solves)
   for (int s = 0; s < count; ++s) {
     const auto i = static_cast<size_t>(s);
-    if (local_[i].rows.empty()) continue;
-    for (size_t k = 0; k < local_[i].rows.size(); ++k)
-      gathered_[i][static_cast<Eigen::Index>(k)] = x[local_[i].rows[k]];
-    const bool on_interface = interface_B_[i].rows() > 0;
-    const SparseMatrix& B = on_interface ? interface_B_[i] : local_[i].B;
-    Vec& rhs = on_interface ? interface_rhs_[i] : local_rhs_[i];
-    Vec& solution = on_interface ? interface_solution_[i] : local_solution_[i];
-    rhs.noalias() = B.transpose() * gathered_[i];  // B_s' x
-    const Stopwatch solve_clock;
-    if (on_interface)
-      subdomains_[i]->apply_pseudo_inverse_on_interface(rhs, solution);
-    else
-      subdomains_[i]->apply_pseudo_inverse(rhs, solution);
-    solves += solve_clock.seconds();
-    local_result_[i].noalias() = B * solution;  // B_s K_s^+ B_s' x
+    if (!local_[i].rows.empty()) solves += apply_on_subdomain(i, x, local_result_[i]);
   }
   sum_local_results(y);
   application_seconds_ += clock.seconds();
@@ -108,16 +112,7 @@ void DualOperator::apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
     solves += solve_clock.seconds();
     block_result_[i].noalias() = B * block_solution_[i];
   }
-  y.resize(rows_, x.cols());
-  Vec& column = column_;
-  for (Eigen::Index j = 0; j < x.cols(); ++j) {
-    flat_.clear();
-    for (size_t s = 0; s < subdomains_.size(); ++s)
-      if (!local_[s].rows.empty())
-        flat_.insert(flat_.end(), block_result_[s].col(j).data(), block_result_[s].col(j).data() + block_result_[s].rows());
-    sum_.sum(flat_, column);
-    y.col(j) = column;
-  }
+  sum_block_results(x.cols(), y);
   application_seconds_ += clock.seconds();
   solve_seconds_ += solves;
   applications_ += x.cols();
@@ -128,11 +123,37 @@ void DualOperator::apply_B_pseudo_inverse(const std::vector<Vec>& v, Vec& y) con
 #pragma omp parallel for schedule(dynamic) num_threads(threads_)
   for (int s = 0; s < count; ++s) {
     const auto i = static_cast<size_t>(s);
-    if (local_[i].rows.empty()) continue;
-    subdomains_[i]->apply_pseudo_inverse(v[i], local_solution_[i]);
-    local_result_[i].noalias() = local_[i].B * local_solution_[i];
+    if (!local_[i].rows.empty()) B_pseudo_inverse_on_subdomain(i, v[i], local_result_[i]);
   }
   sum_local_results(y);
+}
+
+void DualOperator::B_pseudo_inverse_on_subdomain(size_t i, const Vec& v, Eigen::Ref<Vec> result) const {
+  // K^+ 0 = 0 exactly: an unloaded subdomain (most of a large scene's) solves nothing.
+  if (!(v.array() != 0).any()) {
+    result.setZero();
+    return;
+  }
+  subdomains_[i]->apply_pseudo_inverse(v, local_solution_[i]);
+  result.noalias() = local_[i].B * local_solution_[i];
+}
+
+void DualOperator::apply_B_pseudo_inverse_and_F(const std::vector<Vec>& v, const Vec& x, Vec& Bv, Vec& Fx) const {
+  const int count = static_cast<int>(subdomains_.size());
+  block_result_.resize(subdomains_.size());
+#pragma omp parallel for schedule(dynamic) num_threads(threads_)
+  for (int s = 0; s < count; ++s) {
+    const auto i = static_cast<size_t>(s);
+    if (local_[i].rows.empty()) continue;
+    Eigen::MatrixXd& result = block_result_[i];
+    result.resize(static_cast<Eigen::Index>(local_[i].rows.size()), 2);
+    B_pseudo_inverse_on_subdomain(i, v[i], result.col(0));
+    apply_on_subdomain(i, x, result.col(1));
+  }
+  Eigen::MatrixXd both;
+  sum_block_results(2, both);
+  Bv = both.col(0);
+  Fx = both.col(1);
 }
 
 void DualOperator::apply_B(const std::vector<Vec>& u, Vec& y) const {
@@ -165,6 +186,18 @@ double DualOperator::local_transpose_squared_norm(const Vec& x) const {
     squares += (local_[i].B.transpose() * xs).squaredNorm();
   }
   return squares;
+}
+
+void DualOperator::sum_block_results(Eigen::Index cols, Eigen::MatrixXd& y) const {
+  y.resize(rows_, cols);
+  for (Eigen::Index j = 0; j < cols; ++j) {
+    flat_.clear();
+    for (size_t s = 0; s < subdomains_.size(); ++s)
+      if (!local_[s].rows.empty())
+        flat_.insert(flat_.end(), block_result_[s].col(j).data(), block_result_[s].col(j).data() + block_result_[s].rows());
+    sum_.sum(flat_, column_);
+    y.col(j) = column_;
+  }
 }
 
 void DualOperator::sum_local_results(Vec& y) const {

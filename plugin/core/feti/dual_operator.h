@@ -33,8 +33,13 @@ class DualOperator {
   /// apply() to round-off (CHOLMOD's block solve may order its operations differently).
   void apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const;
 
-  /// y = B K^+ v for per-subdomain vectors v_s (d = B K^+ f - c uses it).
+  /// y = B K^+ v for per-subdomain vectors v_s (d = B K^+ f - c uses it); a subdomain whose
+  /// v_s is zero solves nothing (most of a large scene's loads are).
   void apply_B_pseudo_inverse(const std::vector<Vec>& v, Vec& y) const;
+
+  /// Bv = B K^+ v and Fx = F x (the dual data's d and F lambda~) in one pass over the
+  /// subdomains, each as apply_B_pseudo_inverse() and apply() compute them.
+  void apply_B_pseudo_inverse_and_F(const std::vector<Vec>& v, const Vec& x, Vec& Bv, Vec& Fx) const;
 
   /// y = B u for per-subdomain vectors u_s.
   void apply_B(const std::vector<Vec>& u, Vec& y) const;
@@ -59,6 +64,13 @@ class DualOperator {
 
  private:
   void sum_local_results(Vec& y) const;
+  /// result = B_s K_s^+ B_s' x_s for local subdomain i, as apply() defines it; returns the
+  /// seconds of its solve.
+  double apply_on_subdomain(size_t i, const Vec& x, Eigen::Ref<Vec> result) const;
+  /// result = B_s K_s^+ v_s for local subdomain i.
+  void B_pseudo_inverse_on_subdomain(size_t i, const Vec& v, Eigen::Ref<Vec> result) const;
+  /// y (rows x cols): column j the ordered sum of block_result_[s].col(j) over subdomains.
+  void sum_block_results(Eigen::Index cols, Eigen::MatrixXd& y) const;
 
   const SubdomainList& subdomains_;
   const std::vector<LocalConstraints>& local_;

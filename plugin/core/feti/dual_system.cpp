@@ -92,25 +92,25 @@ DualData DualSystem::data(std::vector<Vec> loads, const Vec& c) const {
   DualData data;
   data.loads = std::move(loads);
   data.c = c;
-  const int m = constraints_.rows();
-  Vec d;
-  F_->apply_B_pseudo_inverse(data.loads, d);
+  Vec d, F_lambda_tilde;
+  if (coarse_) {
+    data.e = coarse_->kernel_load(data.loads);                 // e = R'f
+    data.lambda_tilde = coarse_->least_norm_solution(data.e);  // G lambda~ = e
+    F_->apply_B_pseudo_inverse_and_F(data.loads, data.lambda_tilde, d, F_lambda_tilde);
+  } else {
+    data.e.resize(0);
+    data.lambda_tilde = Vec::Zero(constraints_.rows());
+    F_->apply_B_pseudo_inverse(data.loads, d);
+  }
   // b is computed from both B K^+ f and c: its round-off is relative to the larger. A
   // design that only moves the gaps under a floating body has f = 0 and c in Im G', so b
   // is round-off of c alone (a uniform dGap: the body moves rigidly, lambda' = 0).
   data.data_norm = std::max(d.norm(), c.norm());
   d -= c;  // d = B K^+ f - c
-  if (coarse_) {
-    data.e = coarse_->kernel_load(data.loads);              // e = R'f
-    data.lambda_tilde = coarse_->least_norm_solution(data.e);  // G lambda~ = e
-    Vec F_lambda_tilde(m);
-    F_->apply(data.lambda_tilde, F_lambda_tilde);
-    coarse_->project(d - F_lambda_tilde, data.b);          // b = P(d - F lambda~)
-  } else {
-    data.e.resize(0);
-    data.lambda_tilde = Vec::Zero(m);
+  if (coarse_)
+    coarse_->project(d - F_lambda_tilde, data.b);  // b = P(d - F lambda~)
+  else
     data.b = d;
-  }
   return data;
 }
 
