@@ -14,6 +14,51 @@
 #include <string>
 
 namespace ffeti {
+namespace {
+
+/// The upper triangle of G G' (column a holds rows b <= a), row by row of G on the
+/// set-up's threads (Gustavson's product with one accumulator per thread): half the
+/// products of G * G', which took 0.2 s serially at 6144 rigid modes. Entry (b, a) sums
+/// G(a, r) G(b, r) over the columns r of row a in ascending order.
+Eigen::SparseMatrix<double> upper_gram(const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& G) {
+  const Eigen::SparseMatrix<double> by_column = G;  // the rows b that meet a column r
+  const auto n = static_cast<int>(G.rows());
+  std::vector<std::vector<int>> rows(static_cast<size_t>(n));
+  std::vector<std::vector<double>> values(static_cast<size_t>(n));
+#pragma omp parallel
+  {
+    std::vector<double> sum(static_cast<size_t>(n), 0.0);
+    std::vector<char> met(static_cast<size_t>(n), 0);
+#pragma omp for schedule(dynamic, 64)
+    for (int a = 0; a < n; ++a) {
+      std::vector<int>& b_list = rows[static_cast<size_t>(a)];
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor, int>::InnerIterator g(G, a); g; ++g)
+        for (Eigen::SparseMatrix<double>::InnerIterator h(by_column, g.col()); h && h.row() <= a; ++h) {
+          const auto b = static_cast<size_t>(h.row());
+          if (!met[b]) met[b] = 1, b_list.push_back(static_cast<int>(b));
+          sum[b] += g.value() * h.value();
+        }
+      std::sort(b_list.begin(), b_list.end());
+      for (int b : b_list) {
+        values[static_cast<size_t>(a)].push_back(sum[static_cast<size_t>(b)]);
+        sum[static_cast<size_t>(b)] = 0, met[static_cast<size_t>(b)] = 0;
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> upper(n, n);
+  long nonzeros = 0;
+  for (const auto& list : rows) nonzeros += static_cast<long>(list.size());
+  upper.resizeNonZeros(nonzeros);
+  for (int a = 0; a < n; ++a) {
+    const int start = upper.outerIndexPtr()[a];
+    std::copy(rows[static_cast<size_t>(a)].begin(), rows[static_cast<size_t>(a)].end(), upper.innerIndexPtr() + start);
+    std::copy(values[static_cast<size_t>(a)].begin(), values[static_cast<size_t>(a)].end(), upper.valuePtr() + start);
+    upper.outerIndexPtr()[a + 1] = start + static_cast<int>(rows[static_cast<size_t>(a)].size());
+  }
+  return upper;
+}
+
+}  // namespace
 
 CoarseSpace::CoarseSpace(const SubdomainList& subdomains, const std::vector<LocalConstraints>& local,
                          const std::vector<int>& global_ids, int rows, const std::vector<int>& bodies,
@@ -27,7 +72,10 @@ CoarseSpace::CoarseSpace(const SubdomainList& subdomains, const std::vector<Loca
     const auto s = static_cast<size_t>(k);
     if (subdomains[s]->floating()) BR[s] = local[s].B * subdomains[s]->kernel();
   });
+  size_t most = 0;  // the packed size if no entry of B_s R_s is zero
+  for (size_t k = 0; k < subdomains.size(); ++k) most += static_cast<size_t>(BR[k].cols()) * (3 + 2 * local[k].rows.size());
   std::vector<double> packed;
+  packed.reserve(most);
   for (size_t k = 0; k < subdomains.size(); ++k)
     for (Eigen::Index j = 0; j < BR[k].cols(); ++j) {
       packed.insert(packed.end(), {double(global_ids[k]), double(j), 0.0});
@@ -69,8 +117,8 @@ CoarseSpace::CoarseSpace(const SubdomainList& subdomains, const std::vector<Loca
   }
   if (owner_.empty()) return;
 
-  const Eigen::SparseMatrix<double> GGt_sparse = G_ * G_.transpose();
-  GGt_.compute(GGt_sparse);
+  const Eigen::SparseMatrix<double> GGt_upper = upper_gram(G_);
+  GGt_.compute(GGt_upper);
   // Regularity is judged on the sparse factor: its diagonal's cheap condition estimate
   // clears the regular cases; only when it is in doubt does the null space of GG' decide
   // and name the bodies of a singular GG' (semidefinite_kernel: sparse above 2500 rows, as a
@@ -80,7 +128,8 @@ CoarseSpace::CoarseSpace(const SubdomainList& subdomains, const std::vector<Loca
     const double ratio = diagonal.minCoeff() / diagonal.maxCoeff();
     if (ratio * ratio > 1e-10) return;
   }
-  const SemidefiniteKernel kernel = semidefinite_kernel(GGt_sparse, 1e-12);
+  const SemidefiniteKernel kernel =
+      semidefinite_kernel(Eigen::SparseMatrix<double>(GGt_upper.selfadjointView<Eigen::Upper>()), 1e-12);
   if (GGt_.info() == Eigen::Success && kernel.basis.cols() == 0) return;
 
   // Singular GG': some combination of rigid modes meets no constraint. Name the bodies.

@@ -66,7 +66,7 @@ class CoarseSpace {
   // GG' couples the rigid modes of neighbouring subdomains only: sparse. A dense factor
   // costs O(dim^3) to build and O(dim^2) per projection (dim = 2016 floating subdomains at
   // n = 2048 of the model problem, docs/results/scalability.md).
-  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> GGt_;
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Upper> GGt_;  // reads the upper triangle
   const SubdomainList& subdomains_;
   const Communicator& comm_;
 };
