@@ -169,6 +169,13 @@ std::vector<double> pack(const std::vector<DofRecord>& records) {
   return packed;
 }
 
+void sort_by_subdomain_and_dof(std::vector<DofRecord>& records) {
+  const auto before = [](const DofRecord& a, const DofRecord& b) {
+    return std::make_pair(a.subdomain, a.dof) < std::make_pair(b.subdomain, b.dof);
+  };
+  if (!std::is_sorted(records.begin(), records.end(), before)) std::sort(records.begin(), records.end(), before);
+}
+
 std::vector<DofRecord> unpack(const std::vector<double>& packed) {
   std::vector<DofRecord> records;
   records.reserve(packed.size() / 11);

@@ -75,4 +75,8 @@ std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& 
 std::vector<double> pack(const std::vector<DofRecord>& records);
 std::vector<DofRecord> unpack(const std::vector<double>& packed);
 
+/// Records in (subdomain, dof) order; one pass where they already are (one rank's records
+/// come so from constraint_candidates).
+void sort_by_subdomain_and_dof(std::vector<DofRecord>& records);
+
 }  // namespace ffeti

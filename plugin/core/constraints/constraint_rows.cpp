@@ -47,10 +47,11 @@ std::vector<Located> unique_slaves(const std::vector<DofRecord>& records, double
 
 void add_gluing_rows(const std::vector<DofRecord>& records, double snap, std::vector<Row>& rows) {
   const std::vector<Located> dofs = locate(records, snap, [](const DofRecord&) { return true; });
+  std::vector<const DofRecord*> free_copies, fixed_copies;  // of one node's dof, reused
   for (size_t first = 0; first < dofs.size();) {
     size_t last = first + 1;
     while (last < dofs.size() && dofs[last].key() == dofs[first].key()) ++last;
-    std::vector<const DofRecord*> free_copies, fixed_copies;
+    free_copies.clear(), fixed_copies.clear();
     for (size_t k = first; k < last; ++k) {
       const DofRecord& r = *dofs[k].record;
       if (k > first && r.subdomain == dofs[k - 1].record->subdomain) {

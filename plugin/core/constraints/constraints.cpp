@@ -16,9 +16,7 @@ int Constraints::count(RowKind k) const {
 Constraints build_constraints(std::vector<DofRecord> records, const std::vector<SegmentRecord>& segments,
                               const std::vector<FaceRecord>& faces, const ContactInput& contact, FetiVariant variant,
                               double snap) {
-  std::sort(records.begin(), records.end(), [](const DofRecord& a, const DofRecord& b) {
-    return std::make_pair(a.subdomain, a.dof) < std::make_pair(b.subdomain, b.dof);
-  });
+  sort_by_subdomain_and_dof(records);
   const ContactRecords in{records, segments, faces, contact, snap};
   const int dimension = contact.three_d ? 3 : 2;
   std::vector<const ContactDiscretization*> selected;

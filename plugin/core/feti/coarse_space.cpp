@@ -86,7 +86,7 @@ CoarseSpace::CoarseSpace(const SubdomainList& subdomains, const std::vector<Loca
       packed[count_at] = static_cast<double>((packed.size() - count_at - 1) / 2);
     }
   BR.clear();
-  const std::vector<double> all = comm.allgather(packed);
+  const std::vector<double> all = comm.size() > 1 ? comm.allgather(packed) : std::move(packed);
   struct Block {
     std::pair<int, int> owner;  // (s, j)
     size_t offset;              // of its (s, j, nonzeros) header in `all`

@@ -4,7 +4,6 @@
 #include "base/errors.h"
 #include "base/stopwatch.h"
 
-#include <map>
 #include <string>
 
 namespace ffeti {
@@ -31,15 +30,25 @@ SparseMatrix submatrix(const SparseMatrix& K, const std::vector<int>& rows, cons
 
 /// B B' over all rows (entries of the same (subdomain, dof) are the same column of B).
 SparseMatrix row_gram(const Constraints& c) {
-  std::map<std::pair<int, int>, int> column;
+  // Columns numbered in order of first appearance, looked up per subdomain in a table over
+  // its dofs (a map of a million (subdomain, dof) keys took 0.3 s).
+  std::vector<std::vector<int>> column;  // [subdomain][dof] -> column of B, -1: none yet
+  for (const ConstraintEntry& entry : c.entries) {
+    if (entry.subdomain >= static_cast<int>(column.size())) column.resize(static_cast<size_t>(entry.subdomain) + 1);
+    auto& of_subdomain = column[static_cast<size_t>(entry.subdomain)];
+    if (entry.dof >= static_cast<int>(of_subdomain.size())) of_subdomain.resize(static_cast<size_t>(entry.dof) + 1, -1);
+  }
+  int columns = 0;
   std::vector<Eigen::Triplet<double, int>> entries;
+  entries.reserve(c.entries.size());
   for (int r = 0; r < c.rows(); ++r)
     for (int e = c.row_start[static_cast<size_t>(r)]; e < c.row_start[static_cast<size_t>(r) + 1]; ++e) {
       const ConstraintEntry& entry = c.entries[static_cast<size_t>(e)];
-      const auto [it, added] = column.try_emplace({entry.subdomain, entry.dof}, static_cast<int>(column.size()));
-      entries.emplace_back(r, it->second, entry.coefficient);
+      int& at = column[static_cast<size_t>(entry.subdomain)][static_cast<size_t>(entry.dof)];
+      if (at < 0) at = columns++;
+      entries.emplace_back(r, at, entry.coefficient);
     }
-  SparseMatrix B(c.rows(), static_cast<Eigen::Index>(column.size()));
+  SparseMatrix B(c.rows(), columns);
   B.setFromTriplets(entries.begin(), entries.end());
   SparseMatrix gram = B * SparseMatrix(B.transpose());
   gram.makeCompressed();

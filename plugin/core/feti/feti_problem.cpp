@@ -113,9 +113,7 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   built_rhs_ = rhs_ = Eigen::Map<const Vec>(constraints.rhs.data(), constraints.rows());
   if (local_contact.slip_bound >= 0)  // Tresca: the bounds per friction row are fixed at set-up
     friction_ = {true, Eigen::Map<const Vec>(constraints.friction_coefficient.data(), constraints.friction_rows)};
-  std::sort(records.begin(), records.end(), [](const DofRecord& a, const DofRecord& b) {
-    return std::make_pair(a.subdomain, a.dof) < std::make_pair(b.subdomain, b.dof);
-  });
+  sort_by_subdomain_and_dof(records);
   for (const auto& row : constraints.geometry) {
     const auto it = std::lower_bound(records.begin(), records.end(), std::make_pair(row->slave_dof()[0], row->slave_dof()[1]),
                                      [](const DofRecord& r, const std::pair<int, int>& key) {
