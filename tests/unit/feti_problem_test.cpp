@@ -436,6 +436,29 @@ TEST(FetiProblem, IdenticalSubdomainsShareOneFactorAndGiveTheSameAnswerBitForBit
   }
 }
 
+TEST(FetiProblem, TheDirichletPreconditionerFactorizesEqualInteriorBlocksOnce) {
+  std::vector<FetiResult> results;
+  std::vector<long> set_up_factorizations;
+  for (bool share : {true, false}) {
+    auto subs = test::membrane_subdomains(test::membrane_options(32, 4));
+    const ContactInput contact = test::membrane_contact(subs);
+    FetiSetupSettings setup;
+    setup.preconditioner = DualPreconditioner::dirichlet;
+    setup.threads = 2;  // subdomains sharing a K_ii factor solve on both threads at once
+    setup.share_factors = share;
+    const long before = CholmodFactor::factorizations_in_process();
+    const FetiProblem problem(std::move(subs), contact, setup);
+    set_up_factorizations.push_back(CholmodFactor::factorizations_in_process() - before);
+    results.push_back(problem.solve());
+  }
+  // Without sharing: 32 subdomain factors and 32 K_ii; with it fewer of each.
+  EXPECT_EQ(set_up_factorizations[1], 64);
+  EXPECT_LT(set_up_factorizations[0], 32);
+  ASSERT_EQ(results[0].status, SolveStatus::converged);
+  EXPECT_EQ(results[0].counts.hessian, results[1].counts.hessian);
+  EXPECT_EQ(results[0].lambda, results[1].lambda);  // bitwise: the same factor values
+}
+
 TEST(FetiProblem, SubdomainsDifferingInOneValueDoNotShare) {
   auto subs = test::membrane_subdomains(test::membrane_options(32, 4));
   const ContactInput contact = test::membrane_contact(subs);

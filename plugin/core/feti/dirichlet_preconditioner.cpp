@@ -1,7 +1,9 @@
 #include "feti/dirichlet_preconditioner.h"
 
 #include "feti/dual_operator.h"
+#include "feti/shared_factors.h"
 #include "base/errors.h"
+#include "base/parallel_for.h"
 #include "base/stopwatch.h"
 
 #include <string>
@@ -61,14 +63,15 @@ SparseMatrix row_gram(const Constraints& c) {
 struct DirichletPreconditioner::Block {
   std::vector<int> boundary, interior;
   SparseMatrix Kbb, Kib;
-  CholmodFactor Kii;
+  std::shared_ptr<const CholmodFactor> Kii;  // shared by subdomains of equal K_ii
+  mutable CholmodSolveWorkspace workspace;   // this subdomain's solves of Kii
   mutable Vec gathered, xb, t, ti, yb, full;  // buffers of apply()
 };
 
 DirichletPreconditioner::DirichletPreconditioner(const std::vector<const SparseMatrix*>& operator_matrices,
                                                  const std::vector<LocalConstraints>& local,
                                                  const Constraints& constraints, const SubdomainSum& sum,
-                                                 int threads, bool lumped)
+                                                 int threads, bool lumped, bool share_factors)
     : local_(local), sum_(sum), threads_(resolve_thread_count(threads)) {
   // B has full row rank, so B B' is positive definite (block diagonal: rows meet only at
   // the nodes they share).
@@ -77,8 +80,9 @@ DirichletPreconditioner::DirichletPreconditioner(const std::vector<const SparseM
   blocks_.resize(local.size());
   results_.resize(local.size());
   const int count = static_cast<int>(local.size());
-#pragma omp parallel for schedule(dynamic) num_threads(threads_)
-  for (int s = 0; s < count; ++s) {
+  std::vector<SparseMatrix> interior_blocks(local.size());  // K_ii, compared by reference in `shared`
+  SharedFactors shared;                                      // declared after them: destroyed first
+  parallel_for_each(count, threads_, [&](int s) {  // an error leaves the threads' region first
     const auto k = static_cast<size_t>(s);
     auto block = std::make_unique<Block>();
     const SparseMatrix& K = *operator_matrices[k];
@@ -90,11 +94,23 @@ DirichletPreconditioner::DirichletPreconditioner(const std::vector<const SparseM
     if (lumped) block->interior.clear();  // S_s ~ K_bb: the K_ii correction is what it leaves out
     block->Kib = submatrix(K, block->interior, block->boundary);
     // K_ii is K with every constrained dof fixed: regular whenever some dof is constrained.
-    if (!block->interior.empty() && block->Kii.factorize(submatrix(K, block->interior, block->interior)) >= 0)
-      throw InputError("K[" + std::to_string(s) + "]: its interior block is not positive definite "
-                       "(Dirichlet preconditioner)");
+    if (!block->interior.empty()) {
+      interior_blocks[k] = submatrix(K, block->interior, block->interior);
+      const auto build = [&] {
+        auto factor = std::make_shared<CholmodFactor>();
+        FactorOutcome outcome;
+        outcome.failed = factor->factorize(interior_blocks[k]);
+        outcome.factor = std::move(factor);
+        return outcome;
+      };
+      const FactorOutcome outcome = share_factors ? shared.obtain(interior_blocks[k], {}, {}, build) : build();
+      if (outcome.failed >= 0)
+        throw InputError("K[" + std::to_string(s) + "]: its interior block is not positive definite "
+                         "(Dirichlet preconditioner)");
+      block->Kii = outcome.factor;
+    }
     blocks_[k] = std::move(block);
-  }
+  });
 }
 
 DirichletPreconditioner::~DirichletPreconditioner() = default;
@@ -117,7 +133,7 @@ void DirichletPreconditioner::apply(const Vec& x, Vec& y) const {
     b.yb.noalias() = b.Kbb * b.xb;  // S x_b = K_bb x_b - K_bi K_ii^{-1} K_ib x_b
     if (!b.interior.empty()) {
       b.t.noalias() = b.Kib * b.xb;
-      b.Kii.solve(b.t, b.ti);
+      b.Kii->solve(b.t, b.ti, b.workspace);
       b.yb.noalias() -= b.Kib.transpose() * b.ti;
     }
     b.full.setZero();

@@ -6,8 +6,9 @@
 // m - 1 gluing rows make one block, and A reduces to the multiplicity scaling 1/m where the
 // node has one row. It bounds the condition number of the projected operator by C (1 + log H/h)^2, so that
 // projected CG takes a number of iterations bounded in h and in the number of subdomains
-// (docs/results/scalability.md). Costs one more factorization per subdomain (K_ii) and per
-// application one K_ii solve per subdomain, as much as an application of F.
+// (docs/results/scalability.md). Costs one more factorization per subdomain (K_ii; one per
+// set of identical ones) and per application one K_ii solve per subdomain, as much as an
+// application of F.
 // The lumped variant keeps S_s ~ K_bb: no factorization, a sparse product per application.
 #pragma once
 
@@ -29,11 +30,12 @@ class DirichletPreconditioner {
  public:
   /// `operator_matrices[k]`: the K of local subdomain k as the dual operator sees it;
   /// `local[k]` its constraint block; `constraints` all rows (every rank's copy); `sum` the
-  /// ordered sum over subdomains of F; `lumped`: S_s replaced by K_bb (no K_ii). Keeps
-  /// references to `local` and `sum`.
+  /// ordered sum over subdomains of F; `lumped`: S_s replaced by K_bb (no K_ii);
+  /// `share_factors`: subdomains whose K_ii are bitwise equal factorize it once
+  /// (SharedFactors). Keeps references to `local` and `sum`.
   DirichletPreconditioner(const std::vector<const SparseMatrix*>& operator_matrices,
                           const std::vector<LocalConstraints>& local, const Constraints& constraints,
-                          const SubdomainSum& sum, int threads, bool lumped);
+                          const SubdomainSum& sum, int threads, bool lumped, bool share_factors);
   ~DirichletPreconditioner();
 
   /// y = M^{-1} x. Collective.

@@ -65,14 +65,14 @@ void DualSystem::replace_right_hand_side(Constraints rebuilt) {
 }
 
 void DualSystem::use_preconditioner(DualPreconditioner kind, const std::vector<const SparseMatrix*>& operator_matrices,
-                                    int threads) {
+                                    int threads, bool share_factors) {
   preconditioner_kind_ = kind;
   if (kind == DualPreconditioner::none) {
     preconditioner_.reset();
     return;
   }
   preconditioner_ = std::make_unique<DirichletPreconditioner>(operator_matrices, local_, constraints_, *sum_, threads,
-                                                              kind == DualPreconditioner::lumped);
+                                                              kind == DualPreconditioner::lumped, share_factors);
 }
 
 LinearOperator DualSystem::preconditioner_operator() const {

@@ -163,9 +163,10 @@ class DualSystem {
   /// Preconditions every path with the Dirichlet (or lumped) preconditioner built from
   /// `operator_matrices` (this rank's K as the dual operator sees them): CG and projected CG
   /// directly, MPRGP and SMALBE in face (docs/algorithms.md). The Dirichlet one costs one
-  /// more factorization per subdomain, the lumped one none. Collective.
+  /// more factorization per subdomain (subdomains with identical interior blocks share one
+  /// where `share_factors`), the lumped one none. Collective.
   void use_preconditioner(DualPreconditioner kind, const std::vector<const SparseMatrix*>& operator_matrices,
-                          int threads);
+                          int threads, bool share_factors);
   bool preconditioned() const { return preconditioner_ != nullptr; }
   DualPreconditioner preconditioner_kind() const { return preconditioner_kind_; }
 

@@ -177,7 +177,7 @@ void FetiProblem::precondition(DualSystem& system, DualPreconditioner kind) cons
       operator_matrices.push_back(&in.K);
     }
   }
-  system.use_preconditioner(kind, operator_matrices, settings_.threads);
+  system.use_preconditioner(kind, operator_matrices, settings_.threads, settings_.share_factors);
 }
 
 Constraints FetiProblem::build_rows(std::vector<DofRecord>* gathered) const {
