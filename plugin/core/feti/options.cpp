@@ -81,8 +81,9 @@ std::vector<Option> make_options() {
       {"shareFactors", S::setup, K::word, {kSharing[0], kSharing[1]}, 0, 0, false, false, "`\"on\"`",
        "`\"on\"`: subdomains whose stiffness matrices, fixing dofs and interfaces are bitwise equal (boxes of "
        "`ffetiGrid`/`ffetiGrid3` at spacings exact in binary, such as 1/2^k: interior boxes, each face's, each "
-       "corner's) share one factorization, each solving through a workspace of its own: the same answer, bit for bit, "
-       "from fewer factorizations and less memory; `\"off\"`: one factorization per subdomain (to measure what "
+       "corner's) share one factorization, each solving through a workspace of its own (and with "
+       "`preconditioner = \"dirichlet\"` those whose interior blocks K_ii are bitwise equal share that factor too): "
+       "the same answer, bit for bit, from fewer factorizations and less memory; `\"off\"`: one factorization per subdomain (to measure what "
        "sharing saves). fetiInfo's `shared_factors` counts the subdomains that shared",
        [](SolverSettings& s, const OptionValue& v) { s.setup.share_factors = pick(v, {true, false}, kSharing); }},
       {"preconditioner", S::setup, K::word, {kPreconditioners[0], kPreconditioners[1], kPreconditioners[2]}, 0, 0,
