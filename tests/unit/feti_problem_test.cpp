@@ -4,6 +4,7 @@
 #include "feti/feti_problem.h"
 #include "feti/kernel.h"
 #include "feti/options.h"
+#include "feti/primal.h"
 #include "parallel/process.h"
 #include "membrane_model.h"
 #include "input_error.h"
@@ -457,6 +458,27 @@ TEST(FetiProblem, TheDirichletPreconditionerFactorizesEqualInteriorBlocksOnce) {
   ASSERT_EQ(results[0].status, SolveStatus::converged);
   EXPECT_EQ(results[0].counts.hessian, results[1].counts.hessian);
   EXPECT_EQ(results[0].lambda, results[1].lambda);  // bitwise: the same factor values
+}
+
+TEST(FetiProblem, ASolveEndingAtItsLastCheckedMultipliersKeepsTheirRecoveredField) {
+  // The stopping test recovers u at the multipliers it accepts; the solve returns that u
+  // (no second recovery), which must be the recovery of the returned lambda bit for bit.
+  auto subs = test::membrane_subdomains(test::membrane_options(16, 2));
+  const ContactInput contact = test::membrane_contact(subs);
+  std::vector<Vec> loads;
+  for (const SubdomainInput& s : subs) loads.push_back(s.f);
+  FetiSetupSettings setup;
+  setup.variant = FetiVariant::tfeti;  // F's loads are the subdomains' f
+  const FetiProblem problem(std::move(subs), contact, setup);
+  const FetiResult result = problem.solve();
+  ASSERT_EQ(result.status, SolveStatus::converged);
+  EXPECT_EQ(result.times.recovery, 0.0) << "recovered again instead of kept";
+  const Constraints& rows = problem.dual().constraints();
+  const Vec c = Eigen::Map<const Vec>(rows.rhs.data(), rows.rows());
+  const std::vector<Vec> u =
+      recover_primal(problem.dual().F(), problem.dual().coarse(), rows, loads, c, result.lambda, Vec());
+  ASSERT_EQ(u.size(), result.u.size());
+  for (size_t s = 0; s < u.size(); ++s) EXPECT_EQ(u[s], result.u[s]) << "subdomain " << s;
 }
 
 TEST(FetiProblem, SubdomainsDifferingInOneValueDoNotShare) {

@@ -148,9 +148,14 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
   const qp::ConstraintSet multiplier_bounds = multiplier_constraints(data);
   const qp::ConstraintSet bounds = multiplier_bounds.shifted(data.lambda_tilde);  // of mu = lambda - lambda~
   // The primal check of the stopping test at shifted multipliers mu (lambda = mu + lambda~,
-  // multipliers at a bound exactly there).
+  // multipliers at a bound exactly there). Its last u is kept: the solve usually ends at the
+  // multipliers it accepted, whose recovery would repeat it (a K^+ solve per subdomain and the
+  // normal equations of the rigid modes: 0.9 s at 1024 3D boxes).
+  Vec checked_lambda;
+  std::vector<Vec> checked_u;
   RelativeKktStop kkt_stop(settings.tolerance, [&](const Vec& mu) {
-    return primal_check(data, lambda_from_shifted(mu, bounds, data));
+    checked_lambda = lambda_from_shifted(mu, bounds, data);
+    return primal_check(data, checked_lambda, &checked_u);
   });
   const auto stop_for = [&](const DualSolution& r) {  // built once the formulation has set the references
     return DualStop(settings.stopping, settings.tolerance, r.gradient_reference, kkt_stop);
@@ -185,7 +190,13 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
   charge_operator_use(operator_start, 1, 1, result);
   if (preconditioner_) result.times.preconditioner = preconditioner_->application_seconds() - preconditioner_start;
   result.times.primal_checks = check_seconds_ - check_start;
-  recover(data, std::move(lambda), result);
+  if (checked_lambda.size() == lambda.size() && checked_lambda == lambda) {
+    result.u = std::move(checked_u);  // the same function of the same lambda: bit for bit
+    result.lambda = std::move(lambda);
+    result.times.recovery = 0;
+  } else {
+    recover(data, std::move(lambda), result);
+  }
   return result;
 }
 

@@ -166,10 +166,9 @@ DualSolution DualSystem::prepared(const DualData& data, const DualSolveSettings&
   return result;
 }
 
-PrimalCheck DualSystem::primal_check(const DualData& data, const Vec& lambda) const {
+PrimalCheck DualSystem::primal_check(const DualData& data, const Vec& lambda, std::vector<Vec>* recovered) const {
   Stopwatch clock;
-  const std::vector<Vec> u = recover_primal(*F_, coarse_.get(), constraints_, data.loads, data.c, lambda,
-                                            data.slip_bound);
+  std::vector<Vec> u = recover_primal(*F_, coarse_.get(), constraints_, data.loads, data.c, lambda, data.slip_bound);
   PrimalCheck check;
   for (const Vec& us : u)
     if (us.size()) check.displacement = std::max(check.displacement, us.lpNorm<Eigen::Infinity>());
@@ -206,6 +205,7 @@ PrimalCheck DualSystem::primal_check(const DualData& data, const Vec& lambda) co
     check.equilibrium = scale > 0 ? residual / scale : residual;
   }
   check_seconds_ += clock.seconds();
+  if (recovered) *recovered = std::move(u);
   return check;
 }
 

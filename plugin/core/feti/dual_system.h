@@ -207,7 +207,8 @@ class DualSystem {
   LinearOperator projected_preconditioner() const;  // P M^{-1} P, or empty without a preconditioner
   void recover(const DualData& data, Vec lambda, DualSolution& result) const;
   const FreeRowProjector& free_rows() const;  // built at first use
-  PrimalCheck primal_check(const DualData& data, const Vec& lambda) const;  // of the recovered u(lambda)
+  /// Of the recovered u(lambda), which goes to `u` where given.
+  PrimalCheck primal_check(const DualData& data, const Vec& lambda, std::vector<Vec>* u = nullptr) const;
   // Of lambda: free on equality rows, lambda_I >= 0 on contact rows, |lambda_t| <= g on
   // friction rows.
   qp::ConstraintSet multiplier_constraints(const DualData& data) const;
