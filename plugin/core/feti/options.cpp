@@ -91,7 +91,7 @@ std::vector<Option> make_options() {
        "the preconditioner of the dual problem on every path (CG and projected CG directly; MPRGP in face, also inside "
        "SMALBE-M): `\"lumped\"` M = A (Σ_s B_s K_s B_s') A, A = (BB')⁻¹, no factorization, a sparse product per "
        "application; `\"dirichlet\"`: K_s replaced by its Schur complement on the constrained dofs, one more "
-       "factorization per subdomain (without contact: iterations bounded in h); `\"none\"`. Measured in "
+       "factorization per subdomain, shared as `shareFactors` says (without contact: iterations bounded in h); `\"none\"`. Measured in "
        "[scalability](results/scalability.md), [large contact](results/large-contact.md) and on [every "
        "scene](results/accuracy-and-time.md); [algorithms](algorithms.md). Sensitivity and adjoint solves take the "
        "lumped one unless `\"none\"` (no factorization: half the multiplications per direction, "
