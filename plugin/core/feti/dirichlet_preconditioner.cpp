@@ -96,7 +96,9 @@ DirichletPreconditioner::DirichletPreconditioner(const std::vector<const SparseM
     // K_ii is K with every constrained dof fixed: regular whenever some dof is constrained.
     if (!block->interior.empty()) {
       interior_blocks[k] = submatrix(K, block->interior, block->interior);
+      bool built = false;
       const auto build = [&] {
+        built = true;
         auto factor = std::make_shared<CholmodFactor>();
         FactorOutcome outcome;
         outcome.failed = factor->factorize(interior_blocks[k]);
@@ -104,6 +106,7 @@ DirichletPreconditioner::DirichletPreconditioner(const std::vector<const SparseM
         return outcome;
       };
       const FactorOutcome outcome = share_factors ? shared.obtain(interior_blocks[k], {}, {}, build) : build();
+      if (!share_factors || !built) interior_blocks[k] = SparseMatrix();  // only a builder's is compared later
       if (outcome.failed >= 0)
         throw InputError("K[" + std::to_string(s) + "]: its interior block is not positive definite "
                          "(Dirichlet preconditioner)");
