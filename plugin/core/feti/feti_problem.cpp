@@ -177,7 +177,10 @@ void FetiProblem::precondition(DualSystem& system, DualPreconditioner kind) cons
       operator_matrices.push_back(&in.K);
     }
   }
-  system.use_preconditioner(kind, operator_matrices, settings_.threads, settings_.share_factors);
+  // A rank's failure (a K_ii not positive definite) fails every rank: none waits on it later.
+  collectively(*comm_, [&] {
+    system.use_preconditioner(kind, operator_matrices, settings_.threads, settings_.share_factors);
+  });
 }
 
 Constraints FetiProblem::build_rows(std::vector<DofRecord>* gathered) const {
