@@ -60,6 +60,14 @@ class CoarseSpace {
   double feasibility_residual(const Vec& e, const qp::ConstraintSet& bounds, double enough) const;
 
  private:
+  /// G's rows (one per kernel vector (s, j) of a floating subdomain, in ascending (s, j)),
+  /// owner_ and local_rows_ from B_s R_s: on one rank straight from `BR`; on several from
+  /// every rank's packed B_s R_s.
+  void assemble_local_rows(const std::vector<Eigen::MatrixXd>& BR, const std::vector<LocalConstraints>& local,
+                           const std::vector<int>& global_ids, int rows);
+  void assemble_gathered_rows(const std::vector<Eigen::MatrixXd>& BR, const std::vector<LocalConstraints>& local,
+                              const std::vector<int>& global_ids, int rows, int subdomain_count, const Communicator& comm);
+
   Eigen::SparseMatrix<double, Eigen::RowMajor, int> G_;
   std::vector<std::pair<int, int>> owner_;
   std::vector<std::pair<int, int>> local_rows_;  // (row of G, local subdomain index)

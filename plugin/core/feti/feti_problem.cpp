@@ -13,6 +13,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <stdexcept>
 #include <unordered_set>
 
 namespace ffeti {
@@ -108,17 +110,19 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   boxes_ = std::move(boxes);
   local_contact_ = local_contact;
   local_contact_.three_d = space_dimension_ == 3;
-  std::vector<DofRecord> records;
-  Constraints constraints = build_rows(&records);
+  std::vector<DofRecord> slaves;
+  Constraints constraints = build_rows(&slaves);
   built_rhs_ = rhs_ = Eigen::Map<const Vec>(constraints.rhs.data(), constraints.rows());
   if (local_contact.slip_bound >= 0)  // Tresca: the bounds per friction row are fixed at set-up
     friction_ = {true, Eigen::Map<const Vec>(constraints.friction_coefficient.data(), constraints.friction_rows)};
-  sort_by_subdomain_and_dof(records);
+  sort_by_subdomain_and_dof(slaves);
   for (const auto& row : constraints.geometry) {
-    const auto it = std::lower_bound(records.begin(), records.end(), std::make_pair(row->slave_dof()[0], row->slave_dof()[1]),
-                                     [](const DofRecord& r, const std::pair<int, int>& key) {
-                                       return std::make_pair(r.subdomain, r.dof) < key;
-                                     });
+    const std::pair<int, int> slave_dof{row->slave_dof()[0], row->slave_dof()[1]};
+    const auto it = std::lower_bound(slaves.begin(), slaves.end(), slave_dof, [](const DofRecord& r, const std::pair<int, int>& key) {
+      return std::make_pair(r.subdomain, r.dof) < key;
+    });
+    if (it == slaves.end() || std::make_pair(it->subdomain, it->dof) != slave_dof)
+      throw std::logic_error("set_up: a contact row's slave dof has no slave record");
     contact_positions_.push_back({it->x, it->y});
     contact_heights_.push_back(it->z);
     contact_body_component_.push_back({it->body, it->component});
@@ -192,7 +196,8 @@ Constraints FetiProblem::build_rows(std::vector<DofRecord>* gathered) const {
       unpack_segments(comm.allgather(pack(segment_records(inputs_, global_ids_, local_contact_))));
   const std::vector<FaceRecord> faces =
       unpack_faces(comm.allgather(pack(face_records(inputs_, global_ids_, local_contact_))));
-  if (gathered) *gathered = records;
+  if (gathered)  // the contact rows' positions are read from their slaves' records only
+    std::copy_if(records.begin(), records.end(), std::back_inserter(*gathered), [](const DofRecord& r) { return r.slave; });
   return build_constraints(std::move(records), segments, faces, local_contact_, settings_.variant, snap_);
 }
 

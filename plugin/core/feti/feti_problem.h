@@ -174,8 +174,8 @@ class FetiProblem {
 
  private:
   void set_up(const ContactInput& local_contact);
-  /// B and c from the current inputs (the records of all ranks gathered, also into
-  /// `gathered` if given). Collective.
+  /// B and c from the current inputs (the records of all ranks gathered; the slaves' also
+  /// into `gathered` if given). Collective.
   Constraints build_rows(std::vector<DofRecord>* gathered = nullptr) const;
   /// The rows built anew from the current inputs take over c (B must come out the same);
   /// then the dual right-hand side. Collective.
