@@ -70,8 +70,9 @@ struct DirichletPreconditioner::Block {
 
 DirichletPreconditioner::DirichletPreconditioner(const std::vector<const SparseMatrix*>& operator_matrices,
                                                  const std::vector<LocalConstraints>& local,
-                                                 const Constraints& constraints, const SubdomainSum& sum,
-                                                 int threads, bool lumped, bool share_factors)
+                                                 const std::vector<int>& global_ids, const Constraints& constraints,
+                                                 const SubdomainSum& sum, int threads, bool lumped,
+                                                 bool share_factors)
     : local_(local), sum_(sum), threads_(resolve_thread_count(threads)) {
   // B has full row rank, so B B' is positive definite (block diagonal: rows meet only at
   // the nodes they share).
@@ -108,7 +109,7 @@ DirichletPreconditioner::DirichletPreconditioner(const std::vector<const SparseM
       const FactorOutcome outcome = share_factors ? shared.obtain(interior_blocks[k], {}, {}, build) : build();
       if (!share_factors || !built) interior_blocks[k] = SparseMatrix();  // only a builder's is compared later
       if (outcome.failed >= 0)
-        throw InputError("K[" + std::to_string(s) + "]: its interior block is not positive definite "
+        throw InputError("K[" + std::to_string(global_ids[k]) + "]: its interior block is not positive definite "
                          "(Dirichlet preconditioner)");
       block->Kii = outcome.factor;
     }

@@ -29,13 +29,15 @@ enum class DualPreconditioner { none, lumped, dirichlet };
 class DirichletPreconditioner {
  public:
   /// `operator_matrices[k]`: the K of local subdomain k as the dual operator sees it;
-  /// `local[k]` its constraint block; `constraints` all rows (every rank's copy); `sum` the
+  /// `local[k]` its constraint block; `global_ids[k]` its global index (errors name it);
+  /// `constraints` all rows (every rank's copy); `sum` the
   /// ordered sum over subdomains of F; `lumped`: S_s replaced by K_bb (no K_ii);
   /// `share_factors`: subdomains whose K_ii are bitwise equal factorize it once
   /// (SharedFactors). Keeps references to `local` and `sum`.
   DirichletPreconditioner(const std::vector<const SparseMatrix*>& operator_matrices,
-                          const std::vector<LocalConstraints>& local, const Constraints& constraints,
-                          const SubdomainSum& sum, int threads, bool lumped, bool share_factors);
+                          const std::vector<LocalConstraints>& local, const std::vector<int>& global_ids,
+                          const Constraints& constraints, const SubdomainSum& sum, int threads, bool lumped,
+                          bool share_factors);
   ~DirichletPreconditioner();
 
   /// y = M^{-1} x. Collective.

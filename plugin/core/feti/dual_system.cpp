@@ -37,7 +37,7 @@ void DualSolveSettings::validate() const {
 DualSystem::DualSystem(const SubdomainList& subdomains, const std::vector<int>& global_ids,
                        const std::vector<int>& owner, const std::vector<int>& bodies, Constraints constraints,
                        int threads, const Communicator& comm)
-    : subdomains_(subdomains), comm_(comm), constraints_(std::move(constraints)) {
+    : subdomains_(subdomains), global_ids_(global_ids), comm_(comm), constraints_(std::move(constraints)) {
   std::vector<Eigen::Index> sizes;
   for (const auto& s : subdomains) sizes.push_back(s->size());
   local_ = split_by_subdomain(constraints_, sizes, global_ids);
@@ -71,7 +71,7 @@ void DualSystem::use_preconditioner(DualPreconditioner kind, const std::vector<c
     preconditioner_.reset();
     return;
   }
-  preconditioner_ = std::make_unique<DirichletPreconditioner>(operator_matrices, local_, constraints_, *sum_, threads,
+  preconditioner_ = std::make_unique<DirichletPreconditioner>(operator_matrices, local_, global_ids_, constraints_, *sum_, threads,
                                                               kind == DualPreconditioner::lumped, share_factors);
 }
 

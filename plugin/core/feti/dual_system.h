@@ -241,6 +241,7 @@ class DualSystem {
   DualSolution solved_by_subdomains(const DualData& data, DualSolution result) const;  // the cholesky path
 
   const SubdomainList& subdomains_;
+  std::vector<int> global_ids_;  // of subdomains_, for errors that name a subdomain
   const Communicator& comm_;
   Constraints constraints_;
   std::vector<LocalConstraints> local_;
