@@ -142,6 +142,18 @@ TEST(CholmodFactor, AutomaticKeepsTheFillReducingOrderingWhereTheInterfaceBlockI
   EXPECT_FALSE(supernodal.interface_solves());
 }
 
+TEST(CholmodFactor, TheInterfaceOrderingPaysWhereAPassSkipsMuchOfTheFactorForFewFlops) {
+  // Figures of real subdomains (fill-reducing factor entries, entries a pass of F skips with
+  // the interface last, the factorization's extra flops).
+  EXPECT_TRUE(interface_ordering_pays(99325, 91069, 5.88e6));   // model problem, H/h = 64
+  EXPECT_TRUE(interface_ordering_pays(99325, 80986, 9.95e6));   // the same with a contact side
+  EXPECT_FALSE(interface_ordering_pays(12495, 113, 0));         // large contact zone: 92 % interface
+  EXPECT_FALSE(interface_ordering_pays(20852, 81, 0));
+  EXPECT_FALSE(interface_ordering_pays(1000, 600, 390 * 600));  // 3D box: too many flops per saved entry
+  EXPECT_FALSE(interface_ordering_pays(1000, 0, 0));
+  EXPECT_FALSE(interface_ordering_pays(1000, -50, 0));          // CAMD's factor larger
+}
+
 TEST(CholmodFactor, SharedAnalysisKeepsTheInterfaceOrdering) {
   std::vector<int> boundary, same;
   const SparseMatrix K = grid_laplacian(65, 0.01, &boundary);

@@ -29,6 +29,14 @@ enum class FactorKind { simplicial, supernodal, automatic };
 /// factor keeps the fill-reducing ordering.
 enum class InterfaceOrdering { fill_reducing, interface_last, automatic };
 
+/// Whether `automatic` orders the interface last: a pass of F then reads the factor's
+/// entries below the interface block only (`fill_entries` of the fill-reducing factor less
+/// `saved_entries`), for `extra_flops` more in the factorization. It pays where the saved
+/// entries are at least a third of the factor (a subset solve costs ~1.45 times a whole solve
+/// per entry it reads, measured on the large contact zone's subdomains) and cost at most 300
+/// extra flops each (docs/algorithms.md).
+bool interface_ordering_pays(double fill_entries, double saved_entries, double extra_flops);
+
 /// Flops per nonzero of L from which an automatic factor is supernodal (measured by
 /// scripts/factor_kinds.py; docs/algorithms.md).
 double supernodal_switch();

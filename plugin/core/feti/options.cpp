@@ -69,10 +69,11 @@ std::vector<Option> make_options() {
        "`\"interface\"` last (CHOLMOD's constrained minimum degree), so that a multiplication by the dual operator "
        "solves on the interface alone and reads only its block of the factor, for a factorization of 2-5 times the "
        "flops and a larger factor; `\"fill\"`: CHOLMOD's fill-reducing ordering alone (every solve reads the whole "
-       "factor); `\"auto\"`: interface last where the factor is simplicial and the extra factorization pays for "
-       "itself within about 90 multiplications (at most 300 extra flops per factor entry a multiplication no longer "
-       "reads: 2D subdomains; 3D ones, whose interfaces are large against their volume, keep the fill-reducing "
-       "ordering). fetiInfo's `interface_factors` counts them ([algorithms](algorithms.md))",
+       "factor); `\"auto\"`: interface last where the factor is simplicial, a multiplication then skips at least a "
+       "third of the factor, and the extra factorization pays for itself within about 90 multiplications (at most "
+       "300 extra flops per factor entry skipped): 2D subdomains with a thin interface; 3D ones, whose interfaces are "
+       "large against their volume, and subdomains that are nearly all interface keep the fill-reducing ordering. "
+       "fetiInfo's `interface_factors` counts them ([algorithms](algorithms.md))",
        [](SolverSettings& s, const OptionValue& v) {
          s.setup.ordering =
              pick(v, {InterfaceOrdering::automatic, InterfaceOrdering::fill_reducing, InterfaceOrdering::interface_last},
