@@ -10,6 +10,16 @@
 
 namespace ffeti {
 
+/// The threads a loop of parallel_for_each with threads <= 0 runs on: the runtime's current
+/// limit (the set-up's ThreadLimit).
+inline int available_threads() {
+#ifdef _OPENMP
+  return omp_get_max_threads();
+#else
+  return 1;
+#endif
+}
+
 /// Runs body(k) for k = 0..count-1 on `threads` OpenMP threads (<= 0: the runtime's
 /// current limit). Every item runs; then the exception of the lowest failing k, if any, is
 /// rethrown, so a bad input is named the same way whatever the threads' schedule.
@@ -17,7 +27,7 @@ template <class Body>
 void parallel_for_each(int count, int threads, Body&& body) {
   std::vector<std::exception_ptr> failures(static_cast<size_t>(count > 0 ? count : 0));
 #ifdef _OPENMP
-  const int team = threads > 0 ? threads : omp_get_max_threads();
+  const int team = threads > 0 ? threads : available_threads();
 #pragma omp parallel for schedule(dynamic) num_threads(team)
 #else
   (void)threads;

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstring>
 #include <stdexcept>
+#include <string>
 
 namespace ffeti {
 namespace {
@@ -26,6 +27,13 @@ constexpr double kExtraFlopsPerSavedEntry = 300;
 /// 28.5 against 19.6 us for the whole solve: ~1.45 times per entry read, so below about
 /// 1 - 1/1.45 = 0.31 the ordering loses whatever the flops.
 constexpr double kLeastSavedShare = 1.0 / 3.0;
+
+/// The error of a failed CHOLMOD solve; memory running out is named as such.
+std::runtime_error solve_failure(const cholmod_common& common) {
+  if (common.status == CHOLMOD_OUT_OF_MEMORY)
+    return std::runtime_error("a subdomain solve ran out of memory (CHOLMOD's solve workspace)");
+  return std::runtime_error("CHOLMOD solve failed (status " + std::to_string(common.status) + ")");
+}
 
 /// A cholmod_sparse header over Eigen's compressed column storage (no copy).
 cholmod_sparse view_lower(const SparseMatrix& A) {
@@ -243,7 +251,7 @@ void CholmodFactor::solve_on_interface(const Eigen::VectorXd& b_on_interface, Ei
   CholmodSolveWorkspace::Buffers& buffers = w.interface_;
   if (!cholmod_solve2(CHOLMOD_A, factor_, w.interface_rhs_, interface_set_, &buffers.solution, &w.reached_,
                       &buffers.y, &buffers.e, &w.common_))
-    throw std::runtime_error("CHOLMOD solve failed");
+    throw solve_failure(w.common_);
   const auto* solution = static_cast<const double*>(buffers.solution->x);
   x_on_interface.resize(count);
   for (Eigen::Index k = 0; k < count; ++k) x_on_interface[k] = solution[columns[k]];
@@ -265,7 +273,7 @@ void CholmodFactor::solve_columns(const double* b, Eigen::Index rows, Eigen::Ind
   cholmod_dense rhs = view_columns(b, rows, cols);
   if (!cholmod_solve2(CHOLMOD_A, factor_, &rhs, nullptr, &buffers.solution, nullptr, &buffers.y, &buffers.e,
                       &w.common_))
-    throw std::runtime_error("CHOLMOD solve failed");
+    throw solve_failure(w.common_);
   std::memcpy(x, buffers.solution->x, sizeof(double) * static_cast<size_t>(rows * cols));
 }
 

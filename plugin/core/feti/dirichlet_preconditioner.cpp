@@ -122,12 +122,11 @@ DirichletPreconditioner::~DirichletPreconditioner() = default;
 void DirichletPreconditioner::apply(const Vec& x, Vec& y) const {
   Stopwatch clock;
   scaled_ = row_gram_.solve(x);  // (B B')^{-1} x
-  const int count = static_cast<int>(local_.size());
-#pragma omp parallel for schedule(dynamic) num_threads(threads_)
-  for (int s = 0; s < count; ++s) {
+  // A failure (a K_ii solve out of memory) reaches every rank before the sum below.
+  parallel_for_each_on_every_rank(sum_.communicator(), static_cast<int>(local_.size()), threads_, [&](int s) {
     const auto k = static_cast<size_t>(s);
     const LocalConstraints& L = local_[k];
-    if (L.rows.empty()) continue;
+    if (L.rows.empty()) return;
     Block& b = *blocks_[k];
     b.gathered.resize(static_cast<Eigen::Index>(L.rows.size()));
     for (size_t r = 0; r < L.rows.size(); ++r) b.gathered[static_cast<Eigen::Index>(r)] = scaled_[L.rows[r]];
@@ -143,7 +142,7 @@ void DirichletPreconditioner::apply(const Vec& x, Vec& y) const {
     b.full.setZero();
     for (size_t i = 0; i < b.boundary.size(); ++i) b.full[b.boundary[i]] = b.yb[static_cast<Eigen::Index>(i)];
     results_[k].noalias() = L.B * b.full;
-  }
+  });
   flat_.clear();
   for (size_t k = 0; k < local_.size(); ++k)
     flat_.insert(flat_.end(), results_[k].data(), results_[k].data() + results_[k].size());

@@ -44,6 +44,12 @@ DualOperator::DualOperator(const SubdomainList& subdomains, const std::vector<Lo
   }
 }
 
+template <class Body>
+void DualOperator::on_subdomains(Body&& body) const {
+  parallel_for_each_on_every_rank(sum_.communicator(), static_cast<int>(subdomains_.size()), threads_,
+                                  [&](int s) { body(static_cast<size_t>(s)); });
+}
+
 double DualOperator::apply_on_subdomain(size_t i, const Vec& x, Eigen::Ref<Vec> result) const {
   for (size_t k = 0; k < local_[i].rows.size(); ++k)
     gathered_[i][static_cast<Eigen::Index>(k)] = x[local_[i].rows[k]];
@@ -64,29 +70,23 @@ double DualOperator::apply_on_subdomain(size_t i, const Vec& x, Eigen::Ref<Vec> 
 
 void DualOperator::apply(const Vec& x, Vec& y) const {
   Stopwatch clock;
-  const int count = static_cast<int>(subdomains_.size());
-  double solves = 0;
-#pragma omp parallel for schedule(dynamic) num_threads(threads_) reduction(+ : solves)
-  for (int s = 0; s < count; ++s) {
-    const auto i = static_cast<size_t>(s);
-    if (!local_[i].rows.empty()) solves += apply_on_subdomain(i, x, local_result_[i]);
-  }
+  std::vector<double> solves(subdomains_.size(), 0.0);
+  on_subdomains([&](size_t i) {
+    if (!local_[i].rows.empty()) solves[i] = apply_on_subdomain(i, x, local_result_[i]);
+  });
   sum_local_results(y);
   application_seconds_ += clock.seconds();
-  solve_seconds_ += solves;
+  for (double seconds : solves) solve_seconds_ += seconds;
   ++applications_;
 }
 
 void DualOperator::apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
   Stopwatch clock;
-  const int count = static_cast<int>(subdomains_.size());
   block_gathered_.resize(subdomains_.size()), block_rhs_.resize(subdomains_.size());
   block_solution_.resize(subdomains_.size()), block_result_.resize(subdomains_.size());
-  double solves = 0;
-#pragma omp parallel for schedule(dynamic) num_threads(threads_) reduction(+ : solves)
-  for (int s = 0; s < count; ++s) {
-    const auto i = static_cast<size_t>(s);
-    if (local_[i].rows.empty()) continue;
+  std::vector<double> solves(subdomains_.size(), 0.0);
+  on_subdomains([&](size_t i) {
+    if (local_[i].rows.empty()) return;
     Eigen::MatrixXd& gathered = block_gathered_[i];
     gathered.resize(static_cast<Eigen::Index>(local_[i].rows.size()), x.cols());
     for (size_t k = 0; k < local_[i].rows.size(); ++k)
@@ -109,22 +109,19 @@ void DualOperator::apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
     } else {
       subdomain.apply_pseudo_inverse(block_rhs_[i], block_solution_[i]);
     }
-    solves += solve_clock.seconds();
+    solves[i] = solve_clock.seconds();
     block_result_[i].noalias() = B * block_solution_[i];
-  }
+  });
   sum_block_results(x.cols(), y);
   application_seconds_ += clock.seconds();
-  solve_seconds_ += solves;
+  for (double seconds : solves) solve_seconds_ += seconds;
   applications_ += x.cols();
 }
 
 void DualOperator::apply_B_pseudo_inverse(const std::vector<Vec>& v, Vec& y) const {
-  const int count = static_cast<int>(subdomains_.size());
-#pragma omp parallel for schedule(dynamic) num_threads(threads_)
-  for (int s = 0; s < count; ++s) {
-    const auto i = static_cast<size_t>(s);
+  on_subdomains([&](size_t i) {
     if (!local_[i].rows.empty()) B_pseudo_inverse_on_subdomain(i, v[i], local_result_[i]);
-  }
+  });
   sum_local_results(y);
 }
 
@@ -139,17 +136,14 @@ void DualOperator::B_pseudo_inverse_on_subdomain(size_t i, const Vec& v, Eigen::
 }
 
 void DualOperator::apply_B_pseudo_inverse_and_F(const std::vector<Vec>& v, const Vec& x, Vec& Bv, Vec& Fx) const {
-  const int count = static_cast<int>(subdomains_.size());
   block_result_.resize(subdomains_.size());
-#pragma omp parallel for schedule(dynamic) num_threads(threads_)
-  for (int s = 0; s < count; ++s) {
-    const auto i = static_cast<size_t>(s);
-    if (local_[i].rows.empty()) continue;
+  on_subdomains([&](size_t i) {
+    if (local_[i].rows.empty()) return;
     Eigen::MatrixXd& result = block_result_[i];
     result.resize(static_cast<Eigen::Index>(local_[i].rows.size()), 2);
     B_pseudo_inverse_on_subdomain(i, v[i], result.col(0));
     apply_on_subdomain(i, x, result.col(1));
-  }
+  });
   Eigen::MatrixXd both;
   sum_block_results(2, both);
   Bv = both.col(0);
@@ -164,17 +158,14 @@ void DualOperator::apply_B(const std::vector<Vec>& u, Vec& y) const {
 
 void DualOperator::pseudo_inverse_of_residual(const std::vector<Vec>& v, const Vec& x,
                                               std::vector<Vec>& w) const {
-  const int count = static_cast<int>(subdomains_.size());
   w.resize(subdomains_.size());
-#pragma omp parallel for schedule(dynamic) num_threads(threads_)
-  for (int s = 0; s < count; ++s) {
-    const auto i = static_cast<size_t>(s);
+  on_subdomains([&](size_t i) {
     Vec rhs = v[i];
     for (size_t k = 0; k < local_[i].rows.size(); ++k)
       gathered_[i][static_cast<Eigen::Index>(k)] = x[local_[i].rows[k]];
     if (!local_[i].rows.empty()) rhs.noalias() -= local_[i].B.transpose() * gathered_[i];
     subdomains_[i]->apply_pseudo_inverse(rhs, w[i]);
-  }
+  });
 }
 
 double DualOperator::local_transpose_squared_norm(const Vec& x) const {

@@ -64,6 +64,10 @@ class DualOperator {
 
  private:
   void sum_local_results(Vec& y) const;
+  /// body(i) for every local subdomain i on the operator's threads; a failure in any (a
+  /// solve out of memory) is rethrown on every rank after all ran (rethrow_on_every_rank).
+  template <class Body>
+  void on_subdomains(Body&& body) const;
   /// result = B_s K_s^+ B_s' x_s for local subdomain i, as apply() defines it; returns the
   /// seconds of its solve.
   double apply_on_subdomain(size_t i, const Vec& x, Eigen::Ref<Vec> result) const;

@@ -27,4 +27,14 @@ void collectively(const Communicator& comm, const std::function<void()>& step) {
   if (!first.empty()) throw InputError(first);
 }
 
+void rethrow_on_every_rank(const Communicator& comm, const std::exception_ptr& failure) {
+  if (comm.size() == 1) {
+    if (failure) std::rethrow_exception(failure);
+    return;
+  }
+  if (comm.max(failure ? 1.0 : 0.0) > 0) collectively(comm, [&] {
+      if (failure) std::rethrow_exception(failure);
+    });
+}
+
 }  // namespace ffeti

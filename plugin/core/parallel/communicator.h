@@ -3,6 +3,9 @@
 // Every operation is collective: all ranks of the communicator call it, in the same order.
 #pragma once
 
+#include "base/parallel_for.h"
+
+#include <exception>
 #include <functional>
 #include <memory>
 #include <string>
@@ -53,5 +56,24 @@ class SerialCommunicator final : public Communicator {
 /// Runs `step` on every rank; if it throws on any rank, every rank throws an InputError
 /// with the lowest failing rank's message (prefixed by that rank when there are several).
 void collectively(const Communicator& comm, const std::function<void()>& step);
+
+/// If `failure` is set on any rank, every rank throws: on one rank the failure itself, on
+/// several an InputError with the lowest failing rank's message (collectively). Costs one
+/// reduction on several ranks.
+void rethrow_on_every_rank(const Communicator& comm, const std::exception_ptr& failure);
+
+/// parallel_for_each on this rank's items, then rethrow_on_every_rank: for a threaded loop
+/// that a collective step follows (a subdomain solve out of memory on one rank must not
+/// leave the others waiting in that step, nor end the process from inside a thread).
+template <class Body>
+void parallel_for_each_on_every_rank(const Communicator& comm, int count, int threads, Body&& body) {
+  std::exception_ptr failure;
+  try {
+    parallel_for_each(count, threads, std::forward<Body>(body));
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  rethrow_on_every_rank(comm, failure);
+}
 
 }  // namespace ffeti

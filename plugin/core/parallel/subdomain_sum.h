@@ -24,6 +24,7 @@ class SubdomainSum {
   void sum(const std::vector<double>& local, Eigen::VectorXd& y) const;
 
   const std::vector<int>& rows(int subdomain) const { return rows_[static_cast<size_t>(subdomain)]; }
+  const Communicator& communicator() const { return comm_; }
 
  private:
   std::vector<std::vector<int>> rows_;
