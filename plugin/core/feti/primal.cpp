@@ -1,5 +1,7 @@
 #include "feti/primal.h"
 
+#include "feti/upper_gram.h"
+
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
@@ -21,14 +23,15 @@ double safe_ratio(double a, double b) { return b > 0 ? a / b : a; }
 // subdomains (with a dense one of order 2016 a stopping-test check at n = 2048 took 0.85 s,
 // 0.31 s now; docs/results/scalability-reading.md). A body whose modes meet no row of S (a floating body with no
 // active contact) makes it singular; then the dense LDLT, which leaves the undetermined
-// modes at zero, decides, as it always did.
-Vec solve_normal_equations(const Eigen::SparseMatrix<double>& normal, const Vec& rhs) {
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> sparse(normal);
+// modes at zero, decides, as it always did. `upper`: the upper triangle of G_S G_S'.
+Vec solve_normal_equations(const Eigen::SparseMatrix<double>& upper, const Vec& rhs) {
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Upper> sparse(upper);
   if (sparse.info() == Eigen::Success) {
     const Vec d = sparse.vectorD().cwiseAbs();
     if (d.size() == 0 || d.minCoeff() > 1e-12 * d.maxCoeff()) return sparse.solve(rhs);
   }
-  return Eigen::MatrixXd(normal).ldlt().solve(rhs);
+  const Eigen::SparseMatrix<double> whole = upper.selfadjointView<Eigen::Upper>();
+  return Eigen::MatrixXd(whole).ldlt().solve(rhs);
 }
 
 }  // namespace
@@ -83,8 +86,13 @@ std::vector<Vec> recover_primal(const DualOperator& F, const CoarseSpace* coarse
   Vec Bu;
   F.apply_B(u, Bu);
   const Vec residual = (c - Bu).cwiseProduct(mask);
-  const Eigen::SparseMatrix<double, Eigen::RowMajor, int> GS = coarse->G() * mask.asDiagonal();
-  const Vec alpha = solve_normal_equations(GS * GS.transpose(), GS * residual);
+  // G_S: G's columns of S only (the others pruned, not kept as zeros), so that the Gram
+  // product of the threads (half of it) skips them: Eigen's whole serial G_S G_S' took
+  // a third of a check.
+  Eigen::SparseMatrix<double, Eigen::RowMajor, int> GS = coarse->G() * mask.asDiagonal();
+  GS.prune(0.0);
+  const Eigen::SparseMatrix<double> normal = upper_gram(GS);
+  const Vec alpha = solve_normal_equations(normal, GS * residual);
   coarse->add_kernel_component(alpha, u);
   return u;
 }
