@@ -2,7 +2,7 @@
 #pragma once
 
 #include <exception>
-#include <vector>
+#include <mutex>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -22,10 +22,13 @@ inline int available_threads() {
 
 /// Runs body(k) for k = 0..count-1 on `threads` OpenMP threads (<= 0: the runtime's
 /// current limit). Every item runs; then the exception of the lowest failing k, if any, is
-/// rethrown, so a bad input is named the same way whatever the threads' schedule.
+/// rethrown, so a bad input is named the same way whatever the threads' schedule. Nothing
+/// is allocated: the dual operator runs its applications through it.
 template <class Body>
 void parallel_for_each(int count, int threads, Body&& body) {
-  std::vector<std::exception_ptr> failures(static_cast<size_t>(count > 0 ? count : 0));
+  std::mutex guard;
+  int first_failing = count;
+  std::exception_ptr failure;
 #ifdef _OPENMP
   const int team = threads > 0 ? threads : available_threads();
 #pragma omp parallel for schedule(dynamic) num_threads(team)
@@ -36,11 +39,11 @@ void parallel_for_each(int count, int threads, Body&& body) {
     try {
       body(k);
     } catch (...) {
-      failures[static_cast<size_t>(k)] = std::current_exception();
+      const std::lock_guard<std::mutex> lock(guard);
+      if (k < first_failing) first_failing = k, failure = std::current_exception();
     }
   }
-  for (const std::exception_ptr& failure : failures)
-    if (failure) std::rethrow_exception(failure);
+  if (failure) std::rethrow_exception(failure);
 }
 
 }  // namespace ffeti

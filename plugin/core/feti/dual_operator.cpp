@@ -70,7 +70,8 @@ double DualOperator::apply_on_subdomain(size_t i, const Vec& x, Eigen::Ref<Vec> 
 
 void DualOperator::apply(const Vec& x, Vec& y) const {
   Stopwatch clock;
-  std::vector<double> solves(subdomains_.size(), 0.0);
+  std::vector<double>& solves = subdomain_solve_seconds_;
+  solves.assign(subdomains_.size(), 0.0);  // no allocation after the first application
   on_subdomains([&](size_t i) {
     if (!local_[i].rows.empty()) solves[i] = apply_on_subdomain(i, x, local_result_[i]);
   });
@@ -84,7 +85,8 @@ void DualOperator::apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
   Stopwatch clock;
   block_gathered_.resize(subdomains_.size()), block_rhs_.resize(subdomains_.size());
   block_solution_.resize(subdomains_.size()), block_result_.resize(subdomains_.size());
-  std::vector<double> solves(subdomains_.size(), 0.0);
+  std::vector<double>& solves = subdomain_solve_seconds_;
+  solves.assign(subdomains_.size(), 0.0);  // no allocation after the first application
   on_subdomains([&](size_t i) {
     if (local_[i].rows.empty()) return;
     Eigen::MatrixXd& gathered = block_gathered_[i];

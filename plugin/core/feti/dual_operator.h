@@ -88,6 +88,7 @@ class DualOperator {
   mutable std::vector<Eigen::MatrixXd> block_gathered_, block_rhs_, block_solution_, block_result_;
   mutable Vec column_;
   mutable double application_seconds_ = 0, solve_seconds_ = 0;
+  mutable std::vector<double> subdomain_solve_seconds_;  // of one application, per subdomain
   mutable long applications_ = 0;
   mutable std::vector<double> flat_;
 };
