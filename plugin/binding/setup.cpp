@@ -11,6 +11,7 @@
 #include "parallel/mpi_communicator.h"
 #include "parallel/ownership.h"
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
@@ -45,18 +46,24 @@ class FetiSetup : public WithNamedArguments {
   // Named parameters by position in name_param: these, then the set-up options.
   enum Named { kDirichlet, kDirichletValues, kSlave, kMaster, kGap, kComponent, kComm, kSegments, kObstacle,
                kRadius, kContactGap, kFriction, kSlipBound, kFrictionField, kZ, kFaces, kSlaveFaces, kBall, kSlipBoundField,
-               kOptions };
+               kStiffnessOf, kOptions };
 
   long setup(Stack stack) const {
     auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
     const std::shared_ptr<const Communicator> comm =
         communicator(nargs[kComm] ? GetAny<pcommworld>((*nargs[kComm])(stack)) : nullptr);
-    const long count = Ks.N();
+    const std::vector<long> stiffness_of = matrix_of_subdomain(stack);
+    const auto count = static_cast<long>(stiffness_of.size());
+    // A subdomain is assembled on a rank where its matrix is (and, for a shared matrix,
+    // its load too: every rank may hold the few shared matrices).
+    auto& Fs = *GetAny<KN<KN<double>>*>((*F)(stack));
     std::vector<long long> assembled(static_cast<size_t>(count), 0);
-    for (long s = 0; s < count; ++s) assembled[static_cast<size_t>(s)] = Ks[s].pHM() && Ks[s].pHM()->n > 0;
-    // Conversion errors are raised on every rank together, or the others would wait.
     collectively(*comm, [&] { check_array_sizes(stack, count); });
-    const std::vector<int> owner = subdomain_owners(assembled, *comm);
+    for (long s = 0; s < count; ++s) {
+      const long m = stiffness_of[static_cast<size_t>(s)];
+      assembled[static_cast<size_t>(s)] = Ks[m].pHM() && Ks[m].pHM()->n > 0 && (!nargs[kStiffnessOf] || Fs[s].N() > 0);
+    }
+    const std::vector<int> owner = subdomain_owners(assembled, *comm, nargs[kStiffnessOf] ? "F" : "K");
     std::vector<int> ids;
     for (long s = 0; s < count; ++s)
       if (owner[static_cast<size_t>(s)] == comm->rank()) ids.push_back(static_cast<int>(s));
@@ -66,7 +73,7 @@ class FetiSetup : public WithNamedArguments {
     collectively(*comm, [&] {
       settings = setup_settings(stack);
       if (settings.threads == 0) settings.threads = default_threads_per_rank(*comm);
-      subdomains = subdomain_inputs(stack, ids, settings.threads);
+      subdomains = subdomain_inputs(stack, ids, stiffness_of, settings.threads);
       std::vector<long> dofs;
       for (const SubdomainInput& sub : subdomains) dofs.push_back(sub.K.rows());
       add_dirichlet_and_components(stack, count, ids, dofs, subdomains);
@@ -76,8 +83,28 @@ class FetiSetup : public WithNamedArguments {
                                                     settings, comm));
   }
 
-  /// F, X, Y, body and Z need one entry per subdomain, as K has.
+  /// The entry of K each subdomain's stiffness is: stiffnessOf= where given (checked against
+  /// K's size; the same on every rank, as the script's other arrays), else subdomain s has K[s].
+  std::vector<long> matrix_of_subdomain(Stack stack) const {
+    const long matrices = GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack))->N();
+    std::vector<long> of;
+    if (const auto* given = optional_pointer<KN<long>>(nargs[kStiffnessOf], stack)) {
+      for (long s = 0; s < given->N(); ++s) {
+        const long m = (*given)[s];
+        if (m < 0 || m >= matrices)
+          throw InputError("stiffnessOf[" + std::to_string(s) + "]: is " + std::to_string(m) + ", K has " +
+                           std::to_string(matrices) + " matrices (0 to " + std::to_string(matrices - 1) + ")");
+        of.push_back(m);
+      }
+    } else {
+      for (long s = 0; s < matrices; ++s) of.push_back(s);
+    }
+    return of;
+  }
+
+  /// F, X, Y, body and Z need one entry per subdomain, as K (or stiffnessOf=) has.
   void check_array_sizes(Stack stack, long count) const {
+    const std::string counted_by = nargs[kStiffnessOf] ? "stiffnessOf has " : "K has ";
     const std::pair<const char*, long> sizes[] = {{"F", GetAny<KN<KN<double>>*>((*F)(stack))->N()},
                                                   {"X", GetAny<KN<KN<double>>*>((*X)(stack))->N()},
                                                   {"Y", GetAny<KN<KN<double>>*>((*Y)(stack))->N()},
@@ -86,24 +113,37 @@ class FetiSetup : public WithNamedArguments {
                                                                   : count}};
     for (const auto& [name, n] : sizes)
       if (n != count)
-        throw InputError(std::string(name) + ": has " + std::to_string(n) + " entries, K has " +
-                         std::to_string(count) + " subdomains");
+        throw InputError(std::string(name) + ": has " + std::to_string(n) + " entries, " + counted_by +
+                         std::to_string(count) + (nargs[kStiffnessOf] ? " (one per subdomain)" : " subdomains"));
   }
 
   /// K, F, coordinates and body of the subdomains `ids` this rank holds, converted on
-  /// `threads` threads (FreeFEM's arrays are only read).
-  std::vector<SubdomainInput> subdomain_inputs(Stack stack, const std::vector<int>& ids, int threads) const {
+  /// `threads` threads (FreeFEM's arrays are only read). Each matrix of K is converted once
+  /// and held once, whatever the number of subdomains that share it (`stiffness_of`).
+  std::vector<SubdomainInput> subdomain_inputs(Stack stack, const std::vector<int>& ids,
+                                               const std::vector<long>& stiffness_of, int threads) const {
     auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
     auto& Fs = *GetAny<KN<KN<double>>*>((*F)(stack));
     auto& Xs = *GetAny<KN<KN<double>>*>((*X)(stack));
     auto& Ys = *GetAny<KN<KN<double>>*>((*Y)(stack));
     auto& bodies = *GetAny<KN<long>*>((*body)(stack));
     const auto* Zs = optional_pointer<KN<KN<double>>>(nargs[kZ], stack);
+    std::vector<long> matrices;  // the entries of K these subdomains use, each once
+    for (int s : ids) matrices.push_back(stiffness_of[static_cast<size_t>(s)]);
+    std::sort(matrices.begin(), matrices.end());
+    matrices.erase(std::unique(matrices.begin(), matrices.end()), matrices.end());
+    std::vector<SharedMatrix> converted(matrices.size());
+    parallel_for_each(static_cast<int>(matrices.size()), threads, [&](int k) {
+      const long m = matrices[static_cast<size_t>(k)];
+      const std::string name = "K[" + std::to_string(m) + "]";
+      converted[static_cast<size_t>(k)] = SharedMatrix(to_sparse(Ks[m], name), name);
+    });
     std::vector<SubdomainInput> subdomains(ids.size());
     parallel_for_each(static_cast<int>(ids.size()), threads, [&](int k) {
       const int s = ids[static_cast<size_t>(k)];
       SubdomainInput& sub = subdomains[static_cast<size_t>(k)];
-      sub.K = to_sparse(Ks[s], "K[" + std::to_string(s) + "]");
+      const auto m = std::lower_bound(matrices.begin(), matrices.end(), stiffness_of[static_cast<size_t>(s)]);
+      sub.K = converted[static_cast<size_t>(m - matrices.begin())];
       sub.f = to_vec(Fs[s]);
       sub.x = to_std(Xs[s]);
       sub.y = to_std(Ys[s]);
@@ -252,7 +292,7 @@ NamedParameters FetiSetup::name_param = named_parameters(
      {"slipBound", &typeid(double)},             {"frictionField", &typeid(KN<KN<double>>*)},
      {"Z", &typeid(KN<KN<double>>*)},             {"contactFaces", &typeid(KN<KN<long>>*)},
      {"contactSlaveFaces", &typeid(KN<KN<long>>*)}, {"obstacleBall", &typeid(KN<double>*)},
-     {"slipBoundField", &typeid(KN<KN<double>>*)}},
+     {"slipBoundField", &typeid(KN<KN<double>>*)}, {"stiffnessOf", &typeid(KN<long>*)}},
     OptionScope::setup);
 
 // ---- fetiSetLoads(P, F, dirichletValues=D, contactGap=G): the next load case, load step

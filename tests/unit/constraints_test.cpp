@@ -91,8 +91,8 @@ SubdomainInput vector_nodes(std::vector<std::array<double, 2>> nodes, int body) 
   for (const auto& node : nodes)
     for (int c = 0; c < 2; ++c) s.x.push_back(node[0]), s.y.push_back(node[1]), s.component.push_back(c);
   const auto n = static_cast<Eigen::Index>(s.x.size());
-  s.K.resize(n, n);
-  s.K.setIdentity();
+  s.K.edit().resize(n, n);
+  s.K.edit().setIdentity();
   s.f = Vec::Zero(n);
   s.body = body;
   return s;

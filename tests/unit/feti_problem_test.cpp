@@ -78,7 +78,7 @@ DualPieces dual_pieces(const test::MembraneOptions& o, InterfaceOrdering orderin
     for (size_t k = 0; k < p.local[s].rows.size(); ++k)
       for (int j = 0; j < ns; ++j) p.B(p.local[s].rows[k], offset + j) = p.local[s].B.coeff(static_cast<int>(k), j);
     p.Kplus_dense.block(offset, offset, ns, ns) =
-        Eigen::MatrixXd(p.subs[s].K).completeOrthogonalDecomposition().pseudoInverse();
+        Eigen::MatrixXd(p.subs[s].K.get()).completeOrthogonalDecomposition().pseudoInverse();
     const Eigen::MatrixXd& Rs = p.subdomains[s]->kernel();
     p.R.block(offset, column, ns, Rs.cols()) = Rs;
     offset += ns, column += static_cast<int>(Rs.cols());
@@ -137,7 +137,7 @@ TEST_P(DualOperatorOrdering, CoerciveOperatorMatchesDenseExplicit) {
   std::vector<SubdomainInput> subs = test::membrane_subdomains(o);
   // Regularize every subdomain with a mass-like diagonal so that none floats.
   for (auto& s : subs) {
-    for (Eigen::Index i = 0; i < s.K.rows(); ++i) s.K.coeffRef(i, i) += 0.1;
+    for (Eigen::Index i = 0; i < s.K.rows(); ++i) s.K.edit().coeffRef(i, i) += 0.1;
     s.dirichlet_dofs.clear();
   }
   const Constraints c = build_constraints(subs, {}, FetiVariant::feti1);
@@ -157,7 +157,7 @@ TEST_P(DualOperatorOrdering, CoerciveOperatorMatchesDenseExplicit) {
   Eigen::MatrixXd F_dense = Eigen::MatrixXd::Zero(m, m);
   for (size_t s = 0; s < subs.size(); ++s) {
     const Eigen::MatrixXd Bs = Eigen::MatrixXd(local[s].B);
-    const Eigen::MatrixXd block = Bs * Eigen::MatrixXd(subs[s].K).inverse() * Bs.transpose();
+    const Eigen::MatrixXd block = Bs * Eigen::MatrixXd(subs[s].K.get()).inverse() * Bs.transpose();
     for (size_t a = 0; a < local[s].rows.size(); ++a)
       for (size_t b = 0; b < local[s].rows.size(); ++b)
         F_dense(local[s].rows[a], local[s].rows[b]) += block(a, b);
@@ -486,7 +486,7 @@ TEST(FetiProblem, SubdomainsDifferingInOneValueDoNotShare) {
   const ContactInput contact = test::membrane_contact(subs);
   // A stiffer material in one interior box of body 1: same pattern, other values.
   const auto changed = static_cast<size_t>(16 + 5);
-  subs[changed].K *= 1.0 + 1e-15;
+  subs[changed].K.edit() *= 1.0 + 1e-15;
   const FetiProblem problem(std::move(subs), contact);
   auto same = test::membrane_subdomains(test::membrane_options(32, 4));
   const FetiProblem reference(std::move(same), contact);
@@ -564,20 +564,20 @@ TEST(FetiProblem, BadInputIsAnErrorNamingTheArgument) {
   wrong_start.start = Vec::Zero(problem.constraints().rows());
   wrong_start.start[0] = NAN;
   expect_input_error([&] { problem.solve(wrong_start); }, "start: has entries that are not finite");
-  expect_input_error([&] { make([](auto& s) { s[2].K.coeffRef(0, 1) += 1.0; }); }, "K[2]: not symmetric");
+  expect_input_error([&] { make([](auto& s) { s[2].K.edit().coeffRef(0, 1) += 1.0; }); }, "K[2]: not symmetric");
   // An entry whose mirror is not stored at all, above and below the diagonal.
-  expect_input_error([&] { make([](auto& s) { s[2].K.coeffRef(0, s[2].K.cols() - 1) = 1.0; }); }, "K[2]: not symmetric");
-  expect_input_error([&] { make([](auto& s) { s[1].K.coeffRef(s[1].K.rows() - 1, 0) = 1.0; }); }, "K[1]: not symmetric");
+  expect_input_error([&] { make([](auto& s) { s[2].K.edit().coeffRef(0, s[2].K.cols() - 1) = 1.0; }); }, "K[2]: not symmetric");
+  expect_input_error([&] { make([](auto& s) { s[1].K.edit().coeffRef(s[1].K.rows() - 1, 0) = 1.0; }); }, "K[1]: not symmetric");
   // Checked on threads, named as a serial loop would: the lowest bad subdomain.
   expect_input_error([&] {
     make([](auto& s) {
-      s[3].K.coeffRef(0, 1) += 1.0;
+      s[3].K.edit().coeffRef(0, 1) += 1.0;
       s[1].f[0] = NAN;
     });
   }, "F[1]");
   expect_input_error([&] { make([](auto& s) { s[1].f.conservativeResize(3); }); }, "F[1]");
   expect_input_error([&] { make([](auto& s) { s[3].f[0] = NAN; }); }, "F[3]");
-  expect_input_error([&] { make([](auto& s) { s[0].K.coeffRef(0, 0) = INFINITY; }); }, "K[0]");
+  expect_input_error([&] { make([](auto& s) { s[0].K.edit().coeffRef(0, 0) = INFINITY; }); }, "K[0]");
   expect_input_error([&] { make([](auto& s) { s[1].x.pop_back(); }); }, "X[1]");
   expect_input_error([&] { make([](auto& s) { s[0].dirichlet_dofs.push_back(100000); }); }, "dirichlet[0]");
   expect_input_error([&] { make([](auto& s) { s[2].y[5] = NAN; }); }, "X[2], Y[2]: the coordinates of dof 5");
@@ -609,9 +609,9 @@ TEST(FetiProblem, BadInputIsAnErrorNamingTheArgument) {
       expect_input_error([&] {
         auto subs = test::membrane_subdomains(test::membrane_options(8, 2));
         const ContactInput contact = test::membrane_contact(subs);
-        const double d = subs[static_cast<size_t>(s)].K.coeff(12, 12);
-        subs[static_cast<size_t>(s)].K.coeffRef(12, 13) += 5 * d;
-        subs[static_cast<size_t>(s)].K.coeffRef(13, 12) += 5 * d;
+        const double d = subs[static_cast<size_t>(s)].K.get().coeff(12, 12);
+        subs[static_cast<size_t>(s)].K.edit().coeffRef(12, 13) += 5 * d;
+        subs[static_cast<size_t>(s)].K.edit().coeffRef(13, 12) += 5 * d;
         FetiSetupSettings setup;
         setup.variant = variant;
         FetiProblem problem(std::move(subs), contact, setup);

@@ -171,7 +171,7 @@ std::vector<NodeForces> undivided_dual(const NodeBound& bound, double turn) {
     rows.push_back({unit_row(2, -1), kGap, {unit_row(0, 1), unit_row(1, 1)}, bound(at.back())});
   }
   const std::vector<ReferenceForces> forces =
-      friction_dual(Eigen::MatrixXd(block.K), block.f, block.dirichlet_dofs, block.dirichlet_values, rows);
+      friction_dual(Eigen::MatrixXd(block.K.get()), block.f, block.dirichlet_dofs, block.dirichlet_values, rows);
   std::vector<NodeForces> out;
   for (size_t k = 0; k < rows.size(); ++k)
     out.push_back({at[k], {forces[k].normal, forces[k].tangential[0], forces[k].tangential[1]}});

@@ -177,7 +177,7 @@ std::vector<NodeForces> ball_reference(const RowBound& bound) {
     rows.push_back({on_slave(normal, -1), distance - kRadius, {on_slave(a, 1), on_slave(b, 1)}, bound(at.back())});
     tangents.push_back({a, b});
   }
-  return reference_forces(friction_dual(Eigen::MatrixXd(block.K), block.f, block.dirichlet_dofs, block.dirichlet_values, rows),
+  return reference_forces(friction_dual(Eigen::MatrixXd(block.K.get()), block.f, block.dirichlet_dofs, block.dirichlet_values, rows),
                           at, tangents);
 }
 

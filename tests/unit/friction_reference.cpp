@@ -78,7 +78,7 @@ SubdomainInput mirrored(SubdomainInput body) {
   for (double& v : last) v = -v;
   const int flipped = three_d ? 2 : 1;
   const auto sign = [&](Eigen::Index dof) { return body.component[static_cast<size_t>(dof)] == flipped ? -1.0 : 1.0; };
-  for (int k = 0; k < body.K.outerSize(); ++k)
+  for (int k = 0; k < body.K.get().outerSize(); ++k)
     for (SparseMatrix::InnerIterator it(body.K, k); it; ++it) it.valueRef() *= sign(it.row()) * sign(it.col());
   for (Eigen::Index i = 0; i < body.f.size(); ++i) body.f[i] *= sign(i);
   for (size_t k = 0; k < body.dirichlet_dofs.size(); ++k) body.dirichlet_values[k] *= sign(body.dirichlet_dofs[k]);

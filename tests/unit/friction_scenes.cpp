@@ -73,8 +73,8 @@ Undivided side_by_side(const SubdomainInput& a, const SubdomainInput& b) {
   u.offset = a.K.rows();
   const Eigen::Index n = a.K.rows() + b.K.rows();
   u.K = Eigen::MatrixXd::Zero(n, n);
-  u.K.topLeftCorner(a.K.rows(), a.K.rows()) = Eigen::MatrixXd(a.K);
-  u.K.bottomRightCorner(b.K.rows(), b.K.rows()) = Eigen::MatrixXd(b.K);
+  u.K.topLeftCorner(a.K.rows(), a.K.rows()) = Eigen::MatrixXd(a.K.get());
+  u.K.bottomRightCorner(b.K.rows(), b.K.rows()) = Eigen::MatrixXd(b.K.get());
   u.f = Vec(n);
   u.f << a.f, b.f;
   u.fixed = a.dirichlet_dofs, u.values = a.dirichlet_values;

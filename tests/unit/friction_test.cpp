@@ -55,7 +55,7 @@ Reference enumerated(const Eigen::VectorXd& g, const Eigen::VectorXd& slip_refer
   for (size_t k = 0; k < block.dirichlet_dofs.size(); ++k) fixed_at[static_cast<size_t>(block.dirichlet_dofs[k])] = static_cast<int>(k);
   for (int i = 0; i < n; ++i)
     if (fixed_at[static_cast<size_t>(i)] < 0) free.push_back(i);
-  const Eigen::MatrixXd K(block.K);
+  const Eigen::MatrixXd K(block.K.get());
   const int nf = static_cast<int>(free.size());
   Eigen::MatrixXd Kff(nf, nf);
   Eigen::VectorXd f(nf);

@@ -53,9 +53,9 @@ SubdomainInput p1_rectangle(double x0, double y0, double w, double h, int nx, in
       add_triangle(id(i, j), id(i + 1, j), id(i + 1, j + 1));
       add_triangle(id(i, j), id(i + 1, j + 1), id(i, j + 1));
     }
-  s.K.resize(n, n);
-  s.K.setFromTriplets(entries.begin(), entries.end());
-  s.K.makeCompressed();
+  s.K.edit().resize(n, n);
+  s.K.edit().setFromTriplets(entries.begin(), entries.end());
+  s.K.edit().makeCompressed();
   return s;
 }
 
@@ -67,8 +67,8 @@ SubdomainInput two_components(const SubdomainInput& scalar) {
   for (int j = 0; j < n; ++j)
     for (SparseMatrix::InnerIterator it(scalar.K, j); it; ++it)
       for (int c = 0; c < 2; ++c) entries.emplace_back(2 * it.row() + c, 2 * j + c, it.value());
-  v.K.resize(2 * n, 2 * n);
-  v.K.setFromTriplets(entries.begin(), entries.end());
+  v.K.edit().resize(2 * n, 2 * n);
+  v.K.edit().setFromTriplets(entries.begin(), entries.end());
   v.f = Vec::Zero(2 * n);
   for (int k = 0; k < n; ++k)
     for (int c = 0; c < 2; ++c) v.x.push_back(scalar.x[k]), v.y.push_back(scalar.y[k]), v.component.push_back(c);

@@ -39,8 +39,8 @@ SubdomainInput elastic_block(double x0, double w, double h, int nx, int ny, doub
   };
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) triangle(id(i, j), id(i + 1, j), id(i + 1, j + 1)), triangle(id(i, j), id(i + 1, j + 1), id(i, j + 1));
-  s.K.resize(2 * nodes, 2 * nodes);
-  s.K.setFromTriplets(entries.begin(), entries.end());
+  s.K.edit().resize(2 * nodes, 2 * nodes);
+  s.K.edit().setFromTriplets(entries.begin(), entries.end());
   s.f = Vec::Zero(2 * nodes);
   for (int i = 0; i <= nx; ++i) {
     s.dirichlet_dofs.insert(s.dirichlet_dofs.end(), {2 * id(i, ny), 2 * id(i, ny) + 1});

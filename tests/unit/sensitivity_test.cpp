@@ -63,7 +63,7 @@ struct MembraneDesign {
   std::vector<SubdomainInput> at(double alpha) const {
     auto subs = base;
     for (size_t s = 0; s < subs.size(); ++s) {
-      subs[s].K *= 1 + alpha * w[s];
+      subs[s].K.edit() *= 1 + alpha * w[s];
       subs[s].f *= 1 + alpha * v[s];
     }
     return subs;
@@ -71,7 +71,7 @@ struct MembraneDesign {
   DesignDerivative derivative() const {
     DesignDerivative d;
     for (size_t s = 0; s < base.size(); ++s) {
-      d.dK.push_back(base[s].K * w[s]);
+      d.dK.push_back(base[s].K.get() * w[s]);
       d.df.push_back(base[s].f * v[s]);
     }
     return d;

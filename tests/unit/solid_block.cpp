@@ -73,7 +73,7 @@ SubdomainInput solid_block(double x0, const std::array<double, 3>& size, const s
       for (int b = 0; b < 3; ++b) turn_entries.emplace_back(3 * n + a, 3 * n + b, Q(a, b));
   blocks.setFromTriplets(turn_entries.begin(), turn_entries.end());
   SubdomainInput out;
-  out.K = blocks * K * SparseMatrix(blocks.transpose());
+  out.K = SparseMatrix(blocks * K * SparseMatrix(blocks.transpose()));
   out.f = Vec::Zero(3 * nodes);
   const Eigen::Vector3d moved = Q * Eigen::Vector3d(top[0], top[1], top[2]);
   for (int n = 0; n < nodes; ++n) {

@@ -140,7 +140,7 @@ SubdomainInput triangle_nodes(double z, int body, bool midpoints) {
     for (int b = 0; b < 3; ++b)
       if (a != b) entries.emplace_back(3 * a, 3 * b, -0.1);
   s.K = SparseMatrix(n, n);
-  s.K.setFromTriplets(entries.begin(), entries.end());
+  s.K.edit().setFromTriplets(entries.begin(), entries.end());
   s.f = Vec::Zero(n);
   s.body = body;
   return s;

@@ -43,7 +43,7 @@ SubdomainInput box_corners(double x0) {
   SubdomainInput s;
   for (int k = 0; k < 8; ++k) s.x.push_back(x0 + (k & 1)), s.y.push_back((k >> 1) & 1), s.z.push_back((k >> 2) & 1);
   s.K = SparseMatrix(8, 8);
-  s.K.setIdentity();
+  s.K.edit().setIdentity();
   s.f = Vec::Zero(8);
   return s;
 }
@@ -93,7 +93,7 @@ SubdomainInput vector_nodes3(const std::vector<std::array<double, 3>>& nodes, in
       s.x.push_back(node[0]), s.y.push_back(node[1]), s.z.push_back(node[2]), s.component.push_back(c);
   const auto n = static_cast<Eigen::Index>(s.x.size());
   s.K = SparseMatrix(n, n);
-  s.K.setIdentity();
+  s.K.edit().setIdentity();
   s.f = Vec::Zero(n);
   s.body = body;
   return s;

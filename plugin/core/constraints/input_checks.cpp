@@ -11,14 +11,14 @@
 #include <cmath>
 #include <string>
 #include <tuple>
+#include <unordered_set>
 
 namespace ffeti {
 namespace {
 
 std::string indexed(const char* name, size_t s) { return std::string(name) + "[" + std::to_string(s) + "]"; }
 
-void check_stiffness(const SparseMatrix& K, size_t s) {
-  const std::string name = indexed("K", s);
+void check_stiffness(const SparseMatrix& K, const std::string& name) {
   if (K.rows() == 0) throw InputError(name + ": empty matrix");
   if (K.rows() != K.cols())
     throw InputError(name + ": not square (" + std::to_string(K.rows()) + " x " +
@@ -26,7 +26,7 @@ void check_stiffness(const SparseMatrix& K, size_t s) {
   if (!K.isCompressed()) {  // the walk below reads compressed columns
     SparseMatrix compressed = K;
     compressed.makeCompressed();
-    return check_stiffness(compressed, s);
+    return check_stiffness(compressed, name);
   }
   const double scale = K.coeffs().size() ? K.coeffs().cwiseAbs().maxCoeff() : 0.0;
   if (!std::isfinite(scale)) throw InputError(name + ": has a non-finite entry (nan or inf)");
@@ -136,14 +136,16 @@ void check_dof_field(const std::vector<std::vector<double>>& field, const std::v
   }
 }
 
-/// One subdomain's own data: K, F, coordinates, body, components and Dirichlet lists;
-/// `first` (named `first_id`) is the subdomain whose dimension every other must share.
-void check_subdomain(const SubdomainInput& sub, size_t s, const SubdomainInput& first, size_t first_id) {
-  check_stiffness(sub.K, s);
+/// One subdomain's own data: K (unless `check_K` is false: a matrix shared with a subdomain
+/// checked before), F, coordinates, body, components and Dirichlet lists; `first` (named
+/// `first_id`) is the subdomain whose dimension every other must share.
+void check_subdomain(const SubdomainInput& sub, size_t s, bool check_K, const SubdomainInput& first, size_t first_id) {
+  const std::string K_name = sub.K.name().empty() ? indexed("K", s) : sub.K.name();
+  if (check_K) check_stiffness(sub.K, K_name);
   const auto n = static_cast<size_t>(sub.K.rows());
   if (static_cast<size_t>(sub.f.size()) != n)
-    throw InputError(indexed("F", s) + ": has " + std::to_string(sub.f.size()) +
-                     " entries, K" + "[" + std::to_string(s) + "] has " + std::to_string(n) + " rows");
+    throw InputError(indexed("F", s) + ": has " + std::to_string(sub.f.size()) + " entries, " + K_name + " has " +
+                     std::to_string(n) + " rows");
   if (!sub.f.allFinite()) throw InputError(indexed("F", s) + ": has a non-finite entry");
   if (sub.x.size() != n || sub.y.size() != n)
     throw InputError(indexed("X", s) + ", " + indexed("Y", s) + ": need one coordinate per dof (" +
@@ -198,9 +200,14 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
                     const std::vector<int>& global_ids) {
   const std::vector<size_t> ids = message_ids(subdomains.size(), global_ids);
   // Thousands of subdomains check on the set-up's threads (the symmetry test reads every
-  // entry of every K); the error named is the lowest subdomain's, as in a serial loop.
+  // entry of every K, once per matrix where subdomains share one); the error named is the
+  // lowest subdomain's, as in a serial loop.
+  std::vector<char> checks_K(subdomains.size(), 1);
+  std::unordered_set<const SparseMatrix*> seen;
+  for (size_t k = 0; k < subdomains.size(); ++k) checks_K[k] = seen.insert(&subdomains[k].K.get()).second;
   parallel_for_each(static_cast<int>(subdomains.size()), 0, [&](int k) {
-    check_subdomain(subdomains[static_cast<size_t>(k)], ids[static_cast<size_t>(k)], subdomains.front(), ids.front());
+    const auto at = static_cast<size_t>(k);
+    check_subdomain(subdomains[at], ids[at], checks_K[at] != 0, subdomains.front(), ids.front());
   });
   // contact.three_d: set by a parallel set-up for a rank that may hold no subdomain.
   const bool three_d = contact.three_d || (!subdomains.empty() && !subdomains.front().z.empty());

@@ -178,7 +178,7 @@ void FetiProblem::precondition(DualSystem& system, DualPreconditioner kind) cons
       eliminated.push_back(eliminate_dirichlet(in.K, in.dirichlet_dofs));
       operator_matrices.push_back(&eliminated.back());
     } else {
-      operator_matrices.push_back(&in.K);
+      operator_matrices.push_back(&in.K.get());
     }
   }
   // A rank's failure (a K_ii not positive definite) fails every rank: none waits on it later.
@@ -220,7 +220,7 @@ void FetiProblem::factorize(const Constraints& constraints) {
       const bool eliminates = eliminate && !in.dirichlet_dofs.empty();
       if (eliminates) eliminated[static_cast<size_t>(k)] = eliminate_dirichlet(in.K, in.dirichlet_dofs);
       subdomains_[static_cast<size_t>(k)] = std::make_unique<Subdomain>(
-          global_ids_[static_cast<size_t>(k)], eliminates ? eliminated[static_cast<size_t>(k)] : in.K,
+          global_ids_[static_cast<size_t>(k)], eliminates ? eliminated[static_cast<size_t>(k)] : in.K.get(),
           candidate_kernel(in.x, in.y, in.component, in.z), settings_.factor, settings_.ordering, &shared,
           touched_dofs(local[static_cast<size_t>(k)].B), settings_.share_factors ? &shared_factors : nullptr);
     });

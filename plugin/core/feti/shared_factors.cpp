@@ -6,25 +6,26 @@
 namespace ffeti {
 namespace {
 
-size_t triple_hash(const SparseMatrix& K, const std::vector<int>& fixing, const std::vector<int>& interface) {
+void mix(size_t& h, size_t v) { h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2); }
+
+void mix_ints(size_t& h, const int* v, size_t n) {
+  for (size_t k = 0; k < n; ++k) mix(h, std::hash<int>()(v[k]));
+}
+
+size_t matrix_hash(const SparseMatrix& K) {
   size_t h = std::hash<Eigen::Index>()(K.rows());
-  const auto mix = [&h](size_t v) { h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2); };
-  const auto mix_ints = [&mix](const int* v, size_t n) {
-    for (size_t k = 0; k < n; ++k) mix(std::hash<int>()(v[k]));
-  };
-  mix_ints(K.outerIndexPtr(), static_cast<size_t>(K.outerSize()) + 1);
-  mix_ints(K.innerIndexPtr(), static_cast<size_t>(K.nonZeros()));
+  mix_ints(h, K.outerIndexPtr(), static_cast<size_t>(K.outerSize()) + 1);
+  mix_ints(h, K.innerIndexPtr(), static_cast<size_t>(K.nonZeros()));
   for (Eigen::Index k = 0; k < K.nonZeros(); ++k) {
     uint64_t bits;  // the value's bits: equal matrices are bitwise equal
     std::memcpy(&bits, K.valuePtr() + k, sizeof bits);
-    mix(std::hash<uint64_t>()(bits));
+    mix(h, std::hash<uint64_t>()(bits));
   }
-  mix_ints(fixing.data(), fixing.size());
-  mix_ints(interface.data(), interface.size());
   return h;
 }
 
 bool bitwise_equal(const SparseMatrix& a, const SparseMatrix& b) {
+  if (&a == &b) return true;  // one matrix shared by both subdomains (stiffnessOf=)
   const auto n = static_cast<size_t>(a.nonZeros());
   return a.rows() == b.rows() && a.cols() == b.cols() && a.nonZeros() == b.nonZeros() &&
          std::equal(a.outerIndexPtr(), a.outerIndexPtr() + a.outerSize() + 1, b.outerIndexPtr()) &&
@@ -37,7 +38,20 @@ bool bitwise_equal(const SparseMatrix& a, const SparseMatrix& b) {
 FactorOutcome SharedFactors::obtain(const SparseMatrix& K, const std::vector<int>& fixing,
                                     const std::vector<int>& interface, const std::function<FactorOutcome()>& build) {
   if (!K.isCompressed()) return build();  // compared through its compressed arrays
-  const size_t hash = triple_hash(K, fixing, interface);
+  size_t hash = 0;
+  {
+    // A matrix several subdomains share (stiffnessOf=) is hashed once: the hash reads every
+    // entry serially, ~0.3 s for 1024 3D boxes.
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (const auto known = matrix_hashes_.find(&K); known != matrix_hashes_.end()) hash = known->second;
+  }
+  if (hash == 0) {
+    hash = matrix_hash(K) | 1;  // never 0, which stands for "not hashed yet"
+    const std::lock_guard<std::mutex> lock(mutex_);
+    matrix_hashes_.emplace(&K, hash);
+  }
+  mix_ints(hash, fixing.data(), fixing.size());
+  mix_ints(hash, interface.data(), interface.size());
   std::shared_future<FactorOutcome> registered;
   std::promise<FactorOutcome> promise;
   {

@@ -50,6 +50,7 @@ class SharedFactors {
   };
   mutable std::mutex mutex_;
   std::unordered_multimap<size_t, Entry> entries_;  // by a hash of the triple
+  std::unordered_map<const SparseMatrix*, size_t> matrix_hashes_;  // of the matrices met so far
   long built_ = 0, reused_ = 0;
 };
 
