@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Three dimensions in one process and on 2 and 3 ranks: the seed's model problem
-# (edp/model-problem-3d.edp, node to node) and the Hertz sphere on a block
-# (edp/hertz-sphere.edp -block 1, mortar contact): the same dimensions and counts, the
+# (edp/model-problem-3d.edp, node to node), the Hertz sphere on a block
+# (edp/hertz-sphere.edp -block 1, mortar contact) and the elasticity cubes
+# (edp/cubes-elasticity-3d.edp, one stiffness matrix shared by every box through
+# stiffnessOf=, each rank holding its boxes' loads): the same dimensions and counts, the
 # energy to 1e-10.
 # Usage: compare-3d-ranks.sh SOURCE_DIR   (run where freefem++.pref points at the build)
 set -euo pipefail
@@ -29,5 +31,14 @@ for ranks in 2 3; do
   [ -n "$parallel" ] || { echo "no RESULT line from the sphere with $ranks ranks"; exit 1; }
   same_keys "sphere, $ranks ranks" "$serial" "$parallel" status subdomains unknowns couples active hessian
   close_keys "sphere, $ranks ranks" "$serial" "$parallel" 1e-10 energy a p0
+done
+cubes="$source_dir/edp/cubes-elasticity-3d.edp"
+serial=$(FreeFem++-nw -v 0 "$cubes" -n 16 | result)
+[ -n "$serial" ] || { echo "no RESULT line from the serial cubes run"; exit 1; }
+for ranks in 2 3; do
+  parallel=$(mpirun --oversubscribe -np "$ranks" FreeFem++-mpi -v 0 "$cubes" -n 16 | result)
+  [ -n "$parallel" ] || { echo "no RESULT line from the cubes with $ranks ranks"; exit 1; }
+  same_keys "cubes, $ranks ranks" "$serial" "$parallel" status subdomains unknowns dual coarse couples active hessian
+  close_keys "cubes, $ranks ranks" "$serial" "$parallel" 1e-10 energy
 done
 [ "$failures" -eq 0 ] && echo "all checks passed" || { echo "$failures check(s) failed"; exit 1; }

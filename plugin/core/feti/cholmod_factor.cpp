@@ -110,7 +110,7 @@ double supernodal_switch() {
   return 120;
 }
 
-CholmodFactor::CholmodFactor(FactorKind kind, InterfaceOrdering ordering) : ordering_(ordering) {
+CholmodFactor::CholmodFactor(FactorKind kind, InterfaceOrdering ordering, FactorOf of) : ordering_(ordering), of_(of) {
   cholmod_start(&common_);
   common_.print = 0;  // the core never prints; failures are returned as values
   common_.error_handler = nullptr;
@@ -181,7 +181,7 @@ int CholmodFactor::factorize(const SparseMatrix& A, SharedAnalyses* shared, cons
     const SerialRegionsOnOneThread serial;
     cholmod_factorize(&view, factor_, &common_);
   }
-  ++numeric_factorizations;
+  if (of_ == FactorOf::subdomain) ++numeric_factorizations;
   if (common_.status == CHOLMOD_NOT_POSDEF) return static_cast<int>(factor_->minor);
   if (common_.status < CHOLMOD_OK) throw std::runtime_error("CHOLMOD factorize failed");
   if (interface_set_ && !factor_->IPerm) {

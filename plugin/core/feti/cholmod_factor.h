@@ -29,6 +29,10 @@ enum class FactorKind { simplicial, supernodal, automatic };
 /// factor keeps the fill-reducing ordering.
 enum class InterfaceOrdering { fill_reducing, interface_last, automatic };
 
+/// What a factor is of: a subdomain's matrix (its stiffness, or a block of it) counts in
+/// factorizations_in_process(); the coarse problem's small Gram matrices (GG', G_S G_S') do not.
+enum class FactorOf { subdomain, coarse_problem };
+
 /// Whether `automatic` orders the interface last: a pass of F then reads the factor's
 /// entries below the interface block only (`fill_entries` of the fill-reducing factor less
 /// `saved_entries`), for `extra_flops` more in the factorization. It pays where the saved
@@ -71,7 +75,8 @@ class CholmodSolveWorkspace {
 class CholmodFactor {
  public:
   explicit CholmodFactor(FactorKind kind = FactorKind::simplicial,
-                         InterfaceOrdering ordering = InterfaceOrdering::fill_reducing);
+                         InterfaceOrdering ordering = InterfaceOrdering::fill_reducing,
+                         FactorOf of = FactorOf::subdomain);
   ~CholmodFactor();
   CholmodFactor(const CholmodFactor&) = delete;
   CholmodFactor& operator=(const CholmodFactor&) = delete;
@@ -105,8 +110,9 @@ class CholmodFactor {
   /// is read once for all columns, cheaper per column than column after column.
   void solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) const { solve(b, x, own_workspace_); }
   void solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x, CholmodSolveWorkspace& workspace) const;
-  /// Numeric factorizations run by every CholmodFactor of this process so far (all
-  /// threads): lets callers prove that a phase factorized nothing.
+  /// Numeric factorizations of subdomain matrices (FactorOf::subdomain) run by every
+  /// CholmodFactor of this process so far (all threads): lets callers prove that a phase
+  /// factorized no subdomain.
   static long factorizations_in_process();
 
   Eigen::Index size() const { return size_; }
@@ -131,6 +137,7 @@ class CholmodFactor {
  private:
   mutable cholmod_common common_;
   InterfaceOrdering ordering_;
+  FactorOf of_;
   cholmod_factor* factor_ = nullptr;
   void solve_columns(const double* b, Eigen::Index rows, Eigen::Index cols, double* x, CholmodSolveWorkspace& w,
                      CholmodSolveWorkspace::Buffers& buffers) const;

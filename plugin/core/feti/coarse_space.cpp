@@ -117,19 +117,15 @@ CoarseSpace::CoarseSpace(const SubdomainList& subdomains, const std::vector<Loca
   if (owner_.empty()) return;
 
   const Eigen::SparseMatrix<double> GGt_upper = upper_gram(G_);
-  GGt_.compute(GGt_upper);
+  const bool factored = GGt_.factorize(SparseMatrix(GGt_upper.transpose())) < 0;  // reads the lower triangle
   // Regularity is judged on the sparse factor: its diagonal's cheap condition estimate
   // clears the regular cases; only when it is in doubt does the null space of GG' decide
   // and name the bodies of a singular GG' (semidefinite_kernel: sparse above 2500 rows, as a
   // dense GG' of 8192 floating 3D subdomains takes 19 GB).
-  if (GGt_.info() == Eigen::Success) {
-    const Vec diagonal = GGt_.matrixL().nestedExpression().diagonal();
-    const double ratio = diagonal.minCoeff() / diagonal.maxCoeff();
-    if (ratio * ratio > 1e-10) return;
-  }
+  if (factored && GGt_.reciprocal_condition() > 1e-10) return;  // (min diag L / max diag L)^2
   const SemidefiniteKernel kernel =
       semidefinite_kernel(Eigen::SparseMatrix<double>(GGt_upper.selfadjointView<Eigen::Upper>()), 1e-12);
-  if (GGt_.info() == Eigen::Success && kernel.basis.cols() == 0) return;
+  if (factored && kernel.basis.cols() == 0) return;
 
   // Singular GG': some combination of rigid modes meets no constraint. Name the bodies.
   std::set<int> unrestrained;
@@ -193,7 +189,8 @@ void CoarseSpace::project_range(const Vec& x, Vec& y) const {
     y.setZero(x.size());
     return;
   }
-  const Vec coarse = GGt_.solve(G_ * x);  // (GG')^{-1} G x
+  Vec coarse;
+  GGt_.solve(G_ * x, coarse);  // (GG')^{-1} G x
   y.noalias() = G_.transpose() * coarse;
 }
 
@@ -202,14 +199,17 @@ void CoarseSpace::project(const Vec& x, Vec& y) const {
     y = x;
     return;
   }
-  const Vec coarse = GGt_.solve(G_ * x);
+  Vec coarse;
+  GGt_.solve(G_ * x, coarse);
   y = x;
   y.noalias() -= G_.transpose() * coarse;
 }
 
 Vec CoarseSpace::least_norm_solution(const Vec& e) const {
   if (empty()) return Vec::Zero(G_.cols());
-  return G_.transpose() * GGt_.solve(e);
+  Vec coarse;
+  GGt_.solve(e, coarse);
+  return G_.transpose() * coarse;
 }
 
 double CoarseSpace::feasibility_residual(const Vec& e, const qp::ConstraintSet& bounds, double enough) const {

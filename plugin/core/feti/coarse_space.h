@@ -5,12 +5,12 @@
 #pragma once
 
 #include "constraints/constraints.h"
+#include "feti/cholmod_factor.h"
 #include "feti/subdomain.h"
 #include "parallel/communicator.h"
 #include "qp/problem.h"
 
 #include <Eigen/Dense>
-#include <Eigen/SparseCholesky>
 
 #include <vector>
 
@@ -73,8 +73,11 @@ class CoarseSpace {
   std::vector<std::pair<int, int>> local_rows_;  // (row of G, local subdomain index)
   // GG' couples the rigid modes of neighbouring subdomains only: sparse. A dense factor
   // costs O(dim^3) to build and O(dim^2) per projection (dim = 2016 floating subdomains at
-  // n = 2048 of the model problem, docs/results/scalability.md).
-  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Upper> GGt_;  // reads the upper triangle
+  // n = 2048 of the model problem, docs/results/scalability.md). CHOLMOD, supernodal where
+  // the fill calls for it: at 8192 3D subdomains (dim 49,152) GG' fills like a 3D problem
+  // and a simplicial factor took most of the set-up (docs/log.md). Its solves use the
+  // factor's own workspace: projections are not thread-safe.
+  CholmodFactor GGt_{FactorKind::automatic, InterfaceOrdering::fill_reducing, FactorOf::coarse_problem};
   const SubdomainList& subdomains_;
   const Communicator& comm_;
 };

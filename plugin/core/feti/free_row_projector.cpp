@@ -31,8 +31,7 @@ FreeRowProjector::FreeRowProjector(const RowMatrix& G, int free_columns) : G_(G)
   keep_.resize(r, static_cast<Eigen::Index>(selection.size()));
   keep_.setFromTriplets(selection.begin(), selection.end());
   if (keep_.cols() > 0) {
-    solver_.compute(Eigen::SparseMatrix<double>(keep_.transpose() * A_sparse * keep_));
-    if (solver_.info() != Eigen::Success)
+    if (solver_.factorize(SparseMatrix(keep_.transpose() * A_sparse * keep_)) >= 0)
       throw std::runtime_error("FreeRowProjector: G_F G_F' restricted to its pivots is singular");
   }
 
@@ -50,7 +49,11 @@ void FreeRowProjector::remove_body_modes(Vec& v) const {
 
 Vec FreeRowProjector::pseudo_solve(const Vec& y) const {
   Vec x = Vec::Zero(y.size());
-  if (keep_.cols() > 0) x = keep_ * solver_.solve(Vec(keep_.transpose() * y));
+  if (keep_.cols() > 0) {
+    Vec kept;
+    solver_.solve(Vec(keep_.transpose() * y), kept);
+    x = keep_ * kept;
+  }
   remove_body_modes(x);
   return x;
 }

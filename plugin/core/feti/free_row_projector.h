@@ -12,11 +12,11 @@
 // Lagrangian (none when no body floats as a whole). See docs/algorithms.md.
 #pragma once
 
+#include "feti/cholmod_factor.h"
 #include "qp/qp_types.h"
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
 
 namespace ffeti {
 
@@ -51,7 +51,7 @@ class FreeRowProjector {
   // G_F G_F' with the k rows and columns of its last pivots removed (regular, sparse): a
   // dense factor made each application O(r^2) in the r subdomain modes.
   RowMatrix keep_;                        // r x rank: selects the kept rows
-  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> solver_;
+  CholmodFactor solver_{FactorKind::automatic, InterfaceOrdering::fill_reducing, FactorOf::coarse_problem};  // supernodal where it fills (3D: like GG')
   Eigen::MatrixXd C_;                     // W'G
   Eigen::LLT<Eigen::MatrixXd> solver_C_;  // of C C'
   Eigen::Index free_ = 0;
