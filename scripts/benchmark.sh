@@ -20,13 +20,13 @@
 #                                          the Coulomb fixed point's cost against frictionless, and
 #                                          the sphere in 3D (~1 min; the sphere took 36 min more on a
 #                                          loaded machine, load average 10 on 2 cores)
-#   ./scripts/benchmark.sh three-dimensions  3D elasticity contact (two cubes) at H/h = 8 up to 2.2 million
-#                                          unknowns: phases, memory, the coarse problem, preconditioners,
+#   ./scripts/benchmark.sh three-dimensions  3D elasticity contact (two cubes) at H/h = 8 up to 17.9 million
+#                                          unknowns (16 GB, ~8 min alone): phases, the dual solve's parts, memory, the coarse problem, preconditioners,
 #                                          factor kinds; the direct peers (active set method with UMFPACK and
 #                                          MUMPS) beside FETI on the cubes and the sphere; the model problem as two cubes up to
 #                                          6 million unknowns, factor kinds in 3D, against 2D, Hertz for a
 #                                          sphere on a plane and on a block, a rigid ball, the patch test,
-#                                          3D gradients and a picture (~20 min, 13 GB, and the peers up to
+#                                          3D gradients and a picture (~30 min, 16 GB, and the peers up to
 #                                          about 2 h more: each peer stops at 30 min or 20 GiB; "three-dimensions
 #                                          --only PART": one part alone, PART cubes, sphere, elasticity, peers or
 #                                          mpi, the largest elasticity case on 1 process and 2 MPI ranks,
