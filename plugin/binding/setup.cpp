@@ -59,10 +59,20 @@ class FetiSetup : public WithNamedArguments {
     auto& Fs = *GetAny<KN<KN<double>>*>((*F)(stack));
     std::vector<long long> assembled(static_cast<size_t>(count), 0);
     collectively(*comm, [&] { check_array_sizes(stack, count); });
+    long unshared = -1;  // a subdomain whose load this rank assembled without the matrix it shares
     for (long s = 0; s < count; ++s) {
       const long m = stiffness_of[static_cast<size_t>(s)];
-      assembled[static_cast<size_t>(s)] = Ks[m].pHM() && Ks[m].pHM()->n > 0 && (!nargs[kStiffnessOf] || Fs[s].N() > 0);
+      const bool matrix_here = Ks[m].pHM() && Ks[m].pHM()->n > 0;
+      const bool load_here = Fs[s].N() > 0;
+      if (nargs[kStiffnessOf] && load_here && !matrix_here && unshared < 0) unshared = s;
+      assembled[static_cast<size_t>(s)] = matrix_here && (!nargs[kStiffnessOf] || load_here);
     }
+    collectively(*comm, [&] {
+      if (unshared < 0) return;
+      const std::string m = std::to_string(stiffness_of[static_cast<size_t>(unshared)]);
+      throw InputError("K[" + m + "]: empty where F[" + std::to_string(unshared) + "] is assembled (stiffnessOf[" +
+                       std::to_string(unshared) + "] = " + m + "): assemble every shared matrix on every rank");
+    });
     const std::vector<int> owner = subdomain_owners(assembled, *comm, nargs[kStiffnessOf] ? "F" : "K");
     std::vector<int> ids;
     for (long s = 0; s < count; ++s)
