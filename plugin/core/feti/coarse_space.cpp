@@ -189,9 +189,9 @@ void CoarseSpace::project_range(const Vec& x, Vec& y) const {
     y.setZero(x.size());
     return;
   }
-  Vec coarse;
-  GGt_.solve(G_ * x, coarse);  // (GG')^{-1} G x
-  y.noalias() = G_.transpose() * coarse;
+  coarse_rhs_.noalias() = G_ * x;
+  GGt_.solve(coarse_rhs_, coarse_solution_);  // (GG')^{-1} G x
+  y.noalias() = G_.transpose() * coarse_solution_;
 }
 
 void CoarseSpace::project(const Vec& x, Vec& y) const {
@@ -199,10 +199,10 @@ void CoarseSpace::project(const Vec& x, Vec& y) const {
     y = x;
     return;
   }
-  Vec coarse;
-  GGt_.solve(G_ * x, coarse);
+  coarse_rhs_.noalias() = G_ * x;
+  GGt_.solve(coarse_rhs_, coarse_solution_);
   y = x;
-  y.noalias() -= G_.transpose() * coarse;
+  y.noalias() -= G_.transpose() * coarse_solution_;
 }
 
 Vec CoarseSpace::least_norm_solution(const Vec& e) const {

@@ -78,6 +78,7 @@ class CoarseSpace {
   // and a simplicial factor took most of the set-up (docs/log.md). Its solves use the
   // factor's own workspace: projections are not thread-safe.
   CholmodFactor GGt_{FactorKind::automatic, InterfaceOrdering::fill_reducing, FactorOf::coarse_problem};
+  mutable Vec coarse_rhs_, coarse_solution_;  // a projection's G x and (GG')^{-1} G x: no allocation per call
   const SubdomainList& subdomains_;
   const Communicator& comm_;
 };
