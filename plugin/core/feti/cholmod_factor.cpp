@@ -183,7 +183,9 @@ int CholmodFactor::factorize(const SparseMatrix& A, SharedAnalyses* shared, cons
   }
   if (of_ == FactorOf::subdomain) ++numeric_factorizations;
   if (common_.status == CHOLMOD_NOT_POSDEF) return static_cast<int>(factor_->minor);
-  if (common_.status < CHOLMOD_OK) throw std::runtime_error("CHOLMOD factorize failed");
+  if (common_.status == CHOLMOD_OUT_OF_MEMORY) throw std::runtime_error("a factorization ran out of memory (CHOLMOD)");
+  if (common_.status < CHOLMOD_OK)
+    throw std::runtime_error("CHOLMOD factorize failed (status " + std::to_string(common_.status) + ")");
   if (interface_set_ && !factor_->IPerm) {
     // cholmod_solve2 with a Bset builds the inverse permutation into L on its first call:
     // a write into a factor that identical subdomains solve with from several threads at

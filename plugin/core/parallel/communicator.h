@@ -53,12 +53,14 @@ class SerialCommunicator final : public Communicator {
   std::string first_error(const std::string& local_error) const override { return local_error; }
 };
 
-/// Runs `step` on every rank; if it throws on any rank, every rank throws an InputError
-/// with the lowest failing rank's message (prefixed by that rank when there are several).
+/// Runs `step` on every rank; if it throws on any rank, every rank throws the lowest failing
+/// rank's failure: on one rank the exception itself; on several an InputError where that was
+/// bad input, else a std::runtime_error (memory, a library), with its message prefixed by
+/// that rank.
 void collectively(const Communicator& comm, const std::function<void()>& step);
 
 /// If `failure` is set on any rank, every rank throws: on one rank the failure itself, on
-/// several an InputError with the lowest failing rank's message (collectively). Costs one
+/// several the lowest failing rank's failure (collectively). Costs one
 /// reduction on several ranks.
 void rethrow_on_every_rank(const Communicator& comm, const std::exception_ptr& failure);
 
