@@ -52,13 +52,15 @@ class FetiSetup : public WithNamedArguments {
     auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
     const std::shared_ptr<const Communicator> comm =
         communicator(nargs[kComm] ? GetAny<pcommworld>((*nargs[kComm])(stack)) : nullptr);
-    const std::vector<long> stiffness_of = matrix_of_subdomain(stack);
+    // Input errors are raised on every rank together, or the others would wait.
+    std::vector<long> stiffness_of;
+    collectively(*comm, [&] { stiffness_of = matrix_of_subdomain(stack); });
     const auto count = static_cast<long>(stiffness_of.size());
+    collectively(*comm, [&] { check_array_sizes(stack, count); });
     // A subdomain is assembled on a rank where its matrix is (and, for a shared matrix,
     // its load too: every rank may hold the few shared matrices).
     auto& Fs = *GetAny<KN<KN<double>>*>((*F)(stack));
     std::vector<long long> assembled(static_cast<size_t>(count), 0);
-    collectively(*comm, [&] { check_array_sizes(stack, count); });
     long unshared = -1;  // a subdomain whose load this rank assembled without the matrix it shares
     for (long s = 0; s < count; ++s) {
       const long m = stiffness_of[static_cast<size_t>(s)];
