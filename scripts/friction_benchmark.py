@@ -84,6 +84,7 @@ def main():
         write_csv(PAGE, "refinement", refinement)
         write_csv(PAGE, "slope", slope)
         write_csv(PAGE, "cost", friction_cost.measure())
+        friction_cost.forget_own_run()
         end_run(PAGE, begun)
     render()
 
