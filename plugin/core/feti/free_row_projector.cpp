@@ -47,15 +47,15 @@ void FreeRowProjector::remove_body_modes(Vec& v) const {
   if (W_.cols() > 0) v.noalias() -= W_ * (W_.transpose() * v);
 }
 
-Vec FreeRowProjector::pseudo_solve(const Vec& y) const {
-  Vec x = Vec::Zero(y.size());
+const Vec& FreeRowProjector::pseudo_solve(const Vec& y) const {
+  pseudo_solution_.setZero(y.size());
   if (keep_.cols() > 0) {
-    Vec kept;
-    solver_.solve(Vec(keep_.transpose() * y), kept);
-    x = keep_ * kept;
+    kept_rhs_.noalias() = keep_.transpose() * y;
+    solver_.solve(kept_rhs_, kept_solution_);
+    pseudo_solution_.noalias() = keep_ * kept_solution_;
   }
-  remove_body_modes(x);
-  return x;
+  remove_body_modes(pseudo_solution_);
+  return pseudo_solution_;
 }
 
 void FreeRowProjector::apply(const Vec& x, Vec& y) const {

@@ -43,7 +43,9 @@ class FreeRowProjector {
 
  private:
   void remove_body_modes(Vec& v) const;  // v <- (I - W W') v
-  Vec pseudo_solve(const Vec& y) const;   // (G_F G_F')^+ y for y in Im G_F
+  // (G_F G_F')^+ y for y in Im G_F, into a member buffer (valid until the next call): it runs
+  // in every application of T, which allocates nothing for it.
+  const Vec& pseudo_solve(const Vec& y) const;
 
   const RowMatrix& G_;
   RowMatrix G_F_;                         // the free columns of G
@@ -51,7 +53,8 @@ class FreeRowProjector {
   // G_F G_F' with the k rows and columns of its last pivots removed (regular, sparse): a
   // dense factor made each application O(r^2) in the r subdomain modes.
   RowMatrix keep_;                        // r x rank: selects the kept rows
-  CholmodFactor solver_{FactorKind::automatic, InterfaceOrdering::fill_reducing, FactorOf::coarse_problem};  // supernodal where it fills (3D: like GG')
+  CholmodFactor solver_{FactorKind::automatic, InterfaceOrdering::fill_reducing, FactorOf::coarse_problem};
+  mutable Vec kept_rhs_, kept_solution_, pseudo_solution_;  // pseudo_solve's buffers  // supernodal where it fills (3D: like GG')
   Eigen::MatrixXd C_;                     // W'G
   Eigen::LLT<Eigen::MatrixXd> solver_C_;  // of C C'
   Eigen::Index free_ = 0;
