@@ -3,7 +3,7 @@ runs it with the page's other parts, or alone with --only elasticity): edp/cubes
 weak scaling at H/h = 8 (n = 16, 32, 64, 128 cells per cube side, 128 taking 16 GB and
 about 8 minutes; FFETI_ELASTICITY_3D_SIZES overrides) with the whole scene's phases (FreeFEM's assembly, the plugin's set-up, factorization,
 solve, recovery) and peak memory, the coarse problem at H/h = 4 (8 times the subdomains; n = 16,
-32, FFETI_ELASTICITY_3D_COARSE_SIZES), the preconditioners and CHOLMOD's factor kinds side by
+32, 64, FFETI_ELASTICITY_3D_COARSE_SIZES), the preconditioners and CHOLMOD's factor kinds side by
 side at n = 32 (the direct peers: scripts/three_dimensions_peers.py).
 Optional (--only mpi, not in the page's full run): one size (FFETI_ELASTICITY_3D_MPI_SIZE,
 default 64) on one process and on two MPI ranks, the same answer
@@ -19,7 +19,7 @@ import three_dimensions_peers as peers
 PAGE = "three-dimensions"
 SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_SIZES", "16 32 64 128").split()]
 VARIANT_SIZE = 32 if 32 in SIZES else SIZES[-1]
-COARSE_SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_COARSE_SIZES", "16 32").split()]
+COARSE_SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_COARSE_SIZES", "16 32 64").split()]
 MPI_SIZE = int(os.environ.get("FFETI_ELASTICITY_3D_MPI_SIZE", 64))
 PRECONDITIONERS = ["lumped", "dirichlet", "none"]
 SOLVE_PARTS = ("time_hessian", "time_primal_checks", "time_free_rows", "time_norm_estimate", "time_preconditioner")
@@ -183,9 +183,12 @@ def section(memory_gib):
         "",
         "The dual solve, part by part: `Hessian` the multiplications by P F P (F's applications and",
         "the projections), `primal checks` the stopping test's recoveries of the primal solution",
-        "(each factorizes G_S G_S', the Gram matrix of the coarse space's rows on the multipliers",
-        "that are not at a bound), `free rows` the projector of the gluing multipliers (G_F G_F'",
-        "factorized once), `norm estimate` ||PFP|| by Lanczos, `preconditioner` its applications.",
+        "(each solves with G_S G_S', the Gram matrix of the coarse space's rows on the multipliers",
+        "that are not at a bound), `free rows` the projector of the gluing multipliers (the null",
+        "space of G_F G_F' and its factor, once), `norm estimate` ||PFP|| by Lanczos,",
+        "`preconditioner` its applications. From 3000 rigid modes on, G_S G_S' and G_F G_F' come",
+        "from GG''s factor with the contact boxes' modes eliminated last and a dense factor of",
+        "their Schur complement ([algorithms](../algorithms.md), the coarse problem's Gram matrices).",
         "",
         *markdown_table(weak, [
             ("n", "n"), ("subdomains", "subdomains"), ("coarse", "coarse"), ("dual solve [s]", ("time_solve", ".2f")),
@@ -197,24 +200,26 @@ def section(memory_gib):
         f"Reading: at n = {last['n']} the coarse problem (its set-up, the primal checks and the free rows) takes "
         f"{(f(last, 'time_coarse') + f(last, 'time_primal_checks') + f(last, 'time_free_rows')) / f(last, 'time_scene'):.0%} "
         f"of the scene's time, the Hessian multiplications {f(last, 'time_hessian') / f(last, 'time_scene'):.0%}: "
-        "the coarse problem's sparse Cholesky factors (of order six times the subdomains) fill like those of a 3D "
-        "problem and, with the reference BLAS, run at a few GFlop/s. Not done: the remedies the literature has for it, "
-        "hybrid FETI (subdomains glued into clusters, a coarse problem of the clusters) or a coarse "
-        "problem shared over ranks; nor factoring G_S G_S' once per solve (only its contact rows change between "
-        "checks).",
+        "GG''s sparse Cholesky factor (of order six times the subdomains) fills like that of a 3D "
+        "problem and, with the reference BLAS, runs at a few GFlop/s; it is now the only sparse factor of the "
+        "coarse problem (G_S G_S' and G_F G_F' each took one of their own before; [log](../log.md), 2026-11-28). "
+        "Not done: hybrid FETI (subdomains glued into clusters, a coarse problem of the clusters) or a coarse "
+        "problem shared over ranks, which would shrink GG''s factor itself.",
         "",
         "## 3D elasticity: the coarse problem with many subdomains, H/h = 4",
         "",
         "The same sizes cut into boxes of 4 cells per side: 8 times the subdomains and the coarse",
         "space (six rigid modes per box). `coarse`: the coarse problem's set-up (G G' assembled and",
-        "factorized); its application is inside the solve's time.",
+        "factorized); its application is inside the solve's time, and so are the primal checks and",
+        "the free rows (their parts of it in the last two columns).",
         "",
         *markdown_table(coarse, [
             ("n", "n"), ("unknowns", "unknowns"), ("subdomains", "subdomains"), ("coarse", "coarse"),
             ("Hessian mult.", "hessian"), ("assembly [s]", ("time_assembly", ".2f")),
             ("plugin set-up [s]", ("time_plugin_setup", ".2f")), ("of which coarse [s]", ("time_coarse", ".3f")),
             ("factorization [s]", ("time_factor", ".2f")), ("solve [s]", ("time_solve", ".2f")),
-            ("peak MB", ("process_peak_mb", ".0f")), ("status", "status")]),
+            ("peak MB", ("process_peak_mb", ".0f")), ("status", "status"),
+            ("primal checks [s]", ("time_primal_checks", ".2f")), ("free rows [s]", ("time_free_rows", ".2f"))]),
         "",
         f"## 3D elasticity: preconditioners and factor kinds, n = {VARIANT_SIZE}",
         "",

@@ -102,7 +102,7 @@ TEST_P(DualOperatorOrdering, ProjectedOperatorMatchesDenseExplicit) {
   std::iota(ids.begin(), ids.end(), 0);
   const SubdomainSum sum(rows_by_subdomain(p.constraints, S), std::vector<int>(S, 0), m, comm);
   const DualOperator F(p.subdomains, p.local, sum, m, 1);
-  const CoarseSpace coarse(p.subdomains, p.local, ids, m, bodies, comm);
+  const CoarseSpace coarse(p.subdomains, p.local, ids, m, p.constraints.equality_rows, bodies, comm);
   // G = R'B' and P = I - G'(GG')^{-1}G built densely; P F P does not depend on which
   // generalized inverse K^+ is, so the fixing-dof inverse must agree with Moore-Penrose.
   const Eigen::MatrixXd G = p.R.transpose() * p.B.transpose();

@@ -1,4 +1,5 @@
 #include "feti/free_row_projector.h"
+#include "feti/upper_gram.h"
 
 #include <gtest/gtest.h>
 
@@ -33,9 +34,13 @@ Vec random_vector(Eigen::Index n, unsigned seed) {
   return v;
 }
 
-TEST(FreeRowProjector, MapsOntoKerGByMovingFreeMultipliersOnly) {
+/// Either way of factorizing G_F G_F': on its own, or from GG' with the contact modes last.
+class FreeRowProjectorLayouts : public ::testing::TestWithParam<GramLayout> {};
+
+TEST_P(FreeRowProjectorLayouts, MapsOntoKerGByMovingFreeMultipliersOnly) {
   const RowMatrix G = coarse_with_one_body_mode();
-  const FreeRowProjector T(G, 30);
+  const CoarseGram gram(G, 30, upper_gram(G), GetParam());
+  const FreeRowProjector T(gram, 30);
   EXPECT_EQ(T.remaining(), 1);  // the body mode
   const Vec x = random_vector(40, 1);
   Vec Tx, TTx, Cx;
@@ -51,9 +56,10 @@ TEST(FreeRowProjector, MapsOntoKerGByMovingFreeMultipliersOnly) {
   EXPECT_LT((G * Ty).norm(), 1e-12 * x.norm());
 }
 
-TEST(FreeRowProjector, IsTheIdentityOnKerGAndItsTransposeIsConsistent) {
+TEST_P(FreeRowProjectorLayouts, IsTheIdentityOnKerGAndItsTransposeIsConsistent) {
   const RowMatrix G = coarse_with_one_body_mode();
-  const FreeRowProjector T(G, 30);
+  const CoarseGram gram(G, 30, upper_gram(G), GetParam());
+  const FreeRowProjector T(gram, 30);
   // A vector of Ker G: x minus its component in Im G'.
   const Eigen::MatrixXd Gd(G);
   const Vec x0 = random_vector(40, 2);
@@ -71,11 +77,12 @@ TEST(FreeRowProjector, IsTheIdentityOnKerGAndItsTransposeIsConsistent) {
   EXPECT_NEAR(b.dot(Ta), a.dot(Ttb), 1e-12);
 }
 
-TEST(FreeRowProjector, ProjectingOutItsKernelChangesNeitherTNorTheBoundedMultipliers) {
+TEST_P(FreeRowProjectorLayouts, ProjectingOutItsKernelChangesNeitherTNorTheBoundedMultipliers) {
   // A start of the free-rows path is projected this way: T x must not change, nor the
   // bounded part, and what is removed is Ker T = Im E_F G_F' (so G_F y_F = 0 after it).
   const RowMatrix G = coarse_with_one_body_mode();
-  const FreeRowProjector T(G, 30);
+  const CoarseGram gram(G, 30, upper_gram(G), GetParam());
+  const FreeRowProjector T(gram, 30);
   const Vec x = random_vector(40, 6);
   Vec y, yy, Tx, Ty;
   T.project_out_kernel(x, y);
@@ -89,15 +96,19 @@ TEST(FreeRowProjector, ProjectingOutItsKernelChangesNeitherTNorTheBoundedMultipl
   EXPECT_LT((Tx - Ty).norm(), 1e-12 * x.norm()) << "T sees the removed part";
 }
 
-TEST(FreeRowProjector, NothingRemainsWhenTheFreeColumnsSpanTheRowSpace) {
+TEST_P(FreeRowProjectorLayouts, NothingRemainsWhenTheFreeColumnsSpanTheRowSpace) {
   RowMatrix G = coarse_with_one_body_mode();
   G = G.topRows(5);
-  const FreeRowProjector T(G, 30);
+  const CoarseGram gram(G, 30, upper_gram(G), GetParam());
+  const FreeRowProjector T(gram, 30);
   EXPECT_EQ(T.remaining(), 0);
   Vec Tx;
   T.apply(random_vector(40, 5), Tx);
   EXPECT_LT((G * Tx).norm(), 1e-12);
 }
+
+INSTANTIATE_TEST_SUITE_P(Layouts, FreeRowProjectorLayouts,
+                         ::testing::Values(GramLayout::separate, GramLayout::contact_last));
 
 }  // namespace
 }  // namespace ffeti

@@ -81,6 +81,13 @@ TEST(SemidefiniteKernel, SparseGrowsItsBlockPastLargeNullSpaces) {
   expect_kernel(c, semidefinite_kernel(c.A, 1e-10, 0));
 }
 
+TEST(SemidefiniteKernel, DenseInverseIterationFindsTheSameSubspaceAndGrowsItsBlock) {
+  for (const auto& [chain_count, length] : std::vector<std::pair<int, int>>{{6, 10}, {30, 12}}) {
+    const Chains c = chains(chain_count, length);
+    expect_kernel(c, semidefinite_kernel_by_iteration(Eigen::MatrixXd(c.A), 1e-10));
+  }
+}
+
 TEST(SemidefiniteKernel, ARegularMatrixHasNoNullSpaceEitherWay) {
   const Chains c = chains(3, 5);  // bodies 0: held; 1, 2 free
   SparseMatrix regular = c.A;
@@ -90,6 +97,7 @@ TEST(SemidefiniteKernel, ARegularMatrixHasNoNullSpaceEitherWay) {
     EXPECT_EQ(kernel.basis.cols(), 0);
     EXPECT_TRUE(kernel.deleted_rows.empty());
   }
+  EXPECT_EQ(semidefinite_kernel_by_iteration(Eigen::MatrixXd(regular), 1e-10).basis.cols(), 0);
 }
 
 }  // namespace

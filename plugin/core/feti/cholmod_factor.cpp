@@ -177,6 +177,10 @@ int CholmodFactor::factorize(const SparseMatrix& A, SharedAnalyses* shared, cons
     }
     size_ = A.rows();
   }
+  return factorize_numeric(view);
+}
+
+int CholmodFactor::factorize_numeric(cholmod_sparse& view) {
   {
     const SerialRegionsOnOneThread serial;
     cholmod_factorize(&view, factor_, &common_);
@@ -206,6 +210,105 @@ int CholmodFactor::factorize(const SparseMatrix& A, SharedAnalyses* shared, cons
       if (!(values[start[j]] > 0)) return static_cast<int>(j);
   }
   return -1;
+}
+
+int CholmodFactor::factorize_with_last(const SparseMatrix& A, const std::vector<int>& last) {
+  if (A.rows() != A.cols()) throw std::invalid_argument("CholmodFactor: matrix is not square");
+  if (!A.isCompressed()) throw std::invalid_argument("CholmodFactor: matrix is not compressed");
+  const auto n = static_cast<size_t>(A.rows());
+  std::vector<char> is_last(n, 0);
+  for (int column : last) is_last[static_cast<size_t>(column)] = 1;
+  std::vector<int> first;  // the other columns, ascending
+  for (size_t j = 0; j < n; ++j)
+    if (!is_last[j]) first.push_back(static_cast<int>(j));
+  // The first block's own fill-reducing order (CHOLMOD's choice of AMD or METIS, postordered),
+  // then `last`: with postordering off the given order stands, so the last columns stay last.
+  std::vector<int> order;
+  order.reserve(n);
+  if (!first.empty()) {
+    std::vector<int> position(n, -1);
+    for (size_t k = 0; k < first.size(); ++k) position[static_cast<size_t>(first[k])] = static_cast<int>(k);
+    std::vector<Eigen::Triplet<double, int>> entries;
+    for (Eigen::Index j = 0; j < A.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+        if (position[static_cast<size_t>(it.row())] >= 0 && position[static_cast<size_t>(j)] >= 0)
+          entries.emplace_back(position[static_cast<size_t>(it.row())], position[static_cast<size_t>(j)], it.value());
+    SparseMatrix block(static_cast<Eigen::Index>(first.size()), static_cast<Eigen::Index>(first.size()));
+    block.setFromTriplets(entries.begin(), entries.end());
+    cholmod_sparse block_view = view_lower(block);
+    cholmod_factor* analysis = cholmod_analyze(&block_view, &common_);
+    if (!analysis) throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
+    const auto* block_order = static_cast<const int*>(analysis->Perm);
+    for (size_t k = 0; k < first.size(); ++k) order.push_back(first[static_cast<size_t>(block_order[k])]);
+    cholmod_free_factor(&analysis, &common_);
+  }
+  order.insert(order.end(), last.begin(), last.end());
+  cholmod_sparse view = view_lower(A);
+  const int methods = common_.nmethods, ordering = common_.method[0].ordering, supernodal = common_.supernodal;
+  const int postorder = common_.postorder;
+  common_.nmethods = 1, common_.method[0].ordering = CHOLMOD_GIVEN, common_.postorder = 0;
+  common_.supernodal = CHOLMOD_SUPERNODAL;  // LL': trailing_block reads L's last columns
+  cholmod_free_factor(&factor_, &common_);
+  cholmod_free_sparse(&interface_set_, &common_);
+  factor_ = cholmod_analyze_p(&view, order.data(), nullptr, 0, &common_);
+  common_.nmethods = methods, common_.method[0].ordering = ordering, common_.supernodal = supernodal;
+  common_.postorder = postorder;
+  if (!factor_) throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
+  if (!std::equal(order.begin(), order.end(), static_cast<const int*>(factor_->Perm)))
+    throw std::logic_error("CholmodFactor::factorize_with_last: CHOLMOD did not keep the given order");
+  analysis_flops_ = common_.fl, analysis_nonzeros_ = common_.lnz;
+  size_ = A.rows();
+  last_columns_ = static_cast<Eigen::Index>(last.size());
+  return factorize_numeric(view);
+}
+
+Eigen::MatrixXd CholmodFactor::trailing_block() const {
+  if (!factor_ || !factor_->is_super || !factor_->is_ll)
+    throw std::logic_error("CholmodFactor::trailing_block: no supernodal LL' factor");
+  const auto n = static_cast<Eigen::Index>(factor_->n), first = n - last_columns_;
+  Eigen::MatrixXd block = Eigen::MatrixXd::Zero(last_columns_, last_columns_);
+  const auto* super = static_cast<const int*>(factor_->super);
+  const auto* row_start = static_cast<const int*>(factor_->pi);
+  const auto* value_start = static_cast<const int*>(factor_->px);
+  const auto* rows = static_cast<const int*>(factor_->s);
+  const auto* values = static_cast<const double*>(factor_->x);
+  // Supernode k: columns super[k] .. super[k+1]-1, a dense column-major block of its rows
+  // s[pi[k] .. pi[k+1]-1] (the first of them its own columns) by its columns.
+  for (size_t k = 0; k < factor_->nsuper; ++k) {
+    if (super[k + 1] <= first) continue;
+    const int height = row_start[k + 1] - row_start[k];
+    for (int j = std::max<int>(super[k], static_cast<int>(first)); j < super[k + 1]; ++j) {
+      const double* column = values + value_start[k] + static_cast<long>(j - super[k]) * height;
+      for (int i = 0; i < height; ++i)
+        if (const int row = rows[row_start[k] + i]; row >= j) block(row - first, j - first) = column[i];
+    }
+  }
+  return block;
+}
+
+void CholmodFactor::forward(const Vec& b, Vec& y) const {
+  const auto* permutation = static_cast<const int*>(factor_->Perm);
+  permuted_.resize(b.size());
+  for (Eigen::Index k = 0; k < b.size(); ++k) permuted_[k] = b[permutation[k]];
+  triangular_solve(CHOLMOD_L, permuted_, y);
+}
+
+void CholmodFactor::backward(const Vec& y, Vec& x) const {
+  triangular_solve(CHOLMOD_Lt, y, permuted_);
+  const auto* permutation = static_cast<const int*>(factor_->Perm);
+  x.resize(y.size());
+  for (Eigen::Index k = 0; k < y.size(); ++k) x[permutation[k]] = permuted_[k];
+}
+
+void CholmodFactor::triangular_solve(int system, const Vec& b, Vec& x) const {
+  if (!factor_ || !factor_->is_ll) throw std::logic_error("CholmodFactor: triangular solves need an LL' factor");
+  cholmod_dense rhs = view_columns(b.data(), b.size(), 1);
+  CholmodSolveWorkspace::Buffers& buffers = own_workspace_.vector_;
+  if (!cholmod_solve2(system, factor_, &rhs, nullptr, &buffers.solution, nullptr, &buffers.y, &buffers.e,
+                      &own_workspace_.common_))
+    throw solve_failure(own_workspace_.common_);
+  x.resize(b.size());
+  std::memcpy(x.data(), buffers.solution->x, sizeof(double) * static_cast<size_t>(b.size()));
 }
 
 cholmod_factor* CholmodFactor::analyze_interface_last(cholmod_sparse& A, const std::vector<int>& interface) {

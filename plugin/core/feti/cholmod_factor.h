@@ -92,6 +92,18 @@ class CholmodFactor {
   /// construction says (a second analysis where the first comes out simplicial).
   int factorize(const SparseMatrix& A, SharedAnalyses* shared = nullptr, const std::vector<int>& interface = {});
 
+  /// Factorizes A (supernodal LL') with the columns `last` eliminated last, in that order, the
+  /// others first in a fill-reducing order of their own block. Then L's last block is the
+  /// Cholesky factor of the Schur complement of A on `last` (trailing_block). Returns like
+  /// factorize.
+  int factorize_with_last(const SparseMatrix& A, const std::vector<int>& last);
+  /// L's block on the last columns of factorize_with_last (dense, lower triangular).
+  Eigen::MatrixXd trailing_block() const;
+  /// The two halves of a solve with an LL' factor A = P'LL'P: y = L^{-1} P b, and x = P'L^{-T} y.
+  /// In the factor's own workspace (not thread-safe).
+  void forward(const Vec& b, Vec& y) const;
+  void backward(const Vec& y, Vec& x) const;
+
   /// x(interface) of A x = b, b zero outside the interface given to factorize, its values
   /// there `b_on_interface` (in the interface's order). CHOLMOD reads only the columns of L
   /// that the interface reaches in the elimination tree. Precondition: interface_solves().
@@ -142,6 +154,9 @@ class CholmodFactor {
   void solve_columns(const double* b, Eigen::Index rows, Eigen::Index cols, double* x, CholmodSolveWorkspace& w,
                      CholmodSolveWorkspace::Buffers& buffers) const;
 
+  int factorize_numeric(cholmod_sparse& view);  // on the factor's analysis; returns like factorize
+  void triangular_solve(int system, const Vec& b, Vec& x) const;  // CHOLMOD_L or CHOLMOD_Lt, no permutation
+
   /// The analysis with the interface last (CAMD), or null where `automatic` keeps the
   /// fill-reducing one (common_ holds the latter's statistics on entry).
   cholmod_factor* analyze_interface_last(cholmod_sparse& A, const std::vector<int>& interface);
@@ -149,6 +164,8 @@ class CholmodFactor {
   mutable CholmodSolveWorkspace own_workspace_;
   cholmod_sparse* interface_set_ = nullptr;  ///< the interface as CHOLMOD's Bset (a pattern column)
   Eigen::Index size_ = 0;
+  Eigen::Index last_columns_ = 0;  ///< of factorize_with_last
+  mutable Vec permuted_;           ///< forward's and backward's permuted vector
   double analysis_flops_ = 0, analysis_nonzeros_ = 0;
 };
 

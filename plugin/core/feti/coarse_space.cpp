@@ -102,8 +102,8 @@ void CoarseSpace::assemble_gathered_rows(const std::vector<Eigen::MatrixXd>& BR,
 }
 
 CoarseSpace::CoarseSpace(const SubdomainList& subdomains, const std::vector<LocalConstraints>& local,
-                         const std::vector<int>& global_ids, int rows, const std::vector<int>& bodies,
-                         const Communicator& comm)
+                         const std::vector<int>& global_ids, int rows, int first_bounded,
+                         const std::vector<int>& bodies, const Communicator& comm, GramLayout layout)
     : subdomains_(subdomains), comm_(comm) {
   std::vector<Eigen::MatrixXd> BR(subdomains.size());
   parallel_for_each(static_cast<int>(subdomains.size()), 0, [&](int k) {
@@ -117,12 +117,13 @@ CoarseSpace::CoarseSpace(const SubdomainList& subdomains, const std::vector<Loca
   if (owner_.empty()) return;
 
   const Eigen::SparseMatrix<double> GGt_upper = upper_gram(G_);
-  const bool factored = GGt_.factorize(SparseMatrix(GGt_upper.transpose())) < 0;  // reads the lower triangle
+  gram_ = std::make_unique<CoarseGram>(G_, first_bounded, GGt_upper, layout);
+  const bool factored = gram_->factored();
   // Regularity is judged on the sparse factor: its diagonal's cheap condition estimate
   // clears the regular cases; only when it is in doubt does the null space of GG' decide
   // and name the bodies of a singular GG' (semidefinite_kernel: sparse above 2500 rows, as a
   // dense GG' of 8192 floating 3D subdomains takes 19 GB).
-  if (factored && GGt_.reciprocal_condition() > 1e-10) return;  // (min diag L / max diag L)^2
+  if (factored && gram_->reciprocal_condition() > 1e-10) return;  // (min diag L / max diag L)^2
   const SemidefiniteKernel kernel =
       semidefinite_kernel(Eigen::SparseMatrix<double>(GGt_upper.selfadjointView<Eigen::Upper>()), 1e-12);
   if (factored && kernel.basis.cols() == 0) return;
@@ -190,7 +191,7 @@ void CoarseSpace::project_range(const Vec& x, Vec& y) const {
     return;
   }
   coarse_rhs_.noalias() = G_ * x;
-  GGt_.solve(coarse_rhs_, coarse_solution_);  // (GG')^{-1} G x
+  gram_->solve(coarse_rhs_, coarse_solution_);  // (GG')^{-1} G x
   y.noalias() = G_.transpose() * coarse_solution_;
 }
 
@@ -200,7 +201,7 @@ void CoarseSpace::project(const Vec& x, Vec& y) const {
     return;
   }
   coarse_rhs_.noalias() = G_ * x;
-  GGt_.solve(coarse_rhs_, coarse_solution_);
+  gram_->solve(coarse_rhs_, coarse_solution_);
   y = x;
   y.noalias() -= G_.transpose() * coarse_solution_;
 }
@@ -208,7 +209,7 @@ void CoarseSpace::project(const Vec& x, Vec& y) const {
 Vec CoarseSpace::least_norm_solution(const Vec& e) const {
   if (empty()) return Vec::Zero(G_.cols());
   Vec coarse;
-  GGt_.solve(e, coarse);
+  gram_->solve(e, coarse);
   return G_.transpose() * coarse;
 }
 

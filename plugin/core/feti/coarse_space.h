@@ -5,13 +5,14 @@
 #pragma once
 
 #include "constraints/constraints.h"
-#include "feti/cholmod_factor.h"
+#include "feti/coarse_gram.h"
 #include "feti/subdomain.h"
 #include "parallel/communicator.h"
 #include "qp/problem.h"
 
 #include <Eigen/Dense>
 
+#include <memory>
 #include <vector>
 
 namespace ffeti {
@@ -19,15 +20,17 @@ namespace ffeti {
 class CoarseSpace {
  public:
   /// `subdomains` and `local` are this rank's, `global_ids` their global indices; `bodies`
-  /// covers all subdomains. Throws InputError naming the bodies whose rigid modes no
+  /// covers all subdomains; the constraint rows from `first_bounded` on are bounded. Throws InputError naming the bodies whose rigid modes no
   /// constraint restrains (GG' singular). Keeps a reference to `subdomains` and `comm`.
   CoarseSpace(const SubdomainList& subdomains, const std::vector<LocalConstraints>& local,
-              const std::vector<int>& global_ids, int rows, const std::vector<int>& bodies,
-              const Communicator& comm);
+              const std::vector<int>& global_ids, int rows, int first_bounded, const std::vector<int>& bodies,
+              const Communicator& comm, GramLayout layout = GramLayout::automatic);
 
   int dimension() const { return static_cast<int>(G_.rows()); }
   bool empty() const { return G_.rows() == 0; }
   const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& G() const { return G_; }
+  /// GG' and the Gram matrices over fewer columns (G_F G_F', G_S G_S'). Precondition: !empty().
+  const CoarseGram& gram() const { return *gram_; }
   /// Global subdomain and kernel column behind each row of G (ascending subdomain).
   const std::vector<std::pair<int, int>>& row_owner() const { return owner_; }
   /// Number of floating subdomains over all ranks.
@@ -77,7 +80,7 @@ class CoarseSpace {
   // the fill calls for it: at 8192 3D subdomains (dim 49,152) GG' fills like a 3D problem
   // and a simplicial factor took most of the set-up (docs/log.md). Its solves use the
   // factor's own workspace: projections are not thread-safe.
-  CholmodFactor GGt_{FactorKind::automatic, InterfaceOrdering::fill_reducing, FactorOf::coarse_problem};
+  std::unique_ptr<CoarseGram> gram_;
   mutable Vec coarse_rhs_, coarse_solution_;  // a projection's G x and (GG')^{-1} G x: no allocation per call
   const SubdomainList& subdomains_;
   const Communicator& comm_;

@@ -47,7 +47,8 @@ DualSystem::DualSystem(const SubdomainList& subdomains, const std::vector<int>& 
   int local_floating = 0;
   for (const auto& s : subdomains_) local_floating += s->floating() ? 1 : 0;
   if (comm.sum(local_floating) > 0)
-    coarse_ = std::make_unique<CoarseSpace>(subdomains_, local_, global_ids, constraints_.rows(), bodies, comm);
+    coarse_ = std::make_unique<CoarseSpace>(subdomains_, local_, global_ids, constraints_.rows(),
+                                            constraints_.equality_rows, bodies, comm);
 }
 
 void DualSystem::replace_right_hand_side(Constraints rebuilt) {
@@ -217,7 +218,7 @@ void DualSystem::recover(const DualData& data, Vec lambda, DualSolution& result)
 }
 
 const FreeRowProjector& DualSystem::free_rows() const {
-  if (!free_rows_) free_rows_ = std::make_unique<FreeRowProjector>(coarse_->G(), constraints_.equality_rows);
+  if (!free_rows_) free_rows_ = std::make_unique<FreeRowProjector>(coarse_->gram(), constraints_.equality_rows);
   return *free_rows_;
 }
 

@@ -12,11 +12,13 @@
 // Lagrangian (none when no body floats as a whole). See docs/algorithms.md.
 #pragma once
 
-#include "feti/cholmod_factor.h"
+#include "feti/coarse_gram.h"
 #include "qp/qp_types.h"
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
+
+#include <memory>
 
 namespace ffeti {
 
@@ -24,9 +26,9 @@ class FreeRowProjector {
  public:
   using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
 
-  /// G: the natural coarse space (full row rank); its first `free_columns` columns are the
-  /// unbounded multipliers.
-  FreeRowProjector(const RowMatrix& G, int free_columns);
+  /// `gram`: of the natural coarse space G (full row rank), whose first `free_columns`
+  /// columns are the unbounded multipliers. Keeps references to both.
+  FreeRowProjector(const CoarseGram& gram, int free_columns);
 
   /// Rows of C (the floating bodies' rigid modes).
   int remaining() const { return static_cast<int>(W_.cols()); }
@@ -43,18 +45,11 @@ class FreeRowProjector {
 
  private:
   void remove_body_modes(Vec& v) const;  // v <- (I - W W') v
-  // (G_F G_F')^+ y for y in Im G_F, into a member buffer (valid until the next call): it runs
-  // in every application of T, which allocates nothing for it.
-  const Vec& pseudo_solve(const Vec& y) const;
 
   const RowMatrix& G_;
-  RowMatrix G_F_;                         // the free columns of G
-  Eigen::MatrixXd W_;                     // orthonormal basis of Ker G_F'
-  // G_F G_F' with the k rows and columns of its last pivots removed (regular, sparse): a
-  // dense factor made each application O(r^2) in the r subdomain modes.
-  RowMatrix keep_;                        // r x rank: selects the kept rows
-  CholmodFactor solver_{FactorKind::automatic, InterfaceOrdering::fill_reducing, FactorOf::coarse_problem};
-  mutable Vec kept_rhs_, kept_solution_, pseudo_solution_;  // pseudo_solve's buffers  // supernodal where it fills (3D: like GG')
+  RowMatrix G_F_;                            // the free columns of G
+  std::unique_ptr<PartialGram> free_gram_;  // G_F G_F': (G_F G_F')^+ y for y in Im G_F, allocation-free
+  Eigen::MatrixXd W_;                        // orthonormal basis of Ker G_F'
   Eigen::MatrixXd C_;                     // W'G
   Eigen::LLT<Eigen::MatrixXd> solver_C_;  // of C C'
   Eigen::Index free_ = 0;

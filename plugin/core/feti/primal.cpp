@@ -1,8 +1,5 @@
 #include "feti/primal.h"
 
-#include "feti/cholmod_factor.h"
-#include "feti/upper_gram.h"
-
 #include <algorithm>
 #include <cmath>
 
@@ -16,26 +13,6 @@ double inf_norm(const std::vector<Vec>& u) {
 }
 
 double safe_ratio(double a, double b) { return b > 0 ? a / b : a; }
-
-// The normal equations (G_S G_S') alpha = rhs. G_S G_S' couples the rigid modes of
-// neighbouring subdomains only: a sparse factor keeps each primal recovery linear in the
-// subdomains (with a dense one of order 2016 a stopping-test check at n = 2048 took 0.85 s,
-// 0.31 s now; docs/results/scalability-reading.md). A body whose modes meet no row of S (a floating body with no
-// active contact) makes it singular; then the dense LDLT, which leaves the undetermined
-// modes at zero, decides, as it always did. `upper`: the upper triangle of G_S G_S'.
-// CHOLMOD, supernodal where the fill calls for it (a simplicial LDL' of 3456 3D subdomains'
-// G_S G_S' took a third of the whole scene's time, docs/log.md).
-Vec solve_normal_equations(const Eigen::SparseMatrix<double>& upper, const Vec& rhs) {
-  if (upper.rows() == 0) return Vec::Zero(0);
-  CholmodFactor sparse(FactorKind::automatic, InterfaceOrdering::fill_reducing, FactorOf::coarse_problem);
-  if (sparse.factorize(SparseMatrix(upper.transpose())) < 0 && sparse.reciprocal_condition() > 1e-12) {
-    Vec alpha;
-    sparse.solve(rhs, alpha);
-    return alpha;
-  }
-  const Eigen::SparseMatrix<double> whole = upper.selfadjointView<Eigen::Upper>();
-  return Eigen::MatrixXd(whole).ldlt().solve(rhs);
-}
 
 }  // namespace
 
@@ -82,20 +59,17 @@ std::vector<Vec> recover_primal(const DualOperator& F, const CoarseSpace* coarse
   F.pseudo_inverse_of_residual(f, lambda, u);  // u~ = K^+(f - B'lambda)
   if (!coarse || coarse->empty()) return u;
 
-  // alpha from  (G_S G_S') alpha = G_S (c - B u~)_S  over the rows S holding with equality.
   const int m = constraints.rows();
   Vec mask = Vec::Zero(m);
   for (int i = 0; i < m; ++i) mask[i] = holds_with_equality(constraints, lambda, slip_bound, i) ? 1.0 : 0.0;
   Vec Bu;
   F.apply_B(u, Bu);
+  // alpha from  (G_S G_S') alpha = G_S (c - B u~)_S  over the rows S holding with equality:
+  // G_S G_S' couples the rigid modes of neighbouring subdomains only and differs from GG' in
+  // contact columns only (coarse_gram.h). Where it is singular (a floating body that no row
+  // of S holds) the solution orthogonal to its null space is taken.
   const Vec residual = (c - Bu).cwiseProduct(mask);
-  // G_S: G's columns of S only (the others pruned, not kept as zeros), so that the Gram
-  // product of the threads (half of it) skips them: Eigen's whole serial G_S G_S' took
-  // a third of a check.
-  Eigen::SparseMatrix<double, Eigen::RowMajor, int> GS = coarse->G() * mask.asDiagonal();
-  GS.prune(0.0);
-  const Eigen::SparseMatrix<double> normal = upper_gram(GS);
-  const Vec alpha = solve_normal_equations(normal, GS * residual);
+  const Vec alpha = coarse->gram().over_columns(mask, RankDecision::factor_first)->solve(coarse->G() * residual);
   coarse->add_kernel_component(alpha, u);
   return u;
 }

@@ -18,10 +18,6 @@ void dpstrf_(const char* uplo, const int* n, double* a, const int* lda, int* piv
 namespace ffeti {
 namespace {
 
-Eigen::MatrixXd orthonormal_columns(const Eigen::MatrixXd& X) {
-  return X.householderQr().householderQ() * Eigen::MatrixXd::Identity(X.rows(), X.cols());
-}
-
 /// Dense: P'AP = R'R with R = [R11 R12; 0 0], R11 of the rank; Ker A = P[-R11^{-1} R12; I_k],
 /// the deleted rows the last k pivots.
 SemidefiniteKernel dense_kernel(const SparseMatrix& A, double tolerance) {
@@ -50,30 +46,21 @@ SemidefiniteKernel dense_kernel(const SparseMatrix& A, double tolerance) {
   return out;
 }
 
-/// Sparse: block inverse iteration with A + shift I; the Ritz vectors whose Ritz values are
-/// below `tolerance` span Ker A once the non-null components have died out: each step
-/// shrinks them by shift / (lambda + shift) for an eigenvalue lambda. The shift is the
+/// Block inverse iteration with A + shift I (`solve_shifted`); the Ritz vectors whose Ritz
+/// values are below `tolerance` span Ker A once the non-null components have died out: each
+/// step shrinks them by shift / (lambda + shift) for an eigenvalue lambda. The shift is the
 /// tolerance itself: smaller, A + shift I would be too close to singular for its factor.
-SemidefiniteKernel sparse_kernel(const SparseMatrix& A, double tolerance) {
-  const Eigen::Index r = A.rows();
-  SparseMatrix shifted = A;
-  const double shift = tolerance;
-  for (Eigen::Index i = 0; i < r; ++i) shifted.coeffRef(i, i) += shift;
-  CholmodFactor factor(FactorKind::supernodal);
-  if (factor.factorize(shifted) >= 0)
-    throw std::runtime_error("semidefinite_kernel: A + shift I is not positive definite (A is not semidefinite)");
+template <class Apply, class SolveShifted>
+SemidefiniteKernel inverse_iteration_kernel(Eigen::Index r, double tolerance, const Apply& apply_A,
+                                            const SolveShifted& solve_shifted) {
   constexpr int kSteps = 6;  // an eigenvalue 1e4 times the tolerance keeps (1e-4)^6 of its part: nothing
   std::mt19937 random(20261127);
   std::normal_distribution<double> gauss;
   for (Eigen::Index block = std::min<Eigen::Index>(8, r);; block = std::min<Eigen::Index>(2 * block, r)) {
     Eigen::MatrixXd X = Eigen::MatrixXd::NullaryExpr(r, block, [&] { return gauss(random); });
     X = orthonormal_columns(X);
-    Eigen::MatrixXd Y;
-    for (int step = 0; step < kSteps; ++step) {
-      factor.solve(X, Y);
-      X = orthonormal_columns(Y);
-    }
-    const Eigen::MatrixXd AX = A * X;
+    for (int step = 0; step < kSteps; ++step) X = orthonormal_columns(solve_shifted(X));
+    const Eigen::MatrixXd AX = apply_A(X);
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ritz(X.transpose() * AX);
     Eigen::Index k = 0;  // Ritz values ascend
     while (k < block && ritz.eigenvalues()[k] <= tolerance) ++k;
@@ -86,18 +73,58 @@ SemidefiniteKernel sparse_kernel(const SparseMatrix& A, double tolerance) {
   }
 }
 
+/// Sparse: the shifted matrix by a sparse Cholesky factor.
+SemidefiniteKernel sparse_kernel(const SparseMatrix& A, double tolerance) {
+  SparseMatrix shifted = A;
+  for (Eigen::Index i = 0; i < A.rows(); ++i) shifted.coeffRef(i, i) += tolerance;
+  CholmodFactor factor(FactorKind::supernodal);
+  if (factor.factorize(shifted) >= 0)
+    throw std::runtime_error("semidefinite_kernel: A + shift I is not positive definite (A is not semidefinite)");
+  return inverse_iteration_kernel(
+      A.rows(), tolerance, [&](const Eigen::MatrixXd& X) { return Eigen::MatrixXd(A * X); },
+      [&](const Eigen::MatrixXd& X) {
+        Eigen::MatrixXd Y;
+        factor.solve(X, Y);
+        return Y;
+      });
+}
+
+double largest_diagonal(const Eigen::VectorXd& diagonal) { return diagonal.size() > 0 ? diagonal.maxCoeff() : 0.0; }
+
+/// A = 0: everything is null, every row deleted.
+SemidefiniteKernel everything_null(Eigen::Index r) {
+  SemidefiniteKernel out{Eigen::MatrixXd::Identity(r, r), {}};
+  for (int i = 0; i < r; ++i) out.deleted_rows.push_back(i);
+  return out;
+}
+
 }  // namespace
+
+Eigen::MatrixXd orthonormal_columns(const Eigen::MatrixXd& X) {
+  return X.householderQr().householderQ() * Eigen::MatrixXd::Identity(X.rows(), X.cols());
+}
 
 SemidefiniteKernel semidefinite_kernel(const SparseMatrix& A, double relative_tolerance, Eigen::Index dense_limit) {
   if (A.rows() != A.cols()) throw std::invalid_argument("semidefinite_kernel: A is not square");
-  const double largest = A.rows() > 0 ? Eigen::VectorXd(A.diagonal()).maxCoeff() : 0.0;
-  if (largest <= 0) {  // A = 0: everything is null, every row deleted
-    SemidefiniteKernel out{Eigen::MatrixXd::Identity(A.rows(), A.rows()), {}};
-    for (int i = 0; i < A.rows(); ++i) out.deleted_rows.push_back(i);
-    return out;
-  }
+  const double largest = largest_diagonal(A.diagonal());
+  if (largest <= 0) return everything_null(A.rows());
   const double tolerance = relative_tolerance * largest;  // in the units of A
   return A.rows() <= dense_limit ? dense_kernel(A, tolerance) : sparse_kernel(A, tolerance);
+}
+
+SemidefiniteKernel semidefinite_kernel_by_iteration(const Eigen::MatrixXd& A, double relative_tolerance) {
+  if (A.rows() != A.cols()) throw std::invalid_argument("semidefinite_kernel: A is not square");
+  const double largest = largest_diagonal(A.diagonal());
+  if (largest <= 0) return everything_null(A.rows());
+  const double tolerance = relative_tolerance * largest;
+  Eigen::MatrixXd shifted = A;
+  shifted.diagonal().array() += tolerance;
+  const Eigen::LLT<Eigen::MatrixXd> factor(shifted);
+  if (factor.info() != Eigen::Success)
+    throw std::runtime_error("semidefinite_kernel: A + shift I is not positive definite (A is not semidefinite)");
+  return inverse_iteration_kernel(
+      A.rows(), tolerance, [&](const Eigen::MatrixXd& X) { return Eigen::MatrixXd(A * X); },
+      [&](const Eigen::MatrixXd& X) { return Eigen::MatrixXd(factor.solve(X)); });
 }
 
 }  // namespace ffeti

@@ -26,6 +26,9 @@ struct SemidefiniteKernel {
   std::vector<int> deleted_rows;  ///< k rows (and columns) whose removal leaves A regular
 };
 
+/// An orthonormal basis of the span of X's columns (X of full column rank), by Householder QR.
+Eigen::MatrixXd orthonormal_columns(const Eigen::MatrixXd& X);
+
 /// Rows up to which the dense rank-revealing factorization is used (about 1 s here).
 constexpr Eigen::Index kDenseKernelLimit = 2500;
 
@@ -33,5 +36,10 @@ constexpr Eigen::Index kDenseKernelLimit = 2500;
 /// A's largest diagonal entry. `dense_limit`: the size above which the sparse method runs.
 SemidefiniteKernel semidefinite_kernel(const SparseMatrix& A, double relative_tolerance,
                                        Eigen::Index dense_limit = kDenseKernelLimit);
+
+/// Ker A of a dense A by the sparse method's block inverse iteration, A + shift I factored by
+/// Eigen's blocked Cholesky: at 3072 rows 0.7 s against 5.9 s for LAPACK's pivoted Cholesky
+/// (dpstrf) with the reference BLAS. For the coarse problem's dense Schur complements.
+SemidefiniteKernel semidefinite_kernel_by_iteration(const Eigen::MatrixXd& A, double relative_tolerance);
 
 }  // namespace ffeti
