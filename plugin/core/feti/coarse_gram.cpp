@@ -146,7 +146,9 @@ CoarseGram::CoarseGram(const RowMatrix& G, int first_bounded, const Eigen::Spars
   factored_ = factor_.factorize_with_last(lower, contact_modes_) < 0;
   if (!factored_) return;
   trailing_ = factor_.trailing_block();
-  schur_.noalias() = trailing_.triangularView<Eigen::Lower>() * trailing_.transpose();
+  Eigen::MatrixXd lower_schur = Eigen::MatrixXd::Zero(trailing_.rows(), trailing_.rows());
+  lower_schur.selfadjointView<Eigen::Lower>().rankUpdate(trailing_);  // one triangle of L_CC L_CC'
+  schur_ = lower_schur.selfadjointView<Eigen::Lower>();
 }
 
 std::unique_ptr<PartialGram> CoarseGram::over_columns(const Vec& kept, RankDecision rank) const {
