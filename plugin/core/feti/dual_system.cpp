@@ -36,7 +36,7 @@ void DualSolveSettings::validate() const {
 
 DualSystem::DualSystem(const SubdomainList& subdomains, const std::vector<int>& global_ids,
                        const std::vector<int>& owner, const std::vector<int>& bodies, Constraints constraints,
-                       int threads, const Communicator& comm)
+                       int threads, const Communicator& comm, GramLayout coarse_gram)
     : subdomains_(subdomains), global_ids_(global_ids), comm_(comm), constraints_(std::move(constraints)) {
   std::vector<Eigen::Index> sizes;
   for (const auto& s : subdomains) sizes.push_back(s->size());
@@ -48,7 +48,7 @@ DualSystem::DualSystem(const SubdomainList& subdomains, const std::vector<int>& 
   for (const auto& s : subdomains_) local_floating += s->floating() ? 1 : 0;
   if (comm.sum(local_floating) > 0)
     coarse_ = std::make_unique<CoarseSpace>(subdomains_, local_, global_ids, constraints_.rows(),
-                                            constraints_.equality_rows, bodies, comm);
+                                            constraints_.equality_rows, bodies, comm, coarse_gram);
 }
 
 void DualSystem::replace_right_hand_side(Constraints rebuilt) {

@@ -145,7 +145,7 @@ class DualSystem {
   /// row). Keeps references to `subdomains` and `comm`: both must outlive it. Collective.
   DualSystem(const SubdomainList& subdomains, const std::vector<int>& global_ids,
              const std::vector<int>& owner, const std::vector<int>& bodies, Constraints constraints,
-             int threads, const Communicator& comm);
+             int threads, const Communicator& comm, GramLayout coarse_gram = GramLayout::automatic);
 
   const Constraints& constraints() const { return constraints_; }
   /// The same rows with other right-hand sides (new contact gaps or prescribed values):

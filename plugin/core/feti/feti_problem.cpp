@@ -136,7 +136,7 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   Stopwatch coarse_clock;
   try {
     dual_ = std::make_unique<DualSystem>(subdomains_, global_ids_, owner, bodies, std::move(constraints),
-                                         settings_.threads, comm);
+                                         settings_.threads, comm, settings_.coarse_gram);
   } catch (const InputError& error) {  // thrown on every rank alike: the coarse space is global
     if (!local_contact.has_friction()) throw;
     throw InputError(std::string(error.what()) +

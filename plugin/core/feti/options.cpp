@@ -39,6 +39,7 @@ const char* const kFactors[] = {"auto", "simplicial", "supernodal"};
 const char* const kOrderings[] = {"auto", "fill", "interface"};
 const char* const kSharing[] = {"on", "off"};
 const char* const kPreconditioners[] = {"lumped", "dirichlet", "none"};
+const char* const kCoarseGrams[] = {"auto", "contact-last", "separate"};
 const char* const kAlgorithms[] = {"smalbe-m", "seed"};
 const char* const kExpansions[] = {"projected-cg", "projected-cg-restart", "fixed"};
 const char* const kStops[] = {"kkt", "seed"};
@@ -101,6 +102,18 @@ std::vector<Option> make_options() {
          s.setup.preconditioner =
              pick(v, {DualPreconditioner::lumped, DualPreconditioner::dirichlet, DualPreconditioner::none},
                   kPreconditioners);
+       }},
+      {"coarseGram", S::setup, K::word, {kCoarseGrams[0], kCoarseGrams[1], kCoarseGrams[2]}, 0, 0, false, false,
+       "`\"auto\"`",
+       "how the coarse problem's Gram matrices over fewer multipliers are factorized, the free rows' G_F G_F' and "
+       "each primal check's G_S G_S' (they differ from GG' in contact columns only): `\"contact-last\"` from GG''s "
+       "factor with the rigid modes of the subdomains on a contact surface eliminated last and a dense Cholesky "
+       "factor of their Schur complement; `\"separate\"` a sparse factor of each; `\"auto\"` contact-last from "
+       "3000 rigid modes on with at most 6000 of them on a contact surface. For speed only: the same answers to "
+       "round-off ([algorithms](algorithms.md), measured in [three dimensions](results/three-dimensions.md))",
+       [](SolverSettings& s, const OptionValue& v) {
+         s.setup.coarse_gram =
+             pick(v, {GramLayout::automatic, GramLayout::contact_last, GramLayout::separate}, kCoarseGrams);
        }},
       {"threads", S::setup, K::integer, {}, 0, kMaxThreads, false, false, "0",
        "OpenMP threads over subdomains (more than 1024 is refused: no node has the cores, and OpenMP fails to create "
