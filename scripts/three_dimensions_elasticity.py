@@ -6,7 +6,7 @@ solve, recovery) and peak memory, the coarse problem at H/h = 4 (8 times the sub
 32, 64, FFETI_ELASTICITY_3D_COARSE_SIZES), the preconditioners and CHOLMOD's factor kinds side by
 side at n = 32 (the direct peers: scripts/three_dimensions_peers.py).
 Optional (--only mpi, not in the page's full run): one size (FFETI_ELASTICITY_3D_MPI_SIZE,
-default 64) on one process and on two MPI ranks, the same answer
+default 128) on one process and on two MPI ranks, the same answer
 and each rank's memory. Each table is the CSV three-dimensions-elasticity-<table>.csv."""
 import os
 import subprocess
@@ -20,7 +20,7 @@ PAGE = "three-dimensions"
 SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_SIZES", "16 32 64 128").split()]
 VARIANT_SIZE = 32 if 32 in SIZES else SIZES[-1]
 COARSE_SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_COARSE_SIZES", "16 32 64").split()]
-MPI_SIZE = int(os.environ.get("FFETI_ELASTICITY_3D_MPI_SIZE", 64))
+MPI_SIZE = int(os.environ.get("FFETI_ELASTICITY_3D_MPI_SIZE", 128))
 PRECONDITIONERS = ["lumped", "dirichlet", "none"]
 SOLVE_PARTS = ("time_hessian", "time_primal_checks", "time_free_rows", "time_norm_estimate", "time_preconditioner")
 FACTORS = ["simplicial", "supernodal", "auto"]

@@ -1,6 +1,8 @@
 #include "feti/coarse_gram.h"
 #include "feti/upper_gram.h"
 
+#include "random_vector.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,14 +32,6 @@ RowMatrix decomposition_like_coarse_matrix() {
     G(28 + ((j + 5) % 12), j) = value(random);
   }
   return G.sparseView();
-}
-
-Vec random_vector(Eigen::Index n, unsigned seed) {
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> value(-1.0, 1.0);
-  Vec v(n);
-  for (Eigen::Index i = 0; i < n; ++i) v[i] = value(random);
-  return v;
 }
 
 /// Kept columns: every free one, and each bounded one with probability `share`.

@@ -1,6 +1,8 @@
 #include "feti/free_row_projector.h"
 #include "feti/upper_gram.h"
 
+#include "random_vector.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -24,14 +26,6 @@ RowMatrix coarse_with_one_body_mode() {
   for (int j = 30; j < 40; ++j) G(5, j) = value(random);
   for (int j = 30; j < 34; ++j) G(0, j) = value(random);
   return G.sparseView();
-}
-
-Vec random_vector(Eigen::Index n, unsigned seed) {
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> value(-1.0, 1.0);
-  Vec v(n);
-  for (Eigen::Index i = 0; i < n; ++i) v[i] = value(random);
-  return v;
 }
 
 /// Either way of factorizing G_F G_F': on its own, or from GG' with the contact modes last.
