@@ -10,7 +10,7 @@ a sphere (edp/hertz-sphere.edp) on a rigid plane and on an elastic block (mortar
 a picture of its stress and contact pressure; the contact patch test and the 3D gradient
 checks (tests/edp/). Writes docs/results/three-dimensions.md and its plots from one run on
 this machine (--only PART: that part alone, the other tables kept: cubes, sphere, elasticity,
-peers, or mpi, the two-rank elasticity run, which the full run leaves out; --sphere: --only sphere;
+gram (the coarse Gram matrices' two layouts), peers, or mpi, the two-rank elasticity run, which the full run leaves out; --sphere: --only sphere;
 --render: from the CSVs, no run). Smaller runs to try it: FFETI_THREE_DIMENSIONS_SIZES,
 FFETI_THREE_DIMENSIONS_FACTOR_SIZES, FFETI_THREE_DIMENSIONS_SEARCH_SIZES,
 FFETI_THREE_DIMENSIONS_PLANE ("n H/h") and the
@@ -221,7 +221,7 @@ def run_cubes():
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--render", action="store_true", help="re-render the page from its CSVs, no run")
-    parser.add_argument("--only", choices=("cubes", "sphere", "elasticity", "peers", "mpi"),
+    parser.add_argument("--only", choices=("cubes", "sphere", "elasticity", "gram", "peers", "mpi"),
                         help="run this part alone, keep the other tables (mpi: the largest elasticity case on one "
                              "process and on two ranks, left out of the full run)")
     parser.add_argument("--sphere", action="store_true", help="the same as --only sphere")
@@ -230,8 +230,9 @@ def main():
     if not options.render:
         begun = begin_run()
         parts = {"elasticity": lambda: elasticity.measure(begin_run()), "cubes": run_cubes, "sphere": run_sphere,
-                 "mpi": lambda: elasticity.measure_mpi(begin_run()), "peers": lambda: peers.measure(begin_run())}
-        for name in [only] if only else ["elasticity", "cubes", "sphere", "peers"]:
+                 "mpi": lambda: elasticity.measure_mpi(begin_run()), "peers": lambda: peers.measure(begin_run()),
+                 "gram": lambda: elasticity.measure_gram(begin_run())}
+        for name in [only] if only else ["elasticity", "gram", "cubes", "sphere", "peers"]:
             parts[name]()
         if not only:
             end_run(PAGE, begun)

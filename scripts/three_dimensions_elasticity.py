@@ -5,6 +5,9 @@ about 8 minutes; FFETI_ELASTICITY_3D_SIZES overrides) with the whole scene's pha
 solve, recovery) and peak memory, the coarse problem at H/h = 4 (8 times the subdomains; n = 16,
 32, 64, FFETI_ELASTICITY_3D_COARSE_SIZES), the preconditioners and CHOLMOD's factor kinds side by
 side at n = 32 (the direct peers: scripts/three_dimensions_peers.py).
+The coarse Gram matrices (--only gram, in the full run too): the free rows' and primal checks'
+factors separate or from GG''s with the contact modes last (fetiSetup's coarseGram), side by side
+at n = 64 with H/h = 8 and 4 (FFETI_ELASTICITY_3D_GRAM_CASES, "n:Hh ...").
 Optional (--only mpi, not in the page's full run): one size (FFETI_ELASTICITY_3D_MPI_SIZE,
 default 128) on one process and on two MPI ranks, the same answer
 and each rank's memory. Each table is the CSV three-dimensions-elasticity-<table>.csv."""
@@ -20,6 +23,9 @@ PAGE = "three-dimensions"
 SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_SIZES", "16 32 64 128").split()]
 VARIANT_SIZE = 32 if 32 in SIZES else SIZES[-1]
 COARSE_SIZES = [int(n) for n in os.environ.get("FFETI_ELASTICITY_3D_COARSE_SIZES", "16 32 64").split()]
+GRAM_CASES = [tuple(int(v) for v in case.split(":"))
+              for case in os.environ.get("FFETI_ELASTICITY_3D_GRAM_CASES", "64:8 64:4").split()]
+GRAM_LAYOUTS = ["separate", "contact-last"]
 MPI_SIZE = int(os.environ.get("FFETI_ELASTICITY_3D_MPI_SIZE", 128))
 PRECONDITIONERS = ["lumped", "dirichlet", "none"]
 SOLVE_PARTS = ("time_hessian", "time_primal_checks", "time_free_rows", "time_norm_estimate", "time_preconditioner")
@@ -64,6 +70,15 @@ def measure(begun):
     write_csv(PAGE, table("variants"), variants)
     write_csv(PAGE, table("blas"), [{"blas": blas_library()}])
     end_run(PAGE, begun, table("run"))
+
+
+def measure_gram(begun):
+    """Each case with the coarse Gram matrices factorized separately and from GG''s factor,
+    one run after the other (gram, gram-run)."""
+    rows = [dict(scene(n, check=1, Hh=Hh, coarseGram=layout), case=layout)
+            for n, Hh in GRAM_CASES for layout in GRAM_LAYOUTS]
+    write_csv(PAGE, table("gram"), rows)
+    end_run(PAGE, begun, table("gram-run"))
 
 
 def measure_mpi(begun):
@@ -237,7 +252,48 @@ def section(memory_gib):
         "",
         *peers.section(),
     ]
-    return lines + mpi_section()
+    return lines + gram_section() + mpi_section()
+
+
+def gram_section():
+    """The coarse Gram matrices' lines, when that part has been run (--only gram or the full run)."""
+    if not os.path.exists(os.path.join(OUT, f"{PAGE}-{table('gram')}.csv")):
+        return []
+    rows, run_row = read_csv(PAGE, table("gram")), read_csv(PAGE, table("gram-run"))[0]
+    lines = [
+        "## 3D elasticity: the coarse Gram matrices, separate or from one factor",
+        "",
+        "The free rows' G_F G_F' and each primal check's G_S G_S' differ from GG' in contact columns",
+        "only (`fetiSetup`'s `coarseGram`, [algorithms](../algorithms.md)): `separate` factorizes",
+        "each on its own (CHOLMOD; the free rows twice, a shifted factor for the null space and one",
+        "of the kept rows); `contact-last` factorizes GG' once with the contact boxes' modes last and",
+        "solves each with a dense Cholesky factor of its Schur complement on them (`auto` picks it",
+        "from 3000 rigid modes on). `contact modes`: the rigid modes of the boxes on the contact face.",
+        f"One run after the other ({run_row['date']}, {float(run_row['elapsed_s']):.0f} s, load average "
+        f"{float(run_row['load_at_start']):.1f} as it started, {float(run_row['load_at_end']):.1f} as it ended). "
+        f"Raw data: [{PAGE}-{table('gram')}.csv]({PAGE}-{table('gram')}.csv).",
+        "",
+        *markdown_table(rows, [
+            ("n", "n"), ("H/h", "Hh"), ("subdomains", "subdomains"), ("coarse", "coarse"),
+            ("contact modes", lambda r: f"{12 * (int(r['n']) // int(r['Hh'])) ** 2}"), ("coarseGram", "case"),
+            ("Hessian mult.", "hessian"), ("coarse set-up [s]", ("time_coarse", ".2f")),
+            ("primal checks [s]", ("time_primal_checks", ".2f")), ("free rows [s]", ("time_free_rows", ".2f")),
+            ("dual solve [s]", ("time_solve", ".2f")), ("whole scene [s]", ("time_scene", ".2f")),
+            ("peak MB", ("process_peak_mb", ".0f")), ("energy", "energy"), ("status", "status")]),
+        "",
+    ]
+    pairs = [rows[k:k + 2] for k in range(0, len(rows) - 1, 2)]
+    readings = []
+    for separate, last in pairs:
+        coarse_separate = sum(f(separate, k) for k in ("time_coarse", "time_primal_checks", "time_free_rows"))
+        coarse_last = sum(f(last, k) for k in ("time_coarse", "time_primal_checks", "time_free_rows"))
+        same = separate["hessian"] == last["hessian"]
+        energy = abs(f(last, "energy") - f(separate, "energy")) / abs(f(separate, "energy"))
+        readings.append(
+            f"n = {separate['n']}, H/h = {separate['Hh']}: the coarse problem's three parts take {coarse_separate:.1f} s "
+            f"separate and {coarse_last:.1f} s contact-last, the whole scene {f(last, 'time_scene') / f(separate, 'time_scene'):.2f} "
+            f"times as long; {'the same' if same else 'NOT the same'} Hessian count, energies {energy:.0e} apart (relative).")
+    return lines + ["Reading: " + " ".join(readings), ""]
 
 
 def mpi_section():
