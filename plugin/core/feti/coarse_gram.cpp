@@ -87,15 +87,11 @@ class SchurGram final : public PartialGram {
       if (llt_.info() == Eigen::Success && reciprocal_condition(llt_) > kTrustedFactor) return;
     }
     const Eigen::MatrixXd Q = semidefinite_kernel_by_iteration(S, kSingular).basis;
-    if (Q.cols() == 0 && rank == RankDecision::search) {
-      llt_.compute(S);
-      if (llt_.info() != Eigen::Success) throw std::runtime_error("coarse problem: a regular Schur complement failed its factor");
-      return;
-    }
-    S.noalias() += S.diagonal().maxCoeff() * Q * Q.transpose();
+    if (Q.cols() > 0) S.noalias() += S.diagonal().maxCoeff() * Q * Q.transpose();
     llt_.compute(S);
     if (llt_.info() != Eigen::Success)
       throw std::runtime_error("coarse problem: the contact modes' Schur complement is singular beyond its null space");
+    if (Q.cols() == 0) return;
     // Ker(G_X G_X') = P'L^{-T} [0; L_CC' Q]: the block elimination's backward half.
     const Eigen::Index r = gram.G().rows(), c = Q.rows();
     Eigen::MatrixXd W(r, Q.cols());
