@@ -225,6 +225,40 @@ TEST_P(FrictionKinds, ABallMatchesTheUndividedDual) {
 INSTANTIATE_TEST_SUITE_P(Variants, FrictionKinds, ::testing::Values(FetiVariant::feti1, FetiVariant::tfeti),
                          [](const auto& info) { return info.param == FetiVariant::feti1 ? "feti1" : "tfeti"; });
 
+// The coarse Gram matrices from GG''s factor with the contact modes last (coarseGram =
+// "contact-last"; "auto" takes it from 3000 rigid modes on, more than these scenes have): the
+// primal checks drop friction pairs at their disc's bound as well as open contact rows, and
+// the free rows' G_F G_F' is singular for the floating upper block. The same references.
+FetiSetupSettings contact_last_setup() {
+  FetiSetupSettings s;
+  s.variant = FetiVariant::tfeti;
+  s.coarse_gram = GramLayout::contact_last;
+  return s;
+}
+
+TEST(FrictionKindsContactLast, NodeToNode3DMatchesTheUndividedDual) {
+  const auto subdomains = stacked_blocks(2);
+  for (const double bound : {0.05, 0.15}) {
+    SCOPED_TRACE("slip bound " + std::to_string(bound));
+    const FetiProblem p(subdomains, stacked_contact(subdomains, 2, tresca(bound)), contact_last_setup());
+    expect_reference(p, false, bound, node_to_node_3d_tangents, stacked_reference, bound == 0.15);
+  }
+  const FetiProblem p(subdomains, stacked_contact(subdomains, 2, coulomb(0.1)), contact_last_setup());
+  expect_reference(p, true, 0.1, node_to_node_3d_tangents, stacked_reference, false);
+}
+
+TEST(FrictionKindsContactLast, ABallMatchesTheUndividedDual) {
+  const auto subdomains = block_halves();
+  const FetiProblem p(subdomains, on_ball(subdomains, tresca(0.5)), contact_last_setup());
+  expect_reference(
+      p, false, 0.5,
+      [&p](int row) {
+        const auto pair = tangent_pair(ball_normal(p.contact_positions()[static_cast<size_t>(row)]));
+        return std::vector<Point3>{pair[0], pair[1]};
+      },
+      ball_reference, true);
+}
+
 // ---- Refusals ----------------------------------------------------------------------------
 
 TEST(FrictionKindsInput, NodeToNodeFrictionNeedsTheTangentialComponents) {
