@@ -307,8 +307,8 @@ def mpi_section():
     return [
         f"## 3D elasticity on two MPI ranks, n = {serial['n']}",
         "",
-        "`mpirun -np 2 FreeFem++-mpi edp/cubes-elasticity-3d.edp`: each rank assembles and factorizes",
-        "its own boxes; beside one process, one run after the other"
+        "`mpirun -np 2 FreeFem++-mpi edp/cubes-elasticity-3d.edp`: each rank meshes (`ffetiGrid3Owned`),",
+        "assembles and factorizes its own boxes and holds the whole coarse problem; beside one process, one run after the other"
         f" ({run_row['date']}, load average {float(run_row['load_at_start']):.1f} as it started). Peak MB per",
         "rank: each rank's own resident set (the RANK lines).",
         "",
