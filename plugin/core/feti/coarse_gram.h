@@ -74,15 +74,13 @@ class CoarseGram {
 
   /// True when GG' is factored with the contact modes last (over_columns works on S_X).
   bool contact_last() const { return contact_last_; }
-  /// The rigid modes (rows of G) that meet a bounded column, in the factor's order.
-  const std::vector<int>& contact_modes() const { return contact_modes_; }
 
  private:
   friend class SchurGram;
   const RowMatrix& G_;
   int first_bounded_;
   bool factored_ = false, contact_last_ = false;
-  std::vector<int> contact_modes_;  // C (empty unless contact_last_)
+  std::vector<int> contact_modes_;  // C: the rows of G that meet a bounded column, in the factor's order (contact_last_)
   Eigen::MatrixXd trailing_;        // L_CC
   Eigen::MatrixXd schur_;           // L_CC L_CC': GG''s Schur complement on C
   CholmodFactor factor_{FactorKind::automatic, InterfaceOrdering::fill_reducing, FactorOf::coarse_problem};
