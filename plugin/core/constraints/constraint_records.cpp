@@ -11,31 +11,38 @@ namespace ffeti {
 namespace {
 
 /// Subdomains whose inflated boxes overlap each cell of a uniform grid over all boxes:
-/// finds the boxes containing a point without testing all of them.
+/// finds the boxes containing a point without testing all of them. The grid spans every
+/// axis the boxes extend along: a 2D grid over x and y left each cell of a 3D scene with all
+/// the boxes stacked above it (32 to test for every node of the 8192 boxes of two cubes).
 class BoxGrid {
  public:
   BoxGrid(const std::vector<BoundingBox>& boxes, double margin) : boxes_(boxes), margin_(margin) {
-    lo_x_ = lo_y_ = INFINITY;
-    double hi_x = -INFINITY, hi_y = -INFINITY;
-    for (const BoundingBox& b : boxes) {
-      lo_x_ = std::min(lo_x_, b.x0), lo_y_ = std::min(lo_y_, b.y0);
-      hi_x = std::max(hi_x, b.x1), hi_y = std::max(hi_y, b.y1);
+    std::array<double, 3> hi{-INFINITY, -INFINITY, -INFINITY};
+    lo_.fill(INFINITY);
+    for (const BoundingBox& b : boxes)
+      for (int a = 0; a < 3; ++a) lo_[a] = std::min(lo_[a], low(b, a)), hi[a] = std::max(hi[a], high(b, a));
+    if (boxes.empty()) lo_.fill(0.0), hi.fill(0.0);
+    const int axes = hi[2] > lo_[2] ? 3 : 2;  // z = 0 in a plane problem
+    const int per_axis = std::max(1, static_cast<int>(std::ceil(std::pow(static_cast<double>(boxes.size()), 1.0 / axes))));
+    for (int a = 0; a < 3; ++a) {
+      cells_[a] = a < axes ? per_axis : 1;
+      width_[a] = a < axes ? std::max((hi[a] - lo_[a]) / cells_[a], margin) : 1.0;
+      if (a >= axes) lo_[a] = 0.0;
     }
-    cells_ = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(boxes.size())))));
-    cell_x_ = std::max((hi_x - lo_x_) / cells_, margin), cell_y_ = std::max((hi_y - lo_y_) / cells_, margin);
-    members_.resize(static_cast<size_t>(cells_ * cells_));
+    members_.resize(static_cast<size_t>(cells_[0] * cells_[1] * cells_[2]));
     for (int s = 0; s < static_cast<int>(boxes.size()); ++s) {
       const BoundingBox& b = boxes[static_cast<size_t>(s)];
-      for (int j = cell(b.y0 - margin, lo_y_, cell_y_); j <= cell(b.y1 + margin, lo_y_, cell_y_); ++j)
-        for (int i = cell(b.x0 - margin, lo_x_, cell_x_); i <= cell(b.x1 + margin, lo_x_, cell_x_); ++i)
-          members_[static_cast<size_t>(j * cells_ + i)].push_back(s);
+      std::array<int, 3> first{}, last{};
+      for (int a = 0; a < 3; ++a) first[a] = cell(low(b, a) - margin, a), last[a] = cell(high(b, a) + margin, a);
+      for (int k = first[2]; k <= last[2]; ++k)
+        for (int j = first[1]; j <= last[1]; ++j)
+          for (int i = first[0]; i <= last[0]; ++i) members_[index(i, j, k)].push_back(s);
     }
   }
-  /// The grid is over x and y; z (0 in a plane problem) is tested against each box.
+  /// Every box whose inflated extent holds the point (z = 0 in a plane problem).
   template <class F>
   void for_each_containing(double x, double y, double z, F&& visit) const {
-    const int i = cell(x, lo_x_, cell_x_), j = cell(y, lo_y_, cell_y_);
-    for (int s : members_[static_cast<size_t>(j * cells_ + i)]) {
+    for (int s : members_[index(cell(x, 0), cell(y, 1), cell(z, 2))]) {
       const BoundingBox& b = boxes_[static_cast<size_t>(s)];
       if (x >= b.x0 - margin_ && x <= b.x1 + margin_ && y >= b.y0 - margin_ && y <= b.y1 + margin_ &&
           z >= b.z0 - margin_ && z <= b.z1 + margin_)
@@ -44,12 +51,16 @@ class BoxGrid {
   }
 
  private:
-  int cell(double v, double lo, double width) const {
-    return std::clamp(static_cast<int>(std::floor((v - lo) / width)), 0, cells_ - 1);
+  static double low(const BoundingBox& b, int axis) { return axis == 0 ? b.x0 : axis == 1 ? b.y0 : b.z0; }
+  static double high(const BoundingBox& b, int axis) { return axis == 0 ? b.x1 : axis == 1 ? b.y1 : b.z1; }
+  int cell(double v, int axis) const {
+    return std::clamp(static_cast<int>(std::floor((v - lo_[axis]) / width_[axis])), 0, cells_[axis] - 1);
   }
+  size_t index(int i, int j, int k) const { return static_cast<size_t>((k * cells_[1] + j) * cells_[0] + i); }
   const std::vector<BoundingBox>& boxes_;
-  double margin_, lo_x_, lo_y_, cell_x_, cell_y_;
-  int cells_;
+  double margin_;
+  std::array<double, 3> lo_{}, width_{};
+  std::array<int, 3> cells_{};
   std::vector<std::vector<int>> members_;
 };
 

@@ -1,6 +1,7 @@
 #include "constraints/constraint_rows.h"
 
 #include "base/errors.h"
+#include "base/parallel_sort.h"
 
 #include <algorithm>
 #include <cmath>
@@ -30,7 +31,7 @@ std::vector<Located> locate(const std::vector<DofRecord>& records, double snap,
     if (select(r))
       located.push_back({&r, r.body, r.component, std::llround(r.x / snap), std::llround(r.y / snap),
                          std::llround(r.z / snap), r.subdomain, r.dof});
-  std::stable_sort(located.begin(), located.end(), [](const Located& a, const Located& b) { return a.order() < b.order(); });
+  parallel_stable_sort(located, [](const Located& a, const Located& b) { return a.order() < b.order(); });
   return located;
 }
 
