@@ -101,6 +101,29 @@ TEST_P(FreeRowProjectorLayouts, NothingRemainsWhenTheFreeColumnsSpanTheRowSpace)
   EXPECT_LT((G * Tx).norm(), 1e-12);
 }
 
+/// P = I - G'(GG')^{-1} G formed densely: the projector the Hessian's P T and T'P spare.
+Vec dense_coarse_projection(const RowMatrix& G, const Vec& x) {
+  const Eigen::MatrixXd Gd(G);
+  return x - Gd.transpose() * (Gd * Gd.transpose()).llt().solve(Gd * x);
+}
+
+TEST_P(FreeRowProjectorLayouts, PTAndTPWithoutACoarseSolveMatchTheDenseProjector) {
+  for (const int rows : {6, 5}) {  // one floating body mode (k = 1), none (k = 0: P T = T)
+    const RowMatrix G = coarse_with_one_body_mode().topRows(rows);
+    const CoarseGram gram(G, 30, upper_gram(G), GetParam());
+    const FreeRowProjector T(gram, 30);
+    EXPECT_EQ(T.remaining(), rows - 5);
+    const Vec x = random_vector(40, 8), v = random_vector(40, 9);
+    Vec Tx, PTx, TtPv, Ttv;
+    T.apply(x, Tx);
+    T.apply_projected(x, PTx);
+    EXPECT_LT((PTx - dense_coarse_projection(G, Tx)).norm(), 1e-12 * x.norm()) << rows << " rows";
+    T.apply_transpose(dense_coarse_projection(G, v), Ttv);
+    T.apply_projected_transpose(v, TtPv);
+    EXPECT_LT((TtPv - Ttv).norm(), 1e-12 * v.norm()) << rows << " rows";
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Layouts, FreeRowProjectorLayouts,
                          ::testing::Values(GramLayout::separate, GramLayout::contact_last));
 

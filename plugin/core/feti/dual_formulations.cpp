@@ -96,10 +96,11 @@ DualSystem::Formulation DualSystem::free_rows_qp(const DualData& data, const Dua
   const int m = rows();
   auto work = std::make_shared<std::array<Vec, 3>>();  // T x, P F P T x, x without its Ker T part
   for (Vec& v : *work) v.resize(m);
-  const LinearOperator reduced = [this, &T, work](const Vec& x, Vec& y) {  // T' P F P T
-    T.apply(x, (*work)[0]);
-    apply_PFP((*work)[0], (*work)[1]);
-    T.apply_transpose((*work)[1], y);
+  // T' P F P T, its P T and T'P without the coarse solves of P (FreeRowProjector::apply_projected).
+  const LinearOperator reduced = [this, &T, work](const Vec& x, Vec& y) {
+    T.apply_projected(x, (*work)[0]);
+    F_->apply((*work)[0], (*work)[1]);
+    T.apply_projected_transpose((*work)[1], y);
   };
   const double norm = estimated_norm(norm_reduced_, reduced, {}, settings.norm_estimate, result);
   Formulation f;

@@ -26,6 +26,13 @@ FreeRowProjector::FreeRowProjector(const CoarseGram& gram, int free_columns) : G
     solver_C_.compute(C_ * C_.transpose());
     if (solver_C_.info() != Eigen::Success || solver_C_.rcond() < 1e-12)
       throw std::runtime_error("FreeRowProjector: the floating bodies' modes meet no contact row");
+    Z_.resize(r, k);
+    Vec column(r), solution(r);
+    for (Eigen::Index j = 0; j < k; ++j) {
+      column = W_.col(j);
+      gram.solve(column, solution);
+      Z_.col(j) = solution;
+    }
   }
 }
 
@@ -45,6 +52,16 @@ void FreeRowProjector::apply_transpose(const Vec& x, Vec& y) const {
   y = x;
   if (G_.rows() == 0) return;
   y.noalias() -= G_.transpose() * free_gram_->solve(G_F_ * x.head(free_));
+}
+
+void FreeRowProjector::apply_projected(const Vec& x, Vec& y) const {
+  apply(x, y);
+  if (Z_.cols() > 0) y.noalias() -= G_.transpose() * (Z_ * (C_ * x));
+}
+
+void FreeRowProjector::apply_projected_transpose(const Vec& x, Vec& y) const {
+  apply_transpose(x, y);
+  if (Z_.cols() > 0) y.noalias() -= C_.transpose() * (Z_.transpose() * (G_ * x));
 }
 
 void FreeRowProjector::project_out_kernel(const Vec& x, Vec& y) const {

@@ -42,6 +42,12 @@ class FreeRowProjector {
   void project_out_kernel(const Vec& x, Vec& y) const;
   /// y = C'(CC')^{-1} C x: the orthogonal projector onto Im C' (zero when C is empty).
   void project_remaining_range(const Vec& x, Vec& y) const;
+  /// y = P T x, P = I - G'(GG')^{-1} G, without a coarse solve: G T x = W W'G x = W C x, so
+  /// P T x = T x - G' Z C x with Z = (GG')^{-1} W, found once (k solves); T x when no body
+  /// floats (k = 0). Precondition: the coarse Gram matrix GG' is factored.
+  void apply_projected(const Vec& x, Vec& y) const;
+  /// y = T'P x = (P T)' x = T'x - C' Z' G x.
+  void apply_projected_transpose(const Vec& x, Vec& y) const;
 
  private:
   void remove_body_modes(Vec& v) const;  // v <- (I - W W') v
@@ -51,6 +57,7 @@ class FreeRowProjector {
   std::unique_ptr<PartialGram> free_gram_;  // G_F G_F': (G_F G_F')^+ y for y in Im G_F, allocation-free
   Eigen::MatrixXd W_;                        // orthonormal basis of Ker G_F'
   Eigen::MatrixXd C_;                     // W'G
+  Eigen::MatrixXd Z_;                     // (GG')^{-1} W
   Eigen::LLT<Eigen::MatrixXd> solver_C_;  // of C C'
   Eigen::Index free_ = 0;
 };
