@@ -94,7 +94,7 @@ DualSystem::Formulation DualSystem::free_rows_qp(const DualData& data, const Dua
   const FreeRowProjector& T = free_rows();  // built at the first solve: its time is reported apart
   result.times.free_rows = projector_clock.seconds();
   const int m = rows();
-  auto work = std::make_shared<std::array<Vec, 3>>();  // T x, P F P T x, x without its Ker T part
+  auto work = std::make_shared<std::array<Vec, 3>>();  // P T x, F P T x, x without its Ker T part
   for (Vec& v : *work) v.resize(m);
   // T' P F P T, its P T and T'P without the coarse solves of P (FreeRowProjector::apply_projected).
   const LinearOperator reduced = [this, &T, work](const Vec& x, Vec& y) {
