@@ -124,6 +124,20 @@ TEST_P(FreeRowProjectorLayouts, PTAndTPWithoutACoarseSolveMatchTheDenseProjector
   }
 }
 
+TEST_P(FreeRowProjectorLayouts, RemainingNormIsTheNormOfGTx) {
+  // The stopping test's ||G mu|| at every iteration, mu = T x, read as ||C x||.
+  for (const int rows : {6, 5}) {
+    const RowMatrix G = coarse_with_one_body_mode().topRows(rows);
+    const CoarseGram gram(G, 30, upper_gram(G), GetParam());
+    const FreeRowProjector T(gram, 30);
+    const Vec x = random_vector(40, 10);
+    Vec Tx;
+    T.apply(x, Tx);
+    EXPECT_NEAR(T.remaining_norm(x), (G * Tx).norm(), 1e-12 * x.norm()) << rows << " rows";
+    if (rows == 6) EXPECT_GT(T.remaining_norm(x), 1e-3);  // not the trivial 0
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Layouts, FreeRowProjectorLayouts,
                          ::testing::Values(GramLayout::separate, GramLayout::contact_last));
 

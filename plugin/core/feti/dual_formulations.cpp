@@ -135,6 +135,7 @@ DualSystem::Formulation DualSystem::free_rows_qp(const DualData& data, const Dua
     qp.range_projector = [&T](const Vec& v, Vec& y) { T.project_remaining_range(v, y); };
   f.to_multipliers = [&T](const Vec& x, Vec& mu) { T.apply(x, mu); };
   f.equality_norm = [this](const Vec& mu) { return (coarse_->G() * mu).norm(); };  // G lambda - e = G mu
+  f.iterate_equality_norm = [&T](const Vec& x) { return T.remaining_norm(x); };  // ||G T x|| = ||C x||
   // The start without its part in Ker T, which T'PFPT does not see (free rows only: bounds kept).
   f.start.resize(m);
   T.project_out_kernel(shifted_start(settings, data, m), f.start);

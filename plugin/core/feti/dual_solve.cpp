@@ -71,12 +71,14 @@ Vec DualSystem::run(DualPath route, Formulation formulation, const DualStop& sto
     formulation.to_multipliers(x, mu_of_x);
     return mu_of_x;
   };
-  // The stopping test at the solver's iterate x with projected gradient gP (inf- and 2-norm).
+  // The stopping test at the solver's iterate x with projected gradient gP (inf- and 2-norm);
+  // x's multipliers formed only for a primal check.
   const auto converged = [&](const Vec& x, double gradient_inf, double gradient_norm) {
-    const Vec& mu = multipliers(x);
-    if (!formulation.equality_norm) return stop(mu, gradient_inf, gradient_norm);
-    result.equality_norm = formulation.equality_norm(mu);
-    return stop(mu, gradient_inf, gradient_norm, result.equality_norm, result.equality_reference);
+    const RelativeKktStop::Multipliers mu = [&]() -> const Vec& { return multipliers(x); };
+    if (!formulation.equality_norm) return stop(x, mu, gradient_inf, gradient_norm);
+    result.equality_norm = formulation.iterate_equality_norm ? formulation.iterate_equality_norm(x)
+                                                             : formulation.equality_norm(mu());
+    return stop(x, mu, gradient_inf, gradient_norm, result.equality_norm, result.equality_reference);
   };
   const qp::Budget budget(settings.max_hessian);
   Vec& x = formulation.start;

@@ -223,6 +223,9 @@ class DualSystem {
     /// ||G mu||, which the stopping test weighs (empty: the iterates meet G mu = 0 by
     /// construction, or nothing floats).
     std::function<double(const Vec& mu)> equality_norm;
+    /// The same ||G mu|| from the solver's iterate x without forming mu, for the test at
+    /// every iteration (empty: equality_norm of mu).
+    std::function<double(const Vec& x)> iterate_equality_norm;
     Vec start;  ///< the solver's first iterate
   };
   // The formulations (dual_formulations.cpp), each the QP of one path; `bounds` are mu's.

@@ -40,6 +40,8 @@ class FreeRowProjector {
   /// subspace on which T is one to one. With M an approximate inverse of P F P, this
   /// projector, then P M P, then it again approximate the inverse of T'PFPT there.
   void project_out_kernel(const Vec& x, Vec& y) const;
+  /// ||G T x|| without T: G T x = W C x and W has orthonormal columns, so it is ||C x||.
+  double remaining_norm(const Vec& x) const { return C_.rows() ? (C_ * x).norm() : 0.0; }
   /// y = C'(CC')^{-1} C x: the orthogonal projector onto Im C' (zero when C is empty).
   void project_remaining_range(const Vec& x, Vec& y) const;
   /// y = P T x, P = I - G'(GG')^{-1} G, without a coarse solve: G T x = W W'G x = W C x, so

@@ -6,17 +6,17 @@
 
 namespace ffeti {
 
-RelativeKktStop::RelativeKktStop(double tolerance, std::function<PrimalCheck(const Vec& x)> check)
+RelativeKktStop::RelativeKktStop(double tolerance, std::function<PrimalCheck(const Vec& mu)> check)
     : tolerance_(tolerance), check_(std::move(check)), target_(tolerance), equality_target_(tolerance),
       scale_(std::numeric_limits<double>::infinity()),
       checked_gradient_(std::numeric_limits<double>::infinity()) {}
 
-bool RelativeKktStop::operator()(const Vec& x, double gradient, double equality) {
+bool RelativeKktStop::operator()(const Vec& x, const Multipliers& mu, double gradient, double equality) {
   if (passed_.size() == x.size() && passed_ == x) return true;
   const bool predicted_done = gradient <= target_ * scale_ && equality <= equality_target_ &&
                               (!last_check_failed_ || gradient <= 0.5 * checked_gradient_);
   if (!predicted_done && gradient > 0.01 * checked_gradient_) return false;
-  const PrimalCheck check = check_(x);
+  const PrimalCheck check = check_(mu());
   ++evaluations_;
   scale_ = check.displacement;
   checked_gradient_ = gradient;

@@ -42,13 +42,18 @@ struct PrimalCheck {
 /// solve on the scenes of the repository.
 class RelativeKktStop {
  public:
-  /// `check(x)`: the primal check of the dual iterate x (collective; the test is called
-  /// with the same x on every rank).
-  RelativeKktStop(double tolerance, std::function<PrimalCheck(const Vec& x)> check);
+  /// The shifted multipliers mu of the solver's iterate, formed only for a check (the free
+  /// rows' mu = T x costs a solve with the coarse problem's Gram matrix).
+  using Multipliers = std::function<const Vec&()>;
 
-  /// True if the primal field of x meets the test. `gradient` is ||gP(x)||_inf, `equality`
-  /// ||G lambda - e|| relative to its reference (0 without a coarse space).
-  bool operator()(const Vec& x, double gradient, double equality = 0);
+  /// `check(mu)`: the primal check of the shifted multipliers mu (collective; the test is
+  /// called with the same iterate on every rank).
+  RelativeKktStop(double tolerance, std::function<PrimalCheck(const Vec& mu)> check);
+
+  /// True if the primal field of the solver's iterate x (its multipliers `mu()`) meets the
+  /// test. `gradient` is ||gP(x)||_inf, `equality` ||G lambda - e|| relative to its
+  /// reference (0 without a coarse space).
+  bool operator()(const Vec& x, const Multipliers& mu, double gradient, double equality = 0);
 
   /// The equality prediction's target: check when ||G lambda - e|| / reference is below it.
   double equality_target() const { return equality_target_; }
@@ -66,12 +71,12 @@ class RelativeKktStop {
   double scale_;                // ||u||_inf at the last check
   double checked_gradient_;     // ||gP||_inf at the last check
   bool last_check_failed_ = false;
-  Vec passed_;                  // the iterate that passed
+  Vec passed_;                  // the solver's iterate that passed
   int evaluations_ = 0;
   double measure_ = -1;
 };
 
-/// The stopping test of one dual solve at an iterate's shifted multipliers mu, given its
+/// The stopping test of one dual solve at a solver iterate x and its shifted multipliers mu, given its
 /// projected gradient gP (inf- and 2-norm) and, where the formulation leaves the balance of
 /// floating bodies to the solver, ||G mu|| and its reference: relative_kkt asks `kkt`,
 /// the seed's test compares ||gP||_2 with tol ||b||_2 (and ||G mu|| with tol times its
@@ -81,12 +86,14 @@ class DualStop {
   DualStop(StoppingTest kind, double tolerance, double gradient_reference, RelativeKktStop& kkt)
       : kind_(kind), tolerance_(tolerance), gradient_tolerance_(tolerance * gradient_reference), kkt_(kkt) {}
 
-  bool operator()(const Vec& mu, double gradient_inf, double gradient_norm) const {
-    return kind_ == StoppingTest::seed ? gradient_norm <= gradient_tolerance_ : kkt_(mu, gradient_inf);
+  /// At the solver's iterate x, its multipliers mu() formed only if a primal check needs them.
+  bool operator()(const Vec& x, const RelativeKktStop::Multipliers& mu, double gradient_inf,
+                  double gradient_norm) const {
+    return kind_ == StoppingTest::seed ? gradient_norm <= gradient_tolerance_ : kkt_(x, mu, gradient_inf);
   }
-  bool operator()(const Vec& mu, double gradient_inf, double gradient_norm, double equality_norm,
-                  double equality_reference) const {
-    if (kind_ == StoppingTest::relative_kkt) return kkt_(mu, gradient_inf, equality_norm / equality_reference);
+  bool operator()(const Vec& x, const RelativeKktStop::Multipliers& mu, double gradient_inf, double gradient_norm,
+                  double equality_norm, double equality_reference) const {
+    if (kind_ == StoppingTest::relative_kkt) return kkt_(x, mu, gradient_inf, equality_norm / equality_reference);
     return equality_norm <= tolerance_ * equality_reference && gradient_norm <= gradient_tolerance_;
   }
 
