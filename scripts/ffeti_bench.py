@@ -166,6 +166,12 @@ def machine_line(run_row):
     return line
 
 
+def run_machine(run_row):
+    """The machine a part of a page ran on (its run row's processor): a part re-run on its own
+    may have run on another machine than the page's whole run, whose line the header holds."""
+    return run_row.get("cpu") or "an unrecorded machine"
+
+
 def csv_path(page, table):
     return os.path.join(OUT, f"{page}-{table}.csv")
 

@@ -13,7 +13,7 @@ runs a build tree's plugin instead of the installed one)."""
 import argparse
 import os
 
-from ffeti_bench import OUT, ROOT, begin_run, end_run, f, markdown_table, read_csv, run, span, write_csv
+from ffeti_bench import OUT, ROOT, begin_run, end_run, f, markdown_table, read_csv, run, run_machine, span, write_csv
 
 PAGE = "friction"
 MESHES = os.path.join(ROOT, "meshes")
@@ -144,7 +144,7 @@ def own_run_words():
     if not os.path.exists(path):
         return "this run"
     own = read_csv(PAGE, OWN_RUN)[0]
-    return (f"a run of this table on its own ({own['date']}, {float(own['elapsed_s']):.0f} s, load average "
+    return (f"a run of this table on its own on {run_machine(own)} ({own['date']}, {float(own['elapsed_s']):.0f} s, load average "
             f"{float(own['load_at_start']):.1f} as it started), after the page's run")
 
 

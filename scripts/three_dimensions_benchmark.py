@@ -30,7 +30,7 @@ from matplotlib.collections import PolyCollection  # noqa: E402
 from matplotlib.colors import LogNorm  # noqa: E402
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
-from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, listing, machine_line, markdown_table,  # noqa: E402
+from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, listing, machine_line, markdown_table, run_machine,  # noqa: E402
                          read_csv, run, save_page, span, write_csv)
 import three_dimensions_elasticity as elasticity  # noqa: E402
 import three_dimensions_peers as peers  # noqa: E402
@@ -456,7 +456,7 @@ def render():
         f"data: [{PAGE}-cubes.csv]({PAGE}-cubes.csv), [{PAGE}-reference.csv]({PAGE}-reference.csv),",
         f"[{PAGE}-factors.csv]({PAGE}-factors.csv),",
         f"[{PAGE}-plane.csv]({PAGE}-plane.csv). This part (these tables, the patch test, the 3D gradients",
-        f"and the contact search below) ran on its own: {cubes_run['date']}, {float(cubes_run['elapsed_s']):.0f} s,",
+        f"and the contact search below) ran on its own on {run_machine(cubes_run)}: {cubes_run['date']}, {float(cubes_run['elapsed_s']):.0f} s,",
         f"load average {float(cubes_run['load_at_start']):.1f} as it started, {float(cubes_run['load_at_end']):.1f} as it ended.",
         "",
         *markdown_table(cubes, CUBES),
@@ -518,7 +518,7 @@ def render():
         f"balance the load to {span([f(r, 'balance_error') for r in sphere], '.0e')} on both supports.",
         "",
         f"The rows above and the picture below come from one run of this section "
-        f"(`three_dimensions_benchmark.py --sphere` runs it alone): {sphere_run['date']}, "
+        f"(`three_dimensions_benchmark.py --sphere` runs it alone) on {run_machine(sphere_run)}: {sphere_run['date']}, "
         f"{float(sphere_run['elapsed_s']):.0f} s, load average {float(sphere_run['load_at_start']):.1f} as it started, "
         f"{float(sphere_run['load_at_end']):.1f} as it ended.",
         "",

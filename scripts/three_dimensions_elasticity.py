@@ -16,7 +16,7 @@ import subprocess
 
 import matplotlib.pyplot as plt  # the driver chooses the backend first
 
-from ffeti_bench import OUT, PHASES, end_run, f, markdown_table, phase_table, read_csv, run, write_csv
+from ffeti_bench import OUT, PHASES, end_run, f, markdown_table, phase_table, read_csv, run, run_machine, write_csv
 import three_dimensions_peers as peers
 
 PAGE = "three-dimensions"
@@ -163,7 +163,7 @@ def section(memory_gib):
         "node-to-node contact on the shared face with a crowned gap, so that the contact zone is",
         "partial. Each cube is cut into boxes of 8 cells per side (H/h = 8 fixed), P1 elasticity, Total",
         f"FETI: every box floats, six rigid modes each, tol = 1e-4, default options. BLAS used by CHOLMOD: {blas}.",
-        f"This part ran on its own: {run_row['date']}, {float(run_row['elapsed_s']):.0f} s, load average "
+        f"This part ran on its own on {run_machine(run_row)}: {run_row['date']}, {float(run_row['elapsed_s']):.0f} s, load average "
         f"{float(run_row['load_at_start']):.1f} as it started, {float(run_row['load_at_end']):.1f} as it ended. Raw data:",
         f"[{PAGE}-elasticity-weak.csv]({PAGE}-elasticity-weak.csv), [{PAGE}-elasticity-coarse.csv]({PAGE}-elasticity-coarse.csv),",
         f"[{PAGE}-elasticity-variants.csv]({PAGE}-elasticity-variants.csv).",
@@ -269,7 +269,7 @@ def gram_section():
         "of the kept rows); `contact-last` factorizes GG' once with the contact boxes' modes last and",
         "solves each with a dense Cholesky factor of its Schur complement on them (`auto` picks it",
         "from 3000 rigid modes on). `contact modes`: the rigid modes of the boxes on the contact face.",
-        f"One run after the other ({run_row['date']}, {float(run_row['elapsed_s']):.0f} s, load average "
+        f"One run after the other on {run_machine(run_row)} ({run_row['date']}, {float(run_row['elapsed_s']):.0f} s, load average "
         f"{float(run_row['load_at_start']):.1f} as it started, {float(run_row['load_at_end']):.1f} as it ended). "
         f"Raw data: [{PAGE}-{table('gram')}.csv]({PAGE}-{table('gram')}.csv).",
         "",
@@ -309,7 +309,7 @@ def mpi_section():
         "",
         "`mpirun -np 2 FreeFem++-mpi edp/cubes-elasticity-3d.edp`: each rank meshes (`ffetiGrid3Owned`),",
         "assembles and factorizes its own boxes and holds the whole coarse problem; beside one process, one run after the other"
-        f" ({run_row['date']}, load average {float(run_row['load_at_start']):.1f} as it started). Peak MB per",
+        f" ({run_machine(run_row)}, {run_row['date']}, load average {float(run_row['load_at_start']):.1f} as it started). Peak MB per",
         "rank: each rank's own resident set (the RANK lines).",
         "",
         *markdown_table(rows, [

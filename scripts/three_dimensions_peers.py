@@ -18,7 +18,7 @@ import os
 
 import matplotlib.pyplot as plt  # the driver chooses the backend first
 
-from ffeti_bench import OUT, ROOT, OverLimit, end_run, f, markdown_table, read_csv, run, write_csv
+from ffeti_bench import OUT, ROOT, OverLimit, end_run, f, markdown_table, read_csv, run, run_machine, write_csv
 
 PAGE = "three-dimensions"
 TABLE = "peers"
@@ -250,7 +250,7 @@ def section():
         "is one factorization and solve, the floor of an active set method with that solver. A peer stops",
         f"at the first size where its growth over its two largest sizes run projects more than {time_limit_s / 60:.0f} min",
         f"or {memory_limit_mb / 1024:.0f} GiB, or where it reaches a limit while it runs (killed at {time_limit_s / 60:.0f} min;",
-        f"{memory_limit_mb / 1024:.0f} GiB of address space). This part ran on its own: {run_row['date']}, "
+        f"{memory_limit_mb / 1024:.0f} GiB of address space). This part ran on its own on {run_machine(run_row)}: {run_row['date']}, "
         f"{float(run_row['elapsed_s']):.0f} s, load average {float(run_row['load_at_start']):.1f} as it started, "
         f"{float(run_row['load_at_end']):.1f} as it ended. Raw data: [{PAGE}-{TABLE}.csv]({PAGE}-{TABLE}.csv).",
         "",
