@@ -49,6 +49,12 @@ constexpr double kFirstSolveTolerance = 1e-2;
 /// the last relative change of the bounds)): as exact as the fixed point's progress can use.
 /// 0.1 left solves that stopped at once, their bounds crawling towards the fixed point.
 constexpr double kBoundFollowing = 1e-2;
+/// ... but at most this factor tighter than the last solve: a solve whose start already met
+/// its loose tolerance leaves the bounds as they were (change 0), which says nothing about
+/// how far the fixed point at a tighter tolerance lies. Without the limit the next solve ran
+/// to tol at once (the 2D block forced to slide: 9e-3 -> 1e-6, after which the bounds still
+/// moved by 19 %). Measured against 0.03, 0.05, 0.2 and none ([log](docs/log.md), 2026-11-28).
+constexpr double kLargestTightening = 0.1;
 
 }  // namespace
 
@@ -92,7 +98,8 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
       out.dual.status = SolveStatus::max_iterations;
       break;
     }
-    settings.tolerance = std::max(tol, std::min(settings.tolerance, kBoundFollowing * out.bound_change));
+    settings.tolerance = std::max({tol, std::min(settings.tolerance, kBoundFollowing * out.bound_change),
+                                   kLargestTightening * settings.tolerance});
     settings.start = start_on_new_bounds(c, out.dual.lambda, g, next);  // from the last one's multipliers
     g = next;
     // ... not settled: settling it on its contact set (settle=, tuned for a start from another
