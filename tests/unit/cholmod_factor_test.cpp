@@ -206,5 +206,47 @@ TEST(CholmodFactor, DistinctWorkspacesSolveOneFactorFromSeveralThreadsAtOnce) {
   }
 }
 
+TEST(CholmodFactor, SupernodalSolvesMatchTheSimplicialFactorsSolves) {
+  // The supernodal factor's triangles run through Eigen (supernodal_solve.h), the simplicial
+  // one's through CHOLMOD: two factorizations and two solve codes of one matrix.
+  const SparseMatrix K = block(6);
+  CholmodFactor supernodal(FactorKind::supernodal), simplicial(FactorKind::simplicial);
+  ASSERT_LT(supernodal.factorize(K), 0);
+  ASSERT_LT(simplicial.factorize(K), 0);
+  ASSERT_TRUE(supernodal.supernodal());
+  ASSERT_FALSE(simplicial.supernodal());
+  Eigen::MatrixXd B(K.rows(), 5);
+  for (Eigen::Index j = 0; j < B.cols(); ++j) B.col(j) = Vec::LinSpaced(K.rows(), -1.0 - double(j), 2.0 + double(j) * j);
+  Vec x, expected;
+  supernodal.solve(Vec(B.col(0)), x);
+  simplicial.solve(Vec(B.col(0)), expected);
+  EXPECT_LT((x - expected).norm(), 1e-11 * expected.norm());
+  EXPECT_LT((K * x - B.col(0)).norm(), 1e-10 * B.col(0).norm());
+  Eigen::MatrixXd X, expected_block;
+  supernodal.solve(B, X);
+  simplicial.solve(B, expected_block);
+  EXPECT_LT((X - expected_block).norm(), 1e-11 * expected_block.norm());
+  for (Eigen::Index j = 0; j < B.cols(); ++j) {  // a column of the block (Eigen's GEMM) as the column alone (GEMV)
+    Vec column;
+    supernodal.solve(Vec(B.col(j)), column);
+    EXPECT_LT((X.col(j) - column).norm(), 1e-13 * column.norm()) << "column " << j;
+  }
+}
+
+TEST(CholmodFactor, SupernodalForwardAndBackwardHalvesComposeToTheSolve) {
+  const SparseMatrix K = block(6);
+  CholmodFactor factor(FactorKind::supernodal);
+  ASSERT_LT(factor.factorize(K), 0);
+  ASSERT_TRUE(factor.supernodal());
+  const Vec b = Vec::LinSpaced(K.rows(), 3, -1);
+  Vec y, x, whole;
+  factor.forward(b, y);
+  factor.backward(y, x);
+  factor.solve(b, whole);
+  EXPECT_LT((x - whole).norm(), 1e-12 * whole.norm());
+  // y = L^{-1} P b: ||y||^2 = b' A^{-1} b, whatever L's layout.
+  EXPECT_NEAR(y.squaredNorm(), b.dot(whole), 1e-10 * std::abs(b.dot(whole)));
+}
+
 }  // namespace
 }  // namespace ffeti

@@ -1,5 +1,7 @@
 #include "feti/cholmod_factor.h"
 
+#include "feti/supernodal_solve.h"
+
 #include <omp.h>
 
 #include <algorithm>
@@ -290,11 +292,21 @@ void CholmodFactor::forward(const Vec& b, Vec& y) const {
   const auto* permutation = static_cast<const int*>(factor_->Perm);
   permuted_.resize(b.size());
   for (Eigen::Index k = 0; k < b.size(); ++k) permuted_[k] = b[permutation[k]];
+  if (factor_->is_super) {
+    y = permuted_;
+    supernodal_forward(*factor_, y, own_workspace_.supernodal_below_);
+    return;
+  }
   triangular_solve(CHOLMOD_L, permuted_, y);
 }
 
 void CholmodFactor::backward(const Vec& y, Vec& x) const {
-  triangular_solve(CHOLMOD_Lt, y, permuted_);
+  if (factor_->is_super) {
+    permuted_ = y;
+    supernodal_backward(*factor_, permuted_, own_workspace_.supernodal_below_);
+  } else {
+    triangular_solve(CHOLMOD_Lt, y, permuted_);
+  }
   const auto* permutation = static_cast<const int*>(factor_->Perm);
   x.resize(y.size());
   for (Eigen::Index k = 0; k < y.size(); ++k) x[permutation[k]] = permuted_[k];
@@ -375,6 +387,18 @@ void CholmodFactor::solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x, CholmodS
 
 void CholmodFactor::solve_columns(const double* b, Eigen::Index rows, Eigen::Index cols, double* x,
                                   CholmodSolveWorkspace& w, CholmodSolveWorkspace::Buffers& buffers) const {
+  if (factor_->is_super) {  // A = P'LL'P: x = P'L^{-T}L^{-1}P b, the triangles through Eigen (supernodal_solve.h)
+    const auto* permutation = static_cast<const int*>(factor_->Perm);
+    Eigen::MatrixXd& permuted = w.supernodal_rhs_;
+    permuted.resize(rows, cols);
+    for (Eigen::Index j = 0; j < cols; ++j)
+      for (Eigen::Index k = 0; k < rows; ++k) permuted(k, j) = b[j * rows + permutation[k]];
+    supernodal_forward(*factor_, permuted, w.supernodal_below_);
+    supernodal_backward(*factor_, permuted, w.supernodal_below_);
+    for (Eigen::Index j = 0; j < cols; ++j)
+      for (Eigen::Index k = 0; k < rows; ++k) x[j * rows + permutation[k]] = permuted(k, j);
+    return;
+  }
   cholmod_dense rhs = view_columns(b, rows, cols);
   if (!cholmod_solve2(CHOLMOD_A, factor_, &rhs, nullptr, &buffers.solution, nullptr, &buffers.y, &buffers.e,
                       &w.common_))

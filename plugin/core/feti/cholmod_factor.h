@@ -65,6 +65,7 @@ class CholmodSolveWorkspace {
   };
   cholmod_common common_;
   Buffers vector_, block_, interface_;
+  Eigen::MatrixXd supernodal_rhs_, supernodal_below_;  ///< supernodal solves' permuted columns and scratch
   cholmod_dense* interface_rhs_ = nullptr;  ///< dense n-vector, written only on the interface
   cholmod_sparse* reached_ = nullptr;       ///< Xset: the columns a solve_on_interface reached
 };
