@@ -233,6 +233,27 @@ TEST(CholmodFactor, SupernodalSolvesMatchTheSimplicialFactorsSolves) {
   }
 }
 
+TEST(CholmodFactor, SupernodalSolvesFromSeveralThreadsAtOnceWithDistinctWorkspaces) {
+  const SparseMatrix K = block(6);
+  CholmodFactor factor(FactorKind::supernodal);
+  ASSERT_LT(factor.factorize(K), 0);
+  ASSERT_TRUE(factor.supernodal());
+  constexpr int kRightHandSides = 16;
+  std::vector<Vec> b(kRightHandSides), x(kRightHandSides);
+  for (int k = 0; k < kRightHandSides; ++k) b[k] = Vec::LinSpaced(K.rows(), -1.0 - k, 2.0 + k);
+#pragma omp parallel num_threads(2)
+  {
+    CholmodSolveWorkspace workspace;  // the supernodal solve's permuted columns and scratch live here
+#pragma omp for schedule(static, 1)
+    for (int k = 0; k < kRightHandSides; ++k) factor.solve(b[k], x[k], workspace);
+  }
+  for (int k = 0; k < kRightHandSides; ++k) {
+    Vec expected;
+    factor.solve(b[k], expected);
+    EXPECT_EQ(x[k], expected) << "right-hand side " << k;
+  }
+}
+
 TEST(CholmodFactor, SupernodalForwardAndBackwardHalvesComposeToTheSolve) {
   const SparseMatrix K = block(6);
   CholmodFactor factor(FactorKind::supernodal);
