@@ -207,8 +207,9 @@ TEST(CholmodFactor, DistinctWorkspacesSolveOneFactorFromSeveralThreadsAtOnce) {
 }
 
 TEST(CholmodFactor, SupernodalSolvesMatchTheSimplicialFactorsSolves) {
-  // The supernodal factor's triangles run through Eigen (supernodal_solve.h), the simplicial
-  // one's through CHOLMOD: two factorizations and two solve codes of one matrix.
+  // The supernodal factor (supernodal_factorize.cpp) and its triangles (supernodal_solve.cpp)
+  // run through Eigen, the simplicial one through CHOLMOD: two factorizations and two solve
+  // codes of one matrix.
   const SparseMatrix K = block(6);
   CholmodFactor supernodal(FactorKind::supernodal), simplicial(FactorKind::simplicial);
   ASSERT_LT(supernodal.factorize(K), 0);
@@ -231,6 +232,23 @@ TEST(CholmodFactor, SupernodalSolvesMatchTheSimplicialFactorsSolves) {
     supernodal.solve(Vec(B.col(j)), column);
     EXPECT_LT((X.col(j) - column).norm(), 1e-13 * column.norm()) << "column " << j;
   }
+}
+
+TEST(CholmodFactor, SupernodalFactorizationRefusesAnIndefiniteMatrixAndRefactorizesAfterwards) {
+  // The supernodal values come from supernodal_factorize.cpp; an indefinite block there hands
+  // the matrix to CHOLMOD's own factorization, which names the column.
+  const SparseMatrix K = block(6);
+  SparseMatrix indefinite = K;
+  const int middle = static_cast<int>(K.rows() / 2);
+  indefinite.coeffRef(middle, middle) = -indefinite.coeff(middle, middle);
+  CholmodFactor factor(FactorKind::supernodal);
+  EXPECT_GE(factor.factorize(indefinite), 0);
+  ASSERT_LT(factor.factorize(K), 0);  // the same analysis, values written again
+  ASSERT_TRUE(factor.supernodal());
+  const Vec b = Vec::LinSpaced(K.rows(), -2, 1);
+  Vec x;
+  factor.solve(b, x);
+  EXPECT_LT((K * x - b).norm(), 1e-10 * b.norm());
 }
 
 TEST(CholmodFactor, SupernodalSolvesFromSeveralThreadsAtOnceWithDistinctWorkspaces) {

@@ -1,6 +1,8 @@
 #include "feti/cholmod_factor.h"
 
+#include "feti/supernodal_factorize.h"
 #include "feti/supernodal_solve.h"
+#include "parallel/process.h"
 
 #include <omp.h>
 
@@ -183,11 +185,26 @@ int CholmodFactor::factorize(const SparseMatrix& A, SharedAnalyses* shared, cons
 }
 
 int CholmodFactor::factorize_numeric(cholmod_sparse& view) {
+  if (of_ == FactorOf::subdomain) ++numeric_factorizations;
+  if (factor_->is_super) {  // CHOLMOD's analysis, Eigen's dense kernels (supernodal_factorize.h)
+    if (factor_->xtype == CHOLMOD_PATTERN &&
+        !cholmod_change_factor(CHOLMOD_REAL, true, true, true, true, factor_, &common_))
+      throw std::runtime_error("CHOLMOD allocation failed (out of memory?)");
+    // One thread: Eigen runs a product of more than ~50,000 flops on every OpenMP thread
+    // where no parallel region is open (the coarse problem's factor): forking for each small
+    // supernode cost ten times the work, and its blocking, hence the rounding, would depend
+    // on the thread count (two ranks must give the serial answer to the digit).
+    const ThreadLimit one_thread(1);
+    if (supernodal_factorize(view, *factor_)) {
+      factor_->minor = factor_->n;
+      return -1;
+    }
+    // Not positive definite: CHOLMOD's own factorization names the column, as for any factor.
+  }
   {
     const SerialRegionsOnOneThread serial;
     cholmod_factorize(&view, factor_, &common_);
   }
-  if (of_ == FactorOf::subdomain) ++numeric_factorizations;
   if (common_.status == CHOLMOD_NOT_POSDEF) return static_cast<int>(factor_->minor);
   if (common_.status == CHOLMOD_OUT_OF_MEMORY) throw std::runtime_error("a factorization ran out of memory (CHOLMOD)");
   if (common_.status < CHOLMOD_OK)
@@ -388,6 +405,7 @@ void CholmodFactor::solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x, CholmodS
 void CholmodFactor::solve_columns(const double* b, Eigen::Index rows, Eigen::Index cols, double* x,
                                   CholmodSolveWorkspace& w, CholmodSolveWorkspace::Buffers& buffers) const {
   if (factor_->is_super) {  // A = P'LL'P: x = P'L^{-T}L^{-1}P b, the triangles through Eigen (supernodal_solve.h)
+    const ThreadLimit one_thread(1);  // as in factorize_numeric: the blocks' products on this thread
     const auto* permutation = static_cast<const int*>(factor_->Perm);
     Eigen::MatrixXd& permuted = w.supernodal_rhs_;
     permuted.resize(rows, cols);
