@@ -162,7 +162,9 @@ def section(memory_gib):
         "clamped at its bottom, the upper floating, pressed by a traction on a quarter of its top;",
         "node-to-node contact on the shared face with a crowned gap, so that the contact zone is",
         "partial. Each cube is cut into boxes of 8 cells per side (H/h = 8 fixed), P1 elasticity, Total",
-        f"FETI: every box floats, six rigid modes each, tol = 1e-4, default options. BLAS used by CHOLMOD: {blas}.",
+        f"FETI: every box floats, six rigid modes each, tol = 1e-4, default options. BLAS on the machine: {blas}, "
+        "which the factors do not call (CHOLMOD's simplicial factors need none; supernodal ones are computed and "
+        "solved on CHOLMOD's analysis through Eigen's dense kernels, [algorithms](../algorithms.md)).",
         f"This part ran on its own on {run_machine(run_row)}: {run_row['date']}, {float(run_row['elapsed_s']):.0f} s, load average "
         f"{float(run_row['load_at_start']):.1f} as it started, {float(run_row['load_at_end']):.1f} as it ended. Raw data:",
         f"[{PAGE}-elasticity-weak.csv]({PAGE}-elasticity-weak.csv), [{PAGE}-elasticity-coarse.csv]({PAGE}-elasticity-coarse.csv),",
@@ -216,7 +218,7 @@ def section(memory_gib):
         f"{(f(last, 'time_coarse') + f(last, 'time_primal_checks') + f(last, 'time_free_rows')) / f(last, 'time_scene'):.0%} "
         f"of the scene's time, the Hessian multiplications {f(last, 'time_hessian') / f(last, 'time_scene'):.0%}: "
         "GG''s sparse Cholesky factor (of order six times the subdomains) fills like that of a 3D "
-        "problem and, with the reference BLAS, runs at a few GFlop/s; it is now the only sparse factor of the "
+        "problem; it is now the only sparse factor of the "
         "coarse problem (G_S G_S' and G_F G_F' each took one of their own before; [log](../log.md), 2026-11-28). "
         "Not done: hybrid FETI (subdomains glued into clusters, a coarse problem of the clusters) or a coarse "
         "problem shared over ranks, which would shrink GG''s factor itself.",
@@ -240,9 +242,8 @@ def section(memory_gib):
         "",
         "The same scene with each preconditioner (lumped: a sparse product; Dirichlet: a factorized",
         "interior block per subdomain, one factor per set of identical boxes) and each CHOLMOD factor",
-        "kind (simplicial; supernodal with",
-        f"dense blocks through the BLAS, here {blas}; auto, the default, chooses by CHOLMOD's flops per",
-        "factor nonzero).",
+        "kind (simplicial, CHOLMOD's; supernodal on CHOLMOD's analysis with its dense blocks through Eigen's",
+        "kernels; auto, the default, chooses by CHOLMOD's flops per factor nonzero).",
         "",
         *markdown_table(variants, [
             ("case", "case"), ("Hessian mult.", "hessian"), ("factor nnz", ("factor_nnz", ".3g")),
