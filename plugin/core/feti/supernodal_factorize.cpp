@@ -103,6 +103,8 @@ bool supernodal_factorize(const cholmod_sparse& lower, cholmod_factor& L) {
     }
 
     auto diagonal = Lj.topRows(width);
+    // Eigen's blocked in-place Cholesky, the kernel behind Eigen::LLT, called directly: it
+    // works on this strided block of L without a copy and says whether a pivot failed.
     if (Eigen::internal::llt_inplace<double, Eigen::Lower>::blocked(diagonal) >= 0) return false;
     if (height > width) {
       auto below = Lj.bottomRows(height - width);
