@@ -405,7 +405,7 @@ void CholmodFactor::solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x, CholmodS
 void CholmodFactor::solve_columns(const double* b, Eigen::Index rows, Eigen::Index cols, double* x,
                                   CholmodSolveWorkspace& w, CholmodSolveWorkspace::Buffers& buffers) const {
   if (factor_->is_super) {  // A = P'LL'P: x = P'L^{-T}L^{-1}P b, the triangles through Eigen (supernodal_solve.h)
-    const ThreadLimit one_thread(1);  // as in factorize_numeric: the blocks' products on this thread
+    const ThreadLimit one_thread(cols > 1 ? 1 : 0);  // as in factorize_numeric: a block's products on this thread
     const auto* permutation = static_cast<const int*>(factor_->Perm);
     Eigen::MatrixXd& permuted = w.supernodal_rhs_;
     permuted.resize(rows, cols);
