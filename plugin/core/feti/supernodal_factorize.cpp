@@ -1,5 +1,7 @@
 #include "feti/supernodal_factorize.h"
 
+#include "feti/supernodal_solve.h"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -71,7 +73,7 @@ bool supernodal_factorize(const cholmod_sparse& lower, cholmod_factor& L) {
     head[static_cast<size_t>(target)] = d;
   };
   std::vector<int> position_in(static_cast<size_t>(n), -1);  // a row's place in the current supernode
-  Eigen::MatrixXd update;
+  Eigen::MatrixXd scratch;  // the updates' products (scratch_block)
 
   for (int j = 0; j < nsuper; ++j) {
     const int first = super[j], width = super[j + 1] - first, height = pi[j + 1] - pi[j];
@@ -92,7 +94,7 @@ bool supernodal_factorize(const cholmod_sparse& lower, cholmod_factor& L) {
       const int m = d_height - p, m1 = q - p;
       const Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> Ld(x + px[d] + p, m, d_width,
                                                                          Eigen::OuterStride<>(d_height));
-      update.resize(m, m1);
+      auto update = scratch_block(scratch, m, m1);
       update.noalias() = Ld * Ld.topRows(m1).transpose();
       for (int k = 0; k < m1; ++k) {
         const int column = d_rows[p + k] - first;

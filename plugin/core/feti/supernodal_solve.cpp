@@ -31,8 +31,7 @@ void forward_vector(const cholmod_factor& factor, double* x, Eigen::MatrixXd& sc
     Eigen::Map<Eigen::VectorXd> own(x + node.first_column, node.width);
     node.block.topRows(node.width).triangularView<Eigen::Lower>().solveInPlace(own);
     if (node.below() == 0) continue;
-    scratch.resize(node.below(), 1);
-    Eigen::Map<Eigen::VectorXd> below(scratch.data(), node.below());
+    auto below = scratch_block(scratch, node.below(), 1).col(0);
     below.noalias() = node.block.bottomRows(node.below()) * own;
     for (int i = 0; i < node.below(); ++i) x[node.rows_below[i]] -= below[i];
   }
@@ -43,8 +42,7 @@ void backward_vector(const cholmod_factor& factor, double* x, Eigen::MatrixXd& s
     const Supernode node(factor, k);
     Eigen::Map<Eigen::VectorXd> own(x + node.first_column, node.width);
     if (node.below() > 0) {
-      scratch.resize(node.below(), 1);
-      Eigen::Map<Eigen::VectorXd> below(scratch.data(), node.below());
+      auto below = scratch_block(scratch, node.below(), 1).col(0);
       for (int i = 0; i < node.below(); ++i) below[i] = x[node.rows_below[i]];
       own.noalias() -= node.block.bottomRows(node.below()).transpose() * below;
     }
@@ -54,26 +52,26 @@ void backward_vector(const cholmod_factor& factor, double* x, Eigen::MatrixXd& s
 
 }  // namespace
 
-void supernodal_forward(const cholmod_factor& factor, Eigen::Ref<Eigen::MatrixXd> X, Eigen::MatrixXd& below) {
-  if (X.cols() == 1) return forward_vector(factor, X.data(), below);
+void supernodal_forward(const cholmod_factor& factor, Eigen::Ref<Eigen::MatrixXd> X, Eigen::MatrixXd& scratch) {
+  if (X.cols() == 1) return forward_vector(factor, X.data(), scratch);
   for (size_t k = 0; k < factor.nsuper; ++k) {
     const Supernode node(factor, k);
     auto own = X.middleRows(node.first_column, node.width);
     node.block.topRows(node.width).triangularView<Eigen::Lower>().solveInPlace(own);
     if (node.below() == 0) continue;
-    below.resize(node.below(), X.cols());
+    auto below = scratch_block(scratch, node.below(), X.cols());
     below.noalias() = node.block.bottomRows(node.below()) * own;
     for (int i = 0; i < node.below(); ++i) X.row(node.rows_below[i]) -= below.row(i);
   }
 }
 
-void supernodal_backward(const cholmod_factor& factor, Eigen::Ref<Eigen::MatrixXd> X, Eigen::MatrixXd& below) {
-  if (X.cols() == 1) return backward_vector(factor, X.data(), below);
+void supernodal_backward(const cholmod_factor& factor, Eigen::Ref<Eigen::MatrixXd> X, Eigen::MatrixXd& scratch) {
+  if (X.cols() == 1) return backward_vector(factor, X.data(), scratch);
   for (size_t k = factor.nsuper; k-- > 0;) {
     const Supernode node(factor, k);
     auto own = X.middleRows(node.first_column, node.width);
     if (node.below() > 0) {
-      below.resize(node.below(), X.cols());
+      auto below = scratch_block(scratch, node.below(), X.cols());
       for (int i = 0; i < node.below(); ++i) below.row(i) = X.row(node.rows_below[i]);
       own.noalias() -= node.block.bottomRows(node.below()).transpose() * below;
     }

@@ -15,11 +15,18 @@
 
 namespace ffeti {
 
+/// A rows x cols view of `scratch`, which only grows: the supernodes' blocks differ in size,
+/// and resizing a matrix to each would allocate at every supernode of every solve.
+inline Eigen::Map<Eigen::MatrixXd> scratch_block(Eigen::MatrixXd& scratch, Eigen::Index rows, Eigen::Index cols) {
+  if (scratch.size() < rows * cols) scratch.resize(rows * cols, 1);
+  return {scratch.data(), rows, cols};
+}
+
 /// X <- L^{-1} X, the columns of X in the factor's own (permuted) numbering.
-/// `below`: scratch, resized as needed. Precondition: factor.is_super (then LL').
-void supernodal_forward(const cholmod_factor& factor, Eigen::Ref<Eigen::MatrixXd> X, Eigen::MatrixXd& below);
+/// `scratch`: grown as needed (scratch_block). Precondition: factor.is_super (then LL').
+void supernodal_forward(const cholmod_factor& factor, Eigen::Ref<Eigen::MatrixXd> X, Eigen::MatrixXd& scratch);
 
 /// X <- L^{-T} X, likewise.
-void supernodal_backward(const cholmod_factor& factor, Eigen::Ref<Eigen::MatrixXd> X, Eigen::MatrixXd& below);
+void supernodal_backward(const cholmod_factor& factor, Eigen::Ref<Eigen::MatrixXd> X, Eigen::MatrixXd& scratch);
 
 }  // namespace ffeti
