@@ -26,9 +26,11 @@ GivenOptions given_options(OptionScope scope, const Expression* options_nargs, S
     if (o.scope != scope) continue;
     const Expression e = options_nargs[k++];
     if (!e) continue;
-    if (o.kind == OptionKind::word) given.set(o.name, *GetAny<std::string*>((*e)(stack)));
-    else if (o.kind == OptionKind::integer) given.set(o.name, GetAny<long>((*e)(stack)));
-    else given.set(o.name, GetAny<double>((*e)(stack)));
+    // By the option itself, not its name: a name looks up the set-up and solve scopes only,
+    // which refused the sensitivity functions' own activeTol.
+    if (o.kind == OptionKind::word) given.set(o, *GetAny<std::string*>((*e)(stack)));
+    else if (o.kind == OptionKind::integer) given.set(o, GetAny<long>((*e)(stack)));
+    else given.set(o, GetAny<double>((*e)(stack)));
   }
   return given;
 }

@@ -12,6 +12,7 @@
 #include "parallel/ownership.h"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <tuple>
 
@@ -160,6 +161,10 @@ class FetiSetup : public WithNamedArguments {
       sub.x = to_std(Xs[s]);
       sub.y = to_std(Ys[s]);
       if (Zs) sub.z = to_std((*Zs)[s]);
+      // Checked here, before the narrowing to int: 2^32 would become body 0, 2^31 a negative one.
+      if (bodies[s] < 0 || bodies[s] > std::numeric_limits<int>::max())
+        throw InputError("body[" + std::to_string(s) + "]: is " + std::to_string(bodies[s]) +
+                         ", body numbers must lie in 0 .. 2^31 - 1");
       sub.body = static_cast<int>(bodies[s]);
     });
     return subdomains;

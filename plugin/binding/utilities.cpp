@@ -106,9 +106,21 @@ double feti_wall_time() {
 /// core's (ffeti-solve applies the same): ffeti.idp's ffetiFlatTetrahedron starts from it.
 double feti_flat_tetrahedron() { return kFlatTetrahedron; }
 
+/// The name of a status code that fetiSolve, fetiSensitivity or fetiAdjoint returned
+/// ("converged", "max_iterations", ..., "infeasible"): scripts print it instead of a number.
+std::string* feti_status_name(Stack stack, const long& code) {
+  const std::string name = guarded("fetiStatusName", [&] {
+    for (int k = 0; k <= static_cast<int>(SolveStatus::inaccurate); ++k)
+      if (status_code(static_cast<SolveStatus>(k)) == code) return to_string(static_cast<SolveStatus>(k));
+    throw InputError("status: " + std::to_string(code) + " is not a status code of ffeti");
+  });
+  return Add2StackOfPtr2Free(stack, new std::string(name));
+}
+
 }  // namespace
 
 void add_utility_functions() {
+  Global.Add("fetiStatusName", "(", new OneOperator1s_<std::string*, long>(feti_status_name));
   Global.Add("fetiSum", "(", new OneOperator2_<double, long, double>(feti_sum));
   Global.Add("fetiMax", "(", new OneOperator2_<double, long, double>(feti_max));
   Global.Add("fetiRank", "(", new OneOperator0<long>(feti_rank));

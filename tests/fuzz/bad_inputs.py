@@ -18,7 +18,7 @@ class of bad input gets its own test in tests/edp/bad-input.edp or tests/getdp/b
 
 Usage: bad_inputs.py SOURCE_DIR FFETI_SOLVE [--cases N] [--seed S] [--report FILE]
 (run where freefem++.pref points at the build; N cases per front end, default 40, N/4 for the
-3D problem file;
+3D problem file; "macros": the grid macros of ffeti.idp with one bad argument each, as many;
 --report writes the run's counts and failures as a Markdown page)."""
 import argparse
 import collections
@@ -241,6 +241,69 @@ SCRIPT3_MUTATIONS = [
 ]
 
 
+# The installed grid macros: one argument of one call replaced by a bad value. The macro must
+# stop with an "ffeti: <macro>: <argument> ..." line (an assert), or build boxes the set-up
+# takes; an empty mesh array reaching the next macro crashed FreeFEM.
+MACRO_SCRIPT = r"""
+include "ffeti.idp"
+int S = 8;
+mesh3[int] Th(S);
+mesh[int] T2(4);
+ffetiGrid3Where(Th, @first@, @x0@, 0., 0., @Lx@, 1., 1., @Nx@, 2, 2, @m@, @keep@)
+ffetiGrid(T2, 0, @x0@, 0., @Lx@, 1., @Nx@, 2, @m@)
+matrix[int] K(S);
+real[int][int] F(S), X(S), Y(S), Z(S), U(S);
+int[int] body(S);
+for (int s = 0; s < S; ++s) {
+  fespace Vh(Th[s], P13d);
+  varf vK(u, v) = int3d(Th[s])(dx(u) * dx(v) + dy(u) * dy(v) + dz(u) * dz(v)) + on(1, u = 0);
+  varf vF(u, v) = int3d(Th[s])(v);
+  ffetiAssemble(Vh, s, vK, vF, K, F)
+  ffetiCoordinates3(Vh, X[s], Y[s], Z[s])
+  body[s] = s;
+}
+int P = fetiSetup(K, F, X, Y, body, Z = Z);
+cout << "RESULT status=" << fetiSolve(P, U) << endl;
+"""
+MACRO_ARGUMENTS = {"first": "0", "x0": "0.", "Lx": "1.", "Nx": "2", "m": "2", "keep": "1"}
+MACRO_BAD_VALUES = {"first": ["-1"], "x0": ["sqrt(-1.)", "1e308 * 10"],
+                    "Lx": ["0.", "-1.", "sqrt(-1.)", "1e308 * 10"], "Nx": ["0", "-3"], "m": ["0", "-1"],
+                    "keep": ["0", "ffS > 100"]}
+
+
+def macro_cases(count, rng, work, verdicts, front="macros"):
+    """The grid macros with one bad argument; returns the failures."""
+    failures = []
+    for case in range(count):
+        name = rng.choice(sorted(MACRO_BAD_VALUES))
+        value = rng.choice(MACRO_BAD_VALUES[name])
+        text = MACRO_SCRIPT
+        for argument, good in MACRO_ARGUMENTS.items():
+            text = text.replace(f"@{argument}@", value if argument == name else good)
+        path = os.path.join(work, f"macro{case}.edp")
+        with open(path, "w") as file:
+            file.write(text)
+        what = f"{name} = {value}"
+        try:
+            run = subprocess.run(["FreeFem++-nw", "-v", "0", path], cwd=work, capture_output=True, text=True,
+                                 timeout=LIMIT)
+        except subprocess.TimeoutExpired:
+            failures.append(f"{front} case {case} ({what}): no answer within {LIMIT} s")
+            continue
+        output = run.stdout + run.stderr
+        refusal = re.search(r"ffeti: (ffetiGrid3?): (\w+)[ =(].*", output)
+        if refusal and refusal.group(2) == name and "exec assert" in output:
+            verdicts[front, "refused"] += 1
+            print(f"ok: {front} {what}: refused: {refusal.group(0)[:160]}")
+        elif run.returncode == 0 and "RESULT status=" in output:
+            verdicts[front, "ran"] += 1
+            print(f"ok: {front} {what}: ran")
+        else:
+            tail = " | ".join(output.strip().splitlines()[-3:])
+            failures.append(f"{front} case {case} ({what}): exit status {run.returncode}: {tail[:300]}")
+    return failures
+
+
 def script_cases(count, rng, work, verdicts, script=SCRIPT, mutations=SCRIPT_MUTATIONS, front="plugin"):
     """FreeFEM scripts with one or two bad arguments; returns the failures."""
     failures = []
@@ -284,10 +347,10 @@ def write_report(args, verdicts, failures):
              "generator's docstring says which). Every case must be refused with a message naming",
              "the argument (or file and key), or run to a RESULT line; a crash, a hang, an",
              "uncaught exception or an unclear refusal is a failure. The default test command runs",
-             "40 cases per front end, 10 for the 3D problem file (`ctest -R fuzz`).", "",
+             "40 cases per front end, 10 for the 3D problem file and 10 for the grid macros (`ctest -R fuzz`).", "",
              "| front end | refused clearly | ran to a RESULT line (exit 0) | ran, not converged (exit 1) | failures |",
              "|---|---|---|---|---|"]
-    for front in ("plugin", "plugin 3D", "ffeti-solve", "ffeti-solve 3D"):
+    for front in ("plugin", "plugin 3D", "ffeti-solve", "ffeti-solve 3D", "macros"):
         failed = sum(1 for f in failures if f.startswith(front + " case"))
         lines.append(f"| {front} | {verdicts[front, 'refused']} | {verdicts[front, 'ran']} | "
                      f"{verdicts[front, 'not converged']} | {failed} |")
@@ -318,12 +381,13 @@ def main():
                     script_cases(args.cases, rng, work, verdicts, SCRIPT3, SCRIPT3_MUTATIONS, "plugin 3D") +
                     solver_cases(args.source, args.ffeti_solve, args.cases, rng, work, verdicts) +
                     solver_cases(args.source, args.ffeti_solve, solid_cases(args.cases), rng, work, verdicts,
-                                 "ffeti-solve 3D"))
+                                 "ffeti-solve 3D") +
+                    macro_cases(solid_cases(args.cases), rng, work, verdicts))
     for failure in failures:
         print("FAILED: " + failure)
     if args.report:
         write_report(args, verdicts, failures)
-    total = 3 * args.cases + solid_cases(args.cases)
+    total = 3 * args.cases + 2 * solid_cases(args.cases)
     print(f"{len(failures)} failure(s) in {total} generated cases" if failures else
           f"all {total} generated cases refused clearly or ran")
     sys.exit(1 if failures else 0)

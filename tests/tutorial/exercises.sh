@@ -56,6 +56,8 @@ exercise "lesson 12: -pull 0.7" "$lessons/12-friction-3d.edp" -pull 0.7
 exercise "lesson 12: -pull 0.8" "$lessons/12-friction-3d.edp" -pull 0.8
 exercise "lesson 12: -pull 0.9" "$lessons/12-friction-3d.edp" -pull 0.9
 exercise "lesson 12: -pull 1.1" "$lessons/12-friction-3d.edp" -pull 1.1
+# The status by its name, as the lesson's page writes it (it once printed "failed").
+grep -q 'status_pull=infeasible' out.txt || { echo "FAILED: lesson 12 -pull 1.1 names no infeasible status"; failures=$((failures + 1)); }
 exercise "lesson 12: -m 8" "$lessons/12-friction-3d.edp" -m 8
 exercise "lesson 11: -m2 6" "$lessons/11-solids-in-contact.edp" -m2 6
 exercise "lesson 11: -swap 1" "$lessons/11-solids-in-contact.edp" -swap 1

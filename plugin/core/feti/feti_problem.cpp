@@ -112,6 +112,10 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   local_contact_.three_d = space_dimension_ == 3;
   std::vector<DofRecord> slaves;
   Constraints constraints = build_rows(&slaves);
+  if (local_contact.has_friction() && constraints.contact_rows() == 0)  // the rows are global: every rank alike
+    throw InputError(std::string(local_contact.slip_bound >= 0 ? "slipBound" : "friction") +
+                     ": given, but the problem has no contact rows to carry friction (no contactSlave, "
+                     "contactSlaveFaces or obstacle pair)");
   built_rhs_ = rhs_ = Eigen::Map<const Vec>(constraints.rhs.data(), constraints.rows());
   if (local_contact.slip_bound >= 0)  // Tresca: the bounds per friction row are fixed at set-up
     friction_ = {true, Eigen::Map<const Vec>(constraints.friction_coefficient.data(), constraints.friction_rows)};

@@ -38,7 +38,7 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
       {"time_dual_data", setup.dual_data},
       {"peak_memory_mb", peak_memory_mb()},  // read when asked: the process's peak so far
   };
-  if (c.friction_rows > 0) s.push_back({"friction_rows", c.friction_rows});
+  s.push_back({"friction_rows", c.friction_rows});  // 0 without friction: a script may ask either way
   s.push_back({"beyond_reach", c.beyond_reach.rows()});
   if (!result) return s;
   const Statistics solve = {
