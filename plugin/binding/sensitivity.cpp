@@ -20,7 +20,8 @@ namespace {
 /// `threshold`, built on first use and kept for every later direction.
 SensitivityProblem& sensitivity_problem(Handle& h, double threshold) {
   if (!h.result) throw InputError("P: no solution yet: call fetiSolve first");
-  if (h.result->status != SolveStatus::converged)
+  // A state stopped at round-off (stagnated) is as accurate as its data allow: it has a derivative.
+  if (h.result->status != SolveStatus::converged && h.result->status != SolveStatus::stagnated)
     throw InputError("P: the last fetiSolve did not converge (" + to_string(h.result->status) +
                      "): its solution has no derivative worth the name; solve it to convergence first");
   if (!h.sensitivity || h.sensitivity->classification().threshold != threshold)

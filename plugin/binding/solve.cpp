@@ -67,6 +67,11 @@ class FetiSolve : public WithNamedArguments {
     if (verbosity >= 1 && h.problem->communicator().rank() == 0 && r.friction_iterations > 0)
       std::printf("ffeti: friction: %d Tresca solves (Hessian multiplications %s), last change of the bounds %.2e\n",
                   r.friction_iterations, friction_counts(r).c_str(), r.friction_bound_change);
+    // Whatever the verbosity: a tol below what round-off allows is said, with what was reached.
+    if (h.problem->communicator().rank() == 0 && r.status == SolveStatus::stagnated)
+      std::printf("ffeti: fetiSolve: stagnated at round-off after %d Hessian multiplications: KKT residual %.2e, "
+                  "above tol %.1e, is the best accuracy this problem's data allow (status 2, the answer returned)\n",
+                  r.counts.hessian, r.violation, h.tolerance);
     // Whatever the verbosity: an answer whose slaves pass through the master is not silent.
     if (h.problem->communicator().rank() == 0 && r.beyond_reach.penetrating > 0)
       std::printf("ffeti: WARNING fetiSolve: %s\n", r.beyond_reach.warning().c_str());

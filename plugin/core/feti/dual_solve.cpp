@@ -186,6 +186,8 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
                          : penalty_qp(data, settings, result, bounds);
     lambda = lambda_from_shifted(run(route, std::move(qp), stop_for(result), settings, warm, result), bounds, data);
   }
+  // Stopped at round-off: not converged to tol, and not a solve cut short by maxit either.
+  if (kkt_stop.stagnated() && result.status == SolveStatus::converged) result.status = SolveStatus::stagnated;
   result.violation = kkt_stop.measure();
   result.scale_evaluations = kkt_stop.evaluations();
   result.times.solve = solve_clock.seconds() - result.times.norm_estimate - result.times.free_rows;

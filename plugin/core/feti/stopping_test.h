@@ -5,6 +5,7 @@
 #include "qp/qp_types.h"
 
 #include <functional>
+#include <limits>
 
 namespace ffeti {
 
@@ -59,6 +60,10 @@ class RelativeKktStop {
   double equality_target() const { return equality_target_; }
 
   int evaluations() const { return evaluations_; }
+  /// True if the test stopped a solve at round-off: three checks in a row, each after the
+  /// dual gradient had halved (or after a long wait), failed without halving the best primal
+  /// residual, itself at most 1e-6. `measure()` is then the residual reached, above tol.
+  bool stagnated() const { return stagnated_; }
   /// The larger of the last check's violation and equilibrium residual (both relative); -1
   /// before any check.
   double measure() const { return measure_; }
@@ -74,6 +79,11 @@ class RelativeKktStop {
   Vec passed_;                  // the solver's iterate that passed
   int evaluations_ = 0;
   double measure_ = -1;
+  long calls_ = 0;              // of the test, by the solver
+  long checked_call_ = 0;       // the call of the last check
+  double best_measure_ = std::numeric_limits<double>::infinity();
+  int checks_without_progress_ = 0;
+  bool stagnated_ = false;
 };
 
 /// The stopping test of one dual solve at a solver iterate x and its shifted multipliers mu, given its
