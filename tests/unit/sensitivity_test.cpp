@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <functional>
 
@@ -188,6 +190,42 @@ TEST(Sensitivity, WeaklyActiveRowsStayInequalitiesAndMatchOneSidedDifferences) {
   for (const auto& s : base) g.push_back(Vec::Ones(s.K.rows()));
   EXPECT_EQ(sensitivity.adjoint(g, tight()).status, SolveStatus::weakly_active);
   EXPECT_THROW(sensitivity.adjoint_gradient(DesignDerivative{}), InputError);
+}
+
+// Both membranes held at y = 0 and y = 1 under one uniform load (body 1 a million times
+// stiffer, its load as much larger): u = f y (1 - y) / 4 in each whatever x, so every contact
+// row on x = 1 has zero gap and zero force while u is not 0. The gluing of 3 x 3 subdomains
+// per body leaves round-off in the gaps: 5e-11 of max |u| at tol 1e-12 (the solve then
+// stagnates at round-off), and with the threshold 10 tol 9 of the 11 rows were classified
+// inactive, so a derivative pushing the bodies together came out as if they did not touch;
+// at tol 1e-6 and 1e-9 all 11 were weak.
+TEST(Sensitivity, WeaklyActiveRowsOfALoadedStateAreFoundAtEveryTolerance) {
+  test::MembraneOptions o = test::membrane_options(12, 3);
+  auto base = test::membrane_subdomains(o);
+  for (auto& sub : base) {
+    sub.dirichlet_dofs.clear();
+    for (int k = 0; k < static_cast<int>(sub.y.size()); ++k)
+      if (sub.y[k] == 0.0 || std::abs(sub.y[k] - 1.0) < 1e-12) sub.dirichlet_dofs.push_back(k);
+    const double x0 = *std::min_element(sub.x.begin(), sub.x.end()), y0 = *std::min_element(sub.y.begin(), sub.y.end());
+    const SubdomainInput uniform =
+        test::p1_rectangle(x0, y0, 1.0 / 3, 1.0 / 3, 4, 4, 2.0, [](double, double) { return 1.0; }, sub.body);
+    sub.f = uniform.f;  // the same nodes in the same order: p1_rectangle numbers them alike
+  }
+  for (auto& sub : base)
+    if (sub.body == 1) {  // a million times stiffer and loaded as much: the same u, more round-off in the gaps
+      sub.K = SharedMatrix(SparseMatrix(1e6 * sub.K.get()), "K");
+      sub.f *= 1e6;
+    }
+  const FetiProblem problem = membrane_problem(base, FetiVariant::feti1);
+  for (const double tol : {1e-6, 1e-9, 1e-12}) {
+    DualSolveSettings settings = tight();
+    settings.tolerance = tol;
+    const FetiResult state = problem.solve(settings);
+    ASSERT_TRUE(state.status == SolveStatus::converged || state.status == SolveStatus::stagnated) << "tol " << tol;
+    SensitivityProblem sensitivity(problem, state, default_classification_threshold(tol));
+    EXPECT_EQ(sensitivity.classification().weak.size(), 11u) << "tol " << tol;  // 13 nodes, 2 held by y = 0, 1
+    EXPECT_TRUE(sensitivity.classification().strong.empty()) << "tol " << tol;
+  }
 }
 
 // ---- moving contact geometry: node to segment on non-matching meshes, and an obstacle ---

@@ -204,9 +204,10 @@ std::vector<Option> make_options() {
       {"maxit", S::sensitivity, K::integer, {}, 1, kIntMax, false, false, "10000",
        "limit on Hessian multiplications of each sensitivity or adjoint solve",
        [](SolverSettings& s, const OptionValue& v) { s.solve.max_hessian = integer(v); }},
-      {"activeTol", S::sensitivity, K::real, {}, 0, 1, true, true, "min(1e-2, 10 × the last solve's `tol`)",
+      {"activeTol", S::sensitivity, K::real, {}, 0, 1, true, true, "10 × the last solve's `tol`, within [1e-8, 1e-2]",
        "the classification threshold t, relative to the multipliers' and displacements' scales: a multiplier "
-       "known to `tol` is zero below about 10 `tol` max λ",
+       "known to `tol` is zero below about 10 `tol` max λ; not below 1e-8, the round-off of gaps recovered from u "
+       "(a tighter tol would otherwise class zero-gap rows as open)",
        [](SolverSettings& s, const OptionValue& v) { s.active_tolerance = number(v); }},
       {"verbosity", S::sensitivity, K::integer, {}, 0, kIntMax, false, false, "0", "as for `fetiSolve`",
        [](SolverSettings& s, const OptionValue& v) { s.verbosity = integer(v); }},

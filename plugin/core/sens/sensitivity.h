@@ -40,7 +40,8 @@ struct ContactClassification {
 ContactClassification classify_contact(const FetiProblem& problem, const FetiResult& state, double threshold);
 
 /// The default threshold for a state solved to `state_tolerance`: ten times it, the
-/// accuracy to which its multipliers are known, at most 1e-2.
+/// accuracy to which its multipliers are known, at most 1e-2 and at least 1e-8 (the
+/// round-off of recovered gaps, which a tighter tol does not remove).
 double default_classification_threshold(double state_tolerance);
 
 /// One solve of the sensitivity QP (a design direction or an adjoint).
