@@ -9,6 +9,7 @@
 #include "feti/progress_monitor.h"
 #include "feti/statistics.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace ffeti::binding {
@@ -27,6 +28,18 @@ SensitivityProblem& sensitivity_problem(Handle& h, double threshold) {
   if (!h.sensitivity || h.sensitivity->classification().threshold != threshold)
     h.sensitivity = std::make_unique<SensitivityProblem>(*h.problem, *h.result, threshold);
   return *h.sensitivity;
+}
+
+/// Said whatever the verbosity (rank 0): `rows` contact rows moved by the design have a
+/// one-sided derivative, so `what` holds one of its one-sided values.
+void warn_one_sided(const Handle& h, int rows, const char* function, const char* what) {
+  if (rows == 0 || h.problem->communicator().rank() != 0) return;
+  std::printf("ffeti: WARNING %s: %d node-to-face contact rows the design moves sit on an edge between master "
+              "faces that bend against each other: their derivative is one-sided, and %s is one of its one-sided "
+              "values (mortar contact, contactSlaveFaces=, has no such kink: use it for shape gradients on "
+              "non-matching meshes)\n",
+              function, rows, what);
+  std::fflush(stdout);
 }
 
 /// Default threshold below which a multiplier counts as zero, relative to max lambda.
@@ -134,6 +147,9 @@ class FetiSensitivity : public WithNamedArguments {
       const long count = h.problem->subdomain_count();
       z.resize(count * static_cast<long>(r.size()));
       for (long e = 0; e < z.N(); ++e) z[e].resize(0);  // subdomains of other ranks stay empty
+      int one_sided = 0;
+      for (const SensitivityResult& result : r) one_sided = std::max(one_sided, result.one_sided_rows);
+      warn_one_sided(h, one_sided, "fetiSensitivity", "the derivative returned (status 6)");
       SolveStatus worst = SolveStatus::converged;
       for (size_t j = 0; j < r.size(); ++j) {
         for (size_t k = 0; k < r[j].z.size(); ++k) copy_to(r[j].z[k], z[static_cast<long>(j) * count + ids[k]]);
@@ -235,7 +251,10 @@ class FetiAdjointGradient : public WithNamedArguments {
       if (d.size() != 1)  // the same on every rank: the sizes were checked collectively
         throw InputError("dK: " + std::to_string(d.size()) + " design directions: fetiAdjointGradient takes one (" +
                          std::to_string(h.problem->subdomain_count()) + " entries)");
-      return h.sensitivity->adjoint_gradient(d.front());
+      const double gradient = h.sensitivity->adjoint_gradient(d.front());
+      warn_one_sided(h, h.sensitivity->counters().adjoint.one_sided_rows, "fetiAdjointGradient",
+                     "the value returned (fetiInfo key adjoint_one_sided counts these rows)");
+      return gradient;
     }));
   }
 };

@@ -87,6 +87,7 @@ std::vector<RowDerivative> contact_row_derivatives(const Constraints& constraint
       const Point3& w = velocity[row][node];
       if (std::hypot(w[0], w[1], w[2]) > 1e-12 * fastest) significant[node] = w;
     }
+    result[row].one_sided = g.one_sided_under(significant);
     const std::string reason = g.unverified_motion(significant);  // the same on every rank
     if (!reason.empty()) {
       const Point3& s = g.slave_position();

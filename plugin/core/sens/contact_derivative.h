@@ -13,6 +13,7 @@ namespace ffeti {
 struct RowDerivative {
   std::vector<ConstraintEntry> entries;
   double rhs = 0;
+  bool one_sided = false;  ///< a row in use whose derivative is one-sided (ContactRowGeometry::one_sided_under)
 };
 
 /// Node velocities x, y, z: per local subdomain one value per dof, read at each node's x
@@ -28,7 +29,9 @@ using NodeVelocities = std::array<const std::vector<std::vector<double>>*, 3>;
 /// moving nodes (node to node) do not depend on positions; kinds without a derivative are
 /// refused before (capability_table()). A row in use (`in_use`, per inequality row: the
 /// sensitivity keeps it or it carries a force) whose motion gives no two-sided derivative
-/// (ContactRowGeometry::unverified_motion) is refused; the others' derivatives go unused.
+/// (ContactRowGeometry::unverified_motion) is refused, one whose derivative is one-sided
+/// though its pairing holds is marked (RowDerivative::one_sided); the others' derivatives go
+/// unused.
 /// Collective: the velocities of the contact nodes are gathered, so every rank gets every row.
 std::vector<RowDerivative> contact_row_derivatives(const Constraints& constraints,
                                                    const std::vector<int>& global_ids,

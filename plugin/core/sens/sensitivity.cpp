@@ -185,6 +185,7 @@ SensitivityProblem::DirectionData SensitivityProblem::direction_data(const Desig
   for (size_t k = 0; k < ids.size(); ++k) local_index[ids[k]] = k;
 
   DirectionData data;
+  for (const RowDerivative& row : rows) data.one_sided_rows += row.one_sided ? 1 : 0;
   for (size_t k = 0; k < inputs.size(); ++k) {
     Vec fbar = !d.df.empty() && d.df[k].size() > 0 ? d.df[k] : Vec::Zero(inputs[k].K.rows());
     if (!d.dK.empty() && d.dK[k].size() > 0) fbar.noalias() -= d.dK[k] * u_[k];  // f' - K'u
@@ -256,6 +257,8 @@ std::vector<SensitivityResult> SensitivityProblem::direct(const std::vector<Desi
                                system_->constraints(), problem_.variant() == FetiVariant::feti1, s.u, s.lambda,
                                problem_.communicator());
     result.status = checked_status(result.status, result.kkt, settings.tolerance);
+    result.one_sided_rows = d[j].one_sided_rows;
+    if (result.one_sided_rows > 0 && result.status == SolveStatus::converged) result.status = SolveStatus::weakly_active;
     counters_.hessian += result.counts.hessian + result.counts.hessian_norm_estimate;
     const Constraints& full = problem_.constraints();
     result.contact_multipliers = Vec::Zero(full.inequality_rows());
@@ -330,6 +333,7 @@ double SensitivityProblem::adjoint_gradient(const DesignDerivative& direction) {
   for (size_t k = 0; k < d.fbar.size(); ++k)
     local.insert(local.end(), {double(problem_.global_ids()[k]), adjoint_->u[k].dot(d.fbar[k])});
   const double value = ordered_sum(local, 2, problem_.communicator()) + adjoint_->lambda.dot(d.c);
+  counters_.adjoint.one_sided_rows = d.one_sided_rows;
   counters_.adjoint_gradients += 1;
   counters_.adjoint_gradient_seconds += problem_.communicator().max(clock.seconds());
   return value;

@@ -51,6 +51,10 @@ struct DerivativeSolve {
   IterationCounts counts;
   KktResiduals kkt;               ///< of the sensitivity QP, recomputed in primal form
   double seconds = 0;             ///< the whole call: derivatives, dual data, solve, recovery, KKT
+  /// Contact rows the direction moves whose derivative is one-sided (node to face on a bent
+  /// edge): the answer is one of the one-sided values, and a direct solve's status is
+  /// weakly_active.
+  int one_sided_rows = 0;
 };
 
 /// A direction's solve and the derivatives it gives.
@@ -116,6 +120,7 @@ class SensitivityProblem {
   struct DirectionData {       // fbar (this rank's) and c~ on the rows of the system
     std::vector<Vec> fbar;
     Vec c;
+    int one_sided_rows = 0;     // rows in use whose derivative along the direction is one-sided
   };
   DirectionData direction_data(const DesignDerivative& direction) const;
   void check(const DesignDerivative& direction) const;

@@ -21,6 +21,7 @@ Statistics statistics(const SensitivityProblem& sensitivity) {
       {"sens_hessian", n.last.counts.hessian + n.last.counts.hessian_norm_estimate},
       {"sens_time", n.last.seconds},
       {"sens_kkt", n.last.kkt.max()},
+      {"sens_one_sided", n.last.one_sided_rows},
       {"adjoint_solves", n.adjoint_solves},
       {"adjoint_status", status_code(n.adjoint.status)},
       {"adjoint_hessian", n.adjoint.counts.hessian},
@@ -28,6 +29,7 @@ Statistics statistics(const SensitivityProblem& sensitivity) {
       {"adjoint_kkt", n.adjoint.kkt.max()},
       {"adjoint_gradients", n.adjoint_gradients},
       {"adjoint_gradient_time_total", n.adjoint_gradient_seconds},
+      {"adjoint_one_sided", n.adjoint.one_sided_rows},
   };
 }
 

@@ -84,6 +84,10 @@ class ContactRowGeometry {
   /// pairing would change on one side), or "" when it is: the sensitivities refuse such a
   /// motion of a row they use rather than answer wrongly.
   virtual std::string unverified_motion(const NodeMotion& /*velocities*/) const { return ""; }
+  /// True where the row keeps its pairing along `velocities` but its derivative is one-sided
+  /// all the same, so the sensitivities answer with a warning and a status instead of
+  /// refusing (node to face: a slave on an edge between faces that bend against each other).
+  virtual bool one_sided_under(const NodeMotion& /*velocities*/) const { return false; }
 
  private:
   ContactKind kind_;

@@ -19,6 +19,35 @@ bool over_face(const Point3& s, const std::array<Point3, 3>& corners) {
   return *std::min_element(w.begin(), w.end()) >= -kEdge;
 }
 
+Point3 unit_normal(const std::array<Point3, 3>& c) {
+  const Point3 n = cross(minus(c[1], c[0]), minus(c[2], c[0]));
+  const double norm = std::sqrt(dot(n, n));
+  return {n[0] / norm, n[1] / norm, n[2] / norm};
+}
+
+/// The slave s lies on an edge or a corner of `face` that a face of the same body with
+/// another normal (beyond 1e-8 rad) also touches at s: the faceted surface bends there.
+bool on_bent_edge(const Point3& s, const FaceRecord& face, const FaceGrid& grid) {
+  const std::array<double, 3> w = plane_weights(s, face.corners[0], face.corners[1], face.corners[2]);
+  if (*std::min_element(w.begin(), w.end()) >= kEdge) return false;  // inside the face
+  const Point3 n = unit_normal(face.corners);
+  const Point3 e = minus(face.corners[1], face.corners[0]);
+  const double near = kEdge * std::sqrt(dot(e, e));
+  bool bent = false;
+  grid.for_each_in_box({s[0] - near, s[1] - near, s[2] - near}, {s[0] + near, s[1] + near, s[2] + near},
+                       [&](const FaceRecord& other) {
+                         if (&other == &face || other.body != face.body || bent) return;
+                         const std::array<double, 3> v =
+                             closest_point_weights(s, other.corners[0], other.corners[1], other.corners[2]);
+                         Point3 p{0, 0, 0};
+                         for (size_t k = 0; k < 3; ++k)
+                           for (size_t i = 0; i < 3; ++i) p[i] += v[k] * other.corners[k][i];
+                         const Point3 d = minus(p, s), m = cross(n, unit_normal(other.corners));
+                         bent = std::sqrt(dot(d, d)) <= near && std::sqrt(dot(m, m)) > 1e-8;
+                       });
+  return bent;
+}
+
 }  // namespace
 
 RowAt FaceGeometry::row_at(const NodeMotion& v, double t) const {
@@ -57,6 +86,13 @@ std::string FaceGeometry::unverified_motion(const NodeMotion& v) const {
              "the neighbouring face, so the gradient has no two-sided value; give meshes whose slave nodes lie "
              "inside the master faces, or a motion that moves this slave and its face alike";
   return "";
+}
+
+bool FaceGeometry::one_sided_under(const NodeMotion& v) const {
+  if (!on_bent_edge) return false;
+  for (const Point3& w : v)
+    if (w[0] != 0 || w[1] != 0 || w[2] != 0) return true;
+  return false;
 }
 
 double FaceGeometry::length() const {
@@ -107,7 +143,7 @@ void NodeToFace::add_rows(const ContactRecords& in, std::vector<Row>& rows) cons
         std::array<DofRef, 3>{{{node.x_dof->subdomain, node.x_dof->dof},
                                {node.y_dof->subdomain, node.y_dof->dof},
                                {node.z_dof->subdomain, node.z_dof->dof}}},
-        s, face_dofs, face->corners);
+        s, face_dofs, face->corners, on_bent_edge(s, *face, grid));
     const LinearizedFaceRow linear = node_to_face_row(s, face->corners[0], face->corners[1], face->corners[2]);
     Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction, beyond_reach};
     if (beyond_reach && row.rhs < 0) continue;  // behind the face from the start: not a contact it missed
