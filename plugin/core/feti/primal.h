@@ -11,8 +11,9 @@ namespace ffeti {
 /// u = K^+(f - B'lambda) + R alpha, with alpha the least-squares solution of
 /// B R alpha = c - B K^+(f - B'lambda) on the rows that hold with equality (all equality
 /// rows, the contact rows with lambda_i > 0 and the friction rows that stick, ||lambda_t||
-/// < g). `f` are the loads the operators use, `c` the right-hand side of the rows,
-/// `slip_bound` g per friction row. Collective; returns u for this rank's subdomains.
+/// < g); the rigid modes those leave free, as far as the slipping friction pairs of a 3D
+/// problem fix them, such that each pair slips along its force. `f` are the loads the
+/// operators use, `c` the right-hand side of the rows, `slip_bound` g per friction row. Collective; returns u for this rank's subdomains.
 std::vector<Vec> recover_primal(const DualOperator& F, const CoarseSpace* coarse,
                                 const Constraints& constraints, const std::vector<Vec>& f,
                                 const Vec& c, const Vec& lambda, const Vec& slip_bound = Vec());
