@@ -170,7 +170,9 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
   } else if (route == DualPath::mprgp) {
     Formulation qp = plain_qp(data, settings, result, &bounds);
     lambda = lambda_from_shifted(run(route, std::move(qp), stop_for(result), settings, warm, result), bounds, data);
-  } else if (const double resolution = std::max(settings.tolerance, kFeasibilityResolution),
+  } else if (const double resolution = std::max(settings.feasibility_tolerance > 0 ? settings.feasibility_tolerance
+                                                                                : settings.tolerance,
+                                                kFeasibilityResolution),
              distance = coarse_->feasibility_residual(data.e, multiplier_bounds, resolution);
              distance > resolution) {
     // No multipliers within their bounds balance the loads on the floating bodies (Farkas):

@@ -53,6 +53,11 @@ enum class CoarseConstraints {
 
 struct DualSolveSettings {
   double tolerance = 1e-4;
+  /// The relative distance from equilibrium below which the loads count as balanced by
+  /// multipliers within their bounds (the Farkas check before SMALBE); 0: `tolerance`. A
+  /// solve with a tolerance looser than the user's (Coulomb's early Tresca solves) keeps
+  /// the user's here: at its own it let a pull of 1.01 mu W through to maxit.
+  double feasibility_tolerance = 0;
   CoarseConstraints coarse_constraints = CoarseConstraints::free_rows;
   StoppingTest stopping = StoppingTest::relative_kkt;
   int max_hessian = 10000;          ///< over the whole solve (friction: over all its Tresca solves)

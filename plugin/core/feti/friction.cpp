@@ -72,6 +72,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
   const qp::Budget budget(settings.max_hessian);
   const double tol = settings.tolerance;
   if (law.coulomb()) settings.tolerance = std::max(tol, kFirstSolveTolerance);
+  if (settings.feasibility_tolerance == 0) settings.feasibility_tolerance = tol;  // each solve's check at the user's
   DualWarmStart warm;  // SMALBE's multiplier term, carried from solve to solve with the multipliers
   for (;;) {
     data.slip_bound = g;
