@@ -67,6 +67,11 @@ class FetiSolve : public WithNamedArguments {
     if (verbosity >= 1 && h.problem->communicator().rank() == 0 && r.friction_iterations > 0)
       std::printf("ffeti: friction: %d Tresca solves (Hessian multiplications %s), last change of the bounds %.2e\n",
                   r.friction_iterations, friction_counts(r).c_str(), r.friction_bound_change);
+    // Whatever the verbosity: which body friction cannot hold.
+    if (h.problem->communicator().rank() == 0 && r.status == SolveStatus::infeasible && r.sliding_body >= 0)
+      std::printf("ffeti: fetiSolve: infeasible: no contact forces within their friction cones balance the loads on "
+                  "body %d, which would slide away (status 4, distance from equilibrium %.2e of the loads)\n",
+                  r.sliding_body, r.equality_reference > 0 ? r.equality_norm / r.equality_reference : 0.0);
     // Whatever the verbosity: a tol below what round-off allows is said, with what was reached.
     if (h.problem->communicator().rank() == 0 && r.status == SolveStatus::stagnated)
       std::printf("ffeti: fetiSolve: stagnated at round-off after %d Hessian multiplications: KKT residual %.2e, "

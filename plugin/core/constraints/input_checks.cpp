@@ -9,12 +9,16 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <tuple>
 #include <unordered_set>
 
 namespace ffeti {
 namespace {
+
+/// The smallest positive Coulomb coefficient accepted (input checks below).
+constexpr double kSmallestFriction = 1e-6;
 
 std::string indexed(const char* name, size_t s) { return std::string(name) + "[" + std::to_string(s) + "]"; }
 
@@ -255,6 +259,20 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
     if (!std::isfinite(value) || (value < 0 && value != -1))
       throw InputError(std::string(name) + ": must be a finite number >= 0, got " + std::to_string(value));
   check_dof_field(contact.friction_field, ids, subdomains, "frictionField", 0.0);
+  // Coulomb coefficients in (0, 1e-6) bound friction forces below what the solver's
+  // tolerance resolves against the normal forces: mu = 1e-9 and 1e-300 ran to maxit on the
+  // 3D block (the disc bounds a round-off apart), and a body held by them has no defined
+  // tangential position. 0 is frictionless contact.
+  const auto refuse_tiny = [](const std::string& name, double mu) {
+    if (mu > 0 && mu < kSmallestFriction)
+      throw InputError(name + ": " + (std::ostringstream() << mu).str() + " lies between 0 and 1e-6: a coefficient that small holds "
+                       "friction forces below what the solver resolves against the normal forces; give 0 for "
+                       "frictionless contact, or at least 1e-6");
+  };
+  refuse_tiny("friction", contact.friction);
+  for (size_t k = 0; k < contact.friction_field.size(); ++k)
+    for (size_t i = 0; i < contact.friction_field[k].size(); ++i)
+      refuse_tiny(indexed("frictionField", ids[k]) + ": entry " + std::to_string(i), contact.friction_field[k][i]);
   if (!contact.friction_field.empty() && contact.friction < 0 && contact.slip_bound < 0)
     throw InputError("frictionField: needs friction >= 0 as well (its value where the field has no entry; "
                      "fetiSetup sets 0 when only frictionField is given)");

@@ -15,12 +15,6 @@
 namespace ffeti {
 namespace {
 
-/// The relative distance min ||G lambda - e|| / ||e|| over lambda_I >= 0 below which a scene
-/// counts as feasible whatever tol: MPRGP on G'G resolves it only to about 1e-11 (a feasible
-/// spanner gave 1.3e-11, depending on the expansion steps), so a smaller tol must not turn
-/// that round-off into "infeasible"; infeasible scenes are off by far more (docs/algorithms.md).
-constexpr double kFeasibilityResolution = 1e-8;
-
 /// MPRGP's settings on this solve: the start, if given, is settled first.
 MprgpSettings mprgp_for(const DualSolveSettings& settings) {
   MprgpSettings mprgp = settings.mprgp;

@@ -51,6 +51,12 @@ enum class CoarseConstraints {
 /// free_rows: the gradient at the start);  and on both, where there is a coarse space,
 /// ||G lambda - e||_2 <= tolerance ||e||_2.
 
+/// The relative distance min ||G lambda - e|| / ||e|| over lambda_I >= 0 below which a scene
+/// counts as feasible whatever tol: MPRGP on G'G resolves it only to about 1e-11 (a feasible
+/// spanner gave 1.3e-11, depending on the expansion steps), so a smaller tol must not turn
+/// that round-off into "infeasible"; infeasible scenes are off by far more (docs/algorithms.md).
+constexpr double kFeasibilityResolution = 1e-8;
+
 struct DualSolveSettings {
   double tolerance = 1e-4;
   /// The relative distance from equilibrium below which the loads count as balanced by

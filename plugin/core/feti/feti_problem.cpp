@@ -352,11 +352,12 @@ FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
   const ThreadLimit limit(settings_.threads);
   FetiResult result;
   if (has_friction()) {
-    FrictionSolution friction = solve_with_friction(*dual_, data_, friction_, settings, step_start_);
+    FrictionSolution friction = solve_with_friction(*dual_, data_, friction_, settings, step_start_, bodies_);
     static_cast<DualSolution&>(result) = std::move(friction.dual);
     result.friction_iterations = friction.iterations;
     result.friction_hessian = std::move(friction.hessian);
     result.friction_bound_change = friction.bound_change;
+    result.sliding_body = friction.sliding_body;
     result.slip_bound = std::move(friction.slip_bound);
     Vec Bu;
     dual_->F().apply_B(result.u, Bu);

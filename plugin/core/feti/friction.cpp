@@ -1,5 +1,6 @@
 #include "feti/friction.h"
 
+#include "feti/coulomb_feasibility.h"
 #include "feti/primal.h"
 
 #include <algorithm>
@@ -59,7 +60,7 @@ constexpr double kLargestTightening = 0.1;
 }  // namespace
 
 FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, const FrictionLaw& law,
-                                     DualSolveSettings settings, const Vec& start) {
+                                     DualSolveSettings settings, const Vec& start, const std::vector<int>& bodies) {
   const Constraints& c = dual.constraints();
   if (settings.start.size() == 0) settings.start = start;
   FrictionSolution out;
@@ -73,12 +74,30 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
   const double tol = settings.tolerance;
   if (law.coulomb()) settings.tolerance = std::max(tol, kFirstSolveTolerance);
   if (settings.feasibility_tolerance == 0) settings.feasibility_tolerance = tol;  // each solve's check at the user's
+  if (law.coulomb() && dual.coarse() && c.friction_rows > 0) {
+    const double resolution = std::max(tol, kFeasibilityResolution);
+    const CoulombFeasibility f = coulomb_feasibility(*dual.coarse(), c, data.e, bodies, resolution);
+    if (f.distance > resolution) {
+      // No forces within the cones balance the loads: nor do those of g = 0, within every
+      // cone, whose solve says so (the Farkas check) without iterating.
+      data.slip_bound = Vec::Zero(c.friction_rows);
+      out.dual = dual.solve(data, settings);
+      out.dual.status = SolveStatus::infeasible;
+      out.dual.equality_norm = f.distance * out.dual.equality_reference;  // the law's distance, not g = 0's
+      out.slip_bound = data.slip_bound;
+      out.iterations = 1;
+      out.hessian.push_back(out.dual.counts.hessian);
+      out.sliding_body = f.body;
+      return out;
+    }
+  }
   DualWarmStart warm;  // SMALBE's multiplier term, carried from solve to solve with the multipliers
+  Vec feasible_bound, feasible_lambda;  // of the last converged Tresca solve
   for (;;) {
     data.slip_bound = g;
     settings.max_hessian = budget.remaining(counts.hessian);
     DualSolution solved = dual.solve(data, settings, warm);
-    warm.equality_multiplier = solved.equality_multiplier;
+    if (solved.status != SolveStatus::infeasible) warm.equality_multiplier = solved.equality_multiplier;
     ++out.iterations;
     out.hessian.push_back(solved.counts.hessian);
     const int estimate = counts.hessian_norm_estimate;  // estimated once: the later solves reuse it
@@ -88,7 +107,23 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
     applications += solved.dual_operator_applications;
     out.dual = std::move(solved);
     out.slip_bound = g;
+    if (law.coulomb() && out.dual.status == SolveStatus::infeasible && out.iterations < settings.friction_iterations &&
+        budget.remaining(counts.hessian) > 0) {
+      // The law admits an equilibrium (checked above); these bounds, from an iterate's normal
+      // forces, do not (the 3D block sheared at 0.96 mu P: its first solve's normal forces fall
+      // short of Q / mu, and the fixed point converges from there). Widened to the last
+      // converged solve's, they contain its multipliers: feasible, and the fixed point goes on.
+      const Vec widened = feasible_bound.size() ? Vec(g.cwiseMax(feasible_bound))
+                                                : Vec(Vec::Constant(g.size(), std::numeric_limits<double>::infinity()));
+      if (widened != g) {
+        g = widened;
+        if (feasible_lambda.size()) settings.start = feasible_lambda;
+        continue;
+      }
+    }
     if (!law.coulomb() || out.dual.status != SolveStatus::converged) break;
+    feasible_bound = g;
+    feasible_lambda = out.dual.lambda;
     const Vec next = coulomb_bounds(c, out.dual.lambda);
     const double scale = next.size() ? next.lpNorm<Eigen::Infinity>() : 0.0;
     const double change = next.size() ? (next - g).lpNorm<Eigen::Infinity>() : 0.0;

@@ -34,13 +34,19 @@ struct FrictionSolution {
   int iterations = 0;              ///< Tresca solves (1 for Tresca)
   std::vector<int> hessian;        ///< Hessian multiplications of each
   double bound_change = 0;         ///< Coulomb: the last ||g_new - g||_inf / ||g_new||_inf
+  int sliding_body = -1;           ///< Coulomb, infeasible: the body that would slide away (-1: none named)
 };
 
 /// Solves with friction from `start` (multipliers of the last load step; empty: none, and
 /// the first Coulomb solve has no bound: it sticks everywhere). `data` are the state
-/// problem's (its slip_bound is set here). Collective.
+/// problem's (its slip_bound is set here); `bodies[s]` the body of global subdomain s.
+/// Coulomb's law is first asked whether forces within the friction cones can balance the
+/// loads on the floating bodies (coulomb_feasibility): if not, the status is infeasible at
+/// once, naming the body. A Tresca solve of the fixed point whose bounds admit no equilibrium
+/// (an iterate's normal forces, not the law's) is then not final: the bounds are widened to
+/// those of the last converged solve where these are smaller (infinite before any). Collective.
 FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, const FrictionLaw& law,
-                                     DualSolveSettings settings, const Vec& start);
+                                     DualSolveSettings settings, const Vec& start, const std::vector<int>& bodies);
 
 /// The contact state of each contact row (fetiContact; docs/algorithms.md, "Friction"):
 /// open: no force at all (lambda_n = 0 and no friction force); stick: a force, its friction

@@ -86,6 +86,7 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
         {"friction_iterations", result->friction_iterations},
         {"friction_bound_change", result->friction_bound_change},
         {"slipping", result->slipping_contact},
+        {"sliding_body", result->sliding_body},
     };
     s.insert(s.end(), friction.begin(), friction.end());
   }

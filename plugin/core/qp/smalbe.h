@@ -22,7 +22,6 @@ struct SmalbeSettings {
   double eta_factor = 0.1;    ///< eta_0 = eta_factor * ||b||
   double alpha = 0.1;         ///< seed_alg31: eta <- alpha eta when ||Qx|| <= eta
   double beta = 2.0;          ///< smalbe_m: M <- M / beta; seed_alg31: rho <- beta rho
-  int max_outer = 200;
   int stall_rounds = 10;      ///< smalbe_m: rho <- beta rho after this many rounds without ||Qx|| < 0.9 its best
   MprgpSettings inner{};      ///< of every inner MPRGP call (each gets what remains of the budget)
 

@@ -1,0 +1,31 @@
+// The statics question of Coulomb friction, asked before its fixed point: can contact forces
+// within their friction cones balance the loads on the floating bodies? If not, no load
+// step's solution exists (the body slides away), whatever the normal forces turn out to be.
+#pragma once
+
+#include "constraints/constraints.h"
+#include "feti/coarse_space.h"
+
+namespace ffeti {
+
+struct CoulombFeasibility {
+  /// min ||G lambda - e|| / ||e|| over lambda with lambda_n >= 0 and ||lambda_t|| <= mu
+  /// lambda_n per contact row (gluing and Dirichlet multipliers free); -1: undecided (the
+  /// iteration neither reached `enough` nor settled).
+  double distance = 0;
+  /// The body whose rigid modes carry most of the residual G lambda - e at that minimum (-1
+  /// when feasible or undecided): the one that would slide.
+  int body = -1;
+};
+
+/// Accelerated projected gradients (FISTA with restarts) on 1/2 ||G lambda - e||^2 over the
+/// cones, from the least-norm solution of G lambda = e. Each step costs a product with G and
+/// G' (one row per rigid mode); stops at `enough`, or where the distance stops falling.
+/// Unlike the Tresca check (CoarseSpace::feasibility_residual) its answer does not depend on
+/// the bounds' normal forces, which Coulomb's fixed point only estimates: bounds of an early
+/// iterate may admit no equilibrium where the law does (the 3D block sheared at 0.96 mu P).
+/// `bodies[s]`: the body of global subdomain s.
+CoulombFeasibility coulomb_feasibility(const CoarseSpace& coarse, const Constraints& constraints, const Vec& e,
+                                       const std::vector<int>& bodies, double enough);
+
+}  // namespace ffeti
