@@ -55,6 +55,8 @@ exercise "lesson 12: -angle 90" "$lessons/12-friction-3d.edp" -angle 90
 exercise "lesson 12: -pull 0.7" "$lessons/12-friction-3d.edp" -pull 0.7
 exercise "lesson 12: -pull 0.8" "$lessons/12-friction-3d.edp" -pull 0.8
 exercise "lesson 12: -pull 0.9" "$lessons/12-friction-3d.edp" -pull 0.9
+exercise "lesson 12: -pull 0.99" "$lessons/12-friction-3d.edp" -pull 0.99
+grep -q 'status_pull=converged' out.txt || { echo "FAILED: lesson 12 -pull 0.99 did not converge"; failures=$((failures + 1)); }
 exercise "lesson 12: -pull 1.1" "$lessons/12-friction-3d.edp" -pull 1.1
 # The status by its name, as the lesson's page writes it (it once printed "failed").
 grep -q 'status_pull=infeasible' out.txt || { echo "FAILED: lesson 12 -pull 1.1 names no infeasible status"; failures=$((failures + 1)); }
