@@ -4,11 +4,13 @@
 #include <cmath>
 #include <map>
 
+#include <Eigen/Eigenvalues>
+
 namespace ffeti {
 namespace {
 
-/// At most this many steps: G and G' products only, small beside one solve's work; a
-/// distance still falling after them is left undecided rather than called infeasible.
+/// At most this many steps: products with C (k x m) and C', small beside one solve's work;
+/// a distance still falling after them is left undecided rather than called infeasible.
 constexpr int kMaxSteps = 20000;
 /// The distance has settled when the last half of the steps lowered it by less than this
 /// fraction: FISTA's distance falls like 1/k while a feasible set is being reached.
@@ -47,50 +49,44 @@ void project(const Constraints& c, Vec& lambda) {
 
 }  // namespace
 
-CoulombFeasibility coulomb_feasibility(const CoarseSpace& coarse, const Constraints& c, const Vec& e,
-                                       const std::vector<int>& bodies, double enough) {
+CoulombFeasibility coulomb_feasibility(const CoarseSpace& coarse, const FreeRowProjector& free_rows,
+                                       const Constraints& c, const Vec& e, const std::vector<int>& bodies,
+                                       double enough) {
   CoulombFeasibility result;
   const double e_norm = e.norm();
-  if (coarse.empty() || !(e_norm > 0)) return result;
-  const auto& G = coarse.G();
-  // The step 1 / ||G G'||, from a few power iterations on G G' (r x r, r the rigid modes).
-  Vec v = Vec::Ones(G.rows()), w;
-  double norm = 0;
-  for (int k = 0; k < 30; ++k) {
-    w = G * (G.transpose() * v).eval();
-    norm = w.norm() / v.norm();
-    v = w / w.norm();
-  }
-  const double step = 1 / (1.1 * norm);  // 10 % above the estimate, which approaches from below
-  Vec x = coarse.least_norm_solution(e);
-  project(c, x);
-  Vec y = x, previous = x;
-  double momentum = 1, best = (G * x - e).norm() / e_norm, best_at_half = best;
-  for (int k = 1; k <= kMaxSteps && best > enough; ++k) {
-    const Vec residual = G * y - e;
+  if (free_rows.remaining() == 0 || !(e_norm > 0)) return result;  // no body floats as a whole
+  const Eigen::MatrixXd& C = free_rows.remaining_rows();
+  const Vec target = free_rows.remaining_basis().transpose() * e;
+  const double step = 1 / Eigen::MatrixXd(C * C.transpose()).eigenvalues().real().maxCoeff();  // 1 / ||C||^2
+  Vec x = Vec::Zero(C.cols()), y = x, previous = x;
+  const auto distance_of = [&](const Vec& v) { return (C * v - target).norm() / e_norm; };
+  double momentum = 1, last = distance_of(x), best = last, best_at_half = best;
+  Vec best_x = x;
+  for (int k = 1; best > enough; ++k) {
+    if (k > kMaxSteps) return {-1, -1};
     previous = x;
-    x = y - step * (G.transpose() * residual);
+    x = y - step * (C.transpose() * (C * y - target));
     project(c, x);
-    const double distance = (G * x - e).norm() / e_norm;
+    const double distance = distance_of(x);
     const double next = (1 + std::sqrt(1 + 4 * momentum * momentum)) / 2;
-    if (distance > best) {  // restart: momentum that overshoots costs more than it gains
+    if (distance > last) {  // restart: momentum that overshoots costs more than it gains
       y = x;
       momentum = 1;
     } else {
       y = x + ((momentum - 1) / next) * (x - previous);
       momentum = next;
     }
-    best = std::min(best, distance);
-    if ((k & (k - 1)) == 0) {  // at each power of two: the last half of the steps settled it?
+    last = distance;
+    if (distance < best) best = distance, best_x = x;
+    if ((k & (k - 1)) == 0) {  // at each power of two: did the last half of the steps settle it?
       if (k >= 256 && best > (1 - kSettled) * best_at_half) break;
       best_at_half = best;
     }
-    if (k == kMaxSteps) return {-1, -1};
   }
   result.distance = best;
   if (best <= enough) return result;
   // The body that would slide: the largest share of the residual over its rigid modes.
-  const Vec residual = G * x - e;
+  const Vec residual = free_rows.remaining_basis() * (C * best_x - target);
   std::map<int, double> share;
   for (Eigen::Index r = 0; r < residual.size(); ++r)
     share[bodies[static_cast<size_t>(coarse.row_owner()[static_cast<size_t>(r)].first)]] += residual[r] * residual[r];

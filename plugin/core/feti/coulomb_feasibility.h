@@ -5,6 +5,7 @@
 
 #include "constraints/constraints.h"
 #include "feti/coarse_space.h"
+#include "feti/free_row_projector.h"
 
 namespace ffeti {
 
@@ -18,14 +19,18 @@ struct CoulombFeasibility {
   int body = -1;
 };
 
-/// Accelerated projected gradients (FISTA with restarts) on 1/2 ||G lambda - e||^2 over the
-/// cones, from the least-norm solution of G lambda = e. Each step costs a product with G and
-/// G' (one row per rigid mode); stops at `enough`, or where the distance stops falling.
+/// The free multipliers (gluing, Dirichlet) balance every part of e but the floating bodies'
+/// rigid modes (FreeRowProjector: G_F spans all but Im W), so the distance is
+/// min ||C lambda_I - W'e|| over the contact rows' cones, C = W'G (k x m, k the bodies'
+/// modes: a small, well-conditioned problem where G's rows, the subdomains' modes, made
+/// projected gradients on G itself crawl). Accelerated projected gradients (FISTA with
+/// restarts) from 0; stops at `enough`, or where the distance stops falling.
 /// Unlike the Tresca check (CoarseSpace::feasibility_residual) its answer does not depend on
 /// the bounds' normal forces, which Coulomb's fixed point only estimates: bounds of an early
 /// iterate may admit no equilibrium where the law does (the 3D block sheared at 0.96 mu P).
 /// `bodies[s]`: the body of global subdomain s.
-CoulombFeasibility coulomb_feasibility(const CoarseSpace& coarse, const Constraints& constraints, const Vec& e,
-                                       const std::vector<int>& bodies, double enough);
+CoulombFeasibility coulomb_feasibility(const CoarseSpace& coarse, const FreeRowProjector& free_rows,
+                                       const Constraints& constraints, const Vec& e, const std::vector<int>& bodies,
+                                       double enough);
 
 }  // namespace ffeti

@@ -217,6 +217,12 @@ void DualSystem::recover(const DualData& data, Vec lambda, DualSolution& result)
   result.times.recovery = recovery_clock.seconds();
 }
 
+CoulombFeasibility DualSystem::coulomb_feasibility(const DualData& data, const std::vector<int>& bodies,
+                                                   double enough) const {
+  if (!coarse_ || coarse_->empty() || constraints_.friction_rows == 0) return {};
+  return ffeti::coulomb_feasibility(*coarse_, free_rows(), constraints_, data.e, bodies, enough);
+}
+
 const FreeRowProjector& DualSystem::free_rows() const {
   if (!free_rows_) free_rows_ = std::make_unique<FreeRowProjector>(coarse_->gram(), constraints_.equality_rows);
   return *free_rows_;

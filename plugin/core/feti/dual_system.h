@@ -9,6 +9,7 @@
 #pragma once
 
 #include "feti/coarse_space.h"
+#include "feti/coulomb_feasibility.h"
 #include "constraints/constraints.h"
 #include "feti/dirichlet_preconditioner.h"
 #include "feti/dual_operator.h"
@@ -195,6 +196,11 @@ class DualSystem {
   /// counts are those of solve() alone, its solve time the block's time divided by the
   /// count. Other paths solve one after the other. Collective.
   std::vector<DualSolution> solve(const std::vector<DualData>& data, const DualSolveSettings& settings) const;
+
+  /// Coulomb's statics question for loads `data` (coulomb_feasibility: forces within the
+  /// friction cones balancing the floating bodies); `bodies[s]` the body of global subdomain
+  /// s. Feasible (distance 0) where no body floats as a whole. Collective.
+  CoulombFeasibility coulomb_feasibility(const DualData& data, const std::vector<int>& bodies, double enough) const;
 
  private:
   struct CachedNorm {  // an estimate of ||H||: the same H for every load case

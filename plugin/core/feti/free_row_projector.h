@@ -32,6 +32,10 @@ class FreeRowProjector {
 
   /// Rows of C (the floating bodies' rigid modes).
   int remaining() const { return static_cast<int>(W_.cols()); }
+  /// C = W'G, k x m: nonzero on contact columns only.
+  const Eigen::MatrixXd& remaining_rows() const { return C_; }
+  /// W, r x k: the orthonormal basis of Ker G_F' (rows: G's, the subdomains' rigid modes).
+  const Eigen::MatrixXd& remaining_basis() const { return W_; }
   /// y = T x.
   void apply(const Vec& x, Vec& y) const;
   /// y = T' x.

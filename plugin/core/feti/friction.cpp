@@ -1,6 +1,5 @@
 #include "feti/friction.h"
 
-#include "feti/coulomb_feasibility.h"
 #include "feti/primal.h"
 
 #include <algorithm>
@@ -74,9 +73,9 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
   const double tol = settings.tolerance;
   if (law.coulomb()) settings.tolerance = std::max(tol, kFirstSolveTolerance);
   if (settings.feasibility_tolerance == 0) settings.feasibility_tolerance = tol;  // each solve's check at the user's
-  if (law.coulomb() && dual.coarse() && c.friction_rows > 0) {
+  if (law.coulomb()) {
     const double resolution = std::max(tol, kFeasibilityResolution);
-    const CoulombFeasibility f = coulomb_feasibility(*dual.coarse(), c, data.e, bodies, resolution);
+    const CoulombFeasibility f = dual.coulomb_feasibility(data, bodies, resolution);
     if (f.distance > resolution) {
       // No forces within the cones balance the loads: nor do those of g = 0, within every
       // cone, whose solve says so (the Farkas check) without iterating.
