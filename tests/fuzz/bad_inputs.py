@@ -271,6 +271,28 @@ MACRO_BAD_VALUES = {"first": ["-1"], "x0": ["sqrt(-1.)", "1e308 * 10"],
                     "keep": ["0", "ffS > 100"]}
 
 
+def run_case(front, case, what, path, work, refused, verdicts, failures):
+    """Runs one generated script and files its verdict: `refused(output)` is the text of a
+    clear refusal, or None; otherwise it must run to a RESULT line."""
+    try:
+        run = subprocess.run(["FreeFem++-nw", "-v", "0", path], cwd=work, capture_output=True, text=True,
+                             timeout=LIMIT)
+    except subprocess.TimeoutExpired:
+        failures.append(f"{front} case {case} ({what}): no answer within {LIMIT} s")
+        return
+    output = run.stdout + run.stderr
+    refusal = refused(output)
+    if refusal:
+        verdicts[front, "refused"] += 1
+        print(f"ok: {front} {what}: refused: {refusal[:160]}")
+    elif run.returncode == 0 and "RESULT status=" in output:
+        verdicts[front, "ran"] += 1
+        print(f"ok: {front} {what}: ran: {' '.join(re.findall(r'RESULT (.*)', output))}")
+    else:
+        tail = " | ".join(output.strip().splitlines()[-3:])
+        failures.append(f"{front} case {case} ({what}): exit status {run.returncode}: {tail[:300]}")
+
+
 def macro_cases(count, rng, work, verdicts, front="macros"):
     """The grid macros with one bad argument; returns the failures."""
     failures = []
@@ -284,24 +306,18 @@ def macro_cases(count, rng, work, verdicts, front="macros"):
         with open(path, "w") as file:
             file.write(text)
         what = f"{name} = {value}"
-        try:
-            run = subprocess.run(["FreeFem++-nw", "-v", "0", path], cwd=work, capture_output=True, text=True,
-                                 timeout=LIMIT)
-        except subprocess.TimeoutExpired:
-            failures.append(f"{front} case {case} ({what}): no answer within {LIMIT} s")
-            continue
-        output = run.stdout + run.stderr
-        refusal = re.search(r"ffeti: (ffetiGrid3?): (\w+)[ =(].*", output)
-        if refusal and refusal.group(2) == name and "exec assert" in output:
-            verdicts[front, "refused"] += 1
-            print(f"ok: {front} {what}: refused: {refusal.group(0)[:160]}")
-        elif run.returncode == 0 and "RESULT status=" in output:
-            verdicts[front, "ran"] += 1
-            print(f"ok: {front} {what}: ran")
-        else:
-            tail = " | ".join(output.strip().splitlines()[-3:])
-            failures.append(f"{front} case {case} ({what}): exit status {run.returncode}: {tail[:300]}")
+
+        def refused(output):
+            refusal = re.search(r"ffeti: (ffetiGrid3?): (\w+)[ =(].*", output)
+            return refusal.group(0) if refusal and refusal.group(2) == name and "exec assert" in output else None
+        run_case(front, case, what, path, work, refused, verdicts, failures)
     return failures
+
+
+def plugin_refusal(output):
+    """The plugin's refusal naming its function and an argument, or None."""
+    error = re.search(r"Exec error : (feti\w+: \w+[\[\]0-9, \w]*: .*)", output)
+    return error.group(1) if error else None
 
 
 def script_cases(count, rng, work, verdicts, script=SCRIPT, mutations=SCRIPT_MUTATIONS, front="plugin"):
@@ -320,23 +336,7 @@ def script_cases(count, rng, work, verdicts, script=SCRIPT, mutations=SCRIPT_MUT
         path = os.path.join(work, f"case{case}.edp")
         with open(path, "w") as file:
             file.write(text)
-        try:
-            run = subprocess.run(["FreeFem++-nw", "-v", "0", path], cwd=work, capture_output=True, text=True,
-                                 timeout=LIMIT)
-        except subprocess.TimeoutExpired:
-            failures.append(f"{front} case {case} ({what}): no answer within {LIMIT} s")
-            continue
-        output = run.stdout + run.stderr
-        error = re.search(r"Exec error : (feti\w+: \w+[\[\]0-9, \w]*: .*)", output)
-        if error:
-            verdicts[front, "refused"] += 1
-            print(f"ok: {front} {what}: refused: {error.group(1)[:160]}")
-        elif run.returncode == 0 and "RESULT status=" in output:
-            verdicts[front, "ran"] += 1
-            print(f"ok: {front} {what}: ran: {' '.join(re.findall(r'RESULT (.*)', output))}")
-        else:
-            tail = " | ".join(output.strip().splitlines()[-3:])
-            failures.append(f"{front} case {case} ({what}): exit status {run.returncode}: {tail[:300]}")
+        run_case(front, case, what, path, work, plugin_refusal, verdicts, failures)
     return failures
 
 
