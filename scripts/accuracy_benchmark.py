@@ -32,6 +32,8 @@ SCENES = [
      "Hertz"),
     ("Cattaneo–Mindlin, Coulomb friction (2D, step 2)", "cattaneo-mindlin.edp", ["-meshes", os.path.join(ROOT, "meshes")],
      "Mindlin"),
+    ("Cattaneo–Mindlin, Coulomb friction (3D, node to face, step 2)", "cattaneo-mindlin-3d.edp",
+     ["-meshes", os.path.join(ROOT, "meshes")], "Mindlin"),
 ]
 # The accuracies the first screen's table answers for: the largest tol whose solution error
 # ||u - u_ref||_inf / ||u_ref||_inf is at most each.
@@ -137,8 +139,8 @@ def pick_reading(data):
             f"itself and {one} one decade tighter{'' if same + one == len(decades) else ', the rest more'}: "
             "pick tol equal to the relative accuracy of u you want, a decade below it to be safe. "
             "With friction a derived quantity needs more: the stick zone's c/a (Cattaneo–Mindlin below) "
-            "reaches its mesh's accuracy only from a tol near its error. Not yet swept here: 3D friction, "
-            "sensitivities and design loops ([friction](friction.md), [shape optimization](shape-optimization.md)).")
+            "reaches its mesh's accuracy only from a tol near its error. Not yet swept here: the 3D boxes near "
+            "a million unknowns, sensitivities and design loops ([friction](friction.md), [shape optimization](shape-optimization.md)).")
 
 
 def render():
