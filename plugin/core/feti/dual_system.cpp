@@ -3,11 +3,13 @@
 #include "base/errors.h"
 #include "feti/primal.h"
 #include "base/stopwatch.h"
+#include "qp/cone_distance.h"
 #include "qp/norm_estimate.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <stdexcept>
 
 namespace ffeti {
@@ -219,8 +221,36 @@ void DualSystem::recover(const DualData& data, Vec lambda, DualSolution& result)
 
 CoulombFeasibility DualSystem::coulomb_feasibility(const DualData& data, const std::vector<int>& bodies,
                                                    double enough) const {
-  if (!coarse_ || coarse_->empty() || constraints_.friction_rows == 0) return {};
-  return ffeti::coulomb_feasibility(*coarse_, free_rows(), constraints_, data.e, bodies, enough);
+  const Constraints& c = constraints_;
+  const double e_norm = data.e.norm();
+  if (!coarse_ || coarse_->empty() || c.friction_rows == 0 || !(e_norm > 0)) return {};
+  const FreeRowProjector& T = free_rows();
+  if (T.remaining() == 0) return {};  // no body floats as a whole
+  // Onto the cones: a friction pair with its contact row's normal multiplier, the other
+  // contact rows lambda_n >= 0, equality rows free.
+  std::vector<int> unpaired;
+  std::vector<char> paired(static_cast<size_t>(c.rows()), 0);
+  for (int t = 0; t < c.friction_rows; t += c.tangent_directions) paired[static_cast<size_t>(c.normal_row[static_cast<size_t>(t)])] = 1;
+  for (int i = c.equality_rows; i < c.first_friction_row(); ++i)
+    if (!paired[static_cast<size_t>(i)]) unpaired.push_back(i);
+  const auto project = [&](Vec& lambda) {
+    for (int t = 0; t < c.friction_rows; t += c.tangent_directions)
+      qp::project_onto_cone(lambda[c.normal_row[static_cast<size_t>(t)]], &lambda[c.first_friction_row() + t],
+                            c.tangent_directions, c.friction_coefficient[static_cast<size_t>(t)]);
+    for (int i : unpaired) lambda[i] = std::max(lambda[i], 0.0);
+  };
+  const Eigen::MatrixXd& C = T.remaining_rows();
+  const Vec target = T.remaining_basis().transpose() * data.e;
+  const qp::ConeDistance found = qp::cone_distance(C, target, project, e_norm, enough);
+  if (found.distance <= enough) return {found.distance, -1};  // within reach, or undecided (-1)
+  // The body that would slide: the largest share of the residual over its rigid modes.
+  const Vec residual = T.remaining_basis() * (C * found.x - target);
+  std::map<int, double> share;
+  for (Eigen::Index r = 0; r < residual.size(); ++r)
+    share[bodies[static_cast<size_t>(coarse_->row_owner()[static_cast<size_t>(r)].first)]] += residual[r] * residual[r];
+  const auto largest = std::max_element(share.begin(), share.end(),
+                                        [](const auto& a, const auto& b) { return a.second < b.second; });
+  return {found.distance, largest->first};
 }
 
 const FreeRowProjector& DualSystem::free_rows() const {

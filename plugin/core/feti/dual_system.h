@@ -9,7 +9,6 @@
 #pragma once
 
 #include "feti/coarse_space.h"
-#include "feti/coulomb_feasibility.h"
 #include "constraints/constraints.h"
 #include "feti/dirichlet_preconditioner.h"
 #include "feti/dual_operator.h"
@@ -149,6 +148,16 @@ struct DualSolution {
   PhaseTimes times;              ///< this rank's: norm_estimate, free_rows, solve (and its parts), recovery
 };
 
+/// Coulomb's statics check (DualSystem::coulomb_feasibility).
+struct CoulombFeasibility {
+  /// min ||G lambda - e|| / ||e|| over lambda with lambda_n >= 0 and ||lambda_t|| <= mu
+  /// lambda_n per contact row (gluing and Dirichlet multipliers free); -1: undecided.
+  double distance = 0;
+  /// The body whose rigid modes carry most of the residual at that minimum (-1 when
+  /// feasible or undecided): the one that would slide.
+  int body = -1;
+};
+
 class DualSystem {
  public:
   /// `subdomains` are this rank's (factorized), `global_ids` their global indices,
@@ -197,9 +206,13 @@ class DualSystem {
   /// count. Other paths solve one after the other. Collective.
   std::vector<DualSolution> solve(const std::vector<DualData>& data, const DualSolveSettings& settings) const;
 
-  /// Coulomb's statics question for loads `data` (coulomb_feasibility: forces within the
-  /// friction cones balancing the floating bodies); `bodies[s]` the body of global subdomain
-  /// s. Feasible (distance 0) where no body floats as a whole. Collective.
+  /// Coulomb's statics question for loads `data`: can contact forces within their friction
+  /// cones balance the loads on the floating bodies? The free multipliers (gluing, Dirichlet)
+  /// balance all of e but the whole bodies' rigid modes (FreeRowProjector: G_F spans all but
+  /// Im W), so the distance is min ||C lambda_I - W'e|| over the cones, C = W'G: a small,
+  /// well-conditioned problem (qp::cone_distance; on G itself projected gradients crawled and
+  /// called a feasible 3D scene infeasible). `bodies[s]`: the body of global subdomain s.
+  /// Feasible (distance 0) where no body floats as a whole. Same on every rank.
   CoulombFeasibility coulomb_feasibility(const DualData& data, const std::vector<int>& bodies, double enough) const;
 
  private:

@@ -41,7 +41,7 @@ struct FrictionSolution {
 /// the first Coulomb solve has no bound: it sticks everywhere). `data` are the state
 /// problem's (its slip_bound is set here); `bodies[s]` the body of global subdomain s.
 /// Coulomb's law is first asked whether forces within the friction cones can balance the
-/// loads on the floating bodies (coulomb_feasibility): if not, the status is infeasible at
+/// loads on the floating bodies (DualSystem::coulomb_feasibility): if not, the status is infeasible at
 /// once, naming the body. A Tresca solve of the fixed point whose bounds admit no equilibrium
 /// (an iterate's normal forces, not the law's) is then not final: the bounds are widened to
 /// those of the last converged solve where these are smaller (infinite before any). Collective.
