@@ -5,7 +5,7 @@ Reads the option tables of docs/reference.md (fetiSetup's, fetiSolve's and the s
 functions', which the plugin's registry prints: tests/docs_option_tables keeps them equal),
 picks valid values from each row's "accepted values" column (every word of a word option; the
 lowest and a middle value of a range), and writes one FreeFEM script that calls the function
-with each in turn on a contact problem with a floating body (fetiSensitivity and fetiAdjoint
+with each in turn on the seed's two membranes (scenes/model-problem.idp: a contact problem with a floating body) (fetiSensitivity and fetiAdjoint
 both take the sensitivity options). A refusal of a documented value is a failure: activeTol=
 was refused by both sensitivity functions while the reference listed it, and the only test
 passing it used invalid values, which passed for the wrong reason.
@@ -21,29 +21,17 @@ FUNCTIONS = ("fetiSetup", "fetiSolve", "sensitivity")  # the tables' order in th
 
 PROBLEM = r"""
 include "ffeti.idp"
-int N = 2, m = 6, S = 2 * N * N, failures = 0;
-mesh[int] Th(S);
-ffetiGrid(Th, 0, 0., 0., 1., 1., N, N, m)
-ffetiGrid(Th, N * N, 1., 0., 1., 1., N, N, m)
-matrix[int] K(S), dK(S);
-real[int][int] F(S), X(S), Y(S), U(S), dF(S), Z(S), dJdu(S);
-int[int] body(S);
-int[int][int] fixed(S), slave(S), master(S);
+include "scenes/model-problem.idp"
+seedModelData(12, 6)
+int failures = 0;
+matrix[int] dK(S);
+real[int][int] dF(S), Z(S), dJdu(S);
 for (int s = 0; s < S; ++s) {
-  fespace Vh(Th[s], P1);
-  varf vK(u, v) = int2d(Th[s])(dx(u) * dx(v) + dy(u) * dy(v));
-  varf vF(u, v) = int2d(Th[s])(-1. * v);
-  ffetiAssemble(Vh, s, vK, vF, K, F)
-  ffetiCoordinates(Vh, X[s], Y[s])
-  body[s] = s / (N * N);
-  ffetiDofsWhere(Vh, body[s] == 0 && x < 1e-10, fixed[s])
-  ffetiDofsWhere(Vh, body[s] == 0 && abs(x - 1) < 1e-10, slave[s])
-  ffetiDofsWhere(Vh, body[s] == 1 && abs(x - 1) < 1e-10, master[s])
   dK[s] = 0 * K[s];
-  dF[s].resize(Vh.ndof); dF[s] = 1;
-  dJdu[s].resize(Vh.ndof); dJdu[s] = 1;
+  dF[s].resize(F[s].n); dF[s] = 1;
+  dJdu[s].resize(F[s].n); dJdu[s] = 1;
 }
-macro setUp(options) fetiSetup(K, F, X, Y, body, dirichlet = fixed, contactSlave = slave, contactMaster = master options) // EOM
+macro setUp(options) fetiSetup(K, F, X, Y, body, dirichlet = dirichlet, contactSlave = slave, contactMaster = master options) // EOM
 macro accepted(statement, what)
 try { statement; cout << "ok: " << what << endl; }
 catch (...) { cout << "FAILED: " << what << " was refused" << endl; failures++; }
