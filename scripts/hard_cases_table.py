@@ -136,11 +136,10 @@ def friction_onset_section():
         f"What this costs is not yet what it should: up to {float(worst['ratio']):.0f} times the",
         f"frictionless solve ({worst['dim']}D, mesh {worst['size']}, q = {worst['q']}); at q ≥ 0.99 from "
         f"{min(float(r['ratio']) for r in near):.1f} to {max(float(r['ratio']) for r in near):.0f} times.",
-        "Where it goes: with nearly every pair slipping, each Tresca solve's SMALBE outer loop",
-        "moves the multiplier of the body's balance by ρ‖Qx‖ per round while ‖Qx‖ falls 1-3 % per",
-        "round in an unchanging direction (hundreds of rounds of one or two multiplications);",
-        "penalty growth, multiplier extrapolation and Anderson acceleration were tried and not",
-        "kept ([log](../log.md), 2026-12-06).",
+        "Where it goes, traced in an earlier run ([log](../log.md), 2026-12-06): with nearly every",
+        "pair slipping, each Tresca solve's SMALBE outer loop moves the multiplier of the body's",
+        "balance a little per round in an unchanging direction, hundreds of cheap rounds; the",
+        "remedies tried there were not kept.",
         "",
     ]
 
