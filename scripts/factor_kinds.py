@@ -5,7 +5,7 @@ machine has (the reference BLAS of the alternatives system, and Debian's OpenBLA
 loaded for the probe alone through LD_LIBRARY_PATH: the system is not changed), on one and
 two threads, and optionally beside a busy process. Prints the CSV and, per BLAS, the flops
 per factor nonzero at which supernodal starts to win: the measurements behind
-CholmodFactor's supernodal_switch (plugin/core/feti/cholmod_factor.cpp).
+CholmodFactor's supernodal_switch (plugin/core/factor/cholmod_factor.cpp).
   scripts/factor_kinds.py [--build build] [--threads 1 2] [--busy] [--csv out.csv] [--quick]"""
 import argparse
 import csv

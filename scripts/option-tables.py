@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The option tables of docs/reference.md, printed from the option registry
-(plugin/core/feti/options.cpp) by `ffeti-solve --options setup|solve|sensitivity`: rewrites the
+(plugin/core/service/options.cpp) by `ffeti-solve --options setup|solve|sensitivity`: rewrites the
 blocks between <!-- options:SCOPE begin --> and <!-- options:SCOPE end -->; and the capability
 table (plugin/core/constraints/capabilities.cpp) by `ffeti-solve --capabilities`, the block
 between <!-- capabilities begin --> and <!-- capabilities end -->. With --check, changes

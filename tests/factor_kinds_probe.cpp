@@ -3,8 +3,8 @@
 // prints one CSV line per kind: the measurements behind the automatic choice's switch
 // (driven by scripts/factor_kinds.py under each BLAS and thread count).
 //   factor_kinds_probe DIM COMPONENTS CELLS [THREADS] [REPEAT]
-#include "feti/blas_library.h"
-#include "feti/cholmod_factor.h"
+#include "factor/blas_library.h"
+#include "factor/cholmod_factor.h"
 #include "base/stopwatch.h"
 
 #include <omp.h>

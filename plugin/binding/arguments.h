@@ -3,7 +3,7 @@
 
 #include "ff++.hpp"
 
-#include "feti/options.h"
+#include "service/options.h"
 
 #include <string>
 #include <vector>
@@ -30,7 +30,7 @@ double optional_real(Expression e, Stack stack, double fallback);
 std::string optional_string(Expression e, Stack stack, const std::string& fallback);
 
 /// A function's named parameters: its own (`extras`), then the registry's options of `scope`
-/// (feti/options.h), whose values the script gives as FreeFEM reals, integers or strings.
+/// (service/options.h), whose values the script gives as FreeFEM reals, integers or strings.
 NamedParameters named_parameters(NamedParameters extras, OptionScope scope);
 
 /// The options of `scope` the script gave: `options_nargs` points at the first of them

@@ -8,8 +8,8 @@
 
 #include "base/errors.h"
 #include "constraints/constraint_triplets.h"
-#include "feti/contact_pressure.h"
-#include "feti/contact_transfer.h"
+#include "service/contact_pressure.h"
+#include "service/contact_transfer.h"
 
 #include <functional>
 

@@ -4,7 +4,7 @@
 
 #include "ff++.hpp"
 
-#include "feti/convergence_history.h"
+#include "service/convergence_history.h"
 #include "feti/feti_problem.h"
 #include "parallel/communicator.h"
 #include "sens/sensitivity.h"

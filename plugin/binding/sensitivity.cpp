@@ -6,8 +6,8 @@
 #include "binding/handles.h"
 
 #include "base/errors.h"
-#include "feti/progress_monitor.h"
-#include "feti/statistics.h"
+#include "service/progress_monitor.h"
+#include "service/statistics.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -6,9 +6,9 @@
 #include "binding/handles.h"
 
 #include "base/errors.h"
-#include "feti/progress_monitor.h"
-#include "feti/statistics.h"
-#include "sens/sensitivity_statistics.h"
+#include "service/progress_monitor.h"
+#include "service/statistics.h"
+#include "service/sensitivity_statistics.h"
 
 #include <cstdio>
 

@@ -5,8 +5,8 @@
 #include "binding/handles.h"
 
 #include "base/errors.h"
-#include "feti/cholmod_factor.h"
-#include "feti/statistics.h"
+#include "factor/cholmod_factor.h"
+#include "service/statistics.h"
 #include "mesh/connect_parts.h"
 #include "mesh/tetrahedron_quality.h"
 

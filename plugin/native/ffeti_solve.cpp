@@ -5,13 +5,13 @@
 //
 // Exit status: 0 converged, 1 not converged (the RESULT line names the status), 2 bad
 // input (the message names the file and what is wrong), 3 another failure (out of memory).
-#include "feti/convergence_history.h"
+#include "service/convergence_history.h"
 #include "base/errors.h"
 #include "constraints/capabilities.h"
-#include "feti/options.h"
+#include "service/options.h"
 #include "feti/feti_problem.h"
-#include "feti/progress_monitor.h"
-#include "feti/statistics.h"
+#include "service/progress_monitor.h"
+#include "service/statistics.h"
 #include "native/gmsh_mesh.h"
 #include "native/native_problem.h"
 #include "native/problem_file.h"

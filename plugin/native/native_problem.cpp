@@ -4,7 +4,7 @@
 #include "native/mesh_groups.h"
 
 #include "base/errors.h"
-#include "feti/options.h"
+#include "service/options.h"
 
 #include <algorithm>
 #include <cmath>

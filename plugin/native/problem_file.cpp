@@ -271,7 +271,7 @@ ContactSpec read_contact(ObjectReader& r, int components) {
   return c;
 }
 
-/// Every key of "solver" is an option of the registry (feti/options.h), read as its kind
+/// Every key of "solver" is an option of the registry (service/options.h), read as its kind
 /// asks and checked there.
 GivenOptions read_solver(ObjectReader& r, const json& object) {
   GivenOptions given;

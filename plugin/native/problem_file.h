@@ -3,7 +3,7 @@
 // The format is documented in docs/reference.md ("ffeti-solve").
 #pragma once
 
-#include "feti/options.h"
+#include "service/options.h"
 
 #include <array>
 #include <optional>

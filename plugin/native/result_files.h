@@ -3,7 +3,7 @@
 #pragma once
 
 #include "feti/feti_problem.h"
-#include "feti/statistics.h"
+#include "service/statistics.h"
 #include "native/gmsh_mesh.h"
 #include "native/native_problem.h"
 #include "native/problem_file.h"

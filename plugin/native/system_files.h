@@ -4,7 +4,7 @@
 // plain list).
 #pragma once
 
-#include "feti/cholmod_factor.h"
+#include "factor/cholmod_factor.h"
 #include "native/gmsh_mesh.h"
 
 #include <string>

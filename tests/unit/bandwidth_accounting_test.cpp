@@ -2,7 +2,7 @@
 // (scripts/bandwidth_bound.py): the bytes a pass over a factor reads, counted by hand on
 // factors whose structure is known, and the solve's split of its time into Hessian
 // multiplications, F and the triangular solves inside F, with F's application count.
-#include "feti/cholmod_factor.h"
+#include "factor/cholmod_factor.h"
 #include "feti/feti_problem.h"
 #include "membrane_model.h"
 

@@ -1,8 +1,8 @@
 // CHOLMOD factors: the automatic kind follows the measured switch, and an analysis shared
 // between matrices of one pattern gives bitwise the factor of their own analyses.
-#include "feti/cholmod_factor.h"
+#include "factor/cholmod_factor.h"
 #include "feti/dirichlet.h"
-#include "feti/shared_analyses.h"
+#include "factor/shared_analyses.h"
 #include "solid_block.h"
 
 #include <gtest/gtest.h>

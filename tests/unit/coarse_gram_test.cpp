@@ -1,5 +1,5 @@
 #include "feti/coarse_gram.h"
-#include "feti/upper_gram.h"
+#include "factor/upper_gram.h"
 
 #include "random_vector.h"
 

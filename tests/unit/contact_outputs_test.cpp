@@ -7,7 +7,7 @@
 #include "constraints/contact/node_to_face.h"
 #include "constraints/contact/node_to_segment.h"
 #include "feti/feti_problem.h"
-#include "feti/statistics.h"
+#include "service/statistics.h"
 #include "solid_block.h"
 #include "input_error.h"
 

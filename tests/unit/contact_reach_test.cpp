@@ -3,7 +3,7 @@
 // left without a row are now checked after the solve: counted, their deepest penetration
 // reported, and none reported when the radius reaches every slave.
 #include "feti/feti_problem.h"
-#include "feti/statistics.h"
+#include "service/statistics.h"
 #include "membrane_model.h"
 #include "solid_block.h"
 

@@ -1,4 +1,4 @@
-#include "feti/contact_transfer.h"
+#include "service/contact_transfer.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 #include "feti/free_row_projector.h"
-#include "feti/upper_gram.h"
+#include "factor/upper_gram.h"
 
 #include "random_vector.h"
 

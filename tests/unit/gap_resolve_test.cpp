@@ -6,7 +6,7 @@
 // new load step), in FETI-1 and Total FETI; the sensitivities of the re-solved state are
 // those of the fresh one.
 #include "base/errors.h"
-#include "feti/cholmod_factor.h"
+#include "factor/cholmod_factor.h"
 #include "friction_scenes.h"
 #include "sens/sensitivity.h"
 

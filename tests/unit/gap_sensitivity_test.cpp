@@ -2,7 +2,7 @@
 // (DesignDerivative::dgap): the rows carry the gaps, z and lambda' match central
 // differences of re-solves, the adjoint of a cost of (u, lambda) matches the direct mode,
 // and the contact pressure divides each force by the share of all copies of its node.
-#include "feti/contact_pressure.h"
+#include "service/contact_pressure.h"
 #include "base/errors.h"
 #include "feti/feti_problem.h"
 #include "membrane_model.h"

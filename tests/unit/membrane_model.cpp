@@ -185,4 +185,15 @@ ReferenceSolution membrane_reference(int n) {
   return reference;
 }
 
+FetiProblem membrane_problem(const MembraneOptions& o, FetiVariant variant, int threads,
+                             DualPreconditioner preconditioner) {
+  auto subs = membrane_subdomains(o);
+  ContactInput contact = o.with_contact ? membrane_contact(subs) : ContactInput{};
+  FetiSetupSettings setup;
+  setup.variant = variant;
+  setup.threads = threads;
+  setup.preconditioner = preconditioner;
+  return FetiProblem(std::move(subs), contact, setup);
+}
+
 }  // namespace ffeti::test

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "feti/dual_system.h"
+#include "feti/feti_problem.h"
 #include "constraints/problem_input.h"
 
 #include <functional>
@@ -54,5 +55,9 @@ struct ReferenceSolution {
   int iterations;
 };
 ReferenceSolution membrane_reference(int n);
+
+/// The membranes of `o` (with their contact when o.with_contact) as one FetiProblem.
+FetiProblem membrane_problem(const MembraneOptions& o, FetiVariant variant, int threads = 0,
+                             DualPreconditioner preconditioner = DualPreconditioner::none);
 
 }  // namespace ffeti::test

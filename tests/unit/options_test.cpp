@@ -1,7 +1,7 @@
-// The option registry (feti/options.h): what both front ends accept and refuse, and that
+// The option registry (service/options.h): what both front ends accept and refuse, and that
 // the defaults the reference states are the settings' own.
 #include "base/errors.h"
-#include "feti/options.h"
+#include "service/options.h"
 
 #include <gtest/gtest.h>
 

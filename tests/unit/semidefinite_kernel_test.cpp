@@ -1,7 +1,7 @@
 // The null space of G_F G_F' by the dense rank-revealing factorization and by sparse block
 // inverse iteration: chains of subdomains glued end to end (weighted rows), some bodies held
 // by a Dirichlet row; the null space is one constant vector per free body, known here.
-#include "feti/semidefinite_kernel.h"
+#include "factor/semidefinite_kernel.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // SharedFactors: one build per bitwise-equal (K, fixing dofs, interface), none for anything
 // else, the waiting threads get the builder's outcome (or its exception).
-#include "feti/shared_factors.h"
+#include "factor/shared_factors.h"
 
 #include <gtest/gtest.h>
 

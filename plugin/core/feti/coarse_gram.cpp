@@ -1,7 +1,7 @@
 #include "feti/coarse_gram.h"
 
-#include "feti/semidefinite_kernel.h"
-#include "feti/upper_gram.h"
+#include "factor/semidefinite_kernel.h"
+#include "factor/upper_gram.h"
 
 #include <stdexcept>
 #include <utility>

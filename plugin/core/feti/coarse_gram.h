@@ -14,7 +14,7 @@
 // on its own.
 #pragma once
 
-#include "feti/cholmod_factor.h"
+#include "factor/cholmod_factor.h"
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>

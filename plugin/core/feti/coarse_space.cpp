@@ -1,9 +1,9 @@
 #include "feti/coarse_space.h"
-#include "feti/upper_gram.h"
+#include "factor/upper_gram.h"
 
 #include "base/errors.h"
 #include "base/parallel_for.h"
-#include "feti/semidefinite_kernel.h"
+#include "factor/semidefinite_kernel.h"
 #include "qp/disc.h"
 #include "qp/mprgp.h"
 #include "qp/norm_estimate.h"

@@ -1,7 +1,7 @@
 #include "feti/dirichlet_preconditioner.h"
 
 #include "feti/dual_operator.h"
-#include "feti/shared_factors.h"
+#include "factor/shared_factors.h"
 #include "base/errors.h"
 #include "base/parallel_for.h"
 #include "base/stopwatch.h"

@@ -12,7 +12,7 @@
 // The lumped variant keeps S_s ~ K_bb: no factorization, a sparse product per application.
 #pragma once
 
-#include "feti/cholmod_factor.h"
+#include "factor/cholmod_factor.h"
 #include "constraints/constraints.h"
 #include "parallel/subdomain_sum.h"
 

@@ -2,7 +2,7 @@
 
 #include "constraints/surface_checks.h"
 
-#include "feti/blas_library.h"
+#include "factor/blas_library.h"
 #include "feti/dirichlet.h"
 #include "base/errors.h"
 #include "base/parallel_for.h"

@@ -1,7 +1,7 @@
 // Kernels (null spaces) of subdomain stiffness matrices.
 #pragma once
 
-#include "feti/cholmod_factor.h"
+#include "factor/cholmod_factor.h"
 
 #include <Eigen/Dense>
 

@@ -2,8 +2,8 @@
 // (K_s K_s^+ K_s = K_s) by "fixing dofs": K_s with r_s well-chosen dofs removed is regular.
 #pragma once
 
-#include "feti/cholmod_factor.h"
-#include "feti/shared_factors.h"
+#include "factor/cholmod_factor.h"
+#include "factor/shared_factors.h"
 
 #include <Eigen/Dense>
 

@@ -1,4 +1,4 @@
-#include "feti/supernodal_solve.h"
+#include "factor/supernodal_solve.h"
 
 namespace ffeti {
 namespace {

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "feti/feti_problem.h"
-#include "feti/statistics.h"
+#include "service/statistics.h"
 
 #include <array>
 #include <vector>

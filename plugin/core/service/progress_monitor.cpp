@@ -1,4 +1,4 @@
-#include "feti/progress_monitor.h"
+#include "service/progress_monitor.h"
 
 #include <cstdio>
 #include <memory>

@@ -1,6 +1,6 @@
-#include "feti/semidefinite_kernel.h"
+#include "factor/semidefinite_kernel.h"
 
-#include "feti/cholmod_factor.h"
+#include "factor/cholmod_factor.h"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>

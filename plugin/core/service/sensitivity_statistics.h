@@ -2,7 +2,7 @@
 // statistics by fetiInfo and fetiReport.
 #pragma once
 
-#include "feti/statistics.h"
+#include "service/statistics.h"
 #include "sens/sensitivity.h"
 
 namespace ffeti {

@@ -1,4 +1,4 @@
-#include "feti/options.h"
+#include "service/options.h"
 
 #include "base/errors.h"
 

@@ -1,4 +1,4 @@
-#include "sens/sensitivity_statistics.h"
+#include "service/sensitivity_statistics.h"
 
 #include <sstream>
 

@@ -1,7 +1,7 @@
-#include "feti/cholmod_factor.h"
+#include "factor/cholmod_factor.h"
 
-#include "feti/supernodal_factorize.h"
-#include "feti/supernodal_solve.h"
+#include "factor/supernodal_factorize.h"
+#include "factor/supernodal_solve.h"
 #include "parallel/process.h"
 
 #include <omp.h>

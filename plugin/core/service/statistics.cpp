@@ -1,6 +1,6 @@
-#include "feti/statistics.h"
+#include "service/statistics.h"
 
-#include "feti/options.h"
+#include "service/options.h"
 #include "parallel/process.h"
 
 #include <sstream>

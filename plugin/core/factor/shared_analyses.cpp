@@ -1,4 +1,4 @@
-#include "feti/shared_analyses.h"
+#include "factor/shared_analyses.h"
 
 #include <algorithm>
 #include <functional>

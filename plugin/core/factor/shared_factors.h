@@ -7,7 +7,7 @@
 #pragma once
 
 #include "base/linear_algebra.h"
-#include "feti/cholmod_factor.h"
+#include "factor/cholmod_factor.h"
 
 #include <functional>
 #include <future>

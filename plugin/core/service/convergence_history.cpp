@@ -1,4 +1,4 @@
-#include "feti/convergence_history.h"
+#include "service/convergence_history.h"
 
 #include "base/errors.h"
 

@@ -1,4 +1,4 @@
-#include "feti/contact_pressure.h"
+#include "service/contact_pressure.h"
 
 #include "base/errors.h"
 

@@ -1,4 +1,4 @@
-#include "feti/upper_gram.h"
+#include "factor/upper_gram.h"
 
 #include "base/parallel_for.h"
 

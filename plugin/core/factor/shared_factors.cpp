@@ -1,4 +1,4 @@
-#include "feti/shared_factors.h"
+#include "factor/shared_factors.h"
 
 #include <algorithm>
 #include <cstring>

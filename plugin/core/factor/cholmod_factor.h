@@ -4,7 +4,7 @@
 #pragma once
 
 #include "base/linear_algebra.h"
-#include "feti/shared_analyses.h"
+#include "factor/shared_analyses.h"
 
 #include <cholmod.h>
 

@@ -1,6 +1,6 @@
-#include "feti/supernodal_factorize.h"
+#include "factor/supernodal_factorize.h"
 
-#include "feti/supernodal_solve.h"
+#include "factor/supernodal_solve.h"
 
 #include <Eigen/Dense>
 

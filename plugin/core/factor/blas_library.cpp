@@ -1,4 +1,4 @@
-#include "feti/blas_library.h"
+#include "factor/blas_library.h"
 
 #include <dlfcn.h>
 
