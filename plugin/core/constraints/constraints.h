@@ -39,7 +39,10 @@ struct Constraints {
   std::vector<std::shared_ptr<const ContactRowGeometry>> geometry;
   std::vector<ContactKind> contact_kinds;    ///< the kinds the input selected (rows or not)
   std::vector<int> normal_row;               ///< per friction row: the row of its contact row
-  std::vector<double> friction_coefficient;  ///< per friction row: Coulomb's mu, or Tresca's g (its slave node's; > 0)
+  /// Per friction row, its slave node's value of the law (> 0), in one of the two (the
+  /// other empty): Coulomb's coefficient mu, or Tresca's slip bound g (slipBound=).
+  std::vector<double> coulomb_coefficient;
+  std::vector<double> slip_bound;
   /// Friction rows per contact row that has them: 1 in a plane problem, 2 in three
   /// dimensions (t1 then t2, adjacent: their multipliers lie in one disc ||lambda_t|| <= g).
   int tangent_directions = 1;

@@ -236,7 +236,7 @@ CoulombFeasibility DualSystem::coulomb_feasibility(const DualData& data, const s
   const auto project = [&](Vec& lambda) {
     for (int t = 0; t < c.friction_rows; t += c.tangent_directions)
       qp::project_onto_cone(lambda[c.normal_row[static_cast<size_t>(t)]], &lambda[c.first_friction_row() + t],
-                            c.tangent_directions, c.friction_coefficient[static_cast<size_t>(t)]);
+                            c.tangent_directions, c.coulomb_coefficient[static_cast<size_t>(t)]);
     for (int i : unpaired) lambda[i] = std::max(lambda[i], 0.0);
   };
   const Eigen::MatrixXd& C = T.remaining_rows();

@@ -11,13 +11,13 @@
 #include "feti/coarse_space.h"
 #include "constraints/constraints.h"
 #include "feti/dirichlet_preconditioner.h"
+#include "feti/dual_data.h"
 #include "feti/dual_operator.h"
+#include "feti/dual_settings.h"
+#include "feti/dual_solution.h"
 #include "feti/free_row_projector.h"
-#include "feti/stopping_test.h"
 #include "parallel/subdomain_sum.h"
-#include "qp/norm_estimate.h"
 #include "qp/problem.h"
-#include "qp/smalbe.h"
 
 #include <cstddef>
 #include <memory>
@@ -26,137 +26,6 @@
 #include <vector>
 
 namespace ffeti {
-
-/// The solver path the constraints call for (ALGORITHMS.md section 6).
-enum class DualPath {
-  cholesky,      ///< no constraint rows: one subdomain solve each
-  cg,            ///< equality rows only, nothing floats: CG on F
-  projected_cg,  ///< equality rows only, something floats: CG on P F P
-  mprgp,         ///< contact rows, nothing floats: MPRGP on F
-  smalbe,        ///< contact rows, something floats: SMALBE-M (MPRGP where the free-rows form leaves no equality part)
-};
-
-/// The path's name in reports and statistics ("projected_cg"); paths are compared as enums.
-const char* path_name(DualPath path);
-
-/// How the SMALBE path meets the coarse constraints G lambda = e (docs/algorithms.md).
-enum class CoarseConstraints {
-  penalty,    ///< all rows of G by SMALBE's augmented Lagrangian, on P F P
-  free_rows,  ///< the rows the free multipliers can meet by the oblique projector T; the rest by SMALBE
-};
-
-/// Stopping test of every path (docs/algorithms.md): by default (relative_kkt) the recovered
-/// u(lambda) violates no constraint by more than tolerance ||u||_inf,
-/// or the seed's  ||gP||_2 <= tolerance ||b||_2,  b = P(d - F lambda~) (T'b with coarse
-/// free_rows: the gradient at the start);  and on both, where there is a coarse space,
-/// ||G lambda - e||_2 <= tolerance ||e||_2.
-
-/// The relative distance min ||G lambda - e|| / ||e|| over lambda_I >= 0 below which a scene
-/// counts as feasible whatever tol: MPRGP on G'G resolves it only to about 1e-11 (a feasible
-/// spanner gave 1.3e-11, depending on the expansion steps), so a smaller tol must not turn
-/// that round-off into "infeasible"; infeasible scenes are off by far more (docs/algorithms.md).
-constexpr double kFeasibilityResolution = 1e-8;
-
-struct DualSolveSettings {
-  double tolerance = 1e-4;
-  /// The relative distance from equilibrium below which the loads count as balanced by
-  /// multipliers within their bounds (the Farkas check before SMALBE); 0: `tolerance`. A
-  /// solve with a tolerance looser than the user's (Coulomb's early Tresca solves) keeps
-  /// the user's here: at its own it let a pull of 1.01 mu W through to maxit.
-  double feasibility_tolerance = 0;
-  CoarseConstraints coarse_constraints = CoarseConstraints::free_rows;
-  StoppingTest stopping = StoppingTest::relative_kkt;
-  int max_hessian = 10000;          ///< over the whole solve (friction: over all its Tresca solves)
-  SmalbeSettings smalbe{};          ///< used on the SMALBE path
-  MprgpSettings mprgp{};            ///< used on the MPRGP path and inside SMALBE
-  NormEstimateSettings norm_estimate{};
-  Monitor monitor{};
-  /// Seed test: measure ||gP|| against max(||b||, ||B K^+ f||) instead of ||b||: for right-hand sides
-  /// whose b is small after cancellation (a sensitivity load f' - K'u in near equilibrium),
-  /// ||b|| lies below the round-off of the data it came from, and a tolerance relative to it
-  /// cannot be reached.
-  bool reference_includes_data = false;
-  /// Multipliers to start from (rows as constraints()), e.g. a previous solve's lambda or
-  /// one interpolated from a coarser mesh; empty: lambda = 0 (lambda~ where bodies float).
-  /// Moved onto the constraints' feasible set first, so any values of the right size do.
-  Vec start;
-  /// Face solves that settle a given start before MPRGP (qp/start_settling.h); 0: MPRGP
-  /// from the start as given. Ignored without a start. 2: measured, docs/results/large-contact.md.
-  int settle = 2;
-  /// Coulomb friction: Tresca solves of the fixed point at most (feti/friction.h).
-  int friction_iterations = 50;
-  void validate() const;  ///< throws InputError naming the setting
-};
-
-/// Where the time of a set-up and a solve went, phase by phase.
-struct PhaseTimes {  ///< wall-clock seconds; in a problem's result over several ranks, the slowest rank's
-  double constraints = 0, factorization = 0, coarse_space = 0, dual_data = 0;  ///< set-up
-  double norm_estimate = 0;   ///< estimating ||H|| (first solve of a system only)
-  double free_rows = 0;       ///< building T of coarse "free-rows" (first solve of a system only)
-  double solve = 0, recovery = 0, kkt = 0;
-  double dual_operator = 0;   ///< the part of solve spent applying F
-  double preconditioner = 0;  ///< the part of solve spent applying the preconditioner
-  double primal_checks = 0;   ///< the part of solve spent in the stopping test's primal checks
-  double hessian = 0;         ///< the part of solve in the solver's Hessian multiplications (F, projections)
-  double factor_solves = 0;   ///< of dual_operator, the subdomain solves (thread-seconds: DualOperator)
-
-  /// Several solves of one problem (friction's fixed point) add up phase by phase.
-  PhaseTimes& operator+=(const PhaseTimes& o) {
-    double* mine[] = {&constraints, &factorization, &coarse_space, &dual_data, &norm_estimate, &free_rows, &solve,
-                      &recovery, &kkt, &dual_operator, &preconditioner, &primal_checks, &hessian, &factor_solves};
-    const double* theirs[] = {&o.constraints, &o.factorization, &o.coarse_space, &o.dual_data, &o.norm_estimate,
-                              &o.free_rows, &o.solve, &o.recovery, &o.kkt, &o.dual_operator, &o.preconditioner,
-                              &o.primal_checks, &o.hessian, &o.factor_solves};
-    for (size_t k = 0; k < sizeof(mine) / sizeof(mine[0]); ++k) *mine[k] += *theirs[k];
-    return *this;
-  }
-};
-
-/// The right-hand side of one dual problem, for loads f (as the operators see them) and
-/// constraint right-hand side c: d = B K^+ f - c, e = R'f, lambda~ = G'(GG')^{-1} e and
-/// b = P(d - F lambda~).
-struct DualData {
-  std::vector<Vec> loads;
-  Vec c, e, lambda_tilde, b;
-  double data_norm = 0;  ///< max(||B K^+ f||, ||c||): the size of what b was computed from
-  Vec slip_bound;        ///< per friction row: g >= 0 of |lambda_t| <= g (empty without friction)
-};
-
-/// What a solve of a sequence (friction's fixed point: one system, other bounds) carries
-/// over from the last, besides its multipliers (DualSolveSettings::start).
-struct DualWarmStart {
-  Vec equality_multiplier;  ///< DualSolution::equality_multiplier of the last solve (empty: 0)
-};
-
-struct DualSolution {
-  SolveStatus status = SolveStatus::invalid_input;
-  DualPath path = DualPath::cholesky;  ///< the path taken
-  IterationCounts counts;
-  double gradient_norm = 0;      ///< final ||gP|| (absolute) and its reference ||b||
-  double gradient_reference = 0;
-  double equality_norm = 0;      ///< final ||G lambda - e|| and its reference ||e||
-  double equality_reference = 0;
-  double violation = -1;         ///< relative_kkt: the last check's measure (-1: no check ran)
-  int scale_evaluations = 0;     ///< relative_kkt: primal checks (a K^+ application each)
-  long dual_operator_applications = 0;  ///< columns F was applied to in the solve (times.dual_operator's)
-  Vec lambda;                    ///< multipliers, rows ordered as constraints()
-  /// SMALBE path: the solver's final multiplier term of the equality part (qp/smalbe.h);
-  /// empty on the other paths. The next solve of the same system with other bounds starts
-  /// from it (DualWarmStart).
-  Vec equality_multiplier;
-  std::vector<Vec> u;            ///< primal solution per subdomain of this rank
-  PhaseTimes times;              ///< this rank's: norm_estimate, free_rows, solve (and its parts), recovery
-};
-
-/// Coulomb's statics check (DualSystem::coulomb_feasibility).
-struct CoulombFeasibility {
-  /// min ||G lambda - e|| / ||e|| over lambda with lambda_n >= 0 and ||lambda_t|| <= mu
-  /// lambda_n per contact row (gluing and Dirichlet multipliers free); -1: undecided.
-  double distance = 0;
-  /// The body whose rigid modes carry most of the residual at that minimum (-1 when
-  /// feasible or undecided): the one that would slide.
-  int body = -1;
-};
 
 class DualSystem {
  public:

@@ -118,7 +118,7 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
                      "contactSlaveFaces or obstacle pair)");
   built_rhs_ = rhs_ = Eigen::Map<const Vec>(constraints.rhs.data(), constraints.rows());
   if (local_contact.slip_bound >= 0)  // Tresca: the bounds per friction row are fixed at set-up
-    friction_ = {true, Eigen::Map<const Vec>(constraints.friction_coefficient.data(), constraints.friction_rows)};
+    friction_ = {true, Eigen::Map<const Vec>(constraints.slip_bound.data(), constraints.friction_rows)};
   sort_by_subdomain_and_dof(slaves);
   for (const auto& row : constraints.geometry) {
     const std::pair<int, int> slave_dof{row->slave_dof()[0], row->slave_dof()[1]};

@@ -17,7 +17,7 @@ Vec coulomb_bounds(const Constraints& c, const Vec& lambda) {
   if (lambda.size() != c.rows()) return g;
   for (int t = 0; t < c.friction_rows; ++t) {
     const auto k = static_cast<size_t>(t);
-    g[t] = c.friction_coefficient[k] * std::max(lambda[c.normal_row[k]], 0.0);
+    g[t] = c.coulomb_coefficient[k] * std::max(lambda[c.normal_row[k]], 0.0);
   }
   return g;
 }

@@ -9,8 +9,8 @@
 
 namespace ffeti {
 
-/// Coulomb's coefficients per friction row (Constraints::friction_coefficient), or Tresca's
-/// bound per friction row (slipBound=, slipBoundField=; the same Constraints entries).
+/// Coulomb's law (its coefficients: Constraints::coulomb_coefficient), or Tresca's with its
+/// bound per friction row (slipBound=, slipBoundField=; Constraints::slip_bound).
 struct FrictionLaw {
   bool tresca = false;
   Vec slip_bound;  ///< Tresca: g per friction row (>= 0)
