@@ -2,13 +2,19 @@
 """What accuracy costs in time, on every scene: tol swept from 1e-2 to 1e-10 on one set-up per
 scene (edp/tolerance-sweep.idp), each solve compared with the scene's solve at tol = 1e-12,
 itself confirmed by an independent method (an active set solution of the unsplit problem,
-Hertz's formulas, the force balance of the contact interfaces). Writes the raw data of one
-run (docs/results/accuracy-and-time-references.csv, accuracy-and-time-sweeps.csv) and
-renders docs/results/accuracy-and-time.md and its plots from it (--render: again from the
-CSVs)."""
+Hertz's formulas, the force balance of the contact interfaces); then the same sweep of a
+design gradient (the gap design's -sweep 1, edp/scenes/gap-design.idp: its reference checked
+against central differences of the cost) and design loops run whole at several tols (their
+final designs solved again at tol = 1e-12, against the loop at 1e-12 and the known optimum).
+Writes the raw data of one run (docs/results/accuracy-and-time-references.csv,
+accuracy-and-time-sweeps.csv, accuracy-and-time-gradients.csv,
+accuracy-and-time-design-loops.csv) and renders docs/results/accuracy-and-time.md and its
+plots from it (--render: again from the CSVs)."""
 import argparse
 import math
 import os
+import subprocess
+import tempfile
 
 import matplotlib
 
@@ -34,7 +40,28 @@ SCENES = [
      "Mindlin"),
     ("Cattaneo–Mindlin, Coulomb friction (3D, node to face, step 2)", "cattaneo-mindlin-3d.edp",
      ["-meshes", os.path.join(ROOT, "meshes")], "Mindlin"),
+    # The 3D elasticity cubes of three-dimensions.md near a million unknowns (n = 48: 944,784);
+    # no direct peer reaches this size: the load balance and the primal KKT residual confirm it.
+    ("3D elasticity, two cubes n = 48", "cubes-elasticity-3d.edp", ["-n", 48], "load balance"),
 ]
+# (label, script, arguments) of the gradient sweeps: the gap design of the known optimum at its
+# start, the energy (its gradient from the contact forces) and the P-mean of the pressure (from
+# their derivatives lambda'), in 2D and 3D.
+GRADIENTS = [
+    ("2D punch, energy", "uniform-pressure.edp", ["-cost", "energy"]),
+    ("2D punch, pressure P-mean", "uniform-pressure.edp", ["-cost", "pressure"]),
+    ("3D square punch, energy", "uniform-pressure-3d.edp", ["-cost", "energy"]),
+    ("3D square punch, pressure P-mean", "uniform-pressure-3d.edp", ["-cost", "pressure"]),
+]
+# The design loops (edp/uniform-pressure.edp, IPOPT with adjoint gradients) run whole at each
+# tol of DESIGN_TOLS and at DESIGN_REFERENCE; each stopped after DESIGN_CAP designs (-stopafter:
+# the reference loops take tens to hundreds; a count, not a time, so that a loaded machine
+# stops the same loops).
+DESIGN_LOOPS = [("2D punch, energy", ["-cost", "energy"]), ("2D punch, pressure P-mean", ["-cost", "pressure"])]
+DESIGN_TOLS = [1e-3, 1e-4, 1e-5, 1e-7, 1e-9]
+DESIGN_REFERENCE = 1e-12
+DESIGN_CAP = 2000
+UNIFORM_PRESSURE = 100.0  # q of edp/uniform-pressure.edp [MPa]: the known optimum's pressure
 # The accuracies the first screen's table answers for: the largest tol whose solution error
 # ||u - u_ref||_inf / ||u_ref||_inf is at most each.
 TARGETS = [1e-2, 1e-4, 1e-6, 1e-8]
@@ -64,6 +91,8 @@ def independent(script, args, kind, result):
         return {"independent_energy": direct["energy"]}
     if kind == "active set":
         return {"independent_energy": result["energy_reference"], "independent_active": result["active_reference"]}
+    if kind == "load balance":
+        return {"unknowns": result["unknowns"], "couples": result["couples"]}
     return {}
 
 
@@ -83,6 +112,12 @@ def confirmation(reference):
     if kind == "Mindlin":
         return (f"stick zone c/a within {f(reference, 'stick_ratio_error'):.2%} of Mindlin's (discretization error "
                 f"of this mesh), friction forces summing to Q to {f(reference, 'balance_error'):.0e}")
+    if kind == "load balance":
+        return (f"the contact forces carry the applied load to {f(reference, 'balance_error'):.1e} and the KKT "
+                f"residual recomputed in primal form is {f(reference, 'kkt'):.1e} ({int(f(reference, 'unknowns')):,} "
+                f"unknowns, {reference['couples']} contact couples); no independent solution exists at this size "
+                "(the direct peers of [three dimensions](three-dimensions.md) stop far below it), so these two are "
+                "the check")
     return f"each contact interface carries the load above it to {f(reference, 'balance_error'):.1e}"
 
 
@@ -92,6 +127,7 @@ SWEEP = [("tol", ("tol", ".0e")), ("Hessian mult.", "hessian"), ("time [s]", ("s
 HERTZ = [("a error (Hertz)", ("a_relerr", ".2%")), ("p0 error (Hertz)", ("p0_relerr", ".2%"))]
 MINDLIN = [("c/a error (Mindlin)", ("stick_ratio_error", ".2%")), ("Σλ_t vs Q", ("balance_error", ".0e")),
            ("Tresca solves", "fixed_point_iterations")]
+BALANCE = [("Σλ vs load", ("balance_error", ".1e"))]
 STATUS = [("status", lambda r: "converged" if r["status"] == "0" else f"status {r['status']}")]
 
 
@@ -108,8 +144,41 @@ def main():
             sweeps += [dict(scene=label, **r) for r in rows]
         write_csv(PAGE, "references", references)
         write_csv(PAGE, "sweeps", sweeps)
+        gradients = []
+        for label, script, args in GRADIENTS:
+            _, reference, rows = sweep(script, args)
+            gradients += [dict(scene=label, **r) for r in [reference] + rows]
+        write_csv(PAGE, "gradients", gradients)
+        write_csv(PAGE, "design-loops", design_loops())
         end_run(PAGE, begun)
     render()
+
+
+def design_loops():
+    """Each design loop run whole at each tol (the reference's first), its final design solved
+    again at tol = 1e-12 (-finaltol): one row per loop and tol; a loop stopped at DESIGN_CAP
+    designs is a row with status 'design cap'."""
+    rows = []
+    with tempfile.TemporaryDirectory() as folder:
+        for label, args in DESIGN_LOOPS:
+            for tol in [DESIGN_REFERENCE] + DESIGN_TOLS:
+                common = dict(loop=label, tol=repr(tol), reference=int(tol == DESIGN_REFERENCE))
+                history = os.path.join(folder, f"loop-{len(rows)}.history")
+                try:
+                    result = run("uniform-pressure.edp", *args, "-tol", tol, "-finaltol", DESIGN_REFERENCE,
+                                 "-history", history, "-stopafter", DESIGN_CAP)["RESULT"][0]
+                    rows.append(dict(common, **result))
+                except subprocess.CalledProcessError:
+                    # -stopafter kills the process (its last lines unflushed); the history it
+                    # rewrites after each design says how many it ran (its first number).
+                    designs = 0
+                    if os.path.exists(history):
+                        with open(history) as file:
+                            designs = int(file.readline().split()[0])
+                    if designs < DESIGN_CAP:
+                        raise
+                    rows.append(dict(common, status="design cap", steps=designs))
+    return rows
 
 
 PICK_COLUMNS = [("scene", "scene")] + [(f"error ≤ {tol_text(t)}", f"target_{i}") for i, t in enumerate(TARGETS)]
@@ -125,31 +194,214 @@ def picks(rows):
     return chosen
 
 
-def pick_reading(data):
-    """How far the tol a target needs lies from the target, over every scene and target."""
+def safe_picks(rows, error, cost):
+    """For each target accuracy, 'tol (cost)' of the largest tol of rows from which on every
+    tighter tol also reaches it with status 0 (a loop may reach a target at one tol and miss it
+    at the next tighter one), or '-'. error, cost: functions of a row."""
+    chosen = {}
+    tightest_first = sorted(rows, key=lambda r: f(r, "tol"))
+    for i, target in enumerate(TARGETS):
+        best = None
+        for r in tightest_first:
+            if r["status"] != "0" or error(r) > target:
+                break
+            best = r
+        chosen[f"target_{i}"] = f"{tol_text(f(best, 'tol'))} ({cost(best)})" if best else "-"
+    return chosen
+
+
+def decades_needed(rows_per_case, error):
+    """Per (case, target) pair some tol reached: log10(target / the largest tol reaching it)."""
     decades = []
-    for _, rows in data:
+    for rows in rows_per_case:
         for target in TARGETS:
-            good = [f(r, "tol") for r in rows if f(r, "u_error") <= target and r["status"] == "0"]
+            good = [f(r, "tol") for r in rows if error(r) <= target and r["status"] == "0"]
             if good:
                 decades.append(round(math.log10(target / max(good))))
+    return decades
+
+
+def settled_from(rows, key):
+    """The largest tol from which on every tighter tol of the sweep gives the reference's value of
+    `key` (an error against an analytic value) to 1% of it, or None."""
+    best = None
+    for r in sorted(rows, key=lambda r: f(r, "tol")):
+        if abs(f(r, key) - f(r, "reference_value")) > 0.01 * abs(f(r, "reference_value")):
+            break
+        best = r
+    return best
+
+
+def gradient_error(r):
+    return f(r, "gradient_error")
+
+
+def gradient_cost(r):
+    """Multiplications of one gradient: the state solve's and the adjoint's (or the direct
+    fallback's)."""
+    return int(f(r, "hessian") + f(r, "hessian_adjoint"))
+
+
+def loop_error(reference):
+    """The final design's cost (solved again at 1e-12) against the reference loop's, relative."""
+    def error(r):
+        if r["status"] != "0" or r.get("final_status", "") != "0":
+            return math.inf
+        return abs(f(r, "final_cost") - f(reference, "final_cost")) / abs(f(reference, "final_cost"))
+    return error
+
+
+def pick_reading(data, gradients, loops):
+    """What this run shows about the tol each accuracy needs: the solution's, the gradient's and the
+    design loops' (computed from the rows)."""
+    decades = decades_needed([rows for _, rows in data], lambda r: f(r, "u_error"))
     same = sum(1 for d in decades if d == 0)
     one = sum(1 for d in decades if d == 1)
-    return (f"Reading: of {len(decades)} (scene, target) pairs a sweep reached, {same} need tol = the target "
+    text = (f"Reading: of {len(decades)} (scene, target) pairs a sweep reached, {same} need tol = the target "
             f"itself and {one} one decade tighter{'' if same + one == len(decades) else ', the rest more'}: "
-            "pick tol equal to the relative accuracy of u you want, a decade below it to be safe. "
-            "With friction a derived quantity needs more: the stick zone's c/a (Cattaneo–Mindlin below) "
-            "reaches its mesh's accuracy only from a tol near its error. Not yet swept here: the 3D boxes near "
-            "a million unknowns, sensitivities and design loops ([friction](friction.md), [shape optimization](shape-optimization.md)).")
+            "pick tol equal to the relative accuracy of u you want, a decade below it to be safe.")
+    friction = []
+    for reference, rows in data:
+        if reference["kind"] == "Mindlin":
+            rows = [dict(r, reference_value=reference["stick_ratio_error"]) for r in rows]
+            settled = settled_from(rows, "stick_ratio_error")
+            if settled:
+                friction.append(f"{tol_text(f(settled, 'tol'))} ({reference['scene'].split('(')[1].split(',')[0]})")
+    if friction:
+        text += (" With friction a derived quantity needs its own tol: the stick zone's c/a settles at its "
+                 f"reference value (its mesh's error against Mindlin) from tol = {' and '.join(friction)}.")
+    gradient_decades = decades_needed([rows for _, _, rows in gradients], gradient_error)
+    if gradient_decades:
+        most = max(gradient_decades)
+        text += (f"\n\nA design gradient needs tighter solves: of {len(gradient_decades)} (scene, target) pairs its "
+                 f"sweep reached, {sum(1 for d in gradient_decades if d == 0)} need tol = the target, "
+                 f"{sum(1 for d in gradient_decades if d == 1)} one decade tighter and "
+                 f"{sum(1 for d in gradient_decades if d >= 2)} two or more (up to {most}): pick tol "
+                 f"{most} decade{'s' if most != 1 else ''} below the gradient's accuracy you want.")
+    fell = [(label, r) for label, _, rows in gradients for r in rows if r["fallback"] == "1"]
+    if fell:
+        adjoint = [f(r, "hessian_adjoint") for _, _, rows in gradients for r in rows if r["fallback"] == "0"]
+        cost = [f(r, "hessian_adjoint") for _, r in fell]
+        text += (" Where the state's tol is loose its contact rows are classed with a loose threshold (activeTol = "
+                 "10 tol, at most 1e-2): some then count as weakly active, the adjoint falls back to the direct "
+                 f"mode, and a gradient costs {min(cost):.0f} to {max(cost):.0f} multiplications instead of an "
+                 f"adjoint's {min(adjoint):.0f} to {max(adjoint):.0f} ("
+                 + "; ".join(f"{label} at tol = {', '.join(tol_text(f(r, 'tol')) for lab, r in fell if lab == label)}"
+                             for label in dict.fromkeys(lab for lab, _ in fell)) + ").")
+    for label, reference, rows in loops:
+        error = loop_error(reference)
+        good = [r for r in rows if error(r) <= 1e-6]
+        cheapest = min(good, key=lambda r: f(r, "hessian_total")) if good else None
+        failed = [r for r in rows if r["status"] != "0" or r.get("ipopt_status") not in ("0", "1")]
+        text += (f" Design loop, {label}: at tol = {tol_text(f(reference, 'tol'))} {reference['steps']} designs and "
+                 f"{int(f(reference, 'hessian_total')):,} multiplications")
+        if cheapest:
+            text += (f"; the cheapest loop whose final design's cost is within 1e-6 of it ran at tol = "
+                     f"{tol_text(f(cheapest, 'tol'))}: {cheapest['steps']} designs, "
+                     f"{int(f(cheapest, 'hessian_total')):,} multiplications")
+        if failed:
+            text += "; " + ", ".join(f"tol = {tol_text(f(r, 'tol'))} {loop_outcome(r)}"
+                                     + (f", its final design's cost {error(r):.1e} off the reference's, the largest "
+                                        f"pressure {f(r, 'final_pressure_max'):.1f} MPa against "
+                                        f"q = {UNIFORM_PRESSURE:g}"
+                                        if error(r) < math.inf else "") for r in failed)
+        text += "."
+    return text
+
+
+def loop_outcome(r):
+    """How a loop that did not end well ended, in words."""
+    if r["status"] == "design cap":
+        return f"stopped at the cap of {r['steps']} designs"
+    if r["status"] != "0":
+        return f"ended with status {r['status']} (IPOPT {r.get('ipopt_status', '?')})"
+    return f"ended with IPOPT status {r['ipopt_status']} (stationarity {f(r, 'stationarity'):.0e})"
+
+
+GRADIENT_PICK_COLUMNS = [("scene", "scene"), ("quantity", "quantity")] + PICK_COLUMNS[1:]
+GRADIENT_SWEEP = [("tol", ("tol", ".0e")), ("state mult.", "hessian"), ("adjoint mult.", "hessian_adjoint"),
+                  ("fell back to direct", lambda r: "yes" if r["fallback"] == "1" else "no"),
+                  ("direct mult. (all directions)", "hessian_direct"),
+                  ("state + adjoint [s]", lambda r: f"{f(r, 'seconds') + f(r, 'seconds_adjoint'):.3f}"),
+                  ("cost error", ("cost_error", ".1e")), ("gradient error (adjoint)", ("gradient_error", ".1e")),
+                  ("gradient error (direct)", ("gradient_error_direct", ".1e")), ("KKT", ("kkt", ".1e"))]
+LOOP_COLUMNS = [("tol", ("tol", ".0e")), ("designs", "steps"), ("Hessian mult.", "hessian_total"),
+                ("loop [s]", ("time_total", ".2f")), ("final cost (at 1e-12)", "final_cost"),
+                ("cost error", "cost_error"), ("max pressure [MPa]", ("final_pressure_max", ".3f")),
+                ("cv", ("final_pressure_cv", ".1e")), ("bound's multiplier [MPa]", "multiplier"),
+                ("stationarity", ("stationarity", ".0e")), ("IPOPT", "ipopt_status"), ("status", "status")]
+
+
+def design_words(r):
+    """'m = 16, 12 variables' (and the contact) of a gap design's SWEEP row."""
+    variables = r.get("variables") or r["k"]
+    words = f"m = {r['m']}, {variables} variables"
+    return words + (f", {r['contact']} contact" if r.get("contact") else "")
+
+
+def gradient_section(label, reference, rows):
+    lines = [f"## Gradient: {label}", "",
+             f"`{'uniform-pressure-3d.edp' if reference.get('contact') else 'uniform-pressure.edp'} "
+             f"-cost {reference['cost_name']} -sweep 1` ({design_words(reference)}), at the start design. "
+             f"Reference (tol = {tol_text(f(reference, 'tol'))}): state {reference['hessian']} + adjoint "
+             f"{reference['hessian_adjoint']} Hessian multiplications (direct: {reference['hessian_direct']} for all "
+             f"directions), KKT {f(reference, 'kkt'):.1e}, |g|_inf = {f(reference, 'gradient_max'):.4g}"
+             + (f" (status {reference['status']})" if reference["status"] != "0" else "")
+             + "; confirmed: central differences of the cost (re-solves at tol = 1e-12) agree with its adjoint "
+             f"gradient to {f(reference, 'fd0_vs_adjoint'):.1e} at step {f(reference, 'fd0_step'):.0e} mm and "
+             f"{f(reference, 'fd1_vs_adjoint'):.1e} at {f(reference, 'fd1_step'):.0e} mm (the differences' own "
+             f"error, falling as the step squared), with the direct one to {f(reference, 'fd1_vs_direct'):.1e}"
+             + ("" if reference["fd0_status"] == reference["fd1_status"] == "0" else " (a re-solve did not converge)")
+             + ".", ""]
+    columns = GRADIENT_SWEEP + (STATUS if any(r["status"] != "0" for r in rows) else [])
+    return lines + markdown_table(rows, columns) + [""]
+
+
+def loops_section(loops):
+    reference = loops[0][1]
+    final = tol_text(DESIGN_REFERENCE)
+    lines = ["## Design loops: the known optimum (2D punch)", "",
+             f"`uniform-pressure.edp -cost energy|pressure -tol TOL -finaltol {final}` (m = {reference['m']}, "
+             f"{reference['k']} variables, IPOPT with adjoint gradients, one set-up for the loop): the whole loop at "
+             f"each tol, its gradients' solves at the same tol, each loop stopped after {DESIGN_CAP} designs. Its "
+             f"final design solved again at tol = {final}: final cost and its error against the loop at tol = {final} "
+             "(the reference), the true maximum pressure beside the P-mean, the pressure's coefficient of variation "
+             "cv. The known optimum ([shape optimization](shape-optimization.md)): a uniform pressure "
+             f"q = {UNIFORM_PRESSURE:g} MPa, the energy's material bound active with its multiplier equal to q. "
+             "Designs: the analyses IPOPT asked for; Hessian multiplications: every state solve and gradient of the "
+             "loop (the norm estimate, once, not counted); status 0: every solve converged and the final design is "
+             f"stationary. Raw data: [{PAGE}-design-loops.csv]({PAGE}-design-loops.csv).", ""]
+    for label, reference, rows in loops:
+        error = loop_error(reference)
+        shown = [dict(r, cost_error=("-" if r["reference"] == "1" else
+                                     f"{error(r):.1e}" if error(r) < math.inf else "-"),
+                      multiplier=(f"{f(r, 'area_multiplier'):.4f}"
+                                  if r.get("area_multiplier") and r.get("cost_name") == "energy" else "-"))
+                 for r in [reference] + rows]
+        lines += [f"### {label}", "", *markdown_table(shown, LOOP_COLUMNS), ""]
+    return lines
 
 
 def render():
     references, sweeps, run_row = read_csv(PAGE, "references"), read_csv(PAGE, "sweeps"), read_csv(PAGE, "run")[0]
+    gradient_rows, loop_rows = read_csv(PAGE, "gradients"), read_csv(PAGE, "design-loops")
     data = [(r, [s for s in sweeps if s["scene"] == r["scene"]]) for r in references]
+    gradients = [(label, [r for r in gradient_rows if r["scene"] == label and r["reference"] == "1"][0],
+                  [r for r in gradient_rows if r["scene"] == label and r["reference"] == "0"])
+                 for label in dict.fromkeys(r["scene"] for r in gradient_rows)]
+    loops = [(label, [r for r in loop_rows if r["loop"] == label and r["reference"] == "1"][0],
+              [r for r in loop_rows if r["loop"] == label and r["reference"] == "0"])
+             for label in dict.fromkeys(r["loop"] for r in loop_rows)]
     tols = [f(s, "tol") for s in sweeps]
     reference_tols = {tol_text(f(r, "tol")) for r in references}
     tol_range = f"{tol_text(max(tols))} .. {tol_text(min(tols))}"
     plot(data, tol_range)
+    plot_gradients(gradients, loops)
+    second = ([dict(scene=f"gradient: {label}", quantity="gradient", **safe_picks(rows, gradient_error, gradient_cost))
+               for label, _, rows in gradients]
+              + [dict(scene=f"design loop: {label}", quantity="final design's cost",
+                      **safe_picks(rows, loop_error(reference), lambda r: f"{int(f(r, 'hessian_total')):,}"))
+                 for label, reference, rows in loops])
     lines = [
         "# What accuracy costs in time, on every scene",
         "",
@@ -164,23 +416,36 @@ def render():
         "max_s ||u_s - u_ref,s||_inf / ||u_ref||_inf, the contact couples whose state (force or none)",
         "differs from the reference's, and the largest relative KKT residual of the returned",
         "solution (equilibrium, equality, inequality, complementarity, recomputed in primal form).",
+        "Design gradients and design loops follow the scenes ([below](#gradient-2d-punch-energy)).",
         f"Raw data: [{PAGE}-references.csv]({PAGE}-references.csv) (the references, with the independent",
-        f"checks' figures), [{PAGE}-sweeps.csv]({PAGE}-sweeps.csv) (every solve of the sweeps).",
+        f"checks' figures), [{PAGE}-sweeps.csv]({PAGE}-sweeps.csv) (every solve of the sweeps),",
+        f"[{PAGE}-gradients.csv]({PAGE}-gradients.csv) (the gradient sweeps, references included),",
+        f"[{PAGE}-design-loops.csv]({PAGE}-design-loops.csv) (one row per design loop).",
         "",
         "Which tol for what accuracy: per scene, the largest tol of the sweep whose solution error",
         "is at most the target, and its Hessian multiplications (\"-\": no tol of the sweep reached it).",
         "",
         *markdown_table([dict(scene=r["scene"], **pick) for r, rows in data for pick in [picks(rows)]], PICK_COLUMNS),
         "",
-        pick_reading(data),
+        "The same for a design gradient (its error max_j |g_j - g_ref,j| / max_j |g_ref,j| against the gradient at",
+        "tol = 1e-12; multiplications of the state and adjoint solves) and for a design loop (its final design's cost",
+        "against the loop's at tol = 1e-12, both solved again at 1e-12; multiplications of the whole loop). Here the",
+        "largest tol from which on every tighter tol of the sweep reaches the target: a loop may reach it at one tol",
+        "and miss it at the next tighter one.",
+        "",
+        *markdown_table(second, GRADIENT_PICK_COLUMNS),
+        "",
+        pick_reading(data, gradients, loops),
         "",
         "![KKT residual against tol](accuracy-tolerance.png)",
         "",
         "![accuracy against time](accuracy-and-time.png)",
         "",
+        "![gradients and design loops against tol](accuracy-gradients.png)",
+        "",
     ]
     for reference, rows in data:
-        columns = SWEEP + {"Hertz": HERTZ, "Mindlin": MINDLIN}.get(reference["kind"], [])
+        columns = SWEEP + {"Hertz": HERTZ, "Mindlin": MINDLIN, "load balance": BALANCE}.get(reference["kind"], [])
         if any(r["status"] != "0" for r in rows):
             columns = columns + STATUS
         lines += [f"## {reference['scene']}", "",
@@ -190,13 +455,51 @@ def render():
                      if reference["status"] == "2" else "")
                   + f"; confirmed: {confirmation(reference)}.", "",
                   *markdown_table(rows, columns), ""]
+    for label, reference, rows in gradients:
+        lines += gradient_section(label, reference, rows)
+    lines += loops_section(loops)
     save_page(f"{PAGE}.md", lines)
+
+
+def plot_gradients(gradients, loops):
+    """Left: the gradient's error against tol per gradient sweep; right: each design loop's final
+    cost error against its tol, each point labelled with its designs and multiplications."""
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.6))
+    for label, _, rows in gradients:
+        axes[0].loglog([f(r, "tol") for r in rows], [max(gradient_error(r), 1e-16) for r in rows], "o-", label=label,
+                       ms=4)
+    tols = [f(r, "tol") for _, _, rows in gradients for r in rows]
+    axes[0].loglog([min(tols), max(tols)], [min(tols), max(tols)], "k--", lw=1, label="error = tol")
+    axes[0].set_xlabel("tol")
+    axes[0].set_ylabel("gradient error max|g - g_ref| / max|g_ref|")
+    axes[0].set_title("Design gradient against tol")
+    for k, (label, reference, rows) in enumerate(loops):
+        error = loop_error(reference)
+        done = [r for r in rows if error(r) < math.inf]
+        axes[1].loglog([f(r, "tol") for r in done], [max(error(r), 1e-16) for r in done], "o-", label=label, ms=4)
+        for r in done:  # the loops' labels above and below their points, apart where the points meet
+            axes[1].annotate(f"{r['steps']} / {int(f(r, 'hessian_total')):,}", (f(r, "tol"), max(error(r), 1e-16)),
+                             fontsize=7, xytext=(3, 4 - 14 * (k % 2)), textcoords="offset points")
+    axes[1].set_xlabel("tol of the whole loop")
+    axes[1].set_ylabel("final design's cost error (1e-16: the same digits)")
+    axes[1].set_title("Design loops against the loop at 1e-12 (designs / multiplications)")
+    for ax in axes:
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(OUT, "accuracy-gradients.png"), dpi=110)
+    plt.close(fig)
+
+
+def style(k):
+    """The k-th scene's line style: the colour cycle has 10 colours, past it another style."""
+    return "o-" if k < 10 else "s--"
 
 
 def plot(data, tol_range):
     fig, ax = plt.subplots(figsize=(6, 4.6))
-    for reference, rows in data:
-        ax.loglog([f(r, "tol") for r in rows], [f(r, "kkt") for r in rows], "o-", label=reference["scene"], ms=4)
+    for k, (reference, rows) in enumerate(data):
+        ax.loglog([f(r, "tol") for r in rows], [f(r, "kkt") for r in rows], style(k), label=reference["scene"], ms=4)
     tols = [f(r, "tol") for _, rows in data for r in rows]
     ax.loglog([min(tols), max(tols)], [min(tols), max(tols)], "k--", lw=1, label="KKT = tol")
     ax.set_xlabel("tol")
@@ -209,10 +512,10 @@ def plot(data, tol_range):
     plt.close(fig)
 
     fig, axes = plt.subplots(1, 2, figsize=(12, 4.6))
-    for reference, rows in data:
+    for k, (reference, rows) in enumerate(data):
         error = [max(f(r, "u_error"), 1e-16) for r in rows]
-        axes[0].loglog([f(r, "seconds") for r in rows], error, "o-", label=reference["scene"], ms=4)
-        axes[1].semilogy([f(r, "hessian") for r in rows], error, "o-", label=reference["scene"], ms=4)
+        axes[0].loglog([f(r, "seconds") for r in rows], error, style(k), label=reference["scene"], ms=4)
+        axes[1].semilogy([f(r, "hessian") for r in rows], error, style(k), label=reference["scene"], ms=4)
     axes[0].set_xlabel("dual solve and recovery [s]")
     axes[1].set_xlabel("Hessian multiplications")
     for ax in axes:

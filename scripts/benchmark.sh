@@ -14,7 +14,9 @@
 #   ./scripts/benchmark.sh large-contact   a large contact zone: expansion steps, stopping tests,
 #                                          against an active set reference (~4 min)
 #   ./scripts/benchmark.sh hard-cases      the hard-case suite as a table (~1 min)
-#   ./scripts/benchmark.sh accuracy        what accuracy costs in time, every scene, tol 1e-2 .. 1e-10 (~3 min)
+#   ./scripts/benchmark.sh accuracy        what accuracy costs in time, every scene, tol 1e-2 .. 1e-10, and a
+#                                          design gradient's and design loops' accuracy against tol (~8 min,
+#                                          the 3D cubes near a million unknowns about 4 of them; 2.5 GB)
 #   ./scripts/benchmark.sh busy-machine    scenes idle and beside busy neighbour processes, threads (~2 min)
 #   ./scripts/benchmark.sh friction        Cattaneo-Mindlin and a block on a slope: tractions, stick/slip,
 #                                          the Coulomb fixed point's cost against frictionless, and
