@@ -17,6 +17,7 @@
 #   ./scripts/benchmark.sh accuracy        what accuracy costs in time, every scene, tol 1e-2 .. 1e-10, and a
 #                                          design gradient's and design loops' accuracy against tol (~8 min,
 #                                          the 3D cubes near a million unknowns about 4 of them; 2.5 GB)
+#   ./scripts/benchmark.sh dynamics        transient contact: a bar on a wall, a block sliding to rest (~2 min)
 #   ./scripts/benchmark.sh busy-machine    scenes idle and beside busy neighbour processes, threads (~2 min)
 #   ./scripts/benchmark.sh friction        Cattaneo-Mindlin and a block on a slope: tractions, stick/slip,
 #                                          the Coulomb fixed point's cost against frictionless, and
@@ -52,6 +53,7 @@ case "${1:-all}" in
   scalability) /usr/bin/python3 "$root/scripts/scalability_benchmark.py" ;;
   large-contact) /usr/bin/python3 "$root/scripts/large_contact_benchmark.py" ;;
   hard-cases) /usr/bin/python3 "$root/scripts/hard_cases_table.py" ;;
+  dynamics) /usr/bin/python3 "$root/scripts/dynamics_benchmark.py" ;;
   accuracy) /usr/bin/python3 "$root/scripts/accuracy_benchmark.py" ;;
   friction) /usr/bin/python3 "$root/scripts/friction_benchmark.py" ;;
   three-dimensions) /usr/bin/python3 "$root/scripts/three_dimensions_benchmark.py" "${@:2}" ;;
@@ -64,9 +66,10 @@ case "${1:-all}" in
        /usr/bin/python3 "$root/scripts/scalability_benchmark.py"
        /usr/bin/python3 "$root/scripts/large_contact_benchmark.py"
        /usr/bin/python3 "$root/scripts/hard_cases_table.py"
+       /usr/bin/python3 "$root/scripts/dynamics_benchmark.py"
        /usr/bin/python3 "$root/scripts/accuracy_benchmark.py"
        /usr/bin/python3 "$root/scripts/busy_machine_benchmark.py"
        /usr/bin/python3 "$root/scripts/friction_benchmark.py"
        /usr/bin/python3 "$root/scripts/three_dimensions_benchmark.py" ;;
-  *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization|scalability|large-contact|hard-cases|accuracy|busy-machine|friction|three-dimensions|elasticity-3d]" >&2; exit 2 ;;
+  *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization|scalability|large-contact|hard-cases|dynamics|accuracy|busy-machine|friction|three-dimensions|elasticity-3d]" >&2; exit 2 ;;
 esac
