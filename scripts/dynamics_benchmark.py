@@ -29,6 +29,14 @@ PAIR_COLUMNS = [("dim", "dim"), ("n", "n"), ("unknowns", "unknowns"),
                 ("rebound / v0", lambda r: f"{float(r['rebound_velocity']) / float(r['v0']):.3f}"),
                 ("largest total momentum / (m v0)", lambda r: f"{float(r['momentum_max']):.1e}"),
                 ("energy change", lambda r: f"{float(r['energy_change']):+.2%}"), ("status", "status")]
+SPHERE_COLUMNS = [("h at the contact [mm]", "h"), ("speed [m/s]", lambda r: f"{float(r['v0']) / 1000:g}"),
+                  ("scheme", "scheme"), ("steps over Hertz's contact time", lambda r: str(round(float(r["contact_time_hertz"]) / float(r["dt"])))),
+                  ("unknowns", "unknowns"),
+                  ("contact time / Hertz", lambda r: f"{float(r['contact_time']) / float(r['contact_time_hertz']):.3f}"),
+                  ("peak force / Hertz", lambda r: f"{float(r['peak_force']) / float(r['peak_force_hertz']):.3f}"),
+                  ("rebound / v", lambda r: f"{float(r['rebound_velocity']) / float(r['v0']):.4f}"),
+                  ("energy change", lambda r: f"{float(r['energy_change']):+.2%}"),
+                  ("Hessian per step (max)", "hessian_per_step_max"), ("Hessian total", "hessian_total"), ("status", "status")]
 BOUNCE_COLUMNS = [("scheme", "scheme"), ("steps", "steps"), ("impacts", "impacts"),
                   ("energy at the end / initial", lambda r: f"{1 + float(r['energy_change']):.3f}"),
                   ("largest energy gain", lambda r: f"{float(r['energy_gain_max']):.1e}"),
@@ -77,6 +85,20 @@ def bar_histories():
         _, steps = history("bar-impact.edp", "-n", HISTORY_N, "-scheme", scheme)
         rows += [dict(step, scheme=scheme) for step in steps]
     return rows
+
+
+def sphere_rows():
+    """The hemisphere on a plane against Hertz's impact: time steps, mesh, speed, both schemes."""
+    rows = []
+    for args in (("-steps", 40), ("-steps", 100), ("-h", 0.1, "-steps", 100), ("-steps", 100, "-speed", 100),
+                 ("-steps", 100, "-scheme", "newmark")):
+        rows.append(run("sphere-impact-3d.edp", *args, "-meshes", os.path.join(ROOT, "meshes"))["RESULT"][0])
+    return rows
+
+
+def sphere_history():
+    _, steps = history("sphere-impact-3d.edp", "-steps", 100, "-meshes", os.path.join(ROOT, "meshes"))
+    return steps
 
 
 def slide_rows():
@@ -154,6 +176,22 @@ def plot_bounce(histories):
     plt.close(figure)
 
 
+def plot_sphere(steps, sphere):
+    r = next(r for r in sphere if r["h"] == "0.2" and r["scheme"] == "stabilized" and float(r["v0"]) == 1000
+             and round(float(r["contact_time_hertz"]) / float(r["dt"])) == 100)
+    t_c, force = float(r["contact_time_hertz"]), float(r["peak_force_hertz"])
+    figure, axis = plt.subplots(figsize=(6, 4))
+    axis.plot([1e6 * float(h["t"]) for h in steps], [float(h["force"]) for h in steps], "o-", ms=2, label="ffeti (whole ball)")
+    axis.plot([0, 1e6 * t_c], [force, force], "k--", lw=1, label="Hertz: peak force")
+    axis.axvline(1e6 * t_c, color="k", ls=":", lw=1, label="Hertz: contact time")
+    axis.set(xlabel="t [µs]", ylabel="force on the plane [N]", title="hemisphere on a rigid plane, 1 m/s")
+    axis.legend()
+    axis.grid(True, alpha=0.3)
+    figure.tight_layout()
+    figure.savefig(os.path.join(RESULTS, f"{PAGE}-sphere.png"), dpi=110)
+    plt.close(figure)
+
+
 def plot_slide(steps, slide):
     r = next(r for r in slide if r["dim"] == "2" and r["material"] == "rubber")
     v0, stop = float(r["v0"]), float(r["stop_time_exact"])
@@ -175,6 +213,8 @@ def render():
     plot_bar(read_csv(PAGE, "bar-history"), bar)
     plot_slide(read_csv(PAGE, "slide-history"), slide)
     bounce = read_csv(PAGE, "bounce")
+    sphere = read_csv(PAGE, "sphere")
+    plot_sphere(read_csv(PAGE, "sphere-history"), sphere)
     plot_bounce(read_csv(PAGE, "bounce-history"))
     pairs = [r for r in bar if r["series"] == "two bars"]
     refinement = [r for r in bar if r["series"] == "refinement"]
@@ -199,6 +239,7 @@ def render():
         "`newmark`, the trapezoidal rule for every force, contact included. Raw data:",
         f"[{PAGE}-bar.csv]({PAGE}-bar.csv), [{PAGE}-bar-history.csv]({PAGE}-bar-history.csv),",
         f"[{PAGE}-bounce.csv]({PAGE}-bounce.csv), [{PAGE}-bounce-history.csv]({PAGE}-bounce-history.csv),",
+        f"[{PAGE}-sphere.csv]({PAGE}-sphere.csv), [{PAGE}-sphere-history.csv]({PAGE}-sphere-history.csv),",
         f"[{PAGE}-slide.csv]({PAGE}-slide.csv), [{PAGE}-slide-history.csv]({PAGE}-slide-history.csv).",
         "",
         "## A bar striking a rigid wall",
@@ -256,6 +297,31 @@ def render():
         "takes out the normal velocity of the struck nodes); the trapezoidal rule gains at",
         "every impact and its bar ends far from the physics.",
         "",
+        "## A hemisphere striking a plane",
+        "",
+        "`edp/sphere-impact-3d.edp`: the lower half of a ball (R = 10 mm; a polymer, E = 1 GPa,",
+        "ν = 0.3, ρ = 1200 kg/m³; `meshes/hertz-sphere.geo`, a quarter model with sliding symmetry",
+        "planes, 4 METIS parts) falls onto a rigid plane. Hertz's quasi-static theory of impact",
+        "(Johnson, ch. 11) with the body's mass: contact time 2.87 (m²/(R E*² v))^(1/5), peak force",
+        "(4/3) E* R^(1/2) d^(3/2) at the largest approach d = (15 m v²/(16 E* R^(1/2)))^(2/5), a rebound",
+        "at v. At 1 m/s the contact lasts about 14 times the time a wave takes to cross the body.",
+        "",
+        *markdown_table(sphere, SPHERE_COLUMNS),
+        "",
+        f"![contact force against time]({PAGE}-sphere.png)",
+        "",
+        "Reading: the impact is "
+        f"{min(float(r['contact_time']) / float(r['contact_time_hertz']) for r in sphere):.2f} to "
+        f"{max(float(r['contact_time']) / float(r['contact_time_hertz']) for r in sphere):.2f} times Hertz's contact time with "
+        f"{min(float(r['peak_force']) / float(r['peak_force_hertz']) for r in sphere):.2f} to "
+        f"{max(float(r['peak_force']) / float(r['peak_force_hertz']) for r in sphere):.2f} times his peak force,",
+        "whatever the time step and the speed (a tenth of the speed, more quasi-static, gives the",
+        "same ratios): the difference is the discrete body's, not the time integration's. Halving",
+        "the mesh size at the contact moves it little; the P1 tetrahedra of the coarse bulk (up to",
+        "R/4) are the likely stiffness left (not measured here). The ball leaves at its speed to",
+        "within a few tenths of a percent, the stabilized scheme losing a little energy and the",
+        "trapezoidal rule gaining some.",
+        "",
         "## A block sliding to rest under Coulomb friction",
         "",
         "`edp/sliding-block.edp`: a block (2a x a, a = 5 cm; E = 100 MPa, ρ = 1200 kg/m³, ν = 0.3)",
@@ -289,8 +355,7 @@ def render():
         "",
         "## Not yet here",
         "",
-        "Sphere impact (Hertz), the conjugate projector, a direct peer, MPI, `ffeti-solve`'s",
-        "dynamics section, resuming an",
+        "The conjugate projector, a direct peer, MPI, `ffeti-solve`'s dynamics section, resuming an",
         "interrupted run and VTK output of chosen steps (issue 56).",
     ]
     save_page(f"{PAGE}.md", lines)
@@ -306,6 +371,8 @@ def main():
         bounce, bounce_history = bounce_rows()
         write_csv(PAGE, "bounce", bounce)
         write_csv(PAGE, "bounce-history", bounce_history)
+        write_csv(PAGE, "sphere", sphere_rows())
+        write_csv(PAGE, "sphere-history", sphere_history())
         write_csv(PAGE, "slide", slide_rows())
         write_csv(PAGE, "slide-history", slide_history())
         end_run(PAGE, begun)
