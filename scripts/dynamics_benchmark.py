@@ -353,9 +353,11 @@ def render():
         "onto the rigid modes (a coarse problem for Keff) is the literature's remedy and is not built",
         "yet.",
         "",
-        "## Not yet here",
+        "## MPI, and what is not here yet",
         "",
-        "The conjugate projector, a direct peer, MPI, `ffeti-solve`'s dynamics section, resuming an",
+        "Under MPI the bar gives the serial answer on 2 and 3 ranks (`ctest -R mpi_dynamics`); the",
+        "sliding block and the hemisphere assemble every subdomain on every rank and are serial scenes.",
+        "Not yet: the conjugate projector, a direct peer, `ffeti-solve`'s dynamics section, resuming an",
         "interrupted run and VTK output of chosen steps (issue 56).",
     ]
     save_page(f"{PAGE}.md", lines)
