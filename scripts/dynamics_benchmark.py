@@ -23,6 +23,13 @@ BAR_SIZES = (20, 40, 80, 160)
 COURANTS = (0.5, 1, 2, 4, 8, 16)
 HISTORY_N = 80
 BOUNCE_G, BOUNCE_STEPS = 2e4, 1000
+MASS_COLUMNS = [("elements", lambda r: f"P{r['order']}"), ("mass", "mass"), ("n", "n"), ("unknowns", "unknowns"),
+                ("contact time error", lambda r: f"{relative(r, 'contact_time', 'contact_time_exact'):.1%}"),
+                ("mean force error", lambda r: f"{relative(r, 'mean_contact_force_per_area', 'force_per_area_exact'):.1%}"),
+                ("rebound / v0", lambda r: f"{float(r['rebound_velocity']) / float(r['v0']):.3f}"),
+                ("energy change", lambda r: f"{float(r['energy_change']):+.2%}"),
+                ("largest energy gain", lambda r: f"{float(r['energy_gain_max']):.1e}"),
+                ("Hessian per step (max)", "hessian_per_step_max"), ("status", "status")]
 PAIR_COLUMNS = [("dim", "dim"), ("n", "n"), ("unknowns", "unknowns"),
                 ("contact time error", lambda r: f"{relative(r, 'contact_time', 'contact_time_exact'):.1%}"),
                 ("mean force error", lambda r: f"{relative(r, 'mean_contact_force_per_area', 'force_per_area_exact'):.1%}"),
@@ -66,6 +73,10 @@ def bar_rows():
     for dim, n in ((2, 40), (2, 80), (3, 20)):
         r = run("bar-impact.edp", "-dim", dim, "-bars", 2, "-n", n)["RESULT"][0]
         rows.append(dict(r, courant=1, series="two bars"))
+    for order, mass, n in ((1, "lumped", 20), (1, "consistent", 20), (1, "lumped", 80), (1, "consistent", 80),
+                           (2, "consistent", 20), (2, "consistent", 40)):
+        r = run("bar-impact.edp", "-n", n, "-order", order, "-mass", mass)["RESULT"][0]
+        rows.append(dict(r, courant=1, series="mass", order=order, mass=mass))
     return rows
 
 
@@ -217,6 +228,9 @@ def render():
     plot_sphere(read_csv(PAGE, "sphere-history"), sphere)
     plot_bounce(read_csv(PAGE, "bounce-history"))
     pairs = [r for r in bar if r["series"] == "two bars"]
+    masses = [r for r in bar if r["series"] == "mass"]
+    lumped20 = next(r for r in masses if r["mass"] == "lumped" and r["n"] == "20")
+    consistent20 = next(r for r in masses if r["mass"] == "consistent" and r["order"] == "1" and r["n"] == "20")
     refinement = [r for r in bar if r["series"] == "refinement"]
     courants = [r for r in bar if r["series"] == "time step"]
     stable = [r for r in refinement if r["scheme"] == "stabilized"]
@@ -273,6 +287,21 @@ def render():
         "K, so each step's dual solve takes more multiplications.",
         "",
         *markdown_table(courants, COURANT_COLUMNS),
+        "",
+        "### Lumped or consistent mass",
+        "",
+        "`-mass lumped` (the default) or `consistent`, `-order 1` or `2` (P2 takes the consistent mass:",
+        "its vertex quadrature gives the mid-edge nodes no mass). The 2D bar, dt = h/c with h the node",
+        "spacing:",
+        "",
+        *markdown_table(masses, MASS_COLUMNS),
+        "",
+        f"Reading: the consistent P1 mass is a little closer to the exact impact (rebound "
+        f"{float(consistent20['rebound_velocity']) / float(consistent20['v0']):.3f} against "
+        f"{float(lumped20['rebound_velocity']) / float(lumped20['v0']):.3f} v0 at n = 20) and costs more per step",
+        f"({consistent20['hessian_per_step_max']} against {lumped20['hessian_per_step_max']} multiplications at most: its",
+        "projection couples the nodes, the lumped one is nodewise). The lumped mass is the default:",
+        "the cheaper step at the same order of accuracy. Neither gains energy.",
         "",
         "## Two bars meeting",
         "",

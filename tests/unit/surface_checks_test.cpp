@@ -123,6 +123,43 @@ TEST(SurfaceChecks, PlaneWhoseNormalPointsIntoTheBodyIsRefused) {
             std::string::npos);
 }
 
+TEST(SurfaceChecks, AMassMatrixGivesNoVerdictAndALumpedMassKeepsTheStiffnessOne) {
+  // A transient scene sets up K + c M (a step) and M alone (the predictor's projection in the
+  // mass norm, edp/dynamics.idp). A consistent mass couples a node positively to its
+  // neighbours: its dilation force points into the body, and read as a stiffness's it refused
+  // a correct plane. Here a mass-like matrix (the block's couplings made positive, its
+  // diagonal their sum): no verdict either way. A diagonal (lumped) mass added to K leaves
+  // the dilation force K's: a reversed normal is still refused.
+  std::vector<SubdomainInput> block = {stacked_blocks()[0]};
+  ContactInput contact = node_to_face(block, {});
+  contact.master_faces.clear();
+  contact.slave_dofs.resize(1);
+  contact.obstacle = true;
+  contact.obstacle_point = {0, 0, -0.001};
+  contact.obstacle_normal = {0, 0, 1};
+  const SparseMatrix K = block[0].K.get();
+  std::vector<Eigen::Triplet<double>> mass_like, lumped;
+  for (Eigen::Index j = 0; j < K.outerSize(); ++j) {
+    double row = 0;
+    for (SparseMatrix::InnerIterator it(K, j); it; ++it)
+      if (it.row() != j) mass_like.emplace_back(it.row(), j, std::abs(it.value())), row += std::abs(it.value());
+    mass_like.emplace_back(j, j, row);
+    lumped.emplace_back(j, j, 10 * K.coeff(j, j));
+  }
+  std::vector<SubdomainInput> mass = block, stepped = block;
+  mass[0].K = SparseMatrix(K.rows(), K.cols());
+  mass[0].K.edit().setFromTriplets(mass_like.begin(), mass_like.end());
+  SparseMatrix diagonal(K.rows(), K.cols());
+  diagonal.setFromTriplets(lumped.begin(), lumped.end());
+  stepped[0].K = SparseMatrix(K + diagonal);
+  EXPECT_EQ(refusal([&] { FetiProblem(mass, contact, FetiSetupSettings{}); }), "");
+  EXPECT_EQ(refusal([&] { FetiProblem(stepped, contact, FetiSetupSettings{}); }), "");
+  contact.obstacle_normal = {0, 0, -1};
+  EXPECT_EQ(refusal([&] { FetiProblem(mass, contact, FetiSetupSettings{}); }).find("normal points into"), std::string::npos);
+  const std::string message = refusal([&] { FetiProblem(stepped, contact, FetiSetupSettings{}); });
+  EXPECT_NE(message.find("obstacle: its normal points into the bodies"), std::string::npos) << message;
+}
+
 /// A P2 triangle's six nodes (vertices 0-2, edge midpoints 3: 01, 4: 12, 5: 20) at height
 /// z, dofs 3k + c, with the vertices' x dofs coupled as in one element; `midpoints` false:
 /// the vertices alone (a P1 triangle).

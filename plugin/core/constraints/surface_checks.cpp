@@ -15,19 +15,27 @@ double coordinate(const SubdomainInput& sub, size_t dof, int axis) {
 
 /// At one dof: (K u)_i for the dilation u_j = (coordinate of dof j's node along its
 /// component), taken relative to dof i's node so that a large diagonal (a Dirichlet
-/// penalty) or a rigid translation adds nothing; and the sum of the terms' magnitudes, the
-/// scale against which a vanishing force is judged.
+/// penalty, a lumped mass) or a rigid translation adds nothing; and the sum of the terms'
+/// magnitudes, the scale against which a vanishing force is judged. Only a row whose
+/// couplings to other dofs of its component sum negative reads a side: a stiffness's do
+/// (they balance its diagonal under a translation), a consistent mass's sum positive, and
+/// its dilation force points into the body (M itself as the matrix of a mass-norm
+/// projection, or K + c M where the inertia dominates a short time step): no verdict there.
 struct DilationForce {
   double force = 0, magnitude = 0;
 };
 DilationForce dilation_force(const SubdomainInput& sub, int dof) {
   DilationForce out;
+  double couplings = 0;
+  const int own_axis = sub.component[static_cast<size_t>(dof)];
   for (SparseMatrix::InnerIterator it(sub.K, dof); it; ++it) {  // K symmetric: column = row
     const int axis = sub.component[static_cast<size_t>(it.row())];
+    if (it.row() != dof && axis == own_axis) couplings += it.value();
     const double term = it.value() * (coordinate(sub, static_cast<size_t>(it.row()), axis) -
                                       coordinate(sub, static_cast<size_t>(dof), axis));
     out.force += term, out.magnitude += std::abs(term);
   }
+  if (!(couplings < 0)) return {};
   return out;
 }
 
