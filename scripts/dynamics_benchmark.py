@@ -386,8 +386,10 @@ def render():
         "",
         "Under MPI the bar gives the serial answer on 2 and 3 ranks (`ctest -R mpi_dynamics`); the",
         "sliding block and the hemisphere assemble every subdomain on every rank and are serial scenes.",
-        "Not yet: the conjugate projector, a direct peer, `ffeti-solve`'s dynamics section, resuming an",
-        "interrupted run and VTK output of chosen steps (issue 56).",
+        "A run killed mid-way resumes from its state file with the uninterrupted run's answer and",
+        "history (`bar-impact.edp -state FILE -resume 1`, `ctest -R edp_dynamics_resume`).",
+        "Not yet: the conjugate projector, a direct peer, `ffeti-solve`'s dynamics section, VTK",
+        "output of chosen steps (issue 56).",
     ]
     save_page(f"{PAGE}.md", lines)
 
