@@ -166,11 +166,7 @@ def plot_wave(rows):
         axis.plot([1e3 * x for x, _ in points], [v for _, v in points], label=f"t = {t:.0f} µs")
     axis.set(xlabel="x along the bar [mm] (the wall at 0)", ylabel="velocity along x [m/s]",
              title=f"the bar's velocity (n = {HISTORY_N}, stabilized): the wave runs out and back")
-    axis.legend(fontsize=8, ncol=2)
-    axis.grid(True, alpha=0.3)
-    figure.tight_layout()
-    figure.savefig(os.path.join(RESULTS, f"{PAGE}-wave.png"), dpi=110)
-    plt.close(figure)
+    save_figure(figure, axis, "wave", legend_columns=2, legend_size=8)
 
 
 def slide_rows():
@@ -186,6 +182,15 @@ def slide_rows():
 def slide_history():
     _, steps = history("sliding-block.edp", "-steps", 60)
     return steps
+
+
+def save_figure(figure, axis, name, legend_columns=1, legend_size=None):
+    """Legend, grid and layout of a one-panel figure, saved as docs/results/dynamics-NAME.png."""
+    axis.legend(fontsize=legend_size, ncol=legend_columns)
+    axis.grid(True, alpha=0.3)
+    figure.tight_layout()
+    figure.savefig(os.path.join(RESULTS, f"{PAGE}-{name}.png"), dpi=110)
+    plt.close(figure)
 
 
 def relative(r, key, exact):
@@ -241,11 +246,7 @@ def plot_bounce(histories):
                   style, label=scheme)
     axis.set(xlabel="t [ms]", ylabel="total energy / initial", yscale="log",
              title=f"a bar bouncing under gravity, {BOUNCE_STEPS} steps")
-    axis.legend()
-    axis.grid(True, alpha=0.3)
-    figure.tight_layout()
-    figure.savefig(os.path.join(RESULTS, f"{PAGE}-bounce.png"), dpi=110)
-    plt.close(figure)
+    save_figure(figure, axis, "bounce")
 
 
 def plot_sphere(steps, sphere):
@@ -257,11 +258,7 @@ def plot_sphere(steps, sphere):
     axis.plot([0, 1e6 * t_c], [force, force], "k--", lw=1, label="Hertz: peak force")
     axis.axvline(1e6 * t_c, color="k", ls=":", lw=1, label="Hertz: contact time")
     axis.set(xlabel="t [µs]", ylabel="force on the plane [N]", title="hemisphere on a rigid plane, 1 m/s")
-    axis.legend()
-    axis.grid(True, alpha=0.3)
-    figure.tight_layout()
-    figure.savefig(os.path.join(RESULTS, f"{PAGE}-sphere.png"), dpi=110)
-    plt.close(figure)
+    save_figure(figure, axis, "sphere")
 
 
 def plot_slide(steps, slide):
@@ -273,11 +270,7 @@ def plot_slide(steps, slide):
     end = max(t)
     axis.plot([0, stop, end], [v0, 0, 0], "k--", lw=1, label="exact: v0 - μ g t, then rest")
     axis.set(xlabel="t [s]", ylabel="velocity [m/s]", title="block sliding to rest (2D, 60 steps to the stop)")
-    axis.legend()
-    axis.grid(True, alpha=0.3)
-    figure.tight_layout()
-    figure.savefig(os.path.join(RESULTS, f"{PAGE}-slide.png"), dpi=110)
-    plt.close(figure)
+    save_figure(figure, axis, "slide")
 
 
 def render():

@@ -102,15 +102,22 @@ TEST(SurfaceChecks, MortarSlaveFacesAreJudgedToo) {
   EXPECT_EQ(refusal([&] { validate_input(subs, contact); }), "");
 }
 
-TEST(SurfaceChecks, PlaneWhoseNormalPointsIntoTheBodyIsRefused) {
-  // The upper block alone over the plane z = -0.001: its bottom nodes are the slaves.
-  std::vector<SubdomainInput> block = {stacked_blocks()[0]};
+/// The plane z = -0.001 under the upper block alone, its normal +z (toward the block); the
+/// block's bottom nodes the slaves.
+ContactInput plane_below(const std::vector<SubdomainInput>& block) {
   ContactInput contact = node_to_face(block, {});
   contact.master_faces.clear();
   contact.slave_dofs.resize(1);
   contact.obstacle = true;
   contact.obstacle_point = {0, 0, -0.001};
   contact.obstacle_normal = {0, 0, 1};
+  return contact;
+}
+
+TEST(SurfaceChecks, PlaneWhoseNormalPointsIntoTheBodyIsRefused) {
+  // The upper block alone over the plane z = -0.001: its bottom nodes are the slaves.
+  std::vector<SubdomainInput> block = {stacked_blocks()[0]};
+  ContactInput contact = plane_below(block);
   EXPECT_EQ(refusal([&] { FetiProblem(block, contact, FetiSetupSettings{}); }), "");
   contact.obstacle_normal = {0, 0, -1};
   const std::string message = refusal([&] { FetiProblem(block, contact, FetiSetupSettings{}); });
@@ -131,12 +138,7 @@ TEST(SurfaceChecks, AMassMatrixGivesNoVerdictAndALumpedMassKeepsTheStiffnessOne)
   // diagonal their sum): no verdict either way. A diagonal (lumped) mass added to K leaves
   // the dilation force K's: a reversed normal is still refused.
   std::vector<SubdomainInput> block = {stacked_blocks()[0]};
-  ContactInput contact = node_to_face(block, {});
-  contact.master_faces.clear();
-  contact.slave_dofs.resize(1);
-  contact.obstacle = true;
-  contact.obstacle_point = {0, 0, -0.001};
-  contact.obstacle_normal = {0, 0, 1};
+  ContactInput contact = plane_below(block);
   const SparseMatrix K = block[0].K.get();
   std::vector<Eigen::Triplet<double>> mass_like, lumped;
   for (Eigen::Index j = 0; j < K.outerSize(); ++j) {
