@@ -6,7 +6,8 @@ functions', which the plugin's registry prints: tests/docs_option_tables keeps t
 picks valid values from each row's "accepted values" column (every word of a word option; the
 lowest and a middle value of a range), and writes one FreeFEM script that calls the function
 with each in turn on the seed's two membranes (scenes/model-problem.idp: a contact problem with a floating body) (fetiSensitivity and fetiAdjoint
-both take the sensitivity options). A refusal of a documented value is a failure: activeTol=
+both take the sensitivity options); a value that applies only where nothing floats
+(projector = "conjugate") on the same membranes with a lumped mass added, a time step's K + M. A refusal of a documented value is a failure: activeTol=
 was refused by both sensitivity functions while the reference listed it, and the only test
 passing it used invalid values, which passed for the wrong reason.
 
@@ -18,6 +19,8 @@ import sys
 import tempfile
 
 FUNCTIONS = ("fetiSetup", "fetiSolve", "sensitivity")  # the tables' order in the reference
+# Values that apply only where nothing floats (a time step's K + M), set up there.
+WHERE_NOTHING_FLOATS = {("projector", '"conjugate"')}
 
 PROBLEM = r"""
 include "ffeti.idp"
@@ -32,6 +35,16 @@ for (int s = 0; s < S; ++s) {
   dJdu[s].resize(F[s].n); dJdu[s] = 1;
 }
 macro setUp(options) fetiSetup(K, F, X, Y, body, dirichlet = dirichlet, contactSlave = slave, contactMaster = master options) // EOM
+// The same membranes with a lumped mass added (a time step's K + M: nothing floats), for
+// the values that apply only there.
+matrix[int] Kstep(S);
+for (int s = 0; s < S; ++s) {
+  fespace Vh(Th[s], P1);
+  varf vm(u, v) = int2d(Th[s], qft = qf1pTlump)(u * v);
+  matrix Ms = vm(Vh, Vh);
+  Kstep[s] = K[s] + Ms;
+}
+macro setUpStep(options) fetiSetup(Kstep, F, X, Y, body, dirichlet = dirichlet, contactSlave = slave, contactMaster = master options) // EOM
 macro accepted(statement, what)
 try { statement; cout << "ok: " << what << endl; }
 catch (...) { cout << "FAILED: " << what << " was refused" << endl; failures++; }
@@ -92,7 +105,8 @@ def calls(tables):
                 label = "fetiSensitivity" if function == "sensitivity" else function
                 what = f"{label}({option})".replace('"', "'")
                 if function == "fetiSetup":
-                    lines.append(f'accepted({{ int Q = setUp({{, {option}}}); fetiSolve(Q, U); fetiFree(Q); }}, "{what}")')
+                    setup = "setUpStep" if (name, value) in WHERE_NOTHING_FLOATS else "setUp"
+                    lines.append(f'accepted({{ int Q = {setup}({{, {option}}}); fetiSolve(Q, U); fetiFree(Q); }}, "{what}")')
                 elif function == "fetiSolve":
                     lines.append(f'accepted(fetiSolve(P, U, {option}), "{what}")')
                 else:

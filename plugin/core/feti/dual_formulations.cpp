@@ -41,6 +41,36 @@ DualSystem::Formulation DualSystem::plain_qp(const DualData& data, const DualSol
   return f;
 }
 
+DualSystem::Formulation DualSystem::conjugate_qp(const DualData& data, const DualSolveSettings& settings,
+                                                 DualSolution& result, const qp::ConstraintSet& bounds) const {
+  // mu = mu_0 + P x: x minimizes 1/2 x'FPx - x'P'd under mu's bounds (P keeps the bounded
+  // entries as they are); F P = P'F, one application of F per multiplication.
+  Formulation f;
+  qp::Problem& qp = f.qp;
+  const ConjugateProjector& projector = *conjugate_;
+  qp.hessian = [this, &projector](const Vec& x, Vec& y) {
+    F_->apply(x, conjugate_Fx_);
+    projector.hessian(x, conjugate_Fx_, y);
+  };
+  projector.project_transposed(data.b, qp.b);
+  qp.hessian_norm = estimated_norm(norm_conjugate_, qp.hessian, {}, settings.norm_estimate, result);
+  qp.constraints = bounds;
+  if (const LinearOperator m = preconditioner_operator())
+    qp.preconditioner = [m, &projector](const Vec& x, Vec& y) {  // P M^{-1} P'
+      Vec r, z;
+      projector.project_transposed(x, r);
+      m(r, z);
+      projector.project(z, y);
+    };
+  const Vec base = projector.base(data.b);
+  f.to_multipliers = [base, &projector](const Vec& x, Vec& mu) {
+    projector.project(x, mu);
+    mu += base;
+  };
+  f.start = shifted_start(settings, data, rows());
+  return f;
+}
+
 LinearOperator DualSystem::projected_preconditioner() const {
   if (!preconditioner_) return {};
   return [this](const Vec& x, Vec& y) {  // P M^{-1} P on Ker G

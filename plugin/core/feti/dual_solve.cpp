@@ -162,7 +162,7 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     Formulation qp = route == DualPath::cg ? plain_qp(data, settings, result, nullptr) : projected_qp(data, settings);
     lambda = run(route, std::move(qp), stop_for(result), settings, warm, result) + data.lambda_tilde;
   } else if (route == DualPath::mprgp) {
-    Formulation qp = plain_qp(data, settings, result, &bounds);
+    Formulation qp = conjugate_ ? conjugate_qp(data, settings, result, bounds) : plain_qp(data, settings, result, &bounds);
     lambda = lambda_from_shifted(run(route, std::move(qp), stop_for(result), settings, warm, result), bounds, data);
   } else if (const double resolution = std::max(settings.feasibility_tolerance > 0 ? settings.feasibility_tolerance
                                                                                 : settings.tolerance,

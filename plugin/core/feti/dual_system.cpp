@@ -310,4 +310,30 @@ Vec DualSystem::lambda_from_shifted(const Vec& mu, const qp::ConstraintSet& boun
   return lambda;
 }
 
+void DualSystem::use_conjugate_projector(const std::vector<Eigen::MatrixXd>& modes) {
+  if (coarse_) throw std::logic_error("use_conjugate_projector: a coarse space already holds the rigid modes");
+  // C = B_E R: each local subdomain's modes on its equality rows, as (row, column, value)
+  // triplets gathered from every rank; column = global subdomain x r + mode.
+  const Eigen::Index r = modes.empty() ? 0 : modes.front().cols();
+  const double per_subdomain = comm_.max(static_cast<double>(r));
+  std::vector<double> mine;
+  double last_id = -1;
+  for (size_t k = 0; k < local_.size(); ++k) {
+    const Eigen::MatrixXd traces = local_[k].B * modes[k];  // rows x r
+    for (Eigen::Index i = 0; i < traces.rows(); ++i) {
+      const int row = local_[k].rows[static_cast<size_t>(i)];
+      if (row >= constraints_.equality_rows) continue;  // contact and friction rows: untouched by P
+      for (Eigen::Index j = 0; j < r; ++j)
+        if (traces(i, j) != 0) mine.insert(mine.end(), {double(row), double(global_ids_[k] * per_subdomain + j), traces(i, j)});
+    }
+    last_id = std::max(last_id, double(global_ids_[k]));
+  }
+  const Eigen::Index columns = static_cast<Eigen::Index>((comm_.max(last_id) + 1) * per_subdomain);
+  const std::vector<double> all = comm_.allgather(mine);
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(rows(), columns);
+  for (size_t t = 0; t + 2 < all.size(); t += 3)
+    C(static_cast<Eigen::Index>(all[t]), static_cast<Eigen::Index>(all[t + 1])) += all[t + 2];
+  conjugate_ = std::make_unique<ConjugateProjector>(std::move(C), *F_);
+}
+
 }  // namespace ffeti

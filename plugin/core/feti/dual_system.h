@@ -9,6 +9,7 @@
 #pragma once
 
 #include "feti/coarse_space.h"
+#include "feti/conjugate_projector.h"
 #include "constraints/constraints.h"
 #include "feti/dirichlet_preconditioner.h"
 #include "feti/dual_data.h"
@@ -46,6 +47,11 @@ class DualSystem {
   const std::vector<LocalConstraints>& local() const { return local_; }
   const DualOperator& F() const { return *F_; }
   const CoarseSpace* coarse() const { return coarse_.get(); }
+  /// Where nothing floats (the MPRGP path): the conjugate projector onto the rigid modes of
+  /// the subdomains on the equality rows, `modes[k]` local subdomain k's (n_k x r, the same r
+  /// on every subdomain; candidate_kernel), used by every later solve. Collective.
+  void use_conjugate_projector(const std::vector<Eigen::MatrixXd>& modes);
+  const ConjugateProjector* conjugate() const { return conjugate_.get(); }
   int rows() const { return constraints_.rows(); }
   /// The solver path the constraints call for (ALGORITHMS.md section 6).
   DualPath path() const;
@@ -133,6 +139,8 @@ class DualSystem {
   Formulation projected_qp(const DualData& data, const DualSolveSettings& settings) const;  // P F P: projected CG
   Formulation penalty_qp(const DualData& data, const DualSolveSettings& settings, DualSolution& result,
                          const qp::ConstraintSet& bounds) const;
+  Formulation conjugate_qp(const DualData& data, const DualSolveSettings& settings, DualSolution& result,
+                           const qp::ConstraintSet& bounds) const;  // F P, P'd: MPRGP with the conjugate projector
   Formulation free_rows_qp(const DualData& data, const DualSolveSettings& settings, DualSolution& result,
                            const qp::ConstraintSet& bounds) const;
   void set_equality_reference(DualSolution& result, double hessian_norm) const;
@@ -150,6 +158,7 @@ class DualSystem {
   std::unique_ptr<SubdomainSum> sum_;
   std::unique_ptr<DualOperator> F_;
   std::unique_ptr<CoarseSpace> coarse_;
+  std::unique_ptr<ConjugateProjector> conjugate_;
   std::unique_ptr<DirichletPreconditioner> preconditioner_;
   DualPreconditioner preconditioner_kind_ = DualPreconditioner::none;
   // What solve() (const: it changes no part of the system a caller sees) keeps from call to
@@ -158,10 +167,11 @@ class DualSystem {
   // problem at a time, collectively). Work vectors, reused so that each application of an
   // operator allocates nothing:
   mutable Vec projected_, applied_;                   // buffers of apply_PFP and the preconditioner
+  mutable Vec conjugate_Fx_;                          // F x inside the conjugate Hessian
   mutable Eigen::MatrixXd block_projected_, block_applied_;  // of the block apply_PFP
   // Built at first use, as only some paths need them (10-20 applications of the operator for
   // a norm estimate; a factorization of C C' for T):
-  mutable CachedNorm norm_F_, norm_PFP_, norm_reduced_;  // ||F||, ||PFP||, ||T'PFPT||
+  mutable CachedNorm norm_F_, norm_PFP_, norm_reduced_, norm_conjugate_;  // ||F||, ||PFP||, ||T'PFPT||, ||FP||
   mutable std::unique_ptr<FreeRowProjector> free_rows_;
   mutable double check_seconds_ = 0;  // spent in primal_check so far (a solve reports its difference)
 };

@@ -148,6 +148,16 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
                      "of frictionField or slipBoundField where read gives a row no friction row)");
   }
   (dual_->coarse() ? setup_times_.coarse_space : setup_times_.constraints) += coarse_clock.seconds();
+  if (settings_.conjugate_projector) {
+    if (dual_->coarse())
+      throw InputError("projector: \"conjugate\" is for problems where nothing floats (a time step's K + c M); this "
+                       "one has a coarse space, which holds the floating subdomains' rigid modes already");
+    Stopwatch projector_clock;
+    std::vector<Eigen::MatrixXd> modes;
+    for (const SubdomainInput& in : inputs_) modes.push_back(candidate_kernel(in.x, in.y, in.component, in.z));
+    dual_->use_conjugate_projector(modes);
+    setup_times_.coarse_space += projector_clock.seconds();
+  }
   if (settings_.preconditioner != DualPreconditioner::none) {
     Stopwatch preconditioner_clock;
     precondition(*dual_, settings_.preconditioner);

@@ -35,6 +35,9 @@ struct FetiSetupSettings {
   /// How the coarse problem's Gram matrices over fewer columns (G_F G_F', G_S G_S') are
   /// factorized (coarse_gram.h): a speed option, the same answers to round-off.
   GramLayout coarse_gram = GramLayout::automatic;
+  /// Where nothing floats (a time step's K + c M): the conjugate projector onto the
+  /// subdomains' rigid modes on the equality rows (ConjugateProjector).
+  bool conjugate_projector = false;
 };
 
 /// A solve of the problem: the dual solve's outcome (its times the slowest rank's), and

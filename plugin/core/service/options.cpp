@@ -39,6 +39,7 @@ const char* const kFactors[] = {"auto", "simplicial", "supernodal"};
 const char* const kOrderings[] = {"auto", "fill", "interface"};
 const char* const kSharing[] = {"on", "off"};
 const char* const kPreconditioners[] = {"lumped", "dirichlet", "none"};
+const char* const kProjectors[] = {"none", "conjugate"};
 const char* const kCoarseGrams[] = {"auto", "contact-last", "separate"};
 const char* const kAlgorithms[] = {"smalbe-m", "seed"};
 const char* const kExpansions[] = {"projected-cg", "projected-cg-restart", "fixed"};
@@ -103,6 +104,12 @@ std::vector<Option> make_options() {
              pick(v, {DualPreconditioner::lumped, DualPreconditioner::dirichlet, DualPreconditioner::none},
                   kPreconditioners);
        }},
+      {"projector", S::setup, K::word, {kProjectors[0], kProjectors[1]}, 0, 0, false, false, "`\"none\"`",
+       "where nothing floats (a time step's K + c M, `edp/dynamics.idp`): `\"conjugate\"` solves the dual problem "
+       "with the conjugate projector onto the subdomains' rigid modes on the gluing and Dirichlet rows (F applied "
+       "once to each mode at set-up; the contact rows untouched): fewer multiplications per step where the step is "
+       "long and K + c M nearly floats ([dynamics](results/dynamics.md)); a problem with a coarse space refuses it",
+       [](SolverSettings& s, const OptionValue& v) { s.setup.conjugate_projector = pick(v, {false, true}, kProjectors); }},
       {"coarseGram", S::setup, K::word, {kCoarseGrams[0], kCoarseGrams[1], kCoarseGrams[2]}, 0, 0, false, false,
        "`\"auto\"`",
        "how the coarse problem's Gram matrices over fewer multipliers are factorized, the free rows' G_F G_F' and "
