@@ -30,10 +30,6 @@ Vec ConjugateProjector::solve_E(const Vec& r) const {
   return E_vectors_ * E_inverse_values_.cwiseProduct(E_vectors_.transpose() * r);
 }
 
-void ConjugateProjector::hessian(const Vec& x, const Vec& Fx, Vec& y) const {
-  y = Fx - FC_ * solve_E(FC_.transpose() * x);
-}
-
 void ConjugateProjector::project(const Vec& x, Vec& y) const { y = x - C_ * solve_E(FC_.transpose() * x); }
 
 void ConjugateProjector::project_transposed(const Vec& x, Vec& y) const { y = x - FC_ * solve_E(C_.transpose() * x); }

@@ -21,8 +21,6 @@ class ConjugateProjector {
   /// left out by the pseudo-inverse.
   ConjugateProjector(Eigen::MatrixXd C, const DualOperator& F);
 
-  /// y = F P x from Fx = F x: Fx - FC E^+ (FC)' x.
-  void hessian(const Vec& x, const Vec& Fx, Vec& y) const;
   /// y = P x = x - C E^+ (FC)' x.
   void project(const Vec& x, Vec& y) const;
   /// y = P' x = x - FC E^+ C' x.

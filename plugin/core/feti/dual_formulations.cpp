@@ -48,9 +48,9 @@ DualSystem::Formulation DualSystem::conjugate_qp(const DualData& data, const Dua
   Formulation f;
   qp::Problem& qp = f.qp;
   const ConjugateProjector& projector = *conjugate_;
-  qp.hessian = [this, &projector](const Vec& x, Vec& y) {
-    F_->apply(x, conjugate_Fx_);
-    projector.hessian(x, conjugate_Fx_, y);
+  qp.hessian = [this, &projector](const Vec& x, Vec& y) {  // F (P x): the rigid directions out before F, not
+    projector.project(x, conjugate_Px_);                   // subtracted after it (F is largest along them)
+    F_->apply(conjugate_Px_, y);
   };
   projector.project_transposed(data.b, qp.b);
   qp.hessian_norm = estimated_norm(norm_conjugate_, qp.hessian, {}, settings.norm_estimate, result);

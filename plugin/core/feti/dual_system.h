@@ -167,7 +167,7 @@ class DualSystem {
   // problem at a time, collectively). Work vectors, reused so that each application of an
   // operator allocates nothing:
   mutable Vec projected_, applied_;                   // buffers of apply_PFP and the preconditioner
-  mutable Vec conjugate_Fx_;                          // F x inside the conjugate Hessian
+  mutable Vec conjugate_Px_;                          // P x inside the conjugate Hessian
   mutable Eigen::MatrixXd block_projected_, block_applied_;  // of the block apply_PFP
   // Built at first use, as only some paths need them (10-20 applications of the operator for
   // a norm estimate; a factorization of C C' for T):
