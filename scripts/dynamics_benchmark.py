@@ -361,7 +361,9 @@ def render():
         "projection takes out at each impact, which falls with h. The trapezoidal rule gains energy at",
         f"every impact (energy at the end {min(float(r['energy_change']) for r in trapezoid):+.0%} to "
         f"{max(float(r['energy_change']) for r in trapezoid):+.0%} of the initial):",
-        "the wall force chatters between steps (left plot), so it is offered for comparison only.",
+        "the wall force chatters between steps (left plot), so it is offered for comparison only. Its",
+        "first contact interval ends after a step or two, the force having dropped to zero, so its",
+        "contact time, force and rebound columns measure that interval, not the impact.",
         "Hessian multiplications per step stay bounded as h falls at a fixed c dt / h (both solves of",
         "a step counted: the projection and the step).",
         "",
