@@ -17,10 +17,10 @@ ConjugateProjector::ConjugateProjector(Eigen::MatrixXd C, const DualOperator& F)
   std::vector<Eigen::Index> kept;
   for (Eigen::Index i = 0; i < values.size(); ++i)
     if (values[i] > 1e-12 * largest) kept.push_back(i);
-  rank_ = static_cast<int>(kept.size());
-  E_vectors_.resize(E.rows(), rank_);
-  E_inverse_values_.resize(rank_);
-  for (int k = 0; k < rank_; ++k) {
+  const auto rank = static_cast<Eigen::Index>(kept.size());
+  E_vectors_.resize(E.rows(), rank);
+  E_inverse_values_.resize(rank);
+  for (Eigen::Index k = 0; k < rank; ++k) {
     E_vectors_.col(k) = eigen.eigenvectors().col(kept[static_cast<size_t>(k)]);
     E_inverse_values_[k] = 1.0 / values[kept[static_cast<size_t>(k)]];
   }

@@ -27,8 +27,6 @@ class ConjugateProjector {
   void project_transposed(const Vec& x, Vec& y) const;
   /// lambda_0 = C E^+ C' d: the part of the solution in span C.
   Vec base(const Vec& d) const;
-  Eigen::Index modes() const { return C_.cols(); }
-  int rank() const { return rank_; }
 
  private:
   Vec solve_E(const Vec& r) const;  // E^+ r
@@ -37,7 +35,6 @@ class ConjugateProjector {
   SparseMatrix C_, FC_;
   Eigen::MatrixXd E_vectors_;       // E's eigenvectors kept (eigenvalue above round-off)
   Vec E_inverse_values_;
-  int rank_ = 0;
 };
 
 }  // namespace ffeti

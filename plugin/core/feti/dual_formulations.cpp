@@ -56,11 +56,10 @@ DualSystem::Formulation DualSystem::conjugate_qp(const DualData& data, const Dua
   qp.hessian_norm = estimated_norm(norm_conjugate_, qp.hessian, {}, settings.norm_estimate, result);
   qp.constraints = bounds;
   if (const LinearOperator m = preconditioner_operator())
-    qp.preconditioner = [m, &projector](const Vec& x, Vec& y) {  // P M^{-1} P'
-      Vec r, z;
-      projector.project_transposed(x, r);
-      m(r, z);
-      projector.project(z, y);
+    qp.preconditioner = [this, m, &projector](const Vec& x, Vec& y) {  // P M^{-1} P'
+      projector.project_transposed(x, conjugate_r_);
+      m(conjugate_r_, conjugate_z_);
+      projector.project(conjugate_z_, y);
     };
   const Vec base = projector.base(data.b);
   f.to_multipliers = [base, &projector](const Vec& x, Vec& mu) {

@@ -51,7 +51,6 @@ class DualSystem {
   /// the subdomains on the equality rows, `modes[k]` local subdomain k's (n_k x r, the same r
   /// on every subdomain; candidate_kernel), used by every later solve. Collective.
   void use_conjugate_projector(const std::vector<Eigen::MatrixXd>& modes);
-  const ConjugateProjector* conjugate() const { return conjugate_.get(); }
   int rows() const { return constraints_.rows(); }
   /// The solver path the constraints call for (ALGORITHMS.md section 6).
   DualPath path() const;
@@ -167,7 +166,7 @@ class DualSystem {
   // problem at a time, collectively). Work vectors, reused so that each application of an
   // operator allocates nothing:
   mutable Vec projected_, applied_;                   // buffers of apply_PFP and the preconditioner
-  mutable Vec conjugate_Px_;                          // P x inside the conjugate Hessian
+  mutable Vec conjugate_Px_, conjugate_r_, conjugate_z_;  // P x of the conjugate Hessian; P'x, M^-1 P'x of its preconditioner
   mutable Eigen::MatrixXd block_projected_, block_applied_;  // of the block apply_PFP
   // Built at first use, as only some paths need them (10-20 applications of the operator for
   // a norm estimate; a factorization of C C' for T):
