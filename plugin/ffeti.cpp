@@ -13,6 +13,7 @@ static void Load_Init() {
   ffeti::binding::add_sensitivity_functions();
   ffeti::binding::add_contact_functions();
   ffeti::binding::add_utility_functions();
+  ffeti::binding::add_mesh_functions();
 }
 
 LOADFUNC(Load_Init)

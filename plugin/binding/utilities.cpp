@@ -1,4 +1,4 @@
-// Small functions scripts use around the solver: dof selection, connected partitions, the
+// Small functions scripts use around the solver: dof selection, the
 // ranks, sums and maxima over them, the factorization count and a wall clock.
 #include "binding/convert.h"
 #include "binding/functions.h"
@@ -7,7 +7,6 @@
 #include "base/errors.h"
 #include "factor/cholmod_factor.h"
 #include "service/statistics.h"
-#include "mesh/connect_parts.h"
 #include "mesh/tetrahedron_quality.h"
 
 #include <mpi.h>
@@ -28,37 +27,6 @@ long feti_indices(KN<double>* const& mask, KN<long>* const& indices) {
   for (long k = 0, next = 0; k < mask->N(); ++k)
     if ((*mask)[k] > 0.5) (*indices)[next++] = k;
   return count;
-}
-
-/// The element-to-node table of a triangle (n = 3) or tetrahedron (n = 4) mesh, for
-/// connect_element_parts.
-template <int n, class MeshType>
-std::vector<int> element_nodes(const MeshType& Th) {
-  std::vector<int> nodes(static_cast<size_t>(Th.nt) * n);
-  for (int k = 0; k < Th.nt; ++k)
-    for (int j = 0; j < n; ++j) nodes[static_cast<size_t>(k) * n + static_cast<size_t>(j)] = Th(k, j);
-  return nodes;
-}
-
-/// Makes every part of a mesh partition (`part`: one entry per element of Th, a mesh or a
-/// mesh3) connected through element facets (edges of triangles, faces of tetrahedra): each
-/// piece of a part other than its largest goes to the neighbouring part it shares most
-/// facets with, until no piece is left (METIS may give a part two pieces, e.g. both jaws of
-/// a spanner, and a disconnected subdomain has rigid modes no kernel candidate covers).
-/// Returns the number of elements moved.
-template <class MeshType, int n>
-long feti_connect_parts(const MeshType* const& mesh, KN<long>* const& part) {
-  return guarded("fetiConnectParts", [&] {
-    const MeshType& Th = *mesh;
-    if (part->N() != Th.nt)
-      throw InputError("part: has " + std::to_string(part->N()) + " entries for the " + std::to_string(Th.nt) +
-                       " elements of Th (one part number per element)");
-    std::vector<long> parts(static_cast<size_t>(part->N()));
-    for (long k = 0; k < part->N(); ++k) parts[static_cast<size_t>(k)] = (*part)[k];
-    const long moved = connect_element_parts(element_nodes<n>(Th), n, parts);
-    copy_to(parts, *part);
-    return moved;
-  });
 }
 
 /// Rank and size of MPI's world communicator; 0 and 1 when MPI is not initialized, so that
@@ -130,8 +98,6 @@ void add_utility_functions() {
   Global.Add("fetiWallTime", "(", new OneOperator0<double>(feti_wall_time));
   Global.Add("fetiFlatTetrahedron", "(", new OneOperator0<double>(feti_flat_tetrahedron));
   Global.Add("fetiFactorizations", "(", new OneOperator0<long>(feti_factorizations));
-  Global.Add("fetiConnectParts", "(", new OneOperator2_<long, pmesh, KN<long>*>(feti_connect_parts<Mesh, 3>));
-  Global.Add("fetiConnectParts", "(", new OneOperator2_<long, pmesh3, KN<long>*>(feti_connect_parts<Mesh3, 4>));
 }
 
 }  // namespace ffeti::binding

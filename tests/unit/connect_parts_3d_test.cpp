@@ -4,6 +4,7 @@
 #include "mesh/connect_parts.h"
 #include "mesh/tetrahedron_quality.h"
 #include "mesh/facet_neighbours.h"
+#include "kuhn_box.h"
 
 #include <gtest/gtest.h>
 
@@ -17,28 +18,6 @@
 
 namespace ffeti {
 namespace {
-
-/// The n x n x n cubes of the unit box, each cut into the six tetrahedra around its main
-/// diagonal (one per order of the axes), listed so that tetrahedra 6c + t and 6c + t + 1
-/// (mod 6) of cube c share a face and any other two of the cube share only the diagonal.
-/// Conforming across cubes: every cube's diagonal runs the same way.
-std::vector<int> kuhn_box(int n) {
-  const auto node = [n](int i, int j, int k) { return i + (n + 1) * (j + (n + 1) * k); };
-  const std::array<std::array<int, 3>, 6> orders = {{{0, 1, 2}, {1, 0, 2}, {1, 2, 0}, {2, 1, 0}, {2, 0, 1}, {0, 2, 1}}};
-  std::vector<int> nodes;
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        for (const auto& order : orders) {
-          std::array<int, 3> at{i, j, k};
-          nodes.push_back(node(at[0], at[1], at[2]));
-          for (int axis : order) {
-            ++at[static_cast<size_t>(axis)];
-            nodes.push_back(node(at[0], at[1], at[2]));
-          }
-        }
-  return nodes;
-}
 
 /// Number of face-connected pieces of each part, found here by a flood fill of its own.
 std::map<long, int> pieces_per_part(const std::vector<std::vector<int>>& neighbours, const std::vector<long>& part) {

@@ -1,0 +1,150 @@
+// Mesh functions for the scripts' partitions: parts made connected (fetiConnectParts) and a
+// mesh3 cut into its part meshes in one pass (fetiSplitMesh3). The mesh work itself is the
+// core's (mesh/connect_parts, mesh/split_parts); here only FreeFEM's mesh types.
+#include "binding/convert.h"
+#include "binding/functions.h"
+#include "binding/handles.h"
+
+#include "base/errors.h"
+#include "mesh/connect_parts.h"
+#include "mesh/split_parts.h"
+
+#include "AFunction_ext.hpp"  // OneOperator5_
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace ffeti::binding {
+namespace {
+
+/// The element-to-node table of a triangle (n = 3) or tetrahedron (n = 4) mesh.
+template <int n, class MeshType>
+std::vector<int> element_nodes(const MeshType& Th) {
+  std::vector<int> nodes(static_cast<size_t>(Th.nt) * n);
+  for (int k = 0; k < Th.nt; ++k)
+    for (int j = 0; j < n; ++j) nodes[static_cast<size_t>(k) * n + static_cast<size_t>(j)] = Th(k, j);
+  return nodes;
+}
+
+std::vector<long> part_numbers(const KN<long>& part) {
+  std::vector<long> parts(static_cast<size_t>(part.N()));
+  for (long k = 0; k < part.N(); ++k) parts[static_cast<size_t>(k)] = part[k];
+  return parts;
+}
+
+/// Makes every part of a mesh partition (`part`: one entry per element of Th, a mesh or a
+/// mesh3) connected through element facets (edges of triangles, faces of tetrahedra): each
+/// piece of a part other than its largest goes to the neighbouring part it shares most
+/// facets with, until no piece is left (METIS may give a part two pieces, e.g. both jaws of
+/// a spanner, and a disconnected subdomain has rigid modes no kernel candidate covers).
+/// Returns the number of elements moved.
+template <class MeshType, int n>
+long feti_connect_parts(const MeshType* const& mesh, KN<long>* const& part) {
+  return guarded("fetiConnectParts", [&] {
+    const MeshType& Th = *mesh;
+    if (part->N() != Th.nt)
+      throw InputError("part: has " + std::to_string(part->N()) + " entries for the " + std::to_string(Th.nt) +
+                       " elements of Th (one part number per element)");
+    std::vector<long> parts = part_numbers(*part);
+    const long moved = connect_element_parts(element_nodes<n>(Th), n, parts);
+    copy_to(parts, *part);
+    return moved;
+  });
+}
+
+/// The body as split_parts reads it: FreeFEM's own adjacency (built with the mesh) gives
+/// the element across each face, its boundary triangles the labels.
+SplitInput split_input(const Mesh3& Th) {
+  SplitInput body;
+  body.nodes_per_element = 4;
+  body.node_count = Th.nv;
+  body.element_nodes = element_nodes<4>(Th);
+  body.facet_neighbour.assign(body.element_nodes.size(), -1);
+  body.facet_label.assign(body.element_nodes.size(), -1);
+  for (int k = 0; k < Th.nt; ++k)
+    for (int j = 0; j < 4; ++j) {
+      int face_there = j;
+      const int across = Th.ElementAdj(k, face_there);
+      body.facet_neighbour[4 * static_cast<size_t>(k) + static_cast<size_t>(j)] = across >= 0 ? across : -1;
+    }
+  for (int b = 0; b < Th.nbe; ++b) {
+    int j = 0;
+    const int k = Th.BoundaryElement(b, j);
+    body.facet_label[4 * static_cast<size_t>(k) + static_cast<size_t>(j)] = Th.be(b).lab;
+    int face_there = j;
+    const int across = Th.ElementAdj(k, face_there);  // an internal labelled face: both sides
+    if (across >= 0) body.facet_label[4 * static_cast<size_t>(across) + static_cast<size_t>(face_there)] = Th.be(b).lab;
+  }
+  return body;
+}
+
+/// One part as a FreeFEM mesh3: vertices and tetrahedra with their labels, each boundary
+/// triangle ordered as its tetrahedron's face (outward, as FreeFEM orders faces).
+Mesh3* part_mesh(const Mesh3& Th, const MeshPart& piece) {
+  const int nv = static_cast<int>(piece.nodes.size()), nt = static_cast<int>(piece.elements.size());
+  const int nbe = static_cast<int>(piece.facet_elements.size());
+  auto* vertices = new Vertex3[static_cast<size_t>(nv)];
+  auto* tets = new Tet[static_cast<size_t>(nt)];
+  auto* faces = new Triangle3[static_cast<size_t>(nbe)];
+  for (int i = 0; i < nv; ++i) {
+    const Vertex3& from = Th(piece.nodes[static_cast<size_t>(i)]);
+    vertices[i].x = from.x;
+    vertices[i].y = from.y;
+    vertices[i].z = from.z;
+    vertices[i].lab = from.lab;
+  }
+  for (int e = 0; e < nt; ++e) {
+    int nodes[4];
+    for (int j = 0; j < 4; ++j) nodes[j] = piece.element_nodes[4 * static_cast<size_t>(e) + static_cast<size_t>(j)];
+    tets[e].set(vertices, nodes, Th[piece.elements[static_cast<size_t>(e)]].lab);
+  }
+  for (int f = 0; f < nbe; ++f) {
+    const size_t e = static_cast<size_t>(piece.facet_elements[static_cast<size_t>(f)]);
+    const int side = piece.facet_sides[static_cast<size_t>(f)];
+    int nodes[3];
+    for (int i = 0; i < 3; ++i) nodes[i] = piece.element_nodes[4 * e + static_cast<size_t>(Tet::nvface[side][i])];
+    faces[f].set(vertices, nodes, piece.facet_labels[static_cast<size_t>(f)]);
+  }
+  auto* mesh = new Mesh3(nv, nt, nbe, vertices, tets, faces);
+  mesh->BuildGTree();
+  return mesh;
+}
+
+/// Cuts the mesh3 ThBody into the parts `part` gives (one part number per tetrahedron, from
+/// 0 to nparts - 1, nparts = its largest entry + 1) and stores part p in Th3[first + p]: the
+/// body's boundary labels kept, the cuts labelled `interfaceLabel`, the same meshes as
+/// trunc(ThBody, part == p, label = interfaceLabel) up to the numbering, in one pass over
+/// the body instead of one per part. Returns the number of parts.
+long feti_split_mesh3(KN<pmesh3>* const& Th3, const long& first, const Mesh3* const& body, KN<long>* const& part,
+                      const long& interface_label) {
+  return guarded("fetiSplitMesh3", [&] {
+    if (part->N() != body->nt)
+      throw InputError("part: has " + std::to_string(part->N()) + " entries for the " + std::to_string(body->nt) +
+                       " tetrahedra of ThBody (one part number per tetrahedron)");
+    const std::vector<long> parts = part_numbers(*part);
+    long count = 0;
+    for (const long p : parts) count = std::max(count, p + 1);
+    if (first < 0 || first + count > Th3->N())
+      throw InputError("Th3: the parts " + std::to_string(first) + " .. " + std::to_string(first + count - 1) +
+                       " do not all lie in the mesh array of " + std::to_string(Th3->N()));
+    const std::vector<MeshPart> pieces = split_parts(split_input(*body), parts, count, static_cast<int>(interface_label));
+    for (long p = 0; p < count; ++p) {
+      pmesh3& slot = (*Th3)[first + p];
+      if (slot) slot->destroy();  // the array owns its meshes (FreeFEM's DestroyKN destroys them)
+      slot = part_mesh(*body, pieces[static_cast<size_t>(p)]);
+    }
+    return count;
+  });
+}
+
+}  // namespace
+
+void add_mesh_functions() {
+  Global.Add("fetiConnectParts", "(", new OneOperator2_<long, pmesh, KN<long>*>(feti_connect_parts<Mesh, 3>));
+  Global.Add("fetiConnectParts", "(", new OneOperator2_<long, pmesh3, KN<long>*>(feti_connect_parts<Mesh3, 4>));
+  Global.Add("fetiSplitMesh3", "(",
+             new OneOperator5_<long, KN<pmesh3>*, long, pmesh3, KN<long>*, long>(feti_split_mesh3));
+}
+
+}  // namespace ffeti::binding
