@@ -8,6 +8,7 @@
 #include "factor/cholmod_factor.h"
 #include "service/statistics.h"
 #include "mesh/tetrahedron_quality.h"
+#include "parallel/process.h"
 
 #include <mpi.h>
 
@@ -70,6 +71,11 @@ double feti_wall_time() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
+/// This process's resident memory now and its peak so far, MiB (/proc/self/status): a
+/// script measures what each of its phases holds, with or without a problem set up.
+double feti_resident_mb() { return resident_memory_mb(); }
+double feti_peak_mb() { return peak_memory_mb(); }
+
 /// The bound below which |volume| / (longest edge)^3 marks a tetrahedron as flat, the
 /// core's (ffeti-solve applies the same): ffeti.idp's ffetiFlatTetrahedron starts from it.
 double feti_flat_tetrahedron() { return kFlatTetrahedron; }
@@ -96,6 +102,8 @@ void add_utility_functions() {
   Global.Add("fetiRanks", "(", new OneOperator0<long>(feti_ranks));
   Global.Add("fetiRankReport", "(", new OneOperator1s_<std::string*, long>(feti_rank_report));
   Global.Add("fetiWallTime", "(", new OneOperator0<double>(feti_wall_time));
+  Global.Add("fetiResidentMb", "(", new OneOperator0<double>(feti_resident_mb));
+  Global.Add("fetiPeakMb", "(", new OneOperator0<double>(feti_peak_mb));
   Global.Add("fetiFlatTetrahedron", "(", new OneOperator0<double>(feti_flat_tetrahedron));
   Global.Add("fetiFactorizations", "(", new OneOperator0<long>(feti_factorizations));
 }

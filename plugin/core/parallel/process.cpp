@@ -36,11 +36,14 @@ ThreadLimit::~ThreadLimit() {
 #endif
 }
 
-double peak_memory_mb() {
+namespace {
+
+/// One "Vm...:" line of /proc/self/status in MiB (0 where there is none).
+double status_mb(const std::string& wanted) {
   std::ifstream status("/proc/self/status");
   std::string key;
   while (status >> key) {
-    if (key == "VmHWM:") {
+    if (key == wanted) {
       double kilobytes = 0;
       status >> kilobytes;
       return kilobytes / 1024.0;
@@ -49,6 +52,12 @@ double peak_memory_mb() {
   }
   return 0.0;
 }
+
+}  // namespace
+
+double peak_memory_mb() { return status_mb("VmHWM:"); }
+
+double resident_memory_mb() { return status_mb("VmRSS:"); }
 
 int threads_for_load(int threads) {
   if (std::getenv("OMP_NUM_THREADS")) return threads;

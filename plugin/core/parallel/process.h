@@ -6,6 +6,10 @@ namespace ffeti {
 /// Peak resident memory of this process in MiB (VmHWM of /proc/self/status; 0 if unknown).
 double peak_memory_mb();
 
+/// Resident memory of this process now in MiB (VmRSS; 0 if unknown): what a script holds
+/// between phases (its meshes, matrices, the plugin's problems).
+double resident_memory_mb();
+
 /// OpenMP thread count to use: `requested` if > 0, else the runtime default.
 int resolve_thread_count(int requested);
 

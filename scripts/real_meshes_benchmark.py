@@ -1,0 +1,188 @@
+#!/usr/bin/env python3
+"""Real meshes at scale: docs/results/real-meshes.md from edp/crowned-punch-3d.edp (a crowned
+punch on an elastic base, each body meshed by gmsh on its own, METIS parts, node to face on
+non-matching meshes, Total FETI with default options).
+
+Three tables, each a CSV under docs/results/ and a table of the page:
+- weak: mesh sizes -h from FFETI_REAL_SIZES (default 0.7 0.5 0.35 0.25 0.2 0.16) at parts of
+  FFETI_REAL_PART_NODES nodes (default 1000: the part-size table's best count), one after the other,
+  each under FFETI_REAL_TIME_LIMIT_S (default 2400 s) and FFETI_REAL_MEMORY_LIMIT_GIB (default
+  21 GiB of address space); the first size that reaches a limit ends the table with a row
+  saying which limit and when (a larger size would not fit either);
+- parts: the part size -partNodes 500 ... 3500 at -h 0.5 (counts, memory, times);
+- peer: FETI against the direct peer (-peer 1: the primal-dual active set method on the
+  undivided bodies, MUMPS) at the sizes FFETI_REAL_PEER_SIZES (default 0.7 0.5).
+Times are wall clock on the machine as it was (its load is in the run's row); counts
+(Hessian multiplications, outer iterations) and bytes do not depend on the machine.
+Usage: scripts/real_meshes_benchmark.py [--render] (--render: the page from the CSVs alone).
+FFETI_RUN_DIR=build/edp-tests runs the build's plugin."""
+import argparse
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402  (after the backend)
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from ffeti_bench import (OUT, OverLimit, begin_run, end_run, f, machine_line, markdown_table, read_csv,  # noqa: E402
+                         run, save_page, write_csv)
+
+PAGE = "real-meshes"
+SIZES = [float(h) for h in os.environ.get("FFETI_REAL_SIZES", "0.7 0.5 0.35 0.25 0.2 0.16").split()]
+PART_NODES = int(os.environ.get("FFETI_REAL_PART_NODES", "1000"))
+PART_SWEEP = [500, 1000, 2000, 3500]
+PART_SWEEP_H = 0.5
+PEER_SIZES = [float(h) for h in os.environ.get("FFETI_REAL_PEER_SIZES", "0.7 0.5").split()]
+TIME_LIMIT_S = float(os.environ.get("FFETI_REAL_TIME_LIMIT_S", "2400"))
+MEMORY_LIMIT_MB = 1024 * float(os.environ.get("FFETI_REAL_MEMORY_LIMIT_GIB", "21"))
+SCENE = "crowned-punch-3d.edp"
+
+
+def scene(h, part_nodes, *flags, limited=False):
+    """One run of the scene: its RESULT line (with the process's peak memory)."""
+    limits = dict(seconds=TIME_LIMIT_S, memory_mb=MEMORY_LIMIT_MB) if limited else {}
+    row = run(SCENE, "-h", h, "-partNodes", part_nodes, *flags, **limits)["RESULT"][0]
+    print(f"h={h} partNodes={part_nodes} {' '.join(map(str, flags))}: {row['unknowns']} unknowns, "
+          f"{row['hessian']} multiplications, {float(row['time_scene']):.1f} s, {row['status']}", flush=True)
+    return row
+
+
+def measure():
+    begun = begin_run()
+    weak = []
+    for h in SIZES:
+        try:
+            weak.append(scene(h, PART_NODES, limited=True))
+        except OverLimit as stop:
+            weak.append({"h": h, "status": "stopped", "limit": stop.what, "seconds": repr(stop.seconds)})
+            print(f"h={h}: {stop}", flush=True)
+            break
+    write_csv(PAGE, "weak", weak)
+    write_csv(PAGE, "parts", [scene(PART_SWEEP_H, nodes) for nodes in PART_SWEEP])
+    write_csv(PAGE, "peer", [scene(h, PART_NODES, "-peer", 1, "-DwithMUMPS=1") for h in PEER_SIZES])
+    end_run(PAGE, begun)
+
+
+def per_unknown_us(row, key):
+    return 1e6 * f(row, key) / f(row, "unknowns")
+
+
+def gbytes_per_second(row):
+    """The bytes one multiplication reads (the factors, once) over its measured time."""
+    return f(row, "operator_bytes") * f(row, "hessian") / f(row, "time_hessian") / 1e9
+
+
+PHASES = [("gmsh", "time_gmsh"), ("METIS + cut", "time_metis"), ("assembly", "time_assembly"),
+          ("plugin set-up", "time_plugin_setup"), ("factorization", "time_factor"), ("dual solve", "time_solve")]
+
+
+def whole(row):
+    return sum(f(row, key) for _, key in PHASES) + f(row, "time_recovery")
+
+
+def plot(weak):
+    done = [r for r in weak if r["status"] != "stopped"]
+    unknowns = [f(r, "unknowns") for r in done]
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.6))
+    for label, key in PHASES:
+        axes[0].semilogx(unknowns, [per_unknown_us(r, key) for r in done], "o-", label=label)
+    axes[0].semilogx(unknowns, [1e6 * whole(r) / f(r, "unknowns") for r in done], "k^-", label="whole run")
+    axes[0].set_ylabel("seconds per unknown [µs]")
+    axes[0].legend(fontsize=8)
+    axes[1].semilogx(unknowns, [f(r, "hessian") for r in done], "o-", label="Hessian multiplications")
+    axes[1].semilogx(unknowns, [f(r, "outer") for r in done], "s--", label="outer iterations")
+    axes[1].set_ylim(bottom=0)
+    axes[1].set_ylabel("count")
+    axes[1].legend(fontsize=8)
+    axes[2].semilogx(unknowns, [f(r, "bytes_factor_per_unknown") / 1024 for r in done], "o-", label="factors")
+    axes[2].semilogx(unknowns, [f(r, "process_peak_mb") * 1048576 / f(r, "unknowns") / 1024 for r in done], "s--",
+                     label="whole process (peak)")
+    axes[2].set_ylim(bottom=0)
+    axes[2].set_ylabel("memory per unknown [KiB]")
+    axes[2].legend(fontsize=8)
+    for ax in axes:
+        ax.set_xlabel("unknowns")
+        ax.grid(True, which="both", alpha=0.3)
+    fig.suptitle(f"crowned punch on a base, METIS parts of {PART_NODES} nodes, Total FETI with defaults")
+    fig.tight_layout()
+    fig.savefig(os.path.join(OUT, f"{PAGE}.png"), dpi=110)
+    plt.close(fig)
+
+
+def render():
+    weak, parts, peer = (read_csv(PAGE, table) for table in ("weak", "parts", "peer"))
+    run_row = read_csv(PAGE, "run")[0]
+    plot(weak)
+    done = [r for r in weak if r["status"] != "stopped"]
+    stopped = [r for r in weak if r["status"] == "stopped"]
+    largest = done[-1]
+    first = done[0]
+    lines = ["# Real meshes at scale", "",
+             f"A crowned punch pressed on an elastic base, each body meshed by gmsh on its own (unstructured "
+             f"tetrahedra, non-matching at the contact), METIS parts of about {PART_NODES} nodes, node-to-face "
+             f"contact, Total FETI with default options (`edp/crowned-punch-3d.edp`): from "
+             f"{f(first, 'unknowns'):,.0f} to {f(largest, 'unknowns'):,.0f} unknowns the Hessian multiplications "
+             f"went from {first['hessian']} to {largest['hessian']} (SMALBE's outer iterations "
+             f"{first['outer']} to {largest['outer']}), the whole run took "
+             f"{1e6 * whole(first) / f(first, 'unknowns'):.0f} to {1e6 * whole(largest) / f(largest, 'unknowns'):.0f} µs "
+             f"per unknown, and the process held {f(largest, 'process_peak_mb') * 1048576 / f(largest, 'unknowns') / 1024:.1f} "
+             f"KiB per unknown at its peak, of which the factors "
+             f"{f(largest, 'bytes_factor_per_unknown') / 1024:.1f} KiB.",
+             ""]
+    if stopped:
+        s = stopped[0]
+        lines += [f"The next size, -h {s['h']}, stopped at the {s['limit']} limit after {float(s['seconds']):.0f} s "
+                  f"(limits: {TIME_LIMIT_S:.0f} s, {MEMORY_LIMIT_MB / 1024:.0f} GiB of address space).", ""]
+    lines += [machine_line(run_row), "", f"![weak scaling]({PAGE}.png)", "",
+              "## Weak scaling", "",
+              f"Parts of about {PART_NODES} nodes; `time_*` the phases of the whole run (gmsh's meshing, METIS with "
+              "`fetiConnectParts` and the cut into part meshes, FreeFEM's assembly, the plugin's set-up, the "
+              "factorizations, the dual solve); memory: the factors' bytes and the process's peak resident set, per "
+              "unknown; GB/s: the bytes one multiplication reads (every factor once) over its measured time.", ""]
+    lines += markdown_table(weak, [
+        ("h", "h"), ("unknowns", ("unknowns", ",.0f")), ("parts", "subdomains"), ("dual", ("dual", ",.0f")),
+        ("active", "active"), ("Hessian", "hessian"), ("outer", "outer"),
+        ("gmsh [s]", ("time_gmsh", ".1f")), ("METIS + cut [s]", ("time_metis", ".1f")),
+        ("assembly [s]", ("time_assembly", ".1f")), ("set-up [s]", ("time_plugin_setup", ".1f")),
+        ("factorization [s]", ("time_factor", ".1f")), ("dual solve [s]", ("time_solve", ".1f")),
+        ("factors [KiB/unknown]", lambda r: f"{f(r, 'bytes_factor_per_unknown') / 1024:.2f}" if r.get("unknowns") else "-"),
+        ("peak [KiB/unknown]",
+         lambda r: f"{f(r, 'process_peak_mb') * 1024 / f(r, 'unknowns'):.2f}" if r.get("unknowns") else "-"),
+        ("GB/s", lambda r: f"{gbytes_per_second(r):.1f}" if r.get("unknowns") else "-"),
+        ("status", lambda r: r["status"] if r["status"] != "stopped" else f"stopped ({r['limit']})")])
+    lines += ["", "## Part size", "",
+              f"The same scene at -h {PART_SWEEP_H} cut into parts of 500 to 3500 nodes: smaller parts hold "
+              "sparser factors (less memory per unknown, cheaper solves) against a larger dual and coarse problem.", ""]
+    lines += markdown_table(parts, [
+        ("nodes per part (asked / mean)", lambda r: f"{r['part_nodes']} / {r['nodes_per_part']}"), ("parts", "subdomains"),
+        ("dual", ("dual", ",.0f")), ("coarse", "coarse"), ("Hessian", "hessian"), ("outer", "outer"),
+        ("factorization [s]", ("time_factor", ".1f")), ("dual solve [s]", ("time_solve", ".1f")),
+        ("whole run [s]", lambda r: f"{whole(r):.1f}"),
+        ("factors [KiB/unknown]", lambda r: f"{f(r, 'bytes_factor_per_unknown') / 1024:.2f}"),
+        ("peak [KiB/unknown]", lambda r: f"{f(r, 'process_peak_mb') * 1024 / f(r, 'unknowns'):.2f}")])
+    lines += ["", "## The direct peer", "",
+              "The undivided bodies by the primal-dual active set method with MUMPS on the contact rows the plugin "
+              "builds for one subdomain per body: the same discrete problem, a second method.", ""]
+    lines += markdown_table(peer, [
+        ("h", "h"), ("unknowns", ("unknowns", ",.0f")), ("FETI energy", ("energy", ".8g")),
+        ("peer energy", ("energy_peer", ".8g")), ("relative difference", ("energy_error", ".1e")),
+        ("active FETI / peer", lambda r: f"{r['active']} / {r['active_peer']}"),
+        ("PDAS iterations", "pdas_iterations"), ("FETI whole run [s]", lambda r: f"{whole(r):.1f}"),
+        ("peer [s]", ("time_peer", ".1f"))])
+    lines += ["", "Tables: `real-meshes-weak.csv`, `real-meshes-parts.csv`, `real-meshes-peer.csv`, "
+              "`real-meshes-run.csv`; `scripts/real_meshes_benchmark.py --render` redraws the page from them.", ""]
+    save_page(f"{PAGE}.md", lines)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--render", action="store_true", help="redraw the page from the CSVs alone")
+    if not parser.parse_args().render:
+        measure()
+    render()
+
+
+if __name__ == "__main__":
+    main()
