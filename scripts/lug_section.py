@@ -238,6 +238,8 @@ def section():
     default, second, carried, finer, remeshed = (by_loop[name] for name, _, _ in LOOPS)
     peers = [by_loop[name] for name, _, _ in PEERS]
     adjoint, fd = peers[0], peers[2]
+    node_check = next(c for c in checks if c["contact"] == CHECKS[0][1])
+    ratio_12 = f(node_check, "time_fd") / f(node_check, "time_adjoint")
     second_gap = abs(f(second, "cost") / f(default, "cost") - 1)
     second_max_gap = abs(f(second, "true_max") / f(default, "true_max") - 1)
     finer_gap = abs(f(carried, "cost0") / f(finer, "cost") - 1)
@@ -327,7 +329,9 @@ def section():
         "`ffetiShapeDerivative3Body`: central differences of the body's assembly, the body",
         "choosing the material), and central finite differences of re-solved moved meshes",
         f"(8 analyses per design). Finite differences took {f(fd, 'time_total') / f(adjoint, 'time_total'):.1f} times the",
-        "adjoint loop's time; the ratio grows with the variables (2k analyses against one solve).",
+        "adjoint loop's time, and the ratio grows with the variables (2k analyses against one",
+        f"solve): at 12 variables on the default mesh one finite-difference gradient took {ratio_12:.1f} times",
+        "the adjoint one (the gradient checks below, node to face).",
         "",
         *markdown_table(peers, PEER_COLUMNS),
         "",
