@@ -6,7 +6,8 @@ gradient-checks, and the uniform-pressure sections', plane and 3D) and renders
 docs/results/shape-optimization.md and its plots from it (--render: again from the CSVs;
 the spanner pictures come from the run's stress fields, not kept, and stay as they are).
 --only-3d: measure the 3D section alone (development; with --render: from its CSVs) and
-write it beside its CSVs as shape-optimization-3d-section.md, leaving the page as it is."""
+write it beside its CSVs as shape-optimization-3d-section.md, leaving the page as it is;
+--only-lug: the same for the lug's section (shape-optimization-lug-section.md)."""
 import argparse
 import glob
 import os
@@ -22,6 +23,7 @@ from matplotlib.collections import PolyCollection  # noqa: E402
 
 from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, machine_line, markdown_table, read_csv, run,  # noqa: E402
                          save_page, write_csv)
+import lug_section  # noqa: E402
 import uniform_pressure_3d_section  # noqa: E402
 import uniform_pressure_section  # noqa: E402
 
@@ -150,7 +152,18 @@ def main():
                         help="re-render the page from its CSVs, no run (the spanner pictures are kept)")
     parser.add_argument("--only-3d", action="store_true",
                         help="measure the 3D section alone and write it as shape-optimization-3d-section.md (not the page)")
+    parser.add_argument("--only-lug", action="store_true",
+                        help="measure the lug's section alone and write it as shape-optimization-lug-section.md")
     arguments = parser.parse_args()
+    if arguments.only_lug:
+        begun = begin_run()
+        if not arguments.render:
+            with tempfile.TemporaryDirectory() as folder:
+                lug_section.measure(folder)
+            end_run(PAGE, begun, "lug-run")
+        save_page("shape-optimization-lug-section.md", lug_section.section())
+        print(f"lug section: {time.time() - begun['started']:.0f} s")
+        return
     if arguments.only_3d:
         begun = begin_run()
         if not arguments.render:
@@ -188,6 +201,7 @@ def measure():
                                  for k, (c, m) in enumerate(zip(costs, true_max))]
         uniform_pressure_section.measure(folder)
         uniform_pressure_3d_section.measure(folder)
+        lug_section.measure(folder)
     write_csv(PAGE, "loops", loops)
     write_csv(PAGE, "history", history_rows)
     write_csv(PAGE, "gradient-checks", [dict(case=label, **gradient_check(script, args))
@@ -266,7 +280,8 @@ def write_page(uniform, loops, checks, costs, run_row):
         "factorizations, and design loops driven by IPOPT (FreeFEM's ff-Ipopt, L-BFGS) with",
         "the plugin's adjoint gradients. One design step = one analysis (one factorization per",
         "subdomain) + one gradient. First the loop whose optimum is known (a uniform contact",
-        "pressure), with the finite-difference peer beside it; then the seed's loops.",
+        "pressure), with the finite-difference peer beside it; then the seed's loops, and a lug",
+        "in three dimensions whose design moves the mesh.",
         "",
         *uniform,
         "## The seed's loops",
@@ -314,6 +329,7 @@ def write_page(uniform, loops, checks, costs, run_row):
         "",
         "![history](shape-optimization-history.png)",
         "",
+        *lug_section.section(),
         "## What a gradient costs",
         "",
         "At the initial design (`-costs 1`): one analysis (assembly, set-up, solve), the k",

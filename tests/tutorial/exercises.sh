@@ -66,4 +66,5 @@ exercise "lesson 11: -swap 1" "$lessons/11-solids-in-contact.edp" -swap 1
 exercise "lesson 11: -m 12 -m2 8" "$lessons/11-solids-in-contact.edp" -m 12 -m2 8
 exercise "lesson 13: -n 80" "$lessons/13-impact.edp" -n 80
 exercise "lesson 13: -courant 4" "$lessons/13-impact.edp" -courant 4
+exercise "lesson 14: -start -1" "$lessons/14-lug.edp" -start -1
 [ "$failures" -eq 0 ] && echo "all checks passed" || { echo "$failures exercise(s) failed"; exit 1; }
