@@ -41,8 +41,15 @@ class NodeToNodeGeometry final : public ContactRowGeometry {
 class NodeToNode final : public ContactDiscretization {
  public:
   ContactKind kind() const override { return ContactKind::node_to_node; }
+  /// name, selected by: rows, friction, sensitivity, sensitivity with friction, MPI, ffeti-solve,
+  /// fetiContactStart
+  KindCapabilities capabilities() const override {
+    return {kind(), "node-to-node", "contactSlave, contactMaster", kBothDimensions, kBothDimensions, kBothDimensions, kNowhere,
+            kBothDimensions, kPlaneOnly, kPlaneOnly};
+  }
   bool selected(const ContactRecords& in) const override {
-    return in.segments.empty() && in.faces.empty() && !in.contact.obstacle;
+    // The slaves' default pairing: no other kind claims them.
+    return in.segments.empty() && in.faces.empty() && !in.contact.obstacle && in.contact.kind_parameters.empty();
   }
   /// With friction, also each pair's nodes by component (InputError where a tangential
   /// component is missing, a scalar field, or where two slave dofs share a node).
