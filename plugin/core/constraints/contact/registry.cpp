@@ -3,6 +3,7 @@
 // built from them: each kind's position, the kinds that own their input and its reading.
 #include "constraints/contact/ball.h"
 #include "constraints/contact/contact_discretization.h"
+#include "constraints/contact/cylinder.h"
 #include "constraints/contact/mortar.h"
 #include "constraints/contact/node_to_face.h"
 #include "constraints/contact/node_to_node.h"
@@ -24,6 +25,7 @@ const std::vector<std::unique_ptr<const ContactDiscretization>>& contact_discret
     list.push_back(std::make_unique<Mortar>());
     list.push_back(std::make_unique<NodeToFace>());
     list.push_back(std::make_unique<NodeToNode>());
+    list.push_back(std::make_unique<Cylinder>());
     return list;
   }();
   return units;
