@@ -223,23 +223,20 @@ DirichletSpec read_dirichlet(ObjectReader& r, int components) {
 void read_kind_input(ObjectReader& r, const ContactDiscretization& unit, int dimension, ContactSpec& c) {
   const KindInput& spec = *unit.input();
   ObjectReader o(r.child(spec.file_key), r.file(), r.path(spec.file_key));
-  std::vector<std::vector<double>> given;
-  for (const InputField& field : spec.fields) {
-    given.emplace_back();
-    if (!o.has(field.key)) continue;
-    if (field.flag) given.back() = {o.required<bool>(field.key) ? 1.0 : 0.0};
-    else if (field.size == 1) given.back() = {o.required<double>(field.key)};
-    else given.back() = o.required<std::vector<double>>(field.key);
-  }
+  std::vector<std::vector<double>> given;  // per field, empty where left out
+  for (const InputField& field : spec.fields)
+    given.push_back(!o.has(field.key) ? std::vector<double>{}
+                    : field.flag      ? std::vector<double>{o.required<bool>(field.key) ? 1.0 : 0.0}
+                    : field.size == 1 ? std::vector<double>{o.required<double>(field.key)}
+                                      : o.required<std::vector<double>>(field.key));
   o.finish();
-  const std::string argument = std::string(spec.argument) + ": ";
   try {
     std::vector<double> values = input_values(spec, given, dimension, r.file() + ": " + o.path(""));
     unit.check_input(values, dimension);
     require(unit.kind(), Feature::ffeti_solve, dimension, spec.argument);
     c.kind_parameters[unit.kind()] = std::move(values);
   } catch (const InputError& error) {
-    const std::string what = error.what();
+    const std::string what = error.what(), argument = std::string(spec.argument) + ": ";
     if (what.rfind(argument, 0) == 0) o.fail(r.path(spec.file_key), what.substr(argument.size()));
     throw;
   }
@@ -264,7 +261,7 @@ ContactSpec read_contact(ObjectReader& r, int components) {
     }
     o.finish();
   }
-  // The kinds that own their input, each under its key (registry order).
+  // The kind this entry makes (its row says where friction works); a kind's own key below.
   ContactKind kind = components == 1 ? ContactKind::node_to_node
                      : c.obstacle    ? ContactKind::obstacle
                      : dimension == 3 ? ContactKind::node_to_face
