@@ -47,10 +47,9 @@ class NodeToNode final : public ContactDiscretization {
     return {kind(), "node-to-node", "contactSlave, contactMaster", kBothDimensions, kBothDimensions, kBothDimensions, kNowhere,
             kBothDimensions, kPlaneOnly, kPlaneOnly};
   }
-  bool selected(const ContactRecords& in) const override {
-    // The slaves' default pairing: no other kind claims them.
-    return in.segments.empty() && in.faces.empty() && !in.contact.obstacle && in.contact.kind_parameters.empty();
-  }
+  /// The slaves' default pairing: where no other kind of the registry is selected (so a new
+  /// kind needs no word here).
+  bool selected(const ContactRecords& in) const override;
   /// With friction, also each pair's nodes by component (InputError where a tangential
   /// component is missing, a scalar field, or where two slave dofs share a node).
   void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;
