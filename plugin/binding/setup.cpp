@@ -8,6 +8,7 @@
 
 #include "base/errors.h"
 #include "base/parallel_for.h"
+#include "constraints/contact/contact_discretization.h"
 #include "parallel/mpi_communicator.h"
 #include "parallel/ownership.h"
 
@@ -44,10 +45,13 @@ class FetiSetup : public WithNamedArguments {
   }
 
  private:
-  // Named parameters by position in name_param: these, then the set-up options.
-  enum Named { kDirichlet, kDirichletValues, kSlave, kMaster, kGap, kComponent, kComm, kSegments, kObstacle,
-               kRadius, kContactGap, kFriction, kSlipBound, kFrictionField, kZ, kFaces, kSlaveFaces, kBall, kSlipBoundField,
-               kStiffnessOf, kOptions };
+  // Named parameters by position in name_param: these, then the arguments of the contact
+  // kinds that own their input (obstacle=, obstacleBall=, ...: kinds_with_input(), in the
+  // registry's order, constraints/contact/registry.cpp), then the set-up options.
+  enum Named { kDirichlet, kDirichletValues, kSlave, kMaster, kGap, kComponent, kComm, kSegments, kRadius,
+               kContactGap, kFriction, kSlipBound, kFrictionField, kZ, kFaces, kSlaveFaces, kSlipBoundField,
+               kStiffnessOf, kKindArguments };
+  static size_t options_start() { return kKindArguments + kinds_with_input().size(); }
 
   long setup(Stack stack) const {
     auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
@@ -189,8 +193,6 @@ class FetiSetup : public WithNamedArguments {
     }
   }
 
-  /// contactSlave=, contactMaster=, gap=, contactSegments=, obstacle=, contactRadius=, contactGap=,
-  /// friction=, slipBound=, frictionField=, slipBoundField=.
   /// Triangles given as 9 dofs each (a_x, a_y, a_z, b_x, ..., c_z), per subdomain.
   std::vector<std::vector<std::array<int, 9>>> faces(Stack stack, Named argument, const char* name, long count,
                                                      const std::vector<int>& ids, const std::vector<long>& dofs) const {
@@ -210,6 +212,9 @@ class FetiSetup : public WithNamedArguments {
     return result;
   }
 
+  /// contactSlave=, contactMaster=, gap=, contactSegments=, contactFaces=, contactSlaveFaces=,
+  /// the arguments of the kinds that own their input (kinds_with_input()), contactRadius=,
+  /// contactGap=, friction=, slipBound=, frictionField=, slipBoundField=.
   ContactInput contact_input(Stack stack, long count, const std::vector<int>& ids, const std::vector<long>& dofs) const {
     ContactInput contact;
     contact.slave_dofs = per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kSlave], stack), count, ids,
@@ -229,42 +234,11 @@ class FetiSetup : public WithNamedArguments {
     }
     contact.master_faces = faces(stack, kFaces, "contactFaces", count, ids, dofs);
     contact.slave_faces = faces(stack, kSlaveFaces, "contactSlaveFaces", count, ids, dofs);
-    if (const auto* obstacle = optional_pointer<KN<double>>(nargs[kObstacle], stack)) {
-      if (obstacle->N() != 4 && obstacle->N() != 6)
-        throw InputError("obstacle: needs [point x, point y, normal x, normal y] (with Z: [px, py, pz, nx, ny, nz]), got " +
-                         std::to_string(obstacle->N()) + " entries");
-      // A line's four entries read as a plane would lie in z = 0 with a normal in the
-      // x-y plane: the rows then fail far from the cause.
-      if (nargs[kZ] != nullptr && obstacle->N() == 4)
-        throw InputError("obstacle: with Z (three dimensions) needs six entries, a plane [px, py, pz, nx, ny, nz]; "
-                         "got four (a line of a plane problem)");
-      contact.obstacle = true;
-      if (obstacle->N() == 6) {  // three dimensions: a plane
-        contact.obstacle_point = {(*obstacle)[0], (*obstacle)[1], (*obstacle)[2]};
-        contact.obstacle_normal = {(*obstacle)[3], (*obstacle)[4], (*obstacle)[5]};
-      } else {
-        contact.obstacle_point = {(*obstacle)[0], (*obstacle)[1], 0.0};
-        contact.obstacle_normal = {(*obstacle)[2], (*obstacle)[3], 0.0};
-      }
-    }
-    if (const auto* ball = optional_pointer<KN<double>>(nargs[kBall], stack)) {
-      if (contact.obstacle) throw InputError("obstacle, obstacleBall: give one obstacle, a plane or a ball");
-      if (ball->N() != 3 && ball->N() != 4)
-        throw InputError("obstacleBall: needs [centre x, centre y, radius] (with Z: [cx, cy, cz, radius]), got " +
-                         std::to_string(ball->N()) + " entries");
-      const long n = ball->N();
-      const bool with_z = nargs[kZ] != nullptr;
-      if (with_z != (n == 4))
-        throw InputError(with_z ? "obstacleBall: with Z (three dimensions) needs [cx, cy, cz, radius], got 3 entries"
-                                : "obstacleBall: four entries (a ball) need Z (three dimensions); a plane problem takes "
-                                  "[cx, cy, radius] (a disc)");
-      const double radius = (*ball)[n - 1];
-      if (!(radius > 0 && std::isfinite(radius)))
-        throw InputError("obstacleBall: the radius must be finite and > 0, got " + std::to_string(radius));
-      contact.obstacle = true;
-      contact.obstacle_point = {(*ball)[0], (*ball)[1], n == 4 ? (*ball)[2] : 0.0};
-      contact.obstacle_radius = radius;
-    }
+    // Each kind that owns its input reads and checks its own argument.
+    const auto kinds = kinds_with_input();
+    for (size_t i = 0; i < kinds.size(); ++i)
+      if (const auto* values = optional_pointer<KN<double>>(nargs[kKindArguments + i], stack))
+        kinds[i]->read_input(to_std(*values), nargs[kZ] ? 3 : 2, contact);
     contact.search_distance = optional_real(nargs[kRadius], stack, contact.search_distance);
     // Not given: -1, no friction rows (a given negative value is refused by the core).
     contact.friction = optional_real(nargs[kFriction], stack, -1.0);
@@ -295,21 +269,26 @@ class FetiSetup : public WithNamedArguments {
   /// The set-up options (variant=, factor=, threads=, preconditioner=); a vector field is
   /// one with component= given.
   FetiSetupSettings setup_settings(Stack stack) const {
-    return given_options(OptionScope::setup, &nargs[kOptions], stack).setup(nargs[kComponent] != nullptr);
+    return given_options(OptionScope::setup, &nargs[options_start()], stack).setup(nargs[kComponent] != nullptr);
   }
 };
 
 NamedParameters FetiSetup::name_param = named_parameters(
-    {{"dirichlet", &typeid(KN<KN<long>>*)},       {"dirichletValues", &typeid(KN<KN<double>>*)},
-     {"contactSlave", &typeid(KN<KN<long>>*)},    {"contactMaster", &typeid(KN<KN<long>>*)},
-     {"gap", &typeid(double)},                    {"component", &typeid(KN<KN<long>>*)},
-     {"comm", &typeid(pcommworld)},               {"contactSegments", &typeid(KN<KN<long>>*)},
-     {"obstacle", &typeid(KN<double>*)},          {"contactRadius", &typeid(double)},
-     {"contactGap", &typeid(KN<KN<double>>*)},   {"friction", &typeid(double)},
-     {"slipBound", &typeid(double)},             {"frictionField", &typeid(KN<KN<double>>*)},
-     {"Z", &typeid(KN<KN<double>>*)},             {"contactFaces", &typeid(KN<KN<long>>*)},
-     {"contactSlaveFaces", &typeid(KN<KN<long>>*)}, {"obstacleBall", &typeid(KN<double>*)},
-     {"slipBoundField", &typeid(KN<KN<double>>*)}, {"stiffnessOf", &typeid(KN<long>*)}},
+    [] {
+      NamedParameters names{
+          {"dirichlet", &typeid(KN<KN<long>>*)},         {"dirichletValues", &typeid(KN<KN<double>>*)},
+          {"contactSlave", &typeid(KN<KN<long>>*)},      {"contactMaster", &typeid(KN<KN<long>>*)},
+          {"gap", &typeid(double)},                      {"component", &typeid(KN<KN<long>>*)},
+          {"comm", &typeid(pcommworld)},                 {"contactSegments", &typeid(KN<KN<long>>*)},
+          {"contactRadius", &typeid(double)},            {"contactGap", &typeid(KN<KN<double>>*)},
+          {"friction", &typeid(double)},                 {"slipBound", &typeid(double)},
+          {"frictionField", &typeid(KN<KN<double>>*)},   {"Z", &typeid(KN<KN<double>>*)},
+          {"contactFaces", &typeid(KN<KN<long>>*)},      {"contactSlaveFaces", &typeid(KN<KN<long>>*)},
+          {"slipBoundField", &typeid(KN<KN<double>>*)},  {"stiffnessOf", &typeid(KN<long>*)}};
+      for (const ContactDiscretization* kind : kinds_with_input())
+        names.push_back({kind->input()->argument, &typeid(KN<double>*)});
+      return names;
+    }(),
     OptionScope::setup);
 
 // ---- fetiSetLoads(P, F, dirichletValues=D, contactGap=G): the next load case, load step

@@ -201,13 +201,16 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
     add_node_dofs(slaves, layouts, contact.slave_dofs);
     if (c.friction) set_friction(slaves, *c.friction, layouts, contact.friction_field);
     if (c.slip_bound) set_friction(slaves, *c.slip_bound, layouts, contact.slip_bound_field);
-    if (c.obstacle) {
-      if (contact.obstacle)
+    if (c.rigid()) {
+      if (contact.obstacle || !contact.kind_parameters.empty())
         throw InputError(problem.path + ": " + key + ": a second obstacle (one rigid obstacle per problem)");
-      contact.obstacle = true;
-      contact.obstacle_point = c.obstacle_point;  // z entries 0 in a plane problem
-      contact.obstacle_normal = c.obstacle_normal;
-      if (c.obstacle_curve > 0) obstacle_from_curve(problem, mesh, c, key, contact);
+      contact.kind_parameters = c.kind_parameters;  // a kind's own key (read through the registry)
+      if (c.obstacle) {
+        contact.obstacle = true;
+        contact.obstacle_point = c.obstacle_point;  // z entries 0 in a plane problem
+        contact.obstacle_normal = c.obstacle_normal;
+        if (c.obstacle_curve > 0) obstacle_from_curve(problem, mesh, c, key, contact);
+      }
     } else if (problem.components == 1) {  // node to node, matching meshes
       contact.master_dofs.resize(n);
       add_node_dofs(from_group(problem, key + ".master", [&] { return mesh.nodes(boundary, c.master); }), layouts,

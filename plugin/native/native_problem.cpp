@@ -142,7 +142,7 @@ void check_contact_bodies(const ProblemFile& problem, const GmshMesh& mesh, cons
     const ContactSpec& c = problem.contact[i];
     const std::string key = "contact[" + std::to_string(i) + "]";
     const std::set<int> slave = bodies_of_group(problem, mesh, split, c.slave, key + ".slave");
-    if (c.obstacle) continue;
+    if (c.rigid()) continue;
     const std::string kind = problem.dimension() == 3 ? "surface " : "curve ";
     for (int body : bodies_of_group(problem, mesh, split, c.master, key + ".master"))
       if (slave.count(body))

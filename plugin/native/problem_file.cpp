@@ -2,6 +2,7 @@
 
 #include "base/errors.h"
 #include "constraints/capabilities.h"
+#include "constraints/contact/contact_discretization.h"
 
 #include <nlohmann/json.hpp>
 
@@ -217,6 +218,30 @@ DirichletSpec read_dirichlet(ObjectReader& r, int components) {
   return d;
 }
 
+/// The key of a kind that owns its input (KindInput::file_key), one entry per field, into
+/// c.kind_parameters; the unit's checks name the key instead of the script's argument.
+void read_kind_input(ObjectReader& r, const ContactDiscretization& unit, int dimension, ContactSpec& c) {
+  const KindInput& spec = *unit.input();
+  ObjectReader o(r.child(spec.file_key), r.file(), r.path(spec.file_key));
+  std::vector<std::vector<double>> given;  // per field, empty where left out
+  for (const InputField& field : spec.fields)
+    given.push_back(!o.has(field.key) ? std::vector<double>{}
+                    : field.flag      ? std::vector<double>{o.required<bool>(field.key) ? 1.0 : 0.0}
+                    : field.size == 1 ? std::vector<double>{o.required<double>(field.key)}
+                                      : o.required<std::vector<double>>(field.key));
+  o.finish();
+  try {
+    std::vector<double> values = input_values(spec, given, dimension, r.file() + ": " + o.path(""));
+    unit.check_input(values, dimension);
+    require(unit.kind(), Feature::ffeti_solve, dimension, spec.argument);
+    c.kind_parameters[unit.kind()] = std::move(values);
+  } catch (const InputError& error) {
+    const std::string what = error.what(), argument = std::string(spec.argument) + ": ";
+    if (what.rfind(argument, 0) == 0) o.fail(r.path(spec.file_key), what.substr(argument.size()));
+    throw;
+  }
+}
+
 ContactSpec read_contact(ObjectReader& r, int components) {
   ContactSpec c;
   const int dimension = components == 3 ? 3 : 2;
@@ -235,13 +260,27 @@ ContactSpec read_contact(ObjectReader& r, int components) {
       if (!(std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) > 0)) o.fail(o.path("normal"), "must not be zero");
     }
     o.finish();
+  }
+  // The kind this entry makes (its row says where friction works); a kind's own key below.
+  ContactKind kind = components == 1 ? ContactKind::node_to_node
+                     : c.obstacle    ? ContactKind::obstacle
+                     : dimension == 3 ? ContactKind::node_to_face
+                                      : ContactKind::node_to_segment;
+  for (const ContactDiscretization* unit : kinds_with_input()) {
+    const char* key = unit->input()->file_key;
+    if (!key || !r.has(key)) continue;
+    if (c.rigid()) r.fail(r.path(key), "give one obstacle per contact entry");
+    read_kind_input(r, *unit, dimension, c);
+    kind = unit->kind();
+  }
+  if (c.rigid()) {
     if (components < 2) r.fail(r.path("obstacle"), "needs displacements (\"components\": 2 or 3)");
     if (r.has("master")) r.fail(r.path("master"), "give a master curve or an obstacle, not both");
   } else {
     c.master = r.required<int>("master");
   }
   // Each option only where it means something: node to segment or face searches, node to node has a gap.
-  const bool projected = components >= 2 && !c.obstacle;
+  const bool projected = components >= 2 && !c.rigid();
   if (r.has("search_distance")) {
     if (!projected)
       r.fail(r.path("search_distance"), "applies to node-to-segment or node-to-face contact (2 or 3 components, a master "
@@ -256,12 +295,6 @@ ContactSpec read_contact(ObjectReader& r, int components) {
   for (const auto& [key, law] : {std::pair<const char*, std::optional<double>*>{"friction", &c.friction},
                                  std::pair<const char*, std::optional<double>*>{"slip_bound", &c.slip_bound}}) {
     if (!r.has(key)) continue;
-    // The kind this entry makes: node to node for a scalar field, else an obstacle or the
-    // master group's segments (faces in a solid).
-    const ContactKind kind = components == 1 ? ContactKind::node_to_node
-                             : c.obstacle    ? ContactKind::obstacle
-                             : dimension == 3 ? ContactKind::node_to_face
-                                              : ContactKind::node_to_segment;
     if (!supports(kind, Feature::friction, dimension)) r.fail(r.path(key), unsupported(kind, Feature::friction, dimension));
     *law = r.required<double>(key);
     if (!(**law >= 0)) r.fail(r.path(key), "must be >= 0");

@@ -3,9 +3,11 @@
 // The format is documented in docs/reference.md ("ffeti-solve").
 #pragma once
 
+#include "constraints/capabilities.h"
 #include "service/options.h"
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -56,6 +58,12 @@ struct ContactSpec {
   bool obstacle = false;  ///< a rigid straight obstacle (a plane in 3D): a point and a normal, or a curve
   std::array<double, 3> obstacle_point{0, 0, 0}, obstacle_normal{0, 1, 0};  ///< z entries: 3D only
   int obstacle_curve = 0;  ///< > 0: a straight physical curve, its normal towards the slave
+  /// A kind that owns its input, given by its key (KindInput::file_key, read through
+  /// the registry: constraints/contact/contact_discretization.h): its entries, as its fetiSetup
+  /// argument takes them. At most one per entry.
+  std::map<ContactKind, std::vector<double>> kind_parameters;
+  /// A rigid obstacle (the plane's "obstacle" or a kind's own key): no master group.
+  bool rigid() const { return obstacle || !kind_parameters.empty(); }
   std::optional<double> friction;    ///< Coulomb coefficient of this entry's rows (capability table: where)
   std::optional<double> slip_bound;  ///< Tresca bound of each of this entry's rows, a force
 };

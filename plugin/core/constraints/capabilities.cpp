@@ -1,13 +1,13 @@
 #include "constraints/capabilities.h"
 
+#include "constraints/contact/contact_discretization.h"
+
 #include "base/errors.h"
 
 #include <sstream>
 
 namespace ffeti {
 namespace {
-
-constexpr Dimensions kNone{false, false}, kPlane{true, false}, kSolid{false, true}, kBoth{true, true};
 
 Dimensions cell(const KindCapabilities& k, Feature feature) {
   switch (feature) {
@@ -19,7 +19,7 @@ Dimensions cell(const KindCapabilities& k, Feature feature) {
     case Feature::ffeti_solve: return k.ffeti_solve;
     case Feature::contact_start: return k.contact_start;
   }
-  return kNone;
+  return kNowhere;
 }
 
 const char* feature_name(Feature feature) {
@@ -40,20 +40,14 @@ const char* dimension_name(int dimension) { return dimension == 3 ? "three dimen
 }  // namespace
 
 const std::vector<KindCapabilities>& capability_table() {
-  // kind, name, selected by: rows, friction, sensitivity, sensitivity with friction, MPI,
-  // ffeti-solve, fetiContactStart
-  static const std::vector<KindCapabilities> table = {
-      {ContactKind::node_to_node, "node-to-node", "contactSlave, contactMaster", kBoth, kBoth, kBoth, kNone, kBoth,
-       kPlane, kPlane},
-      {ContactKind::node_to_segment, "node-to-segment", "contactSlave, contactSegments", kPlane, kPlane, kPlane, kNone,
-       kPlane, kPlane, kPlane},
-      {ContactKind::obstacle, "obstacle", "contactSlave, obstacle", kBoth, kBoth, kBoth, kNone, kBoth, kBoth, kPlane},
-      {ContactKind::ball, "ball", "contactSlave, obstacleBall", kBoth, kBoth, kBoth, kNone, kBoth, kNone, kPlane},
-      {ContactKind::node_to_face, "node-to-face", "contactSlave, contactFaces", kSolid, kSolid, kSolid, kNone, kSolid,
-       kSolid, kNone},
-      {ContactKind::mortar, "mortar", "contactSlaveFaces, contactFaces", kSolid, kSolid, kSolid, kNone, kSolid,
-       kNone, kNone},
-  };
+  static const std::vector<KindCapabilities> table = [] {
+    std::vector<KindCapabilities> rows;
+    for (const auto& unit : contact_discretizations()) {
+      rows.push_back(unit->capabilities());
+      rows.back().kind = static_cast<ContactKind>(rows.size() - 1);
+    }
+    return rows;
+  }();
   return table;
 }
 

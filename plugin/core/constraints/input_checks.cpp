@@ -1,6 +1,7 @@
 #include "constraints/input_checks.h"
 
 #include "constraints/capabilities.h"
+#include "constraints/contact/contact_discretization.h"
 #include "constraints/surface_checks.h"
 
 #include "base/errors.h"
@@ -186,6 +187,31 @@ void check_subdomain(const SubdomainInput& sub, size_t s, bool check_K, const Su
       throw InputError(indexed("dirichletValues", s) + ": entry " + std::to_string(i) + " is not finite");
 }
 
+/// The input of the kinds that own theirs (ContactInput::kind_parameters), each checked by
+/// its unit. Such a kind takes the slave nodes of contactSlave: another kind for them is
+/// refused, naming both arguments.
+void check_kind_inputs(const ContactInput& contact, int dimension) {
+  const auto any = [](const auto& lists) {
+    return std::any_of(lists.begin(), lists.end(), [](const auto& list) { return !list.empty(); });
+  };
+  const auto& units = contact_discretizations();
+  for (const auto& [kind, values] : contact.kind_parameters) {
+    const ContactDiscretization& unit = *units.at(static_cast<size_t>(kind));
+    if (!unit.input()) throw InputError(std::string(unit.capabilities().name) + " contact takes no parameters");
+    unit.check_input(values, dimension);
+    const char* other = contact.obstacle                ? (contact.obstacle_radius > 0 ? "obstacleBall" : "obstacle")
+                        : any(contact.master_dofs)      ? "contactMaster"
+                        : any(contact.master_segments)  ? "contactSegments"
+                        : any(contact.master_faces)     ? "contactFaces"
+                        : contact.kind_parameters.size() > 1
+                            ? units.at(static_cast<size_t>(contact.kind_parameters.begin()->first))->input()->argument
+                            : nullptr;
+    if (other && other != unit.input()->argument)
+      throw InputError(std::string(unit.input()->argument) + ", " + other +
+                       ": the slave nodes of contactSlave take one kind of contact; give one");
+  }
+}
+
 /// Local subdomain k's name in messages: global_ids[k], or k itself.
 std::vector<size_t> message_ids(size_t count, const std::vector<int>& global_ids) {
   std::vector<size_t> ids;
@@ -291,6 +317,7 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
     if (contact.obstacle && !std::isfinite(v)) throw InputError("obstacle: the point and the normal must be finite");
   if (contact.obstacle_radius != 0 && !(contact.obstacle_radius > 0 && std::isfinite(contact.obstacle_radius)))
     throw InputError("obstacleBall: the radius must be finite and > 0, got " + std::to_string(contact.obstacle_radius));
+  check_kind_inputs(contact, dimension);
 
 }
 

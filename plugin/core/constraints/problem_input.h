@@ -2,8 +2,10 @@
 #pragma once
 
 #include "base/linear_algebra.h"
+#include "constraints/capabilities.h"
 
 #include <array>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -100,6 +102,10 @@ struct ContactInput {
   /// obstacle_point instead, the bodies outside it; each slave node s gets the row of the
   /// tangent plane at its nearest point, n = (s - c)/|s - c|: -n.u_s <= |s - c| - radius.
   double obstacle_radius = 0;
+  /// The input of the kinds that own theirs (constraints/contact/contact_discretization.h,
+  /// KindInput): per kind the entries of its fetiSetup argument (or of its problem-file key's
+  /// fields), read and checked by its unit. A kind given here takes the slave nodes of contactSlave.
+  std::map<ContactKind, std::vector<double>> kind_parameters;
   /// Set by the set-up (not the caller): the subdomains have a third coordinate.
   bool three_d = false;
   /// Friction (every kind; docs/algorithms.md, "Friction"): each contact row gets a

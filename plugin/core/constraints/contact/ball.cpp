@@ -24,6 +24,29 @@ Point3 BallGeometry::normal() const {
 
 std::vector<RowAt> BallGeometry::slip_rows() const { return rigid_slip_rows(slave, normal(), three_d()); }
 
+const KindInput* Ball::input() const {
+  static const KindInput spec{"obstacleBall", nullptr, {{"centre", InputField::kDimension}, {"radius", 1}}, 2,
+                              "[centre x, centre y, radius] (with Z: [cx, cy, cz, radius])"};
+  return &spec;
+}
+
+void Ball::read_input(const std::vector<double>& values, int dimension, ContactInput& contact) const {
+  if (contact.obstacle) throw InputError("obstacle, obstacleBall: give one obstacle, a plane or a ball");
+  const size_t n = values.size();
+  if (n != 3 && n != 4)
+    throw InputError(std::string("obstacleBall: needs ") + input()->layout + ", got " + std::to_string(n) + " entries");
+  if ((dimension == 3) != (n == 4))
+    throw InputError(dimension == 3 ? "obstacleBall: with Z (three dimensions) needs [cx, cy, cz, radius], got 3 entries"
+                                    : "obstacleBall: four entries (a ball) need Z (three dimensions); a plane problem "
+                                      "takes [cx, cy, radius] (a disc)");
+  const double radius = values[n - 1];
+  if (!(radius > 0 && std::isfinite(radius)))
+    throw InputError("obstacleBall: the radius must be finite and > 0, got " + std::to_string(radius));
+  contact.obstacle = true;
+  contact.obstacle_point = {values[0], values[1], n == 4 ? values[2] : 0.0};
+  contact.obstacle_radius = radius;
+}
+
 void Ball::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
   const ContactInput& contact = in.contact;
   const Point3& c = contact.obstacle_point;

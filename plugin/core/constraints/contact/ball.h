@@ -33,6 +33,17 @@ class BallGeometry final : public ContactRowGeometry {
 class Ball final : public ContactDiscretization {
  public:
   ContactKind kind() const override { return ContactKind::ball; }
+  /// name, selected by: rows, friction, sensitivity, sensitivity with friction, MPI, ffeti-solve,
+  /// fetiContactStart
+  KindCapabilities capabilities() const override {
+    return {kind(), "ball", "contactSlave, obstacleBall", kBothDimensions, kBothDimensions, kBothDimensions, kNowhere,
+            kBothDimensions, kNowhere, kPlaneOnly};
+  }
+  /// obstacleBall = [cx, cy, radius] (with Z: [cx, cy, cz, radius]).
+  const KindInput* input() const override;
+  /// Into ContactInput::obstacle, obstacle_point and obstacle_radius (one obstacle: a plane
+  /// given before is refused).
+  void read_input(const std::vector<double>& values, int dimension, ContactInput& contact) const override;
   bool selected(const ContactRecords& in) const override { return in.contact.obstacle && in.contact.obstacle_radius > 0; }
   void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;
 };

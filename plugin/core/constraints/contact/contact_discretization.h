@@ -1,13 +1,16 @@
-// One contact discretization (node to node, node to segment, obstacle, ball, node to face,
-// mortar) behind one interface: which input selects it and its rows, each with its
-// geometry (contact_row_geometry.h). build_constraints runs the registry in order; adding a
-// kind is a unit here, an entry in contact_discretizations() and one in capability_table().
+// One contact discretization (a kind: node to node, node to segment, a rigid obstacle, node
+// to face, mortar, ...) behind one interface: its capability row, the input it owns, which input
+// selects it and its rows, each with its geometry (contact_row_geometry.h). build_constraints
+// runs the registry in order; the capability table, fetiSetup's arguments and ffeti-solve's
+// keys of the kinds that own their input are built from it. Adding a kind is a unit here and
+// one line in contact_discretizations() (docs/architecture.md, "A contact kind").
 #pragma once
 
 #include "constraints/capabilities.h"
 #include "constraints/constraint_records.h"
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace ffeti {
@@ -25,10 +28,46 @@ struct ContactRecords {
   double snap;
 };
 
+/// One field of a kind's own input: `size` numbers (kDimension: as many as the problem has
+/// dimensions, a point or a vector), or a flag (true or false; 1 or 0 in a script's array).
+struct InputField {
+  static constexpr int kDimension = 0;
+  const char* key;  ///< its key in the problem file's object; its name in messages
+  int size;
+  bool flag = false;
+};
+
+/// The input a kind owns, read alike by both front ends: fetiSetup's real array `argument`
+/// holds the fields' entries in order (the optional ones, last, may be left out), a problem
+/// file's contact entry the object `file_key` with one key per field.
+struct KindInput {
+  const char* argument;  ///< fetiSetup's named argument: "obstacleBall"
+  const char* file_key;  ///< the key of a problem file's contact entry (nullptr: none)
+  std::vector<InputField> fields;
+  size_t required;       ///< the first `required` fields must be given
+  /// The array's layout, for messages: "[cx, cy, cz, radius]".
+  const char* layout;
+};
+
 class ContactDiscretization {
  public:
   virtual ~ContactDiscretization() = default;
-  virtual ContactKind kind() const = 0;
+  /// Its position in the registry (the kinds that other code names return their name).
+  virtual ContactKind kind() const;
+  /// Its row of the capability table (`kind` is set by the registry).
+  virtual KindCapabilities capabilities() const = 0;
+  /// The input it owns (nullptr: it reads ContactInput's shared lists).
+  virtual const KindInput* input() const { return nullptr; }
+  /// Checks the entries given to input()'s argument in a problem of `dimension` (2 or 3) and
+  /// stores them into `contact`: InputError "<argument>: ..." on bad entries. The default
+  /// keeps them as ContactInput::kind_parameters[kind()], checked by check_parameters.
+  virtual void read_input(const std::vector<double>& values, int dimension, ContactInput& contact) const;
+  /// InputError "<argument>: ..." unless `values`, as many as input()'s fields take, are a
+  /// valid input in `dimension` (a kind that keeps its input in kind_parameters).
+  virtual void check_parameters(const std::vector<double>& /*values*/, int /*dimension*/) const {}
+  /// The number of entries against input()'s fields, then check_parameters: read_input and
+  /// validate_input (a caller that fills kind_parameters itself) ask it.
+  void check_input(const std::vector<double>& values, int dimension) const;
   /// Whether the input asks for this kind (on all ranks' records alike).
   virtual bool selected(const ContactRecords& in) const = 0;
   /// Appends one contact row per slave node (or none where no master is within reach).
@@ -42,5 +81,14 @@ class ContactDiscretization {
 
 /// Every kind, in the order its rows follow one another in B.
 const std::vector<std::unique_ptr<const ContactDiscretization>>& contact_discretizations();
+
+/// The kinds that own their input (input() != nullptr), in the registry's order.
+std::vector<const ContactDiscretization*> kinds_with_input();
+
+/// The entries of a kind's array argument from its fields as read one by one (a problem
+/// file's object): `given[i]` empty where field i was left out. InputError naming the field
+/// (prefixed by `where`) for a missing required field or one of the wrong size.
+std::vector<double> input_values(const KindInput& input, const std::vector<std::vector<double>>& given, int dimension,
+                                 const std::string& where);
 
 }  // namespace ffeti

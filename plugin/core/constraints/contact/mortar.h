@@ -75,6 +75,12 @@ class MortarGeometry final : public ContactRowGeometry {
 class Mortar final : public ContactDiscretization {
  public:
   ContactKind kind() const override { return ContactKind::mortar; }
+  /// name, selected by: rows, friction, sensitivity, sensitivity with friction, MPI, ffeti-solve,
+  /// fetiContactStart
+  KindCapabilities capabilities() const override {
+    return {kind(), "mortar", "contactSlaveFaces, contactFaces", kSolidOnly, kSolidOnly, kSolidOnly, kNowhere, kSolidOnly,
+            kNowhere, kNowhere};
+  }
   /// Any slave face (ContactInput::slave_faces) on any rank.
   bool selected(const ContactRecords& in) const override;
   void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;

@@ -45,6 +45,12 @@ class FaceGeometry final : public ContactRowGeometry {
 class NodeToFace final : public ContactDiscretization {
  public:
   ContactKind kind() const override { return ContactKind::node_to_face; }
+  /// name, selected by: rows, friction, sensitivity, sensitivity with friction, MPI, ffeti-solve,
+  /// fetiContactStart
+  KindCapabilities capabilities() const override {
+    return {kind(), "node-to-face", "contactSlave, contactFaces", kSolidOnly, kSolidOnly, kSolidOnly, kNowhere,
+            kSolidOnly, kSolidOnly, kNowhere};
+  }
   /// Master faces without slave faces (those make mortar).
   bool selected(const ContactRecords& in) const override;
   void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;

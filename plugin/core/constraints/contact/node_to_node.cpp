@@ -4,6 +4,7 @@
 
 #include "base/errors.h"
 
+#include <algorithm>
 #include <optional>
 #include <string>
 
@@ -50,6 +51,12 @@ std::vector<RowAt> NodeToNodeGeometry::slip_rows() const {
     rows.push_back(std::move(row));
   }
   return rows;
+}
+
+bool NodeToNode::selected(const ContactRecords& in) const {
+  const auto& units = contact_discretizations();
+  return std::none_of(units.begin(), units.end(),
+                      [&](const auto& unit) { return unit.get() != this && unit->selected(in); });
 }
 
 void NodeToNode::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {

@@ -41,9 +41,15 @@ class NodeToNodeGeometry final : public ContactRowGeometry {
 class NodeToNode final : public ContactDiscretization {
  public:
   ContactKind kind() const override { return ContactKind::node_to_node; }
-  bool selected(const ContactRecords& in) const override {
-    return in.segments.empty() && in.faces.empty() && !in.contact.obstacle;
+  /// name, selected by: rows, friction, sensitivity, sensitivity with friction, MPI, ffeti-solve,
+  /// fetiContactStart
+  KindCapabilities capabilities() const override {
+    return {kind(), "node-to-node", "contactSlave, contactMaster", kBothDimensions, kBothDimensions, kBothDimensions, kNowhere,
+            kBothDimensions, kPlaneOnly, kPlaneOnly};
   }
+  /// The slaves' default pairing: where no other kind of the registry is selected (so a new
+  /// kind needs no word here).
+  bool selected(const ContactRecords& in) const override;
   /// With friction, also each pair's nodes by component (InputError where a tangential
   /// component is missing, a scalar field, or where two slave dofs share a node).
   void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;

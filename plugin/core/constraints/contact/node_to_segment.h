@@ -34,6 +34,12 @@ class NodeToSegmentGeometry final : public ContactRowGeometry {
 class NodeToSegment final : public ContactDiscretization {
  public:
   ContactKind kind() const override { return ContactKind::node_to_segment; }
+  /// name, selected by: rows, friction, sensitivity, sensitivity with friction, MPI, ffeti-solve,
+  /// fetiContactStart
+  KindCapabilities capabilities() const override {
+    return {kind(), "node-to-segment", "contactSlave, contactSegments", kPlaneOnly, kPlaneOnly, kPlaneOnly, kNowhere,
+            kPlaneOnly, kPlaneOnly, kPlaneOnly};
+  }
   bool selected(const ContactRecords& in) const override { return !in.segments.empty(); }
   void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;
   const char* searched_argument() const override { return "contactSegments"; }

@@ -22,6 +22,31 @@ RowAt ObstacleGeometry::row_at(const NodeMotion& v, double t) const {
 
 std::vector<RowAt> ObstacleGeometry::slip_rows() const { return rigid_slip_rows(slave, unit_normal, three_d()); }
 
+const KindInput* Obstacle::input() const {
+  static const KindInput spec{"obstacle", nullptr, {{"point", InputField::kDimension}, {"normal", InputField::kDimension}},
+                              2, "[point x, point y, normal x, normal y] (with Z: [px, py, pz, nx, ny, nz])"};
+  return &spec;
+}
+
+void Obstacle::read_input(const std::vector<double>& values, int dimension, ContactInput& contact) const {
+  if (values.size() != 4 && values.size() != 6)
+    throw InputError(std::string("obstacle: needs ") + input()->layout + ", got " + std::to_string(values.size()) +
+                     " entries");
+  // A line's four entries read as a plane would lie in z = 0 with a normal in the x-y plane:
+  // the rows then fail far from the cause.
+  if (dimension == 3 && values.size() == 4)
+    throw InputError("obstacle: with Z (three dimensions) needs six entries, a plane [px, py, pz, nx, ny, nz]; "
+                     "got four (a line of a plane problem)");
+  contact.obstacle = true;
+  if (values.size() == 6) {  // three dimensions: a plane (validate_input refuses z entries without Z)
+    contact.obstacle_point = {values[0], values[1], values[2]};
+    contact.obstacle_normal = {values[3], values[4], values[5]};
+  } else {
+    contact.obstacle_point = {values[0], values[1], 0.0};
+    contact.obstacle_normal = {values[2], values[3], 0.0};
+  }
+}
+
 void Obstacle::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
   const ContactInput& contact = in.contact;
   const auto& normal = contact.obstacle_normal;

@@ -30,6 +30,16 @@ class ObstacleGeometry final : public ContactRowGeometry {
 class Obstacle final : public ContactDiscretization {
  public:
   ContactKind kind() const override { return ContactKind::obstacle; }
+  /// name, selected by: rows, friction, sensitivity, sensitivity with friction, MPI, ffeti-solve,
+  /// fetiContactStart
+  KindCapabilities capabilities() const override {
+    return {kind(), "obstacle", "contactSlave, obstacle", kBothDimensions, kBothDimensions, kBothDimensions, kNowhere,
+            kBothDimensions, kBothDimensions, kPlaneOnly};
+  }
+  /// obstacle = [px, py, nx, ny] (with Z: [px, py, pz, nx, ny, nz]).
+  const KindInput* input() const override;
+  /// Into ContactInput::obstacle, obstacle_point and obstacle_normal.
+  void read_input(const std::vector<double>& values, int dimension, ContactInput& contact) const override;
   bool selected(const ContactRecords& in) const override {
     return in.contact.obstacle && !(in.contact.obstacle_radius > 0);
   }
