@@ -112,7 +112,7 @@ TEST(ProjectedGradient, ChopsNegativePartsOnlyOnTheActiveSet) {
   const Vec x = (Vec(4) << 0, 1, 0, 2).finished();
   const Vec g = (Vec(4) << -1, -1, 3, 5).finished();
   const Vec lower = (Vec(4) << 0, 0, 0, kUnbounded).finished();
-  const Vec gp = projected_gradient(x, g, qp::ConstraintSet::from_bounds(lower));
+  const Vec gp = qp::ConstraintSet::from_bounds(lower).projected_gradient(x, g);
   EXPECT_EQ(gp, (Vec(4) << -1, -1, 0, 5).finished());
 }
 

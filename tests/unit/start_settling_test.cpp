@@ -32,7 +32,7 @@ Vec nearly_right_start(const test::BoundQp& qp, unsigned seed) {
 TEST(SettleStart, LowersTheCostAndKeepsTheIterateFeasibleAndItsGradientExact) {
   const test::BoundQp qp = test::manufactured_bound_qp(60, 200, 7, true);
   Vec x = nearly_right_start(qp, 1);
-  project_onto_bounds(x, qp::ConstraintSet::from_bounds(qp.lower));
+  qp::ConstraintSet::from_bounds(qp.lower).project(x);
   Vec g = qp.A * x - qp.b;
   const double before = cost(qp, x);
   IterationCounts counts;
@@ -68,7 +68,7 @@ TEST(SettleStart, KeepsTheStartWhenTheProjectedFaceSolutionCostsMore) {
 TEST(SettleStart, StaysWithinTheMultiplicationBudget) {
   const test::BoundQp qp = test::manufactured_bound_qp(60, 1e4, 8, false);
   Vec x = nearly_right_start(qp, 2);
-  project_onto_bounds(x, qp::ConstraintSet::from_bounds(qp.lower));
+  qp::ConstraintSet::from_bounds(qp.lower).project(x);
   Vec g = qp.A * x - qp.b;
   IterationCounts counts;
   settle_start(test::dense_operator(qp.A), qp.b, qp::ConstraintSet::from_bounds(qp.lower), 5, 4, x, g, counts);

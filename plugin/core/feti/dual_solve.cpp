@@ -108,7 +108,7 @@ Vec DualSystem::run(DualPath route, Formulation formulation, const DualStop& sto
       record(result, mprgp(
                          qp, mprgp_for(settings), x, budget,
                          [&](const Vec& xi, const Vec& gi, double norm) {
-                           return converged(xi, projected_gradient_max(xi, gi, qp.constraints), norm);
+                           return converged(xi, qp.constraints.projected_gradient_max(xi, gi), norm);
                          },
                          settings.monitor));
       break;

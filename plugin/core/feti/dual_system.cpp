@@ -291,9 +291,10 @@ Vec DualSystem::lambda_from_shifted(const Vec& mu, const qp::ConstraintSet& boun
   // Multipliers at a bound are the bound exactly (0, or -g, g, or a pair of norm g), not
   // the bound plus the round-off of lambda~.
   Vec lambda = mu + data.lambda_tilde;
+  const Vec lower = bounds.lower(), upper = bounds.upper();
   const int first_friction = constraints_.first_friction_row();
   for (Eigen::Index i = 0; i < first_friction; ++i)
-    if (bounds.lower[i] != kUnbounded && mu[i] <= bounds.lower[i]) lambda[i] = 0.0;
+    if (lower[i] != kUnbounded && mu[i] <= lower[i]) lambda[i] = 0.0;
   if (constraints_.tangent_directions == 2) {  // a pair at its disc's boundary: on it exactly
     for (int i = first_friction; i < mu.size(); i += 2) {
       const double g = data.slip_bound[i - first_friction];
@@ -304,8 +305,8 @@ Vec DualSystem::lambda_from_shifted(const Vec& mu, const qp::ConstraintSet& boun
   }
   for (Eigen::Index i = first_friction; i < mu.size(); ++i) {
     const double g = data.slip_bound[i - first_friction];
-    if (mu[i] <= bounds.lower[i]) lambda[i] = -g;
-    else if (mu[i] >= bounds.upper[i]) lambda[i] = g;
+    if (mu[i] <= lower[i]) lambda[i] = -g;
+    else if (mu[i] >= upper[i]) lambda[i] = g;
   }
   return lambda;
 }
