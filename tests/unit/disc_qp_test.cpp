@@ -31,7 +31,7 @@ qp::Problem problem_of(const test::DiscQp& qp, const LinearOperator& preconditio
 MprgpResult solve(const test::DiscQp& qp, Vec& x, const MprgpSettings& settings = {},
                   const LinearOperator& preconditioner = {}) {
   const double tol = 1e-12 * qp.b.norm();
-  return mprgp(problem_of(qp, preconditioner), settings, x, test::kLargeBudget,
+  return mprgp(problem_of(qp, preconditioner), settings, x, test::large_budget(),
                [&](const Vec&, const Vec&, double norm) { return norm <= tol; });
 }
 
@@ -41,7 +41,7 @@ SmalbeResult solve_with_equality(const test::DiscQp& qp, Vec& x) {
   qp::Problem problem = problem_of(qp);
   problem.range_projector = test::dense_operator(Q);
   const double tol = 1e-12 * qp.b.norm();
-  return smalbe(problem, SmalbeSettings{}, x, test::kLargeBudget, [&](const Vec& xi, const Vec&, double gP) {
+  return smalbe(problem, SmalbeSettings{}, x, test::large_budget(), [&](const Vec& xi, const Vec&, double gP) {
     return gP <= tol && (Q * xi).norm() <= tol / kCondition;
   });
 }

@@ -69,11 +69,11 @@ TEST(QpProblem, EachSolverRefusesWhatItDoesNotSolve) {
   const qp::Problem bounded = test::bound_problem(test::dense_operator(bqp.A), bqp.b, bqp.lower, 11);
   const StopTest never = [](const Vec&, const Vec&, double) { return false; };
   Vec x = Vec::Zero(10);
-  EXPECT_THROW(conjugate_gradient(bounded, CgSettings{}, x, test::kLargeBudget, never), std::invalid_argument);
+  EXPECT_THROW(conjugate_gradient(bounded, CgSettings{}, x, test::large_budget(), never), std::invalid_argument);
   qp::Problem with_equality = bounded;
   with_equality.range_projector = test::dense_operator(Eigen::MatrixXd::Identity(10, 10));
-  EXPECT_THROW(mprgp(with_equality, MprgpSettings{}, x, test::kLargeBudget, never), std::invalid_argument);
-  EXPECT_THROW(smalbe(bounded, SmalbeSettings{}, x, test::kLargeBudget, never), std::invalid_argument);
+  EXPECT_THROW(mprgp(with_equality, MprgpSettings{}, x, test::large_budget(), never), std::invalid_argument);
+  EXPECT_THROW(smalbe(bounded, SmalbeSettings{}, x, test::large_budget(), never), std::invalid_argument);
   EXPECT_THROW(qp::Budget(0), std::invalid_argument);
 }
 
@@ -85,11 +85,11 @@ TEST(QpProblem, SmalbeReturnsItsMultiplierAndStartsFromIt) {
   const double tol = 1e-9 * eqp.b.norm();
   const StopTest stop = [&](const Vec& x, const Vec&, double gp) { return gp <= tol && (eqp.Q * x).norm() <= tol; };
   Vec x = Vec::Zero(30);
-  const SmalbeResult cold = smalbe(problem, SmalbeSettings{}, x, test::kLargeBudget, stop);
+  const SmalbeResult cold = smalbe(problem, SmalbeSettings{}, x, test::large_budget(), stop);
   ASSERT_EQ(cold.status, SolveStatus::converged);
   ASSERT_EQ(cold.multiplier.size(), 30);
   problem.equality_multiplier = cold.multiplier;
-  const SmalbeResult warm = smalbe(problem, SmalbeSettings{}, x, test::kLargeBudget, stop);
+  const SmalbeResult warm = smalbe(problem, SmalbeSettings{}, x, test::large_budget(), stop);
   EXPECT_EQ(warm.status, SolveStatus::converged);
   EXPECT_LE(warm.counts.hessian, 2);
   EXPECT_LT(warm.counts.hessian, cold.counts.hessian);

@@ -83,7 +83,7 @@ TEST(MprgpSettled, ReachesTheKnownSolutionFromANearlyRightStart) {
     settings.settle_rounds = rounds;
     Vec x = nearly_right_start(qp, 3), g;
     const double tol = 1e-10 * qp.b.norm();
-    const MprgpResult result = mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 510), settings, x, g, false, test::kLargeBudget,
+    const MprgpResult result = mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 510), settings, x, g, false, test::large_budget(),
                                      [&](const Vec&, const Vec&, double gp) { return gp <= tol; });
     ASSERT_EQ(result.status, SolveStatus::converged) << rounds << " rounds";
     EXPECT_LT((x - qp.x_star).norm(), 1e-7 * qp.x_star.norm()) << rounds << " rounds";
@@ -96,7 +96,7 @@ TEST(MprgpSettled, ReturnsAStartThatAlreadyPassesTheTestUntouched) {
   MprgpSettings settings;
   settings.settle_rounds = 2;
   Vec x = qp.x_star, g;
-  const MprgpResult result = mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 105), settings, x, g, false, test::kLargeBudget,
+  const MprgpResult result = mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 105), settings, x, g, false, test::large_budget(),
                                    [&](const Vec&, const Vec&, double gp) { return gp <= 1e-8 * qp.b.norm(); });
   ASSERT_EQ(result.status, SolveStatus::converged);
   EXPECT_EQ(result.counts.hessian, 1);  // the start's gradient only

@@ -231,7 +231,7 @@ double CoarseSpace::feasibility_residual(const Vec& e, const qp::ConstraintSet& 
   const double stop_at = 1e-12 * distance_qp.b.norm();
   double distance = -1.0;  // of the last iterate, relative
   // G'G is small (r x m, r the rigid modes): a generous fixed budget, whatever maxit.
-  const qp::Budget budget(20000);
+  qp::Budget budget(20000);
   const MprgpResult r = mprgp(distance_qp, MprgpSettings{}, lambda, budget, [&](const Vec& x, const Vec&, double gp) {
     distance = (G_ * x - e).norm() / e_norm;
     return distance <= enough || gp <= stop_at;

@@ -51,7 +51,7 @@ const char* path_name(DualPath path) {
 }
 
 Vec DualSystem::run(DualPath route, Formulation formulation, const DualStop& stop, const DualSolveSettings& settings,
-                    const DualWarmStart& warm, DualSolution& result) const {
+                    const DualWarmStart& warm, qp::Budget& budget, DualSolution& result) const {
   // The solver's Hessian multiplications timed as a whole: F with its projections around it.
   formulation.qp.hessian = [hessian = std::move(formulation.qp.hessian), &result](const Vec& x, Vec& y) {
     const Stopwatch clock;
@@ -74,7 +74,6 @@ Vec DualSystem::run(DualPath route, Formulation formulation, const DualStop& sto
                                                              : formulation.equality_norm(mu());
     return stop(x, mu, gradient_inf, gradient_norm, result.equality_norm, result.equality_reference);
   };
-  const qp::Budget budget(settings.max_hessian);
   Vec& x = formulation.start;
   switch (route) {
     case DualPath::cholesky: throw std::logic_error("run: the cholesky path has no dual QP");
@@ -130,7 +129,12 @@ DualSolution DualSystem::solved_by_subdomains(const DualData& data, DualSolution
 
 DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& settings,
                                const DualWarmStart& warm) const {
-  settings.validate();
+  qp::Budget budget = settings.validate();
+  return solve(data, settings, warm, budget);
+}
+
+DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& settings, const DualWarmStart& warm,
+                               qp::Budget& budget) const {
   DualSolution result = prepared(data, settings);
   const DualPath route = path();
   if (route == DualPath::cholesky) return solved_by_subdomains(data, std::move(result));
@@ -160,10 +164,10 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
   Vec lambda;
   if (route == DualPath::cg || route == DualPath::projected_cg) {
     Formulation qp = route == DualPath::cg ? plain_qp(data, settings, result, nullptr) : projected_qp(data, settings);
-    lambda = run(route, std::move(qp), stop_for(result), settings, warm, result) + data.lambda_tilde;
+    lambda = run(route, std::move(qp), stop_for(result), settings, warm, budget, result) + data.lambda_tilde;
   } else if (route == DualPath::mprgp) {
     Formulation qp = conjugate_ ? conjugate_qp(data, settings, result, bounds) : plain_qp(data, settings, result, &bounds);
-    lambda = lambda_from_shifted(run(route, std::move(qp), stop_for(result), settings, warm, result), bounds, data);
+    lambda = lambda_from_shifted(run(route, std::move(qp), stop_for(result), settings, warm, budget, result), bounds, data);
   } else if (const double resolution = std::max(settings.feasibility_tolerance > 0 ? settings.feasibility_tolerance
                                                                                 : settings.tolerance,
                                                 kFeasibilityResolution),
@@ -180,7 +184,7 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     Formulation qp = settings.coarse_constraints == CoarseConstraints::free_rows
                          ? free_rows_qp(data, settings, result, bounds)
                          : penalty_qp(data, settings, result, bounds);
-    lambda = lambda_from_shifted(run(route, std::move(qp), stop_for(result), settings, warm, result), bounds, data);
+    lambda = lambda_from_shifted(run(route, std::move(qp), stop_for(result), settings, warm, budget, result), bounds, data);
   }
   // Stopped at round-off: not converged to tol, and not a solve cut short by maxit either.
   if (kkt_stop.stagnated() && result.status == SolveStatus::converged) result.status = SolveStatus::stagnated;
@@ -210,7 +214,7 @@ std::vector<DualSolution> DualSystem::solve(const std::vector<DualData>& data,
     for (const DualData& d : data) results.push_back(solve(d, settings));
     return results;
   }
-  settings.validate();
+  const qp::Budget budget = settings.validate();
   std::vector<Vec> b, mu(data.size(), Vec::Zero(rows()));
   std::vector<StopTest> stop;
   for (const DualData& d : data) {
@@ -230,7 +234,7 @@ std::vector<DualSolution> DualSystem::solve(const std::vector<DualData>& data,
         else F_->apply(x, y);
         hessian_seconds += hessian_clock.seconds();
       },
-      b, mu, CgSettings{}, qp::Budget(settings.max_hessian), stop,
+      b, mu, CgSettings{}, budget, stop,
       coarse_ ? projected_preconditioner() : preconditioner_operator());
   const double seconds = solve_clock.seconds() / static_cast<double>(data.size());
   const int runs = static_cast<int>(data.size());

@@ -14,13 +14,8 @@
 
 namespace ffeti {
 
-void DualSolveSettings::validate() const {
+qp::Budget DualSolveSettings::validate() const {
   if (!(tolerance > 0 && tolerance < 1)) throw InputError("tol: must lie in (0, 1)");
-  try {
-    const qp::Budget budget(max_hessian);  // its check, once
-  } catch (const std::invalid_argument& error) {
-    throw InputError(error.what());
-  }
   const std::pair<const char*, double> positive[] = {
       {"rho", smalbe.rho_factor}, {"M", smalbe.M_factor}, {"eta", smalbe.eta_factor}, {"gamma", mprgp.gamma}};
   for (const auto& [name, value] : positive)
@@ -31,6 +26,7 @@ void DualSolveSettings::validate() const {
   try {
     smalbe.validate();
     mprgp.validate();
+    return qp::Budget(max_hessian);  // its check of maxit
   } catch (const std::invalid_argument& error) {
     throw InputError(error.what());
   }

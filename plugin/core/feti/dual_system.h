@@ -72,6 +72,11 @@ class DualSystem {
   /// Solves the dual problem and recovers u. Never throws for non-convergence: see status.
   /// Collective.
   DualSolution solve(const DualData& data, const DualSolveSettings& settings, const DualWarmStart& warm = {}) const;
+  /// The same as one of several solves of a user call (friction's fixed point): `settings`
+  /// validated by the caller, whose `budget` (DualSolveSettings::validate) this solve's
+  /// solvers charge. Collective.
+  DualSolution solve(const DualData& data, const DualSolveSettings& settings, const DualWarmStart& warm,
+                     qp::Budget& budget) const;
 
   /// Solves the dual problems of several right-hand sides. On the CG paths with the seed's
   /// test their CG runs go in lockstep and share each application of F (a block of vectors,
@@ -146,7 +151,7 @@ class DualSystem {
 
   // The dispatcher's pieces (dual_solve.cpp).
   Vec run(DualPath route, Formulation formulation, const DualStop& stop, const DualSolveSettings& settings,
-          const DualWarmStart& warm, DualSolution& result) const;  // the route's solver on the formulation; returns mu
+          const DualWarmStart& warm, qp::Budget& budget, DualSolution& result) const;  // the route's solver on the formulation; returns mu
   DualSolution solved_by_subdomains(const DualData& data, DualSolution result) const;  // the cholesky path
 
   const SubdomainList& subdomains_;

@@ -25,6 +25,19 @@ void fixed_projected_step(Vec& x, const Vec& g, const Vec& phi, const qp::Constr
 /// exceeds it; g is recomputed then, and before any return.
 constexpr double kSlideGradientError = 1e-2;
 
+/// Charges the budget with a solve's multiplications, whichever way the solve returns.
+class BudgetCharge {
+ public:
+  BudgetCharge(qp::Budget& budget, const IterationCounts& counts) : budget_(budget), counts_(counts) {}
+  BudgetCharge(const BudgetCharge&) = delete;
+  BudgetCharge& operator=(const BudgetCharge&) = delete;
+  ~BudgetCharge() { budget_.charge(counts_.hessian); }
+
+ private:
+  qp::Budget& budget_;
+  const IterationCounts& counts_;
+};
+
 /// The CG step x - a_cg p (a_cg within the feasible step, pairs on their circle left out).
 /// On flat faces that is all. Pairs on their circle move along its tangent and leave it by
 /// a second-order amount: they go back onto it radially (delta), which changes g by A delta;
@@ -81,7 +94,7 @@ void MprgpSettings::validate() const {
 }
 
 
-MprgpResult mprgp(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, const qp::Budget& budget,
+MprgpResult mprgp(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, qp::Budget& budget,
                   const StopTest& stop, const Monitor& monitor) {
   Vec g;
   double g_unused_error = 0;  // g is not returned: not recomputed at the end either
@@ -89,7 +102,7 @@ MprgpResult mprgp(const qp::Problem& problem, const MprgpSettings& settings, Vec
 }
 
 MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, Vec& g,
-                                bool gradient_is_current, const qp::Budget& budget, const StopTest& stop,
+                                bool gradient_is_current, qp::Budget& budget, const StopTest& stop,
                                 const Monitor& monitor, double* inexact_gradient) {
   const LinearOperator& A = problem.hessian;
   const Vec& b = problem.b;
@@ -105,6 +118,8 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
   if (problem.range_projector) throw std::invalid_argument("MPRGP: the problem has an equality part (SMALBE's)");
   const double abar = settings.step_factor / a_norm;
   IterationCounts& counts = result.counts;
+  const int max_hessian = budget.remaining();  // this solve's share
+  const BudgetCharge charge(budget, counts);
 
   auto multiply = [&](const Vec& v, Vec& Av) { A(v, Av); ++counts.hessian; };
   Vec phi(n), beta(n), p(n), Ap(n), z(n), step_Ap(n), trial, trial_gradient, A_trial;
@@ -178,13 +193,13 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
       exact_gradient();
       return result;
     }
-    if (counts.hessian >= budget.max_hessian()) {
+    if (counts.hessian >= max_hessian) {
       result.status = SolveStatus::max_iterations;
       exact_gradient();
       return result;
     }
     if (iteration == 0 && settings.settle_rounds > 0) {  // a start that passes the test is kept as is
-      settle_start(A, b, set, settings.settle_rounds, budget.max_hessian(), x, g, counts, preconditioner, monitor);
+      settle_start(A, b, set, settings.settle_rounds, max_hessian, x, g, counts, preconditioner, monitor);
       set.free_gradient(x, g, a_norm, phi);
       p = precondition_in_face();
       continue;

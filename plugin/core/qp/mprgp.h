@@ -38,7 +38,8 @@ using MprgpResult = QpResult;
 /// start x (projected onto the bounds first; then, unless it passes the stop test, settled
 /// by `settings.settle_rounds` face solves); x is the last iterate on return. Needs
 /// `problem.hessian_norm`, an upper estimate of ||A||_2. `stop` receives x, g = Ax - b and
-/// ||gP(x)||_2. With a preconditioner M (symmetric positive definite), the conjugate
+/// ||gP(x)||_2. Multiplies at most what the budget has left on entry, and charges it with
+/// what it spent on return. With a preconditioner M (symmetric positive definite), the conjugate
 /// gradient steps are preconditioned in face: their directions come from M applied to the
 /// free gradient, restricted to the free set (an SPD preconditioner of the face's reduced
 /// problem); the expansion and proportioning steps, and so the convergence guarantees, are
@@ -51,7 +52,7 @@ using MprgpResult = QpResult;
 /// whose circle curves more than 0.3 ||A|| holds its tangent instead, the fixed step
 /// goes along g - beta, and proportioning releases pairs radially into their discs (with
 /// held stiff pairs, the projected step P(x - abar (g - phi)) that also turns them).
-MprgpResult mprgp(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, const qp::Budget& budget,
+MprgpResult mprgp(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, qp::Budget& budget,
                   const StopTest& stop, const Monitor& monitor = {});
 
 /// The same, continued from an iterate whose gradient is known: if `gradient_is_current`,
@@ -60,7 +61,7 @@ MprgpResult mprgp(const qp::Problem& problem, const MprgpSettings& settings, Vec
 /// With `inexact_gradient` (discs only make it nonzero) g may be off by up to that bound, in
 /// and out: g is recomputed only when the bound exceeds 1e-2 ||gP||, not on every return.
 MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, Vec& g,
-                                bool gradient_is_current, const qp::Budget& budget, const StopTest& stop,
+                                bool gradient_is_current, qp::Budget& budget, const StopTest& stop,
                                 const Monitor& monitor = {}, double* inexact_gradient = nullptr);
 
 }  // namespace ffeti

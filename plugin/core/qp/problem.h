@@ -3,11 +3,13 @@
 // components and, optionally, C x = 0 given by Q, the orthogonal projector onto Im C'.
 // CG, MPRGP and SMALBE take it under one signature:
 //   Result solver(const qp::Problem&, const Settings&, Vec& x /* start in, iterate out */,
-//                 const qp::Budget&, const StopTest&, const Monitor& = {})
+//                 qp::Budget& /* charged with its multiplications */, const StopTest&,
+//                 const Monitor& = {})
 // A formulation (feti/dual_formulations.cpp) builds one; the solver that fits is chosen
 // by the caller's path, not by which members are set.
 #pragma once
 
+#include "qp/budget.h"
 #include "qp/constraint_set.h"
 #include "qp/qp_types.h"
 
@@ -29,19 +31,6 @@ struct Problem {
   ConstraintSet constraints;       ///< one block per group of components (qp/constraint_set.h)
 
   Eigen::Index size() const { return b.size(); }
-};
-
-/// What a solve may spend: Hessian multiplications, counted over everything it calls (a
-/// nested solve gets what remains, never a fresh copy). Checked once, here.
-class Budget {
- public:
-  explicit Budget(int max_hessian);  ///< throws std::invalid_argument unless max_hessian >= 1
-  int max_hessian() const { return max_hessian_; }
-  /// What remains after `spent` multiplications (at least 0).
-  int remaining(int spent) const { return spent >= max_hessian_ ? 0 : max_hessian_ - spent; }
-
- private:
-  int max_hessian_;
 };
 
 }  // namespace ffeti::qp

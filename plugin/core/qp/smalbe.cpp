@@ -16,7 +16,7 @@ void SmalbeSettings::validate() const {
   inner.validate();
 }
 
-SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, Vec& x, const qp::Budget& budget,
+SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, Vec& x, qp::Budget& budget,
                     const StopTest& stop, const Monitor& monitor) {
   settings.validate();
   if (!problem.hessian || !problem.range_projector) throw std::invalid_argument("SMALBE: incomplete problem");
@@ -90,7 +90,7 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
                                                                         : M * q_norm;
       return gp_norm <= bound;
     };
-    if (result.counts.hessian >= budget.max_hessian()) {
+    if (budget.exhausted()) {  // the inner solves charged it
       result.status = SolveStatus::max_iterations;
       return result;
     }
@@ -100,7 +100,7 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
     inner_problem.hessian_norm = std::max(problem.hessian_norm, rho);
     const MprgpResult inner_result =
         mprgp_with_gradient(inner_problem, inner, x, g, gradient_is_current,
-                            qp::Budget(budget.remaining(result.counts.hessian)), inner_stop, {}, &gradient_error);
+                            budget, inner_stop, {}, &gradient_error);
     result.counts += inner_result.counts;
     result.rho = rho;
     if (globally_done) {

@@ -1,4 +1,4 @@
-#include "qp/problem.h"
+#include "qp/budget.h"
 
 #include <stdexcept>
 
