@@ -137,22 +137,22 @@ void DualSystem::charge_operator_use(const OperatorUse& start, double sign, int 
 }
 
 void DualSystem::apply_PFP(const Vec& x, Vec& y) const {
-  coarse_->project(x, projected_);
-  F_->apply(projected_, applied_);
-  coarse_->project(applied_, y);  // y = P F P x
+  coarse_->project(x, work_.projected);
+  F_->apply(work_.projected, work_.applied);
+  coarse_->project(work_.applied, y);  // y = P F P x
 }
 
 void DualSystem::apply_PFP(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
-  block_projected_.resize(x.rows(), x.cols());
+  work_.block_projected.resize(x.rows(), x.cols());
   for (Eigen::Index j = 0; j < x.cols(); ++j) {
-    coarse_->project(x.col(j), projected_);
-    block_projected_.col(j) = projected_;
+    coarse_->project(x.col(j), work_.projected);
+    work_.block_projected.col(j) = work_.projected;
   }
-  F_->apply(block_projected_, block_applied_);
+  F_->apply(work_.block_projected, work_.block_applied);
   y.resize(x.rows(), x.cols());
   for (Eigen::Index j = 0; j < x.cols(); ++j) {
-    coarse_->project(block_applied_.col(j), projected_);
-    y.col(j) = projected_;
+    coarse_->project(work_.block_applied.col(j), work_.projected);
+    y.col(j) = work_.projected;
   }
 }
 
