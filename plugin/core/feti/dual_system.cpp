@@ -47,6 +47,12 @@ DualSystem::DualSystem(const SubdomainList& subdomains, const std::vector<int>& 
   if (comm.sum(local_floating) > 0)
     coarse_ = std::make_unique<CoarseSpace>(subdomains_, local_, global_ids, constraints_.rows(),
                                             constraints_.equality_rows, bodies, comm, coarse_gram);
+  // The path, once: the rows' kinds and the coarse space never change after this (a new
+  // right-hand side keeps the rows, replace_right_hand_side).
+  const bool inequalities = constraints_.inequality_rows() > 0, floating = coarse_ != nullptr;
+  if (constraints_.rows() == 0) path_ = DualPath::cholesky;
+  else if (!inequalities) path_ = floating ? DualPath::projected_cg : DualPath::cg;
+  else path_ = floating ? DualPath::smalbe : DualPath::mprgp;
 }
 
 void DualSystem::replace_right_hand_side(Constraints rebuilt) {
@@ -77,14 +83,6 @@ void DualSystem::use_preconditioner(DualPreconditioner kind, const std::vector<c
 LinearOperator DualSystem::preconditioner_operator() const {
   if (!preconditioner_) return {};
   return [this](const Vec& x, Vec& y) { preconditioner_->apply(x, y); };
-}
-
-DualPath DualSystem::path() const {
-  const bool inequalities = constraints_.inequality_rows() > 0;
-  const bool floating = coarse_ != nullptr;
-  if (constraints_.rows() == 0) return DualPath::cholesky;
-  if (!inequalities) return floating ? DualPath::projected_cg : DualPath::cg;
-  return floating ? DualPath::smalbe : DualPath::mprgp;
 }
 
 DualData DualSystem::data(std::vector<Vec> loads, const Vec& c) const {

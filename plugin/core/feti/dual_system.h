@@ -52,8 +52,9 @@ class DualSystem {
   /// on every subdomain; candidate_kernel), used by every later solve. Collective.
   void use_conjugate_projector(const std::vector<Eigen::MatrixXd>& modes);
   int rows() const { return constraints_.rows(); }
-  /// The solver path the constraints call for (ALGORITHMS.md section 6).
-  DualPath path() const;
+  /// The solver path the constraints call for (ALGORITHMS.md section 6), chosen once by the
+  /// constructor.
+  DualPath path() const { return path_; }
 
   /// Preconditions every path with the Dirichlet (or lumped) preconditioner built from
   /// `operator_matrices` (this rank's K as the dual operator sees them): CG and projected CG
@@ -165,6 +166,7 @@ class DualSystem {
   std::unique_ptr<SubdomainSum> sum_;
   std::unique_ptr<DualOperator> F_;
   std::unique_ptr<CoarseSpace> coarse_;
+  DualPath path_ = DualPath::cholesky;
   std::unique_ptr<ConjugateProjector> conjugate_;
   std::unique_ptr<DirichletPreconditioner> preconditioner_;
   DualPreconditioner preconditioner_kind_ = DualPreconditioner::none;
