@@ -53,8 +53,9 @@ class SetKind {
   virtual bool contains(const Vec& x) const = 0;
 
   /// Restricts v to the face of x: 0 where x is at a bound (both ways for a pinned
-  /// component), the tangent on a disc pair on its circle, 0 on a pair whose circle curves
-  /// more than the disc holds free (qp/disc_set.h). The free gradient phi is g so restricted.
+  /// component), the tangent on a disc pair on its circle, 0 on a pair on a circle that
+  /// curves too much there for its tangent to count as free (qp/disc_set.h). The free
+  /// gradient phi is g so restricted.
   virtual void restrict_to_face(const Vec& x, const Vec& g, double a_norm, Vec& v) const = 0;
   /// face[i] = 0 where x_i is held (at a bound, a disc pair not strictly inside): the
   /// components a face solve keeps fixed (qp/start_settling.h).
