@@ -105,7 +105,7 @@ TEST(BoxBounds, MprgpFindsTheEnumeratedSolution) {
       settings.expansion = expansion;
       const double tol = 1e-12 * qp.b.norm();
       const MprgpResult r = mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 1.05 * 50.0, qp.upper), settings, x, g, false,
-                                  test::kLargeBudget, [&](const Vec&, const Vec&, double norm) { return norm <= tol; });
+                                  test::large_budget(), [&](const Vec&, const Vec&, double norm) { return norm <= tol; });
       ASSERT_EQ(r.status, SolveStatus::converged) << "seed " << seed;
       EXPECT_LT((x - reference).norm(), 1e-8 * reference.norm()) << "seed " << seed;
       for (int i = 0; i < 7; ++i) {
@@ -127,7 +127,7 @@ TEST(BoxBounds, PinnedComponentsStayAndTheRestIsSolved) {
     Vec x = Vec::Zero(7), g;
     const double tol = 1e-12 * qp.b.norm();
     const MprgpResult r = mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 1.05 * 50.0, qp.upper), MprgpSettings{}, x, g, false,
-                                  test::kLargeBudget, [&](const Vec&, const Vec&, double norm) { return norm <= tol; });
+                                  test::large_budget(), [&](const Vec&, const Vec&, double norm) { return norm <= tol; });
     ASSERT_EQ(r.status, SolveStatus::converged) << "seed " << seed;
     EXPECT_LT(r.counts.hessian, 200) << "seed " << seed;
     EXPECT_LT((x - reference).norm(), 1e-8 * reference.norm()) << "seed " << seed;
@@ -159,7 +159,7 @@ TEST(BoxBounds, PreconditionedMprgpAgrees) {
   const double tol = 1e-12 * qp.b.norm();
   const MprgpResult r = mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 105.0, qp.upper,
                                                                 test::dense_operator(jacobi)),
-                            MprgpSettings{}, x, g, false, test::kLargeBudget,
+                            MprgpSettings{}, x, g, false, test::large_budget(),
                             [&](const Vec&, const Vec&, double norm) { return norm <= tol; });
   ASSERT_EQ(r.status, SolveStatus::converged);
   EXPECT_GT(r.counts.preconditioner, 0);
@@ -174,9 +174,9 @@ TEST(BoxBounds, InfiniteUpperBoundsChangeNoIterate) {
   const double tol = 1e-10 * qp.b.norm();
   const auto stop = [&](const Vec&, const Vec&, double norm) { return norm <= tol; };
   Vec x1 = Vec::Zero(40), g1, x2 = Vec::Zero(40), g2;
-  const MprgpResult a = mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 1.05e3), MprgpSettings{}, x1, g1, false, test::kLargeBudget, stop);
+  const MprgpResult a = mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 1.05e3), MprgpSettings{}, x1, g1, false, test::large_budget(), stop);
   const MprgpResult b =
-      mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 1.05e3, upper), MprgpSettings{}, x2, g2, false, test::kLargeBudget, stop);
+      mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 1.05e3, upper), MprgpSettings{}, x2, g2, false, test::large_budget(), stop);
   EXPECT_EQ(a.counts.hessian, b.counts.hessian);
   EXPECT_EQ(a.counts.expansion, b.counts.expansion);
   EXPECT_EQ(a.counts.proportioning, b.counts.proportioning);
@@ -196,7 +196,7 @@ TEST(BoxBounds, SmalbeWithAnEqualityFindsTheEnumeratedSolution) {
   problem.range_projector = test::dense_operator(Q);
   Vec x = Vec::Zero(n);
   const double tol = 1e-11 * qp.b.norm();
-  const SmalbeResult r = smalbe(problem, SmalbeSettings{}, x, test::kLargeBudget, [&](const Vec& xi, const Vec&, double gP) {
+  const SmalbeResult r = smalbe(problem, SmalbeSettings{}, x, test::large_budget(), [&](const Vec& xi, const Vec&, double gP) {
     return gP <= tol && (Q * xi).norm() <= tol;
   });
   ASSERT_EQ(r.status, SolveStatus::converged);

@@ -11,7 +11,7 @@ TEST(ConjugateGradient, SolvesAnSpdSystem) {
   const Vec x_star = Vec::LinSpaced(50, -1, 1);
   const Vec b = A * x_star;
   Vec x = Vec::Zero(50);
-  const CgResult result = conjugate_gradient(test::free_problem(test::dense_operator(A), b), CgSettings{}, x, test::kLargeBudget,
+  const CgResult result = conjugate_gradient(test::free_problem(test::dense_operator(A), b), CgSettings{}, x, test::large_budget(),
       [&](const Vec&, const Vec&, double norm) { return norm <= 1e-12 * b.norm(); });
   ASSERT_EQ(result.status, SolveStatus::converged);
   EXPECT_LT((x - x_star).norm(), 1e-9 * x_star.norm());
@@ -25,7 +25,7 @@ TEST(ConjugateGradient, ToleranceBelowRoundOffIsStagnationNotConvergence) {
   const Eigen::MatrixXd A = test::random_spd(50, 1e8, 5);
   const Vec b = A * Vec::LinSpaced(50, -1, 1);
   Vec x = Vec::Zero(50);
-  const CgResult result = conjugate_gradient(test::free_problem(test::dense_operator(A), b), CgSettings{}, x, test::kLargeBudget,
+  const CgResult result = conjugate_gradient(test::free_problem(test::dense_operator(A), b), CgSettings{}, x, test::large_budget(),
       [&](const Vec&, const Vec&, double norm) { return norm <= 1e-20 * b.norm(); });
   EXPECT_EQ(result.status, SolveStatus::stagnated);
   EXPECT_NEAR(result.gradient_norm, (A * x - b).norm(), 1e-12 * b.norm());  // the true gradient
@@ -42,7 +42,7 @@ TEST(ConjugateGradient, ProjectedOperatorStaysInTheSubspace) {
   const Eigen::MatrixXd A = P * M * P;
   const Vec b = P * Vec::LinSpaced(40, 0, 3);
   Vec x = Vec::Zero(40);
-  const CgResult result = conjugate_gradient(test::free_problem(test::dense_operator(A), b), CgSettings{}, x, test::kLargeBudget,
+  const CgResult result = conjugate_gradient(test::free_problem(test::dense_operator(A), b), CgSettings{}, x, test::large_budget(),
       [&](const Vec&, const Vec&, double norm) { return norm <= 1e-11 * b.norm(); });
   ASSERT_EQ(result.status, SolveStatus::converged);
   EXPECT_LT((C * x).norm(), 1e-10);
@@ -54,7 +54,7 @@ TEST(ConjugateGradient, IndefiniteOperatorIsReported) {
   A(1, 1) = -2;
   const Vec b = Vec::Ones(3);
   Vec x = Vec::Zero(3);
-  const CgResult result = conjugate_gradient(test::free_problem(test::dense_operator(A), b), CgSettings{}, x, test::kLargeBudget,
+  const CgResult result = conjugate_gradient(test::free_problem(test::dense_operator(A), b), CgSettings{}, x, test::large_budget(),
       [](const Vec&, const Vec&, double norm) { return norm <= 1e-14; });
   EXPECT_EQ(result.status, SolveStatus::not_positive_definite);
 }
@@ -76,11 +76,11 @@ TEST(ConjugateGradient, BlockRunsEachSystemAsOnItsOwn) {
         block_columns += static_cast<int>(X.cols());
         Y = A * X;
       },
-      b, x, CgSettings{}, test::kLargeBudget, stop);
+      b, x, CgSettings{}, test::large_budget(), stop);
   int longest = 0, total = 0;
   for (size_t j = 0; j < b.size(); ++j) {
     Vec alone = Vec::Zero(60);
-    const CgResult single = conjugate_gradient(test::free_problem(test::dense_operator(A), b[j]), CgSettings{}, alone, test::kLargeBudget,
+    const CgResult single = conjugate_gradient(test::free_problem(test::dense_operator(A), b[j]), CgSettings{}, alone, test::large_budget(),
       stop[j]);
     EXPECT_EQ(block[j].status, single.status) << "system " << j;
     EXPECT_EQ(block[j].counts.hessian, single.counts.hessian) << "system " << j;
@@ -107,15 +107,15 @@ TEST(ConjugateGradient, PreconditionedBlockRunsEachSystemAsOnItsOwn) {
   const std::vector<StopTest> stop(2, [&](const Vec&, const Vec&, double norm) { return norm <= 1e-10 * 60; });
   std::vector<Vec> x(b.size(), Vec::Zero(60));
   const std::vector<CgResult> block = conjugate_gradient_block(
-      [&](const Eigen::MatrixXd& X, Eigen::MatrixXd& Y) { Y = A * X; }, b, x, CgSettings{}, test::kLargeBudget, stop,
+      [&](const Eigen::MatrixXd& X, Eigen::MatrixXd& Y) { Y = A * X; }, b, x, CgSettings{}, test::large_budget(), stop,
       jacobi);
   for (size_t j = 0; j < b.size(); ++j) {
     qp::Problem preconditioned = test::free_problem(test::dense_operator(A), b[j]);
     preconditioned.preconditioner = jacobi;
     Vec alone = Vec::Zero(60), plain = Vec::Zero(60);
-    const CgResult single = conjugate_gradient(preconditioned, CgSettings{}, alone, test::kLargeBudget, stop[j]);
+    const CgResult single = conjugate_gradient(preconditioned, CgSettings{}, alone, test::large_budget(), stop[j]);
     const CgResult unpreconditioned = conjugate_gradient(test::free_problem(test::dense_operator(A), b[j]), CgSettings{},
-                                                         plain, test::kLargeBudget, stop[j]);
+                                                         plain, test::large_budget(), stop[j]);
     EXPECT_EQ(block[j].status, SolveStatus::converged) << "system " << j;
     EXPECT_EQ(block[j].counts.hessian, single.counts.hessian) << "system " << j;
     EXPECT_EQ(block[j].counts.preconditioner, single.counts.preconditioner) << "system " << j;

@@ -23,7 +23,7 @@ qp::Problem problem_of(const test::DiscQp& qp, const LinearOperator& preconditio
   problem.b = qp.b;
   problem.hessian_norm = 1.05 * kCondition;
   problem.preconditioner = preconditioner;
-  problem.constraints = qp.set;
+  problem.constraints = qp.set();
   return problem;
 }
 
@@ -31,7 +31,7 @@ qp::Problem problem_of(const test::DiscQp& qp, const LinearOperator& preconditio
 MprgpResult solve(const test::DiscQp& qp, Vec& x, const MprgpSettings& settings = {},
                   const LinearOperator& preconditioner = {}) {
   const double tol = 1e-12 * qp.b.norm();
-  return mprgp(problem_of(qp, preconditioner), settings, x, test::kLargeBudget,
+  return mprgp(problem_of(qp, preconditioner), settings, x, test::large_budget(),
                [&](const Vec&, const Vec&, double norm) { return norm <= tol; });
 }
 
@@ -41,7 +41,7 @@ SmalbeResult solve_with_equality(const test::DiscQp& qp, Vec& x) {
   qp::Problem problem = problem_of(qp);
   problem.range_projector = test::dense_operator(Q);
   const double tol = 1e-12 * qp.b.norm();
-  return smalbe(problem, SmalbeSettings{}, x, test::kLargeBudget, [&](const Vec& xi, const Vec&, double gP) {
+  return smalbe(problem, SmalbeSettings{}, x, test::large_budget(), [&](const Vec& xi, const Vec&, double gP) {
     return gP <= tol && (Q * xi).norm() <= tol / kCondition;
   });
 }
@@ -49,23 +49,26 @@ SmalbeResult solve_with_equality(const test::DiscQp& qp, Vec& x) {
 TEST(DiscConstraints, BlocksKeepTheirCentresAndRadii) {
   qp::ConstraintSet set;
   set.add_free(1);
-  EXPECT_FALSE(set.has_discs());
   set.add_disc((Vec(4) << 1, 2, 3, 4).finished(), (Vec(2) << 0.5, 0).finished());
   set.add_half_line(Vec::Zero(1));
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  ASSERT_TRUE(set.has_discs());
   ASSERT_EQ(set.blocks().size(), 3u);
   EXPECT_EQ(set.blocks()[1].kind, qp::BlockKind::disc);
   EXPECT_EQ(set.blocks()[1].first, 1);
   EXPECT_EQ(set.blocks()[1].size, 4);
-  EXPECT_EQ(set.disc_centre, (Vec(6) << 0, 1, 2, 3, 4, 0).finished());
-  EXPECT_EQ(set.disc_radius, (Vec(6) << kInf, 0.5, 0.5, 0, 0, kInf).finished());
-  EXPECT_EQ(set.lower, (Vec(6) << kUnbounded, kUnbounded, kUnbounded, kUnbounded, kUnbounded, 0).finished());
+  EXPECT_EQ(set.lower(), (Vec(6) << kUnbounded, kUnbounded, kUnbounded, kUnbounded, kUnbounded, 0).finished());
   EXPECT_TRUE(set.bounded());
+  // Projected: the free component stays, pair 1 goes onto its circle about (1, 2), pair 2
+  // (radius 0) to its centre, the half-line to 0.
+  Vec x = (Vec(6) << 7, 1, 12, 9, 9, -5).finished();
+  EXPECT_EQ(set.project(x), 3);
+  EXPECT_LT((x - (Vec(6) << 7, 1, 2.5, 3, 4, 0).finished()).norm(), 1e-15);
+  EXPECT_TRUE(set.contains(x));
+  // Shifted by 1: centres and the bound move by -1, the radii stay.
   const qp::ConstraintSet moved = set.shifted(Vec::Constant(6, 1.0));
-  EXPECT_EQ(moved.disc_centre, (Vec(6) << 0, 0, 1, 2, 3, 0).finished());  // centres move by -offset, only on discs
-  EXPECT_EQ(moved.disc_radius, set.disc_radius);
-  EXPECT_EQ(moved.lower[5], -1.0);
+  Vec y = (Vec(6) << 7, 0, 11, 9, 9, -5).finished();
+  EXPECT_EQ(moved.project(y), 3);
+  EXPECT_LT((y - (Vec(6) << 7, 0, 1.5, 2, 3, -1).finished()).norm(), 1e-15);
+  EXPECT_FALSE(set.contains(y));
   EXPECT_THROW(set.add_disc(Vec::Zero(3), Vec::Zero(1)), std::invalid_argument);
   EXPECT_THROW(set.add_disc(Vec::Zero(2), Vec::Constant(1, -1.0)), std::invalid_argument);
 }
@@ -75,13 +78,13 @@ TEST(DiscConstraints, ProjectedGradientOnTheCircle) {
   set.add_disc(Vec::Zero(2), Vec::Constant(1, 2.0));
   const Vec x = (Vec(2) << 2, 0).finished();  // on the circle, outward normal (1, 0)
   // -g pointing out: held, gP 0; pointing in: all of g; tangential: all of it; a mix: its tangential part.
-  EXPECT_EQ(projected_gradient(x, (Vec(2) << -3, 0).finished(), set), Vec::Zero(2));
-  EXPECT_EQ(projected_gradient(x, (Vec(2) << 3, 0).finished(), set), (Vec(2) << 3, 0).finished());
-  EXPECT_EQ(projected_gradient(x, (Vec(2) << 0, 1).finished(), set), (Vec(2) << 0, 1).finished());
-  EXPECT_EQ(projected_gradient(x, (Vec(2) << -3, 1).finished(), set), (Vec(2) << 0, 1).finished());
-  EXPECT_EQ(projected_gradient_max(x, (Vec(2) << -3, 1).finished(), set), 1.0);
+  EXPECT_EQ(set.projected_gradient(x, (Vec(2) << -3, 0).finished()), Vec::Zero(2));
+  EXPECT_EQ(set.projected_gradient(x, (Vec(2) << 3, 0).finished()), (Vec(2) << 3, 0).finished());
+  EXPECT_EQ(set.projected_gradient(x, (Vec(2) << 0, 1).finished()), (Vec(2) << 0, 1).finished());
+  EXPECT_EQ(set.projected_gradient(x, (Vec(2) << -3, 1).finished()), (Vec(2) << 0, 1).finished());
+  EXPECT_EQ(set.projected_gradient_max(x, (Vec(2) << -3, 1).finished()), 1.0);
   Vec outside = (Vec(2) << 0, -8).finished();
-  EXPECT_EQ(project_onto_bounds(outside, set), 1);
+  EXPECT_EQ(set.project(outside), 1);
   EXPECT_EQ(outside, (Vec(2) << 0, -2).finished());
 }
 
@@ -92,8 +95,8 @@ TEST(DiscQp, MpgpMatchesTheAcceleratedProjectedGradient) {
     const Vec reference = test::accelerated_projected_gradient(qp);
     ASSERT_LT(test::kkt_violation(qp, reference), 1e-9) << "seed " << seed;
     for (int j = 1; j < 5; ++j) {
-      const double distance = (reference.segment<2>(5 + 2 * j) - qp.set.disc_centre.segment<2>(5 + 2 * j)).norm();
-      (distance < 0.999 * qp.set.disc_radius[5 + 2 * j] ? inside : on_circle) += 1;
+      const double distance = (reference.segment<2>(5 + 2 * j) - qp.centre.segment<2>(2 * j)).norm();
+      (distance < 0.999 * qp.radius[j] ? inside : on_circle) += 1;
     }
     for (MprgpExpansion expansion :
          {MprgpExpansion::fixed_step, MprgpExpansion::projected_cg_restart, MprgpExpansion::projected_cg}) {
@@ -105,7 +108,7 @@ TEST(DiscQp, MpgpMatchesTheAcceleratedProjectedGradient) {
       EXPECT_LT(r.counts.hessian, 500) << "seed " << seed;
       EXPECT_LT((x - reference).norm(), 1e-8 * reference.norm()) << "seed " << seed;
       EXPECT_LT(test::kkt_violation(qp, x), 1e-10) << "seed " << seed;
-      EXPECT_EQ(x.segment<2>(5), qp.set.disc_centre.segment<2>(5));  // radius 0: pinned at the centre
+      EXPECT_EQ(x.segment<2>(5), qp.centre.segment<2>(0));  // radius 0: pinned at the centre
     }
   }
   EXPECT_GT(on_circle, 3);  // the problems do have discs of both states
@@ -118,7 +121,7 @@ TEST(DiscQp, PairsSlippingHardOnSmallCirclesAgree) {
   // bounds). CG round the circles needs that curvature in its steps and its preconditioner.
   for (unsigned seed = 1; seed <= 3; ++seed) {
     test::DiscQp qp = test::random_disc_qp(kCondition, seed);
-    qp.set.disc_radius *= 1e-3;  // infinite off the discs, 0 on the pinned pair: unchanged
+    qp.radius *= 1e-3;  // 0 on the pinned pair: unchanged
     const Vec reference = test::accelerated_projected_gradient(qp);
     ASSERT_LT(test::kkt_violation(qp, reference), 1e-9) << "seed " << seed;
     Vec x = Vec::Zero(15);
@@ -128,8 +131,7 @@ TEST(DiscQp, PairsSlippingHardOnSmallCirclesAgree) {
     EXPECT_LT((x - reference).norm(), 1e-8 * reference.norm()) << "seed " << seed;
     EXPECT_LT(test::kkt_violation(qp, x), 1e-10) << "seed " << seed;
     for (int j = 1; j < 5; ++j)  // on its circle, with the circle's curvature above ||H||
-      EXPECT_NEAR((x.segment<2>(5 + 2 * j) - qp.set.disc_centre.segment<2>(5 + 2 * j)).norm(),
-                  qp.set.disc_radius[5 + 2 * j], 1e-12) << "seed " << seed << " pair " << j;
+      EXPECT_NEAR((x.segment<2>(5 + 2 * j) - qp.centre.segment<2>(2 * j)).norm(), qp.radius[j], 1e-12) << "seed " << seed << " pair " << j;
   }
 }
 
@@ -139,7 +141,7 @@ TEST(DiscQp, StiffAndSoftCirclesTogetherAgree) {
   // in one solve.
   for (unsigned seed = 1; seed <= 3; ++seed) {
     test::DiscQp qp = test::random_disc_qp(kCondition, seed);
-    for (const int j : {1, 3}) qp.set.disc_radius.segment<2>(5 + 2 * j) *= 1e-3;
+    for (const int j : {1, 3}) qp.radius[j] *= 1e-3;
     const Vec reference = test::accelerated_projected_gradient(qp);
     ASSERT_LT(test::kkt_violation(qp, reference), 1e-9) << "seed " << seed;
     Vec x = Vec::Zero(15);
@@ -163,11 +165,10 @@ TEST(DiscQp, PreconditionedMpgpAgrees) {
 
 TEST(DiscQp, AllDiscsOfRadiusZeroPinTheirPairs) {
   test::DiscQp qp = test::random_disc_qp(kCondition, 3);
-  const Vec centre = qp.set.disc_centre.tail(10);
-  qp::ConstraintSet pinned;
-  pinned.add_free(5);  // the half-lines dropped: the rest is a linear solve
-  pinned.add_disc(centre, Vec::Zero(5));
-  qp.set = pinned;
+  const Vec centre = qp.centre;
+  qp.free = 5;  // the half-lines dropped: the rest is a linear solve
+  qp.lower = Vec();
+  qp.radius = Vec::Zero(5);
   Vec x = Vec::Constant(15, 1.0);
   ASSERT_EQ(solve(qp, x).status, SolveStatus::converged);
   EXPECT_EQ(x.tail(10), centre);
@@ -195,7 +196,7 @@ TEST(DiscQp, RotatingAPairsDataRotatesItsAnswer) {
   test::DiscQp turned = qp;
   turned.H = T * qp.H * T.transpose();
   turned.b = T * qp.b;
-  turned.set.disc_centre = T * qp.set.disc_centre;  // 0 outside the discs, where T is the identity
+  turned.centre = T.bottomRightCorner(10, 10) * qp.centre;
   Vec x = Vec::Zero(15), x_turned = Vec::Zero(15);
   ASSERT_EQ(solve(qp, x).status, SolveStatus::converged);
   ASSERT_EQ(solve(turned, x_turned).status, SolveStatus::converged);

@@ -11,12 +11,6 @@ namespace {
 /// A pair this close to its circle (relative) counts as on it in the KKT check.
 constexpr double kOnCircle = 1e-9;
 
-template <class Visit>
-void for_each_block(const qp::ConstraintSet& set, qp::BlockKind kind, Visit visit) {
-  for (const qp::Block& block : set.blocks())
-    if (block.kind == kind) visit(block);
-}
-
 }  // namespace
 
 DiscQp random_disc_qp(double condition, unsigned seed) {
@@ -35,23 +29,29 @@ DiscQp random_disc_qp(double condition, unsigned seed) {
     const double distance = (unconstrained.segment<2>(5 + 2 * j) - centre.segment<2>(2 * j)).norm();
     radius[j] = j == 0 ? 0.0 : j == 1 ? 10 * distance + 1 : (0.2 + 0.2 * j) * distance;
   }
-  qp.set.add_free(2);
-  qp.set.add_half_line(lower);
-  qp.set.add_disc(centre, radius);
+  qp.free = 2;
+  qp.lower = lower;
+  qp.centre = centre;
+  qp.radius = radius;
   return qp;
 }
 
-Vec project_onto_set(const Vec& x, const qp::ConstraintSet& set) {
+qp::ConstraintSet DiscQp::set() const {
+  qp::ConstraintSet set;
+  set.add_free(free);
+  set.add_half_line(lower);
+  set.add_disc(centre, radius);
+  return set;
+}
+
+Vec project_onto_set(const Vec& x, const DiscQp& qp) {
   Vec y = x;
-  for_each_block(set, qp::BlockKind::half_line, [&](const qp::Block& block) {
-    for (Eigen::Index i = block.first; i < block.first + block.size; ++i) y[i] = std::max(y[i], set.lower[i]);
-  });
-  for_each_block(set, qp::BlockKind::disc, [&](const qp::Block& block) {
-    for (Eigen::Index i = block.first; i < block.first + block.size; i += 2) {
-      const Eigen::Vector2d c = set.disc_centre.segment<2>(i), d = y.segment<2>(i) - c;
-      if (d.norm() > set.disc_radius[i]) y.segment<2>(i) = c + d * (set.disc_radius[i] / d.norm());
-    }
-  });
+  for (Eigen::Index k = 0; k < qp.lower.size(); ++k) y[qp.free + k] = std::max(y[qp.free + k], qp.lower[k]);
+  for (Eigen::Index j = 0; j < qp.radius.size(); ++j) {
+    const Eigen::Index i = qp.first_disc() + 2 * j;
+    const Eigen::Vector2d c = qp.centre.segment<2>(2 * j), d = y.segment<2>(i) - c;
+    if (d.norm() > qp.radius[j]) y.segment<2>(i) = c + d * (qp.radius[j] / d.norm());
+  }
   return y;
 }
 
@@ -60,7 +60,7 @@ Vec accelerated_projected_gradient(const DiscQp& qp) {
   const double step = 1.0 / Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(qp.H).eigenvalues().maxCoeff();
   Eigen::MatrixXd kernel_projector = Eigen::MatrixXd::Identity(n, n);  // onto Ker C (C only on free components)
   if (qp.C.rows() > 0) kernel_projector -= qp.C.transpose() * (qp.C * qp.C.transpose()).ldlt().solve(qp.C);
-  const auto project = [&](const Vec& v) { return project_onto_set(kernel_projector * v, qp.set); };
+  const auto project = [&](const Vec& v) { return project_onto_set(kernel_projector * v, qp); };
   Vec x = project(Vec::Zero(n)), y = x, previous;
   double t = 1;
   for (int k = 0; k < 2000000; ++k) {
@@ -85,22 +85,18 @@ double kkt_violation(const DiscQp& qp, const Vec& x) {
   std::vector<Eigen::Index> unheld;  // components no bound or circle holds
   double violation = 0;
   const auto worse = [&](double v) { violation = std::max(violation, v / qp.b.norm()); };
-  for_each_block(qp.set, qp::BlockKind::free, [&](const qp::Block& block) {
-    for (Eigen::Index i = block.first; i < block.first + block.size; ++i) unheld.push_back(i);
-  });
-  for_each_block(qp.set, qp::BlockKind::half_line, [&](const qp::Block& block) {
-    for (Eigen::Index i = block.first; i < block.first + block.size; ++i) {
-      worse(std::max(qp.set.lower[i] - x[i], 0.0));
-      if (x[i] > qp.set.lower[i] + kOnCircle * (1 + std::abs(qp.set.lower[i]))) unheld.push_back(i);
-    }
-  });
-  for_each_block(qp.set, qp::BlockKind::disc, [&](const qp::Block& block) {
-    for (Eigen::Index i = block.first; i < block.first + block.size; i += 2) {
-      const double r = qp.set.disc_radius[i], norm = (x.segment<2>(i) - qp.set.disc_centre.segment<2>(i)).norm();
-      worse(std::max(norm - r, 0.0));
-      if (norm < r * (1 - kOnCircle)) unheld.insert(unheld.end(), {i, i + 1});
-    }
-  });
+  for (Eigen::Index i = 0; i < qp.free; ++i) unheld.push_back(i);
+  for (Eigen::Index k = 0; k < qp.lower.size(); ++k) {
+    const Eigen::Index i = qp.free + k;
+    worse(std::max(qp.lower[k] - x[i], 0.0));
+    if (x[i] > qp.lower[k] + kOnCircle * (1 + std::abs(qp.lower[k]))) unheld.push_back(i);
+  }
+  for (Eigen::Index j = 0; j < qp.radius.size(); ++j) {
+    const Eigen::Index i = qp.first_disc() + 2 * j;
+    const double r = qp.radius[j], norm = (x.segment<2>(i) - qp.centre.segment<2>(2 * j)).norm();
+    worse(std::max(norm - r, 0.0));
+    if (norm < r * (1 - kOnCircle)) unheld.insert(unheld.end(), {i, i + 1});
+  }
   // C'mu from the unheld components' stationarity (least squares), then the full gradient.
   Vec g = g0;
   if (qp.C.rows() > 0) {
@@ -111,18 +107,15 @@ double kkt_violation(const DiscQp& qp, const Vec& x) {
     worse((qp.C * x).norm() * qp.H.norm());  // in units of b
   }
   for (const Eigen::Index i : unheld) worse(std::abs(g[i]));
-  for_each_block(qp.set, qp::BlockKind::half_line, [&](const qp::Block& block) {
-    for (Eigen::Index i = block.first; i < block.first + block.size; ++i) worse(std::max(-g[i], 0.0));
-  });
-  for_each_block(qp.set, qp::BlockKind::disc, [&](const qp::Block& block) {
-    for (Eigen::Index i = block.first; i < block.first + block.size; i += 2) {
-      const Eigen::Vector2d d = x.segment<2>(i) - qp.set.disc_centre.segment<2>(i), gi = g.segment<2>(i);
-      if (qp.set.disc_radius[i] == 0 || d.norm() < qp.set.disc_radius[i] * (1 - kOnCircle)) continue;
-      const Eigen::Vector2d normal = d / d.norm();
-      worse((gi - normal.dot(gi) * normal).norm());  // g_pair = -lambda n ...
-      worse(std::max(normal.dot(gi), 0.0));          // ... with lambda >= 0
-    }
-  });
+  for (Eigen::Index k = 0; k < qp.lower.size(); ++k) worse(std::max(-g[qp.free + k], 0.0));
+  for (Eigen::Index j = 0; j < qp.radius.size(); ++j) {
+    const Eigen::Index i = qp.first_disc() + 2 * j;
+    const Eigen::Vector2d d = x.segment<2>(i) - qp.centre.segment<2>(2 * j), gi = g.segment<2>(i);
+    if (qp.radius[j] == 0 || d.norm() < qp.radius[j] * (1 - kOnCircle)) continue;
+    const Eigen::Vector2d normal = d / d.norm();
+    worse((gi - normal.dot(gi) * normal).norm());  // g_pair = -lambda n ...
+    worse(std::max(normal.dot(gi), 0.0));          // ... with lambda >= 0
+  }
   return violation;
 }
 

@@ -9,11 +9,16 @@
 
 namespace ffeti::test {
 
-/// min 1/2 x'Hx - b'x over `set`, optionally with C x = 0.
+/// min 1/2 x'Hx - b'x, optionally with C x = 0, over `free` free components, then
+/// half-lines x_i >= lower, then discs ||x_pair - centre_pair|| <= radius (one per pair).
+/// The solvers get set(); the reference below reads the data itself.
 struct DiscQp {
   Eigen::MatrixXd H, C;
   Vec b;
-  qp::ConstraintSet set;
+  Eigen::Index free = 0;
+  Vec lower, centre, radius;
+  qp::ConstraintSet set() const;
+  Eigen::Index first_disc() const { return free + lower.size(); }
 };
 
 /// 2 free components, 3 half-lines, 5 discs (one of radius 0, one far larger than the
@@ -21,7 +26,7 @@ struct DiscQp {
 DiscQp random_disc_qp(double condition, unsigned seed);
 
 /// The Euclidean projection onto the set (free: none, half-line: max, disc: radial).
-Vec project_onto_set(const Vec& x, const qp::ConstraintSet& set);
+Vec project_onto_set(const Vec& x, const DiscQp& qp);
 
 /// FISTA with adaptive restart on the dense problem, to ||x_k+1 - x_k|| <= 1e-15 (1 + ||x||).
 /// With C (only on free components), the free part is projected onto Ker C_free as well.

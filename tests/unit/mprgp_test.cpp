@@ -39,7 +39,7 @@ TEST_P(MprgpManufactured, FindsTheKnownSolution) {
     const double tol = 1e-10 * qp.b.norm();
     MprgpSettings settings;
     settings.expansion = expansion;
-    const MprgpResult result = mprgp_with_gradient(test::bound_problem(A, qp.b, qp.lower, norm.norm), settings, x, g, false, test::kLargeBudget,
+    const MprgpResult result = mprgp_with_gradient(test::bound_problem(A, qp.b, qp.lower, norm.norm), settings, x, g, false, test::large_budget(),
                                      [&](const Vec&, const Vec&, double gp) { return gp <= tol; });
     ASSERT_EQ(result.status, SolveStatus::converged);
     EXPECT_LT((x - qp.x_star).norm(), 1e-7 * qp.x_star.norm());
@@ -71,7 +71,7 @@ TEST(Mprgp, StartsFromAnInfeasiblePointAndProjectsIt) {
   const test::BoundQp qp = test::manufactured_bound_qp(30, 50, 11, false);
   Vec x = Vec::Constant(30, -100.0), g;
   const MprgpResult result =
-      mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 55), MprgpSettings{}, x, g, false, test::kLargeBudget,
+      mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 55), MprgpSettings{}, x, g, false, test::large_budget(),
             [&](const Vec&, const Vec&, double gp) { return gp <= 1e-10 * qp.b.norm(); });
   ASSERT_EQ(result.status, SolveStatus::converged);
   EXPECT_LT((x - qp.x_star).norm(), 1e-7 * qp.x_star.norm());
@@ -80,11 +80,14 @@ TEST(Mprgp, StartsFromAnInfeasiblePointAndProjectsIt) {
 TEST(Mprgp, ReportsTheIterationLimitInsteadOfHiding) {
   const test::BoundQp qp = test::manufactured_bound_qp(80, 1e4, 5, false);
   Vec x = Vec::Zero(80);
+  qp::Budget budget(5);
   const MprgpResult result = mprgp(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 1.05e4), MprgpSettings{},
-                                   x, qp::Budget(5), [](const Vec&, const Vec&, double gp) { return gp <= 0; });
+                                   x, budget, [](const Vec&, const Vec&, double gp) { return gp <= 0; });
   EXPECT_EQ(result.status, SolveStatus::max_iterations);
   EXPECT_LE(result.counts.hessian, 5 + 2);  // a step in progress may finish (<= 2 products)
   EXPECT_GT(result.gradient_norm, 0);
+  EXPECT_EQ(budget.spent(), result.counts.hessian);  // charged with what it spent
+  EXPECT_TRUE(budget.exhausted());
 }
 
 TEST(Mprgp, DetectsAnIndefiniteOperator) {
@@ -92,7 +95,7 @@ TEST(Mprgp, DetectsAnIndefiniteOperator) {
   A(2, 2) = -1;
   const Vec b = Vec::Ones(4), lower = Vec::Constant(4, kUnbounded);
   Vec x = Vec::Zero(4), g;
-  const MprgpResult result = mprgp_with_gradient(test::bound_problem(test::dense_operator(A), b, lower, 1.0), MprgpSettings{}, x, g, false, test::kLargeBudget,
+  const MprgpResult result = mprgp_with_gradient(test::bound_problem(test::dense_operator(A), b, lower, 1.0), MprgpSettings{}, x, g, false, test::large_budget(),
                                    [](const Vec&, const Vec&, double gp) { return gp <= 1e-12; });
   EXPECT_EQ(result.status, SolveStatus::not_positive_definite);
 }
@@ -112,7 +115,7 @@ TEST(ProjectedGradient, ChopsNegativePartsOnlyOnTheActiveSet) {
   const Vec x = (Vec(4) << 0, 1, 0, 2).finished();
   const Vec g = (Vec(4) << -1, -1, 3, 5).finished();
   const Vec lower = (Vec(4) << 0, 0, 0, kUnbounded).finished();
-  const Vec gp = projected_gradient(x, g, qp::ConstraintSet::from_bounds(lower));
+  const Vec gp = qp::ConstraintSet::from_bounds(lower).projected_gradient(x, g);
   EXPECT_EQ(gp, (Vec(4) << -1, -1, 0, 5).finished());
 }
 

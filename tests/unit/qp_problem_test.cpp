@@ -18,19 +18,28 @@ TEST(ConstraintSet, BlocksKeepTheirOrderAndBounds) {
   qp::ConstraintSet set;
   set.add_free(2);
   set.add_half_line(Vec::Zero(3));
-  EXPECT_EQ(set.upper.size(), 0);  // no box yet: no upper bounds stored
   set.add_box(Vec::Constant(2, -1.0), Vec::Constant(2, 1.0));
   ASSERT_EQ(set.blocks().size(), 3u);
   EXPECT_EQ(set.blocks()[1].first, 2);
   EXPECT_EQ(set.blocks()[1].kind, qp::BlockKind::half_line);
   EXPECT_EQ(set.blocks()[2].first, 5);
   EXPECT_EQ(set.size(), 7);
-  EXPECT_EQ(set.lower, (Vec(7) << kUnbounded, kUnbounded, 0, 0, 0, -1, -1).finished());
-  EXPECT_EQ(set.upper, (Vec(7) << kInf, kInf, kInf, kInf, kInf, 1, 1).finished());
+  EXPECT_EQ(set.lower(), (Vec(7) << kUnbounded, kUnbounded, 0, 0, 0, -1, -1).finished());
+  EXPECT_EQ(set.upper(), (Vec(7) << kInf, kInf, kInf, kInf, kInf, 1, 1).finished());
   EXPECT_TRUE(set.bounded());
-  EXPECT_TRUE(set.free(0, -1e300));
-  EXPECT_FALSE(set.free(2, 0.0));
-  EXPECT_TRUE(set.pinned(5, -1.0) == false && set.free(5, 0.5) && !set.free(6, 1.0));
+  // Free where strictly inside: the free block everywhere, a half-line above 0, a box inside.
+  const Vec x = (Vec(7) << -1e300, 0, 0, 2, 0, 0.5, 1).finished();
+  EXPECT_EQ(set.free_components(x), (std::vector<char>{1, 1, 0, 1, 0, 1, 0}));
+}
+
+TEST(ConstraintSet, PinnedComponentsHaveNoFeasibleDirection) {
+  qp::ConstraintSet set;
+  set.add_box((Vec(3) << 0, -1, -1).finished(), (Vec(3) << 0, 1, 1).finished());  // l = u = 0: pinned
+  const Vec x = (Vec(3) << 0, -1, 1).finished();  // pinned, at the lower bound, at the upper bound
+  const Vec g = (Vec(3) << 5, 2, 2).finished();
+  EXPECT_EQ(set.projected_gradient(x, g), (Vec(3) << 0, 0, 2).finished());
+  EXPECT_EQ(set.projected_gradient(x, -g), (Vec(3) << 0, -2, 0).finished());
+  EXPECT_EQ(set.feasible_step(x, (Vec(3) << 1, 0, 0).finished(), false), 0.0);
 }
 
 TEST(ConstraintSet, FromBoundsGroupsRunsOfOneKind) {
@@ -40,8 +49,8 @@ TEST(ConstraintSet, FromBoundsGroupsRunsOfOneKind) {
   ASSERT_EQ(set.blocks().size(), 4u);
   EXPECT_EQ(set.blocks()[1].size, 2);
   EXPECT_EQ(set.blocks()[2].kind, qp::BlockKind::box);
-  EXPECT_EQ(set.lower, lower);
-  EXPECT_EQ(set.upper, upper);
+  EXPECT_EQ(set.lower(), lower);
+  EXPECT_EQ(set.upper(), upper);
 }
 
 TEST(ConstraintSet, ShiftedMovesTheBoundsNotTheBlocks) {
@@ -49,9 +58,9 @@ TEST(ConstraintSet, ShiftedMovesTheBoundsNotTheBlocks) {
   set.add_free(1);
   set.add_box(Vec::Constant(1, -1.0), Vec::Constant(1, 1.0));
   const qp::ConstraintSet moved = set.shifted((Vec(2) << 5, 0.5).finished());
-  EXPECT_EQ(moved.lower[0], kUnbounded);
-  EXPECT_EQ(moved.lower[1], -1.5);
-  EXPECT_EQ(moved.upper[1], 0.5);
+  EXPECT_EQ(moved.lower()[0], kUnbounded);
+  EXPECT_EQ(moved.lower()[1], -1.5);
+  EXPECT_EQ(moved.upper()[1], 0.5);
   EXPECT_EQ(moved.blocks().size(), 2u);
 }
 
@@ -60,11 +69,11 @@ TEST(QpProblem, EachSolverRefusesWhatItDoesNotSolve) {
   const qp::Problem bounded = test::bound_problem(test::dense_operator(bqp.A), bqp.b, bqp.lower, 11);
   const StopTest never = [](const Vec&, const Vec&, double) { return false; };
   Vec x = Vec::Zero(10);
-  EXPECT_THROW(conjugate_gradient(bounded, CgSettings{}, x, test::kLargeBudget, never), std::invalid_argument);
+  EXPECT_THROW(conjugate_gradient(bounded, CgSettings{}, x, test::large_budget(), never), std::invalid_argument);
   qp::Problem with_equality = bounded;
   with_equality.range_projector = test::dense_operator(Eigen::MatrixXd::Identity(10, 10));
-  EXPECT_THROW(mprgp(with_equality, MprgpSettings{}, x, test::kLargeBudget, never), std::invalid_argument);
-  EXPECT_THROW(smalbe(bounded, SmalbeSettings{}, x, test::kLargeBudget, never), std::invalid_argument);
+  EXPECT_THROW(mprgp(with_equality, MprgpSettings{}, x, test::large_budget(), never), std::invalid_argument);
+  EXPECT_THROW(smalbe(bounded, SmalbeSettings{}, x, test::large_budget(), never), std::invalid_argument);
   EXPECT_THROW(qp::Budget(0), std::invalid_argument);
 }
 
@@ -76,11 +85,11 @@ TEST(QpProblem, SmalbeReturnsItsMultiplierAndStartsFromIt) {
   const double tol = 1e-9 * eqp.b.norm();
   const StopTest stop = [&](const Vec& x, const Vec&, double gp) { return gp <= tol && (eqp.Q * x).norm() <= tol; };
   Vec x = Vec::Zero(30);
-  const SmalbeResult cold = smalbe(problem, SmalbeSettings{}, x, test::kLargeBudget, stop);
+  const SmalbeResult cold = smalbe(problem, SmalbeSettings{}, x, test::large_budget(), stop);
   ASSERT_EQ(cold.status, SolveStatus::converged);
   ASSERT_EQ(cold.multiplier.size(), 30);
   problem.equality_multiplier = cold.multiplier;
-  const SmalbeResult warm = smalbe(problem, SmalbeSettings{}, x, test::kLargeBudget, stop);
+  const SmalbeResult warm = smalbe(problem, SmalbeSettings{}, x, test::large_budget(), stop);
   EXPECT_EQ(warm.status, SolveStatus::converged);
   EXPECT_LE(warm.counts.hessian, 2);
   EXPECT_LT(warm.counts.hessian, cold.counts.hessian);

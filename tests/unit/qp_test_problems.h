@@ -34,7 +34,12 @@ qp::Problem bound_problem(const LinearOperator& A, const Vec& b, const Vec& lowe
                           const Vec& upper = Vec(), const LinearOperator& preconditioner = {});
 /// The same without bounds (all components free).
 qp::Problem free_problem(const LinearOperator& A, const Vec& b);
-/// A budget larger than any unit test's solve needs.
-inline const qp::Budget kLargeBudget(1000000);
+/// A budget larger than any unit test's solve needs, fresh for each solve (a solver
+/// charges the budget it is given).
+inline qp::Budget& large_budget() {
+  static qp::Budget budget(1000000);
+  budget = qp::Budget(1000000);
+  return budget;
+}
 
 }  // namespace ffeti::test

@@ -33,7 +33,8 @@ TEST_P(SmalbeManufactured, FindsTheKnownSolution) {
   settings.variant = c.variant;
   Vec x = Vec::Zero(c.n);
   const double tol = 1e-10 * qp.b.norm();
-  const SmalbeResult result = smalbe(problem, settings, x, qp::Budget(5000), [&](const Vec& xi, const Vec&, double gp) {
+  qp::Budget budget(5000);
+  const SmalbeResult result = smalbe(problem, settings, x, budget, [&](const Vec& xi, const Vec&, double gp) {
     return gp <= tol && (qp.Q * xi).norm() <= 1e-10;
   });
   ASSERT_EQ(result.status, SolveStatus::converged) << to_string(result.status);
@@ -60,10 +61,32 @@ TEST(Smalbe, IterationLimitIsAStatus) {
   qp::Problem problem = test::bound_problem(test::dense_operator(qp.H), qp.b, qp.lower, 1.05e3);
   problem.range_projector = test::dense_operator(qp.Q);
   Vec x = Vec::Zero(60);
+  qp::Budget budget(10);
   const SmalbeResult result =
-      smalbe(problem, SmalbeSettings{}, x, qp::Budget(10), [](const Vec&, const Vec&, double gp) { return gp <= 0; });
+      smalbe(problem, SmalbeSettings{}, x, budget, [](const Vec&, const Vec&, double gp) { return gp <= 0; });
   EXPECT_EQ(result.status, SolveStatus::max_iterations);
   EXPECT_LE(result.counts.hessian, 10 + 2);  // a step in progress may finish (<= 2 products)
+  EXPECT_EQ(budget.spent(), result.counts.hessian);  // the inner solves charged it, once each
+}
+
+TEST(Smalbe, ASecondSolveGetsWhatTheFirstLeft) {
+  // One budget over two solves (friction's fixed point passes one down its Tresca solves).
+  const test::BoundEqualityQp qp = test::manufactured_bound_equality_qp(60, 5, 1e3, 9);
+  qp::Problem problem = test::bound_problem(test::dense_operator(qp.H), qp.b, qp.lower, 1.05e3);
+  problem.range_projector = test::dense_operator(qp.Q);
+  const StopTest tight = [&](const Vec&, const Vec&, double gp) { return gp <= 1e-8 * qp.b.norm(); };
+  qp::Budget budget(1000);
+  Vec x = Vec::Zero(60);
+  const SmalbeResult first = smalbe(problem, SmalbeSettings{}, x, budget, tight);
+  ASSERT_EQ(first.status, SolveStatus::converged);
+  ASSERT_GT(first.counts.hessian, 20);
+  budget = qp::Budget(first.counts.hessian + 20);
+  budget.charge(first.counts.hessian);  // as if the first solve had run on it
+  Vec y = Vec::Zero(60);
+  const SmalbeResult second = smalbe(problem, SmalbeSettings{}, y, budget, tight);
+  EXPECT_EQ(second.status, SolveStatus::max_iterations);  // 20 left: too few for a cold start
+  EXPECT_LE(second.counts.hessian, 20 + 2);
+  EXPECT_EQ(budget.spent(), first.counts.hessian + second.counts.hessian);
 }
 
 TEST(Smalbe, RejectsInvalidSettings) {

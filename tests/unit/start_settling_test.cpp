@@ -32,7 +32,7 @@ Vec nearly_right_start(const test::BoundQp& qp, unsigned seed) {
 TEST(SettleStart, LowersTheCostAndKeepsTheIterateFeasibleAndItsGradientExact) {
   const test::BoundQp qp = test::manufactured_bound_qp(60, 200, 7, true);
   Vec x = nearly_right_start(qp, 1);
-  project_onto_bounds(x, qp::ConstraintSet::from_bounds(qp.lower));
+  qp::ConstraintSet::from_bounds(qp.lower).project(x);
   Vec g = qp.A * x - qp.b;
   const double before = cost(qp, x);
   IterationCounts counts;
@@ -68,7 +68,7 @@ TEST(SettleStart, KeepsTheStartWhenTheProjectedFaceSolutionCostsMore) {
 TEST(SettleStart, StaysWithinTheMultiplicationBudget) {
   const test::BoundQp qp = test::manufactured_bound_qp(60, 1e4, 8, false);
   Vec x = nearly_right_start(qp, 2);
-  project_onto_bounds(x, qp::ConstraintSet::from_bounds(qp.lower));
+  qp::ConstraintSet::from_bounds(qp.lower).project(x);
   Vec g = qp.A * x - qp.b;
   IterationCounts counts;
   settle_start(test::dense_operator(qp.A), qp.b, qp::ConstraintSet::from_bounds(qp.lower), 5, 4, x, g, counts);
@@ -83,7 +83,7 @@ TEST(MprgpSettled, ReachesTheKnownSolutionFromANearlyRightStart) {
     settings.settle_rounds = rounds;
     Vec x = nearly_right_start(qp, 3), g;
     const double tol = 1e-10 * qp.b.norm();
-    const MprgpResult result = mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 510), settings, x, g, false, test::kLargeBudget,
+    const MprgpResult result = mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 510), settings, x, g, false, test::large_budget(),
                                      [&](const Vec&, const Vec&, double gp) { return gp <= tol; });
     ASSERT_EQ(result.status, SolveStatus::converged) << rounds << " rounds";
     EXPECT_LT((x - qp.x_star).norm(), 1e-7 * qp.x_star.norm()) << rounds << " rounds";
@@ -96,7 +96,7 @@ TEST(MprgpSettled, ReturnsAStartThatAlreadyPassesTheTestUntouched) {
   MprgpSettings settings;
   settings.settle_rounds = 2;
   Vec x = qp.x_star, g;
-  const MprgpResult result = mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 105), settings, x, g, false, test::kLargeBudget,
+  const MprgpResult result = mprgp_with_gradient(test::bound_problem(test::dense_operator(qp.A), qp.b, qp.lower, 105), settings, x, g, false, test::large_budget(),
                                    [&](const Vec&, const Vec&, double gp) { return gp <= 1e-8 * qp.b.norm(); });
   ASSERT_EQ(result.status, SolveStatus::converged);
   EXPECT_EQ(result.counts.hessian, 1);  // the start's gradient only

@@ -4,7 +4,6 @@
 #include "base/errors.h"
 #include "base/parallel_for.h"
 #include "factor/semidefinite_kernel.h"
-#include "qp/disc.h"
 #include "qp/mprgp.h"
 #include "qp/norm_estimate.h"
 
@@ -217,16 +216,8 @@ double CoarseSpace::feasibility_residual(const Vec& e, const qp::ConstraintSet& 
   const double e_norm = e.norm();
   if (empty() || !(e_norm > 0)) return 0.0;
   const Eigen::Index m = G_.cols();
-  const Vec& lower = bounds.lower;
   Vec lambda = least_norm_solution(e);
-  bool within = true;
-  for (Eigen::Index i = 0; i < m; ++i)
-    within = within && (lower[i] == kUnbounded || lambda[i] >= lower[i]) && (!bounds.has_upper(i) || lambda[i] <= bounds.upper[i]);
-  if (within && bounds.has_discs()) {  // the per-component bounds see a disc's pair as free
-    Vec projected = lambda;
-    within = qp::project_onto_discs(projected, bounds) == 0;
-  }
-  if (within) return 0.0;  // G lambda = e already
+  if (bounds.contains(lambda)) return 0.0;  // G lambda = e already
   // min 1/2 ||G lambda - e||^2 = 1/2 lambda'G'G lambda - (G'e)'lambda + const, within the bounds.
   Vec Gv;
   qp::Problem distance_qp;
@@ -240,7 +231,7 @@ double CoarseSpace::feasibility_residual(const Vec& e, const qp::ConstraintSet& 
   const double stop_at = 1e-12 * distance_qp.b.norm();
   double distance = -1.0;  // of the last iterate, relative
   // G'G is small (r x m, r the rigid modes): a generous fixed budget, whatever maxit.
-  const qp::Budget budget(20000);
+  qp::Budget budget(20000);
   const MprgpResult r = mprgp(distance_qp, MprgpSettings{}, lambda, budget, [&](const Vec& x, const Vec&, double gp) {
     distance = (G_ * x - e).norm() / e_norm;
     return distance <= enough || gp <= stop_at;

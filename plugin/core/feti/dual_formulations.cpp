@@ -31,7 +31,8 @@ DualSystem::Formulation DualSystem::plain_qp(const DualData& data, const DualSol
   qp.hessian = [this](const Vec& x, Vec& y) { F_->apply(x, y); };
   qp.b = data.b;
   if (bounds) {
-    qp.hessian_norm = estimated_norm(norm_F_, qp.hessian, {}, settings.norm_estimate, result);
+    f.solver = QpSolver::mprgp;
+    qp.hessian_norm = estimated_norm(norms_.F, qp.hessian, {}, settings.norm_estimate, result);
     qp.constraints = *bounds;
   } else {
     qp.constraints.add_free(rows());
@@ -49,17 +50,18 @@ DualSystem::Formulation DualSystem::conjugate_qp(const DualData& data, const Dua
   qp::Problem& qp = f.qp;
   const ConjugateProjector& projector = *conjugate_;
   qp.hessian = [this, &projector](const Vec& x, Vec& y) {  // F (P x): the rigid directions out before F, not
-    projector.project(x, conjugate_Px_);                   // subtracted after it (F is largest along them)
-    F_->apply(conjugate_Px_, y);
+    projector.project(x, work_.conjugate_Px);            // subtracted after it (F is largest along them)
+    F_->apply(work_.conjugate_Px, y);
   };
+  f.solver = QpSolver::mprgp;
   projector.project_transposed(data.b, qp.b);
-  qp.hessian_norm = estimated_norm(norm_conjugate_, qp.hessian, {}, settings.norm_estimate, result);
+  qp.hessian_norm = estimated_norm(norms_.conjugate, qp.hessian, {}, settings.norm_estimate, result);
   qp.constraints = bounds;
   if (const LinearOperator m = preconditioner_operator())
     qp.preconditioner = [this, m, &projector](const Vec& x, Vec& y) {  // P M^{-1} P'
-      projector.project_transposed(x, conjugate_r_);
-      m(conjugate_r_, conjugate_z_);
-      projector.project(conjugate_z_, y);
+      projector.project_transposed(x, work_.conjugate_r);
+      m(work_.conjugate_r, work_.conjugate_z);
+      projector.project(work_.conjugate_z, y);
     };
   const Vec base = projector.base(data.b);
   f.to_multipliers = [base, &projector](const Vec& x, Vec& mu) {
@@ -73,9 +75,9 @@ DualSystem::Formulation DualSystem::conjugate_qp(const DualData& data, const Dua
 LinearOperator DualSystem::projected_preconditioner() const {
   if (!preconditioner_) return {};
   return [this](const Vec& x, Vec& y) {  // P M^{-1} P on Ker G
-    coarse_->project(x, projected_);
-    preconditioner_->apply(projected_, applied_);
-    coarse_->project(applied_, y);
+    coarse_->project(x, work_.projected);
+    preconditioner_->apply(work_.projected, work_.applied);
+    coarse_->project(work_.applied, y);
   };
 }
 
@@ -102,10 +104,11 @@ DualSystem::Formulation DualSystem::penalty_qp(const DualData& data, const DualS
                                                DualSolution& result, const qp::ConstraintSet& bounds) const {
   // The seed's formulation: SMALBE keeps all of G lambda = e by its augmented Lagrangian.
   Formulation f;
+  f.solver = QpSolver::smalbe;
   qp::Problem& qp = f.qp;
   qp.constraints = bounds;
   qp.hessian = [this](const Vec& x, Vec& y) { apply_PFP(x, y); };
-  qp.hessian_norm = estimated_norm(norm_PFP_, qp.hessian, [this](Vec& v) { coarse_->project(Vec(v), v); },
+  qp.hessian_norm = estimated_norm(norms_.PFP, qp.hessian, [this](Vec& v) { coarse_->project(Vec(v), v); },
                                    settings.norm_estimate, result);
   set_equality_reference(result, qp.hessian_norm);
   qp.range_projector = [this](const Vec& x, Vec& y) { coarse_->project_range(x, y); };
@@ -131,7 +134,7 @@ DualSystem::Formulation DualSystem::free_rows_qp(const DualData& data, const Dua
     F_->apply((*work)[0], (*work)[1]);
     T.apply_projected_transpose((*work)[1], y);
   };
-  const double norm = estimated_norm(norm_reduced_, reduced, {}, settings.norm_estimate, result);
+  const double norm = estimated_norm(norms_.reduced, reduced, {}, settings.norm_estimate, result);
   Formulation f;
   qp::Problem& qp = f.qp;
   // mu = T x changes only free components (gluing and Dirichlet rows): x has mu's bounds.
@@ -155,12 +158,15 @@ DualSystem::Formulation DualSystem::free_rows_qp(const DualData& data, const Dua
   if (preconditioner_)  // approximates (T'PFPT)^+ from M^{-1} ~ (PFP)^+
     qp.preconditioner = [this, &T, work](const Vec& v, Vec& y) {
       T.project_out_kernel(v, (*work)[0]);
-      coarse_->project((*work)[0], projected_);
-      preconditioner_->apply(projected_, applied_);
-      coarse_->project(applied_, (*work)[0]);
+      coarse_->project((*work)[0], work_.projected);
+      preconditioner_->apply(work_.projected, work_.applied);
+      coarse_->project(work_.applied, (*work)[0]);
       T.project_out_kernel((*work)[0], y);
     };
-  if (T.remaining() > 0)  // bodies float as a whole: their balance is left to SMALBE
+  // Bodies float as a whole: their balance is left to SMALBE. Otherwise T leaves no
+  // equality part, bounds only, and MPRGP is SMALBE without a multiplier to update.
+  f.solver = T.remaining() > 0 ? QpSolver::smalbe : QpSolver::mprgp;
+  if (f.solver == QpSolver::smalbe)
     qp.range_projector = [&T](const Vec& v, Vec& y) { T.project_remaining_range(v, y); };
   f.to_multipliers = [&T](const Vec& x, Vec& mu) { T.apply(x, mu); };
   f.equality_norm = [this](const Vec& mu) { return (coarse_->G() * mu).norm(); };  // G lambda - e = G mu

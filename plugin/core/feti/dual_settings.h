@@ -55,7 +55,9 @@ struct DualSolveSettings {
   int settle = 2;
   /// Coulomb friction: Tresca solves of the fixed point at most (feti/friction.h).
   int friction_iterations = 50;
-  void validate() const;  ///< throws InputError naming the setting
+  /// Throws InputError naming the setting; returns the budget of `max_hessian` for the
+  /// user call (qp/budget.h), made here once and passed down to every solve of the call.
+  qp::Budget validate() const;
 };
 
 }  // namespace ffeti

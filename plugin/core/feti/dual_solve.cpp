@@ -50,8 +50,8 @@ const char* path_name(DualPath path) {
   return "smalbe";
 }
 
-Vec DualSystem::run(DualPath route, Formulation formulation, const DualStop& stop, const DualSolveSettings& settings,
-                    const DualWarmStart& warm, DualSolution& result) const {
+Vec DualSystem::run(Formulation formulation, const DualStop& stop, const DualSolveSettings& settings,
+                    const DualWarmStart& warm, qp::Budget& budget, DualSolution& result) const {
   // The solver's Hessian multiplications timed as a whole: F with its projections around it.
   formulation.qp.hessian = [hessian = std::move(formulation.qp.hessian), &result](const Vec& x, Vec& y) {
     const Stopwatch clock;
@@ -74,12 +74,9 @@ Vec DualSystem::run(DualPath route, Formulation formulation, const DualStop& sto
                                                              : formulation.equality_norm(mu());
     return stop(x, mu, gradient_inf, gradient_norm, result.equality_norm, result.equality_reference);
   };
-  const qp::Budget budget(settings.max_hessian);
   Vec& x = formulation.start;
-  switch (route) {
-    case DualPath::cholesky: throw std::logic_error("run: the cholesky path has no dual QP");
-    case DualPath::cg:
-    case DualPath::projected_cg:
+  switch (formulation.solver) {
+    case QpSolver::cg:
       record(result, conjugate_gradient(
                          qp, CgSettings{}, x, budget,
                          [&](const Vec& xi, const Vec& gi, double norm) {
@@ -87,28 +84,22 @@ Vec DualSystem::run(DualPath route, Formulation formulation, const DualStop& sto
                          },
                          settings.monitor));
       break;
-    case DualPath::smalbe:
-      // The free-rows form may leave no equality part (no body floats as a whole): then
-      // its QP has bounds only, and MPRGP is SMALBE without a multiplier to update.
-      if (qp.range_projector) {
-        qp::Problem warm_started = std::move(formulation.qp);
-        warm_started.equality_multiplier = warm.equality_multiplier;
-        SmalbeResult r = smalbe(
-            warm_started, smalbe_for(settings), x, budget,
-            [&](const Vec& xi, const Vec& gP, double norm) {
-              return converged(xi, gP.lpNorm<Eigen::Infinity>(), norm);
-            },
-            settings.monitor);
-        result.equality_multiplier = std::move(r.multiplier);
-        record(result, r);
-        break;
-      }
-      [[fallthrough]];
-    case DualPath::mprgp:
+    case QpSolver::smalbe: {
+      qp::Problem warm_started = std::move(formulation.qp);
+      warm_started.equality_multiplier = warm.equality_multiplier;
+      SmalbeResult r = smalbe(
+          warm_started, smalbe_for(settings), x, budget,
+          [&](const Vec& xi, const Vec& gP, double norm) { return converged(xi, gP.lpNorm<Eigen::Infinity>(), norm); },
+          settings.monitor);
+      result.equality_multiplier = std::move(r.multiplier);
+      record(result, r);
+      break;
+    }
+    case QpSolver::mprgp:
       record(result, mprgp(
                          qp, mprgp_for(settings), x, budget,
                          [&](const Vec& xi, const Vec& gi, double norm) {
-                           return converged(xi, projected_gradient_max(xi, gi, qp.constraints), norm);
+                           return converged(xi, qp.constraints.projected_gradient_max(xi, gi), norm);
                          },
                          settings.monitor));
       break;
@@ -130,7 +121,12 @@ DualSolution DualSystem::solved_by_subdomains(const DualData& data, DualSolution
 
 DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& settings,
                                const DualWarmStart& warm) const {
-  settings.validate();
+  qp::Budget budget = settings.validate();
+  return solve(data, settings, warm, budget);
+}
+
+DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& settings, const DualWarmStart& warm,
+                               qp::Budget& budget) const {
   DualSolution result = prepared(data, settings);
   const DualPath route = path();
   if (route == DualPath::cholesky) return solved_by_subdomains(data, std::move(result));
@@ -160,10 +156,10 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
   Vec lambda;
   if (route == DualPath::cg || route == DualPath::projected_cg) {
     Formulation qp = route == DualPath::cg ? plain_qp(data, settings, result, nullptr) : projected_qp(data, settings);
-    lambda = run(route, std::move(qp), stop_for(result), settings, warm, result) + data.lambda_tilde;
+    lambda = run(std::move(qp), stop_for(result), settings, warm, budget, result) + data.lambda_tilde;
   } else if (route == DualPath::mprgp) {
     Formulation qp = conjugate_ ? conjugate_qp(data, settings, result, bounds) : plain_qp(data, settings, result, &bounds);
-    lambda = lambda_from_shifted(run(route, std::move(qp), stop_for(result), settings, warm, result), bounds, data);
+    lambda = lambda_from_shifted(run(std::move(qp), stop_for(result), settings, warm, budget, result), bounds, data);
   } else if (const double resolution = std::max(settings.feasibility_tolerance > 0 ? settings.feasibility_tolerance
                                                                                 : settings.tolerance,
                                                 kFeasibilityResolution),
@@ -180,7 +176,7 @@ DualSolution DualSystem::solve(const DualData& data, const DualSolveSettings& se
     Formulation qp = settings.coarse_constraints == CoarseConstraints::free_rows
                          ? free_rows_qp(data, settings, result, bounds)
                          : penalty_qp(data, settings, result, bounds);
-    lambda = lambda_from_shifted(run(route, std::move(qp), stop_for(result), settings, warm, result), bounds, data);
+    lambda = lambda_from_shifted(run(std::move(qp), stop_for(result), settings, warm, budget, result), bounds, data);
   }
   // Stopped at round-off: not converged to tol, and not a solve cut short by maxit either.
   if (kkt_stop.stagnated() && result.status == SolveStatus::converged) result.status = SolveStatus::stagnated;
@@ -210,7 +206,7 @@ std::vector<DualSolution> DualSystem::solve(const std::vector<DualData>& data,
     for (const DualData& d : data) results.push_back(solve(d, settings));
     return results;
   }
-  settings.validate();
+  const qp::Budget budget = settings.validate();
   std::vector<Vec> b, mu(data.size(), Vec::Zero(rows()));
   std::vector<StopTest> stop;
   for (const DualData& d : data) {
@@ -230,7 +226,7 @@ std::vector<DualSolution> DualSystem::solve(const std::vector<DualData>& data,
         else F_->apply(x, y);
         hessian_seconds += hessian_clock.seconds();
       },
-      b, mu, CgSettings{}, qp::Budget(settings.max_hessian), stop,
+      b, mu, CgSettings{}, budget, stop,
       coarse_ ? projected_preconditioner() : preconditioner_operator());
   const double seconds = solve_clock.seconds() / static_cast<double>(data.size());
   const int runs = static_cast<int>(data.size());

@@ -14,13 +14,8 @@
 
 namespace ffeti {
 
-void DualSolveSettings::validate() const {
+qp::Budget DualSolveSettings::validate() const {
   if (!(tolerance > 0 && tolerance < 1)) throw InputError("tol: must lie in (0, 1)");
-  try {
-    const qp::Budget budget(max_hessian);  // its check, once
-  } catch (const std::invalid_argument& error) {
-    throw InputError(error.what());
-  }
   const std::pair<const char*, double> positive[] = {
       {"rho", smalbe.rho_factor}, {"M", smalbe.M_factor}, {"eta", smalbe.eta_factor}, {"gamma", mprgp.gamma}};
   for (const auto& [name, value] : positive)
@@ -31,6 +26,7 @@ void DualSolveSettings::validate() const {
   try {
     smalbe.validate();
     mprgp.validate();
+    return qp::Budget(max_hessian);  // its check of maxit
   } catch (const std::invalid_argument& error) {
     throw InputError(error.what());
   }
@@ -51,6 +47,12 @@ DualSystem::DualSystem(const SubdomainList& subdomains, const std::vector<int>& 
   if (comm.sum(local_floating) > 0)
     coarse_ = std::make_unique<CoarseSpace>(subdomains_, local_, global_ids, constraints_.rows(),
                                             constraints_.equality_rows, bodies, comm, coarse_gram);
+  // The path, once: the rows' kinds and the coarse space never change after this (a new
+  // right-hand side keeps the rows, replace_right_hand_side).
+  const bool inequalities = constraints_.inequality_rows() > 0, floating = coarse_ != nullptr;
+  if (constraints_.rows() == 0) path_ = DualPath::cholesky;
+  else if (!inequalities) path_ = floating ? DualPath::projected_cg : DualPath::cg;
+  else path_ = floating ? DualPath::smalbe : DualPath::mprgp;
 }
 
 void DualSystem::replace_right_hand_side(Constraints rebuilt) {
@@ -81,14 +83,6 @@ void DualSystem::use_preconditioner(DualPreconditioner kind, const std::vector<c
 LinearOperator DualSystem::preconditioner_operator() const {
   if (!preconditioner_) return {};
   return [this](const Vec& x, Vec& y) { preconditioner_->apply(x, y); };
-}
-
-DualPath DualSystem::path() const {
-  const bool inequalities = constraints_.inequality_rows() > 0;
-  const bool floating = coarse_ != nullptr;
-  if (constraints_.rows() == 0) return DualPath::cholesky;
-  if (!inequalities) return floating ? DualPath::projected_cg : DualPath::cg;
-  return floating ? DualPath::smalbe : DualPath::mprgp;
 }
 
 DualData DualSystem::data(std::vector<Vec> loads, const Vec& c) const {
@@ -141,22 +135,22 @@ void DualSystem::charge_operator_use(const OperatorUse& start, double sign, int 
 }
 
 void DualSystem::apply_PFP(const Vec& x, Vec& y) const {
-  coarse_->project(x, projected_);
-  F_->apply(projected_, applied_);
-  coarse_->project(applied_, y);  // y = P F P x
+  coarse_->project(x, work_.projected);
+  F_->apply(work_.projected, work_.applied);
+  coarse_->project(work_.applied, y);  // y = P F P x
 }
 
 void DualSystem::apply_PFP(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
-  block_projected_.resize(x.rows(), x.cols());
+  work_.block_projected.resize(x.rows(), x.cols());
   for (Eigen::Index j = 0; j < x.cols(); ++j) {
-    coarse_->project(x.col(j), projected_);
-    block_projected_.col(j) = projected_;
+    coarse_->project(x.col(j), work_.projected);
+    work_.block_projected.col(j) = work_.projected;
   }
-  F_->apply(block_projected_, block_applied_);
+  F_->apply(work_.block_projected, work_.block_applied);
   y.resize(x.rows(), x.cols());
   for (Eigen::Index j = 0; j < x.cols(); ++j) {
-    coarse_->project(block_applied_.col(j), projected_);
-    y.col(j) = projected_;
+    coarse_->project(work_.block_applied.col(j), work_.projected);
+    y.col(j) = work_.projected;
   }
 }
 
@@ -291,9 +285,10 @@ Vec DualSystem::lambda_from_shifted(const Vec& mu, const qp::ConstraintSet& boun
   // Multipliers at a bound are the bound exactly (0, or -g, g, or a pair of norm g), not
   // the bound plus the round-off of lambda~.
   Vec lambda = mu + data.lambda_tilde;
+  const Vec lower = bounds.lower(), upper = bounds.upper();
   const int first_friction = constraints_.first_friction_row();
   for (Eigen::Index i = 0; i < first_friction; ++i)
-    if (bounds.lower[i] != kUnbounded && mu[i] <= bounds.lower[i]) lambda[i] = 0.0;
+    if (lower[i] != kUnbounded && mu[i] <= lower[i]) lambda[i] = 0.0;
   if (constraints_.tangent_directions == 2) {  // a pair at its disc's boundary: on it exactly
     for (int i = first_friction; i < mu.size(); i += 2) {
       const double g = data.slip_bound[i - first_friction];
@@ -304,8 +299,8 @@ Vec DualSystem::lambda_from_shifted(const Vec& mu, const qp::ConstraintSet& boun
   }
   for (Eigen::Index i = first_friction; i < mu.size(); ++i) {
     const double g = data.slip_bound[i - first_friction];
-    if (mu[i] <= bounds.lower[i]) lambda[i] = -g;
-    else if (mu[i] >= bounds.upper[i]) lambda[i] = g;
+    if (mu[i] <= lower[i]) lambda[i] = -g;
+    else if (mu[i] >= upper[i]) lambda[i] = g;
   }
   return lambda;
 }

@@ -52,8 +52,9 @@ class DualSystem {
   /// on every subdomain; candidate_kernel), used by every later solve. Collective.
   void use_conjugate_projector(const std::vector<Eigen::MatrixXd>& modes);
   int rows() const { return constraints_.rows(); }
-  /// The solver path the constraints call for (ALGORITHMS.md section 6).
-  DualPath path() const;
+  /// The solver path the constraints call for (ALGORITHMS.md section 6), chosen once by the
+  /// constructor.
+  DualPath path() const { return path_; }
 
   /// Preconditions every path with the Dirichlet (or lumped) preconditioner built from
   /// `operator_matrices` (this rank's K as the dual operator sees them): CG and projected CG
@@ -72,6 +73,11 @@ class DualSystem {
   /// Solves the dual problem and recovers u. Never throws for non-convergence: see status.
   /// Collective.
   DualSolution solve(const DualData& data, const DualSolveSettings& settings, const DualWarmStart& warm = {}) const;
+  /// The same as one of several solves of a user call (friction's fixed point): `settings`
+  /// validated by the caller, whose `budget` (DualSolveSettings::validate) this solve's
+  /// solvers charge. Collective.
+  DualSolution solve(const DualData& data, const DualSolveSettings& settings, const DualWarmStart& warm,
+                     qp::Budget& budget) const;
 
   /// Solves the dual problems of several right-hand sides. On the CG paths with the seed's
   /// test their CG runs go in lockstep and share each application of F (a block of vectors,
@@ -118,10 +124,13 @@ class DualSystem {
   qp::ConstraintSet multiplier_constraints(const DualData& data) const;
   Vec lambda_from_shifted(const Vec& mu, const qp::ConstraintSet& bounds, const DualData& data) const;
 
-  /// One formulation's QP over the solver's variable x, and how x maps back to the shifted
-  /// multipliers mu = lambda - lambda~.
+  /// The qp/ solver a formulation's QP calls for, set by the formulation that builds it.
+  enum class QpSolver { cg, mprgp, smalbe };
+  /// One formulation's QP over the solver's variable x, the solver that fits it, and how x
+  /// maps back to the shifted multipliers mu = lambda - lambda~.
   struct Formulation {
     qp::Problem qp;
+    QpSolver solver = QpSolver::cg;
     /// mu of a solver iterate x (empty: mu = x).
     std::function<void(const Vec& x, Vec& mu)> to_multipliers;
     /// ||G mu||, which the stopping test weighs (empty: the iterates meet G mu = 0 by
@@ -145,8 +154,8 @@ class DualSystem {
   void set_equality_reference(DualSolution& result, double hessian_norm) const;
 
   // The dispatcher's pieces (dual_solve.cpp).
-  Vec run(DualPath route, Formulation formulation, const DualStop& stop, const DualSolveSettings& settings,
-          const DualWarmStart& warm, DualSolution& result) const;  // the route's solver on the formulation; returns mu
+  Vec run(Formulation formulation, const DualStop& stop, const DualSolveSettings& settings, const DualWarmStart& warm,
+          qp::Budget& budget, DualSolution& result) const;  // the formulation's solver on its QP; returns mu
   DualSolution solved_by_subdomains(const DualData& data, DualSolution result) const;  // the cholesky path
 
   const SubdomainList& subdomains_;
@@ -157,20 +166,26 @@ class DualSystem {
   std::unique_ptr<SubdomainSum> sum_;
   std::unique_ptr<DualOperator> F_;
   std::unique_ptr<CoarseSpace> coarse_;
+  DualPath path_ = DualPath::cholesky;
   std::unique_ptr<ConjugateProjector> conjugate_;
   std::unique_ptr<DirichletPreconditioner> preconditioner_;
   DualPreconditioner preconditioner_kind_ = DualPreconditioner::none;
   // What solve() (const: it changes no part of the system a caller sees) keeps from call to
-  // call. Each depends only on the system, never on a right-hand side or the settings, so a
-  // later solve may reuse it; none is safe to share between threads (a DualSystem solves one
-  // problem at a time, collectively). Work vectors, reused so that each application of an
-  // operator allocates nothing:
-  mutable Vec projected_, applied_;                   // buffers of apply_PFP and the preconditioner
-  mutable Vec conjugate_Px_, conjugate_r_, conjugate_z_;  // P x of the conjugate Hessian; P'x, M^-1 P'x of its preconditioner
-  mutable Eigen::MatrixXd block_projected_, block_applied_;  // of the block apply_PFP
+  // call, in four mutable members. Each depends only on the system, never on a right-hand
+  // side or the settings, so a later solve may reuse it; none is safe to share between
+  // threads (a DualSystem solves one problem at a time, collectively).
+  struct Workspace {  // reused so that each application of an operator allocates nothing
+    Vec projected, applied;                       // of apply_PFP and the preconditioner
+    Vec conjugate_Px, conjugate_r, conjugate_z;   // P x of the conjugate Hessian; P'x, M^-1 P'x of its preconditioner
+    Eigen::MatrixXd block_projected, block_applied;  // of the block apply_PFP
+  };
+  mutable Workspace work_;
   // Built at first use, as only some paths need them (10-20 applications of the operator for
   // a norm estimate; a factorization of C C' for T):
-  mutable CachedNorm norm_F_, norm_PFP_, norm_reduced_, norm_conjugate_;  // ||F||, ||PFP||, ||T'PFPT||, ||FP||
+  struct Norms {
+    CachedNorm F, PFP, reduced, conjugate;  // ||F||, ||PFP||, ||T'PFPT||, ||FP||
+  };
+  mutable Norms norms_;
   mutable std::unique_ptr<FreeRowProjector> free_rows_;
   mutable double check_seconds_ = 0;  // spent in primal_check so far (a solve reports its difference)
 };

@@ -68,8 +68,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
   PhaseTimes times;
   long applications = 0;  // of F, summed like the counts and times
   // maxit holds over the whole fixed point: each Tresca solve gets what the ones before left.
-  settings.validate();
-  const qp::Budget budget(settings.max_hessian);
+  qp::Budget budget = settings.validate();  // the call's one check, charged by every Tresca solve
   const double tol = settings.tolerance;
   if (law.coulomb()) settings.tolerance = std::max(tol, kFirstSolveTolerance);
   if (settings.feasibility_tolerance == 0) settings.feasibility_tolerance = tol;  // each solve's check at the user's
@@ -80,7 +79,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
       // No forces within the cones balance the loads: nor do those of g = 0, within every
       // cone, whose solve says so (the Farkas check) without iterating.
       data.slip_bound = Vec::Zero(c.friction_rows);
-      out.dual = dual.solve(data, settings);
+      out.dual = dual.solve(data, settings, {}, budget);
       out.dual.status = SolveStatus::infeasible;
       out.dual.equality_norm = f.distance * out.dual.equality_reference;  // the law's distance, not g = 0's
       out.slip_bound = data.slip_bound;
@@ -94,8 +93,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
   Vec feasible_bound, feasible_lambda;  // of the last converged Tresca solve
   for (;;) {
     data.slip_bound = g;
-    settings.max_hessian = budget.remaining(counts.hessian);
-    DualSolution solved = dual.solve(data, settings, warm);
+    DualSolution solved = dual.solve(data, settings, warm, budget);
     if (solved.status != SolveStatus::infeasible) warm.equality_multiplier = solved.equality_multiplier;
     ++out.iterations;
     out.hessian.push_back(solved.counts.hessian);
@@ -107,7 +105,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
     out.dual = std::move(solved);
     out.slip_bound = g;
     if (law.coulomb() && out.dual.status == SolveStatus::infeasible && out.iterations < settings.friction_iterations &&
-        budget.remaining(counts.hessian) > 0) {
+        !budget.exhausted()) {
       // The law admits an equilibrium (checked above); these bounds, from an iterate's normal
       // forces, do not (the 3D block sheared at 0.96 mu P: its first solve's normal forces fall
       // short of Q / mu, and the fixed point converges from there). Widened to the last
@@ -129,7 +127,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
     out.bound_change = scale > 0 ? change / scale : change;
     // Done only when a solve to tol itself gave bounds within tol of the ones it solved with.
     if (settings.tolerance <= tol && out.bound_change <= tol) break;
-    if (out.iterations >= settings.friction_iterations || budget.remaining(counts.hessian) == 0) {
+    if (out.iterations >= settings.friction_iterations || budget.exhausted()) {
       out.dual.status = SolveStatus::max_iterations;
       break;
     }

@@ -9,9 +9,9 @@ namespace {
 /// take() receives the product. Lets several runs share each application of A.
 class CgRun {
  public:
-  CgRun(const Vec& b, Vec& x, const CgSettings& settings, const qp::Budget& budget, const StopTest& stop,
+  CgRun(const Vec& b, Vec& x, const CgSettings& settings, int max_hessian, const StopTest& stop,
         const Monitor& monitor, const LinearOperator& preconditioner)
-      : b_(b), x_(x), settings_(settings), budget_(budget), stop_(stop), monitor_(monitor),
+      : b_(b), x_(x), settings_(settings), max_hessian_(max_hessian), stop_(stop), monitor_(monitor),
         preconditioner_(preconditioner) {
     if (x.size() != b.size()) throw std::invalid_argument("CG: x and b differ in size");
     state_ = State::initial;  // next: A x, for g = A x - b
@@ -82,7 +82,7 @@ class CgRun {
       state_ = State::verify;
       return;
     }
-    if (result_.counts.hessian >= budget_.max_hessian()) return finish(SolveStatus::max_iterations);
+    if (result_.counts.hessian >= max_hessian_) return finish(SolveStatus::max_iterations);
     state_ = State::step;
   }
 
@@ -90,7 +90,7 @@ class CgRun {
   Vec& x_;
   Vec g_;  // A x - b
   const CgSettings& settings_;
-  const qp::Budget& budget_;
+  const int max_hessian_;  // this run may multiply
   const StopTest& stop_;
   const Monitor& monitor_;
   const LinearOperator& preconditioner_;
@@ -107,19 +107,20 @@ void CgSettings::validate() const {
   if (residual_replacements < 0) throw std::invalid_argument("CG residual_replacements must be >= 0");
 }
 
-CgResult conjugate_gradient(const qp::Problem& problem, const CgSettings& settings, Vec& x, const qp::Budget& budget,
+CgResult conjugate_gradient(const qp::Problem& problem, const CgSettings& settings, Vec& x, qp::Budget& budget,
                             const StopTest& stop, const Monitor& monitor) {
   settings.validate();
   if (problem.constraints.bounded() || problem.range_projector)
     throw std::invalid_argument("CG: the problem has constraints (MPRGP's or SMALBE's)");
   const LinearOperator& A = problem.hessian;
   const Vec& b = problem.b;
-  CgRun run(b, x, settings, budget, stop, monitor, problem.preconditioner);
+  CgRun run(b, x, settings, budget.remaining(), stop, monitor, problem.preconditioner);
   Vec product(b.size());
   while (!run.finished()) {
     A(run.next(), product);
     run.take(product);
   }
+  budget.charge(run.result().counts.hessian);
   return run.result();
 }
 
@@ -134,7 +135,7 @@ std::vector<CgResult> conjugate_gradient_block(const BlockOperator& A, const std
   std::vector<CgRun> runs;
   runs.reserve(b.size());
   for (size_t j = 0; j < b.size(); ++j)
-    runs.emplace_back(b[j], x[j], settings, budget, stop[j], no_monitor, preconditioner);
+    runs.emplace_back(b[j], x[j], settings, budget.remaining(), stop[j], no_monitor, preconditioner);
   Eigen::MatrixXd block, products;
   for (;;) {
     std::vector<size_t> open;

@@ -29,15 +29,16 @@ using CgResult = QpResult;
 /// tolerance asked for lies below what round-off lets the data reach.
 /// With `problem.preconditioner` M (symmetric positive definite on the iteration's subspace)
 /// this is preconditioned CG: directions from M g instead of g; the stop test still
-/// receives ||g||_2.
-CgResult conjugate_gradient(const qp::Problem& problem, const CgSettings& settings, Vec& x, const qp::Budget& budget,
+/// receives ||g||_2. Multiplies at most budget.remaining() times and charges the budget.
+CgResult conjugate_gradient(const qp::Problem& problem, const CgSettings& settings, Vec& x, qp::Budget& budget,
                             const StopTest& stop, const Monitor& monitor = {});
 
 /// Y = A X, column by column the same operator as a LinearOperator.
 using BlockOperator = std::function<void(const Eigen::MatrixXd& x, Eigen::MatrixXd& y)>;
 
 /// conjugate_gradient for the systems A x_j = b_j, j = 0..k-1, with stop test stop[j] and
-/// the budget for each, preconditioned by M (applied to one vector at a time; empty: none):
+/// budget.remaining() multiplications for each (the budget is not charged: each run counts
+/// as a solve on its own), preconditioned by M (applied to one vector at a time; empty: none):
 /// every step multiplies the vectors of the unfinished systems as one block (A is called as
 /// often as the longest run needs). Each system runs the same iteration, with the same
 /// counts, as on its own.

@@ -2,8 +2,9 @@
 //   min 1/2 x'Ax - b'x  subject to  l_i <= x_i <= u_i  (l_i = kUnbounded, u_i = +infinity:
 //   no bound; the frictionless dual has lower bounds only, friction's tangential rows both),
 // and with disc blocks (isotropic friction in 3D) Dostal's MPGP, its generalisation to
-// separable convex sets: qp/disc.h has the disc pairs' projection, free set, chopped and
-// reduced gradients and feasible step; a problem without discs never runs that code.
+// separable convex sets. Written once against qp::ConstraintSet (qp/constraint_set.h): the
+// projection, free and chopped gradients, reduced free gradient, feasible step and the
+// curved faces' corrections come from the set's kinds (qp/bound_sets.h, qp/disc_set.h).
 #pragma once
 
 #include "qp/problem.h"
@@ -33,40 +34,25 @@ struct MprgpSettings {
 
 using MprgpResult = QpResult;
 
-/// Projected gradient gP = phi + beta of ALGORITHMS.md section 4 (box bounds as in
-/// section 9): gP_i = g_i where x_i is free, min(g_i, 0) where x_i = l_i, max(g_i, 0) where
-/// x_i = u_i, 0 where both; on a disc pair, g inside, g - min(n'g, 0) n on the circle (n the
-/// outward unit normal), 0 at radius 0.
-Vec projected_gradient(const Vec& x, const Vec& g, const qp::ConstraintSet& bounds);
-/// ||gP||_inf without forming gP (stopping tests call it every iteration; with discs it does).
-double projected_gradient_max(const Vec& x, const Vec& g, const qp::ConstraintSet& bounds);
-
-/// Sets the components of x outside their bounds onto them and the disc pairs outside their
-/// discs onto the circle; returns how many components (pairs) there were.
-int project_onto_bounds(Vec& x, const qp::ConstraintSet& bounds);
-
-/// Bounded components of x above their bound: for the FETI dual, the contact rows with a
-/// positive multiplier (the contact set).
-int off_bound_count(const Vec& x, const Vec& lower);
-
 /// Minimizes the problem (its free, half-line, box and disc blocks; no equality part) from the
 /// start x (projected onto the bounds first; then, unless it passes the stop test, settled
 /// by `settings.settle_rounds` face solves); x is the last iterate on return. Needs
 /// `problem.hessian_norm`, an upper estimate of ||A||_2. `stop` receives x, g = Ax - b and
-/// ||gP(x)||_2. With a preconditioner M (symmetric positive definite), the conjugate
+/// ||gP(x)||_2. Multiplies at most what the budget has left on entry, and charges it with
+/// what it spent on return. With a preconditioner M (symmetric positive definite), the conjugate
 /// gradient steps are preconditioned in face: their directions come from M applied to the
 /// free gradient, restricted to the free set (an SPD preconditioner of the face's reduced
 /// problem); the expansion and proportioning steps, and so the convergence guarantees, are
 /// unchanged. With box blocks this is Dostal's MPRGP for bounds on both sides: the free set
 /// excludes both bounds, the chopped gradient points into the box, the reduced free
 /// gradient and the feasible step respect both. With disc blocks this is MPGP: the same
-/// steps with the disc's geometry (qp/disc.h), the tangent of a pair on its circle free: CG
+/// steps with the disc's geometry (qp/disc_set.h), the tangent of a pair on its circle free: CG
 /// moves such a pair along it with the circle's curvature added to A and projects it back
 /// (g then known to 1e-2 ||gP|| between recomputations and at every stop decision), a pair
 /// whose circle curves more than 0.3 ||A|| holds its tangent instead, the fixed step
 /// goes along g - beta, and proportioning releases pairs radially into their discs (with
 /// held stiff pairs, the projected step P(x - abar (g - phi)) that also turns them).
-MprgpResult mprgp(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, const qp::Budget& budget,
+MprgpResult mprgp(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, qp::Budget& budget,
                   const StopTest& stop, const Monitor& monitor = {});
 
 /// The same, continued from an iterate whose gradient is known: if `gradient_is_current`,
@@ -75,7 +61,7 @@ MprgpResult mprgp(const qp::Problem& problem, const MprgpSettings& settings, Vec
 /// With `inexact_gradient` (discs only make it nonzero) g may be off by up to that bound, in
 /// and out: g is recomputed only when the bound exceeds 1e-2 ||gP||, not on every return.
 MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, Vec& g,
-                                bool gradient_is_current, const qp::Budget& budget, const StopTest& stop,
+                                bool gradient_is_current, qp::Budget& budget, const StopTest& stop,
                                 const Monitor& monitor = {}, double* inexact_gradient = nullptr);
 
 }  // namespace ffeti

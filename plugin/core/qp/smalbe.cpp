@@ -16,15 +16,14 @@ void SmalbeSettings::validate() const {
   inner.validate();
 }
 
-SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, Vec& x, const qp::Budget& budget,
+SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, Vec& x, qp::Budget& budget,
                     const StopTest& stop, const Monitor& monitor) {
   settings.validate();
   if (!problem.hessian || !problem.range_projector) throw std::invalid_argument("SMALBE: incomplete problem");
   const Vec& b = problem.b;
   const qp::ConstraintSet& bounds = problem.constraints;
-  const Vec& lower = bounds.lower;
   const Eigen::Index n = b.size();
-  if (x.size() != n || lower.size() != n || (bounds.upper.size() && bounds.upper.size() != n))
+  if (x.size() != n || bounds.size() != n)
     throw std::invalid_argument("SMALBE: x, b and the bounds differ in size");
   if (!(problem.hessian_norm > 0)) throw std::invalid_argument("SMALBE: ||H|| must be > 0");
 
@@ -78,11 +77,11 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
       problem.range_projector(xi, Qx);
       const double q_norm = Qx.norm();
       // Projected gradient of L(x, nu, 0): the gradient without its penalty part rho Q x.
-      const Vec gp0 = projected_gradient(xi, gi - rho * Qx, bounds);
+      const Vec gp0 = bounds.projected_gradient(xi, gi - rho * Qx);
       result.gradient_norm = gp0.norm();
       result.equality_norm = q_norm;
       if (monitor)
-        monitor({"smalbe", outer, result.gradient_norm, q_norm, applications, off_bound_count(xi, lower)});
+        monitor({"smalbe", outer, result.gradient_norm, q_norm, applications, bounds.off_bound_count(xi)});
       if (stop(xi, gp0, result.gradient_norm)) return globally_done = true;
       // At least one inner step per outer iteration: a multiplier update that the inner
       // solver does not answer only grows nu, and can stall the outer loop for many rounds.
@@ -91,7 +90,7 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
                                                                         : M * q_norm;
       return gp_norm <= bound;
     };
-    if (result.counts.hessian >= budget.max_hessian()) {
+    if (budget.exhausted()) {  // the inner solves charged it
       result.status = SolveStatus::max_iterations;
       return result;
     }
@@ -101,7 +100,7 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
     inner_problem.hessian_norm = std::max(problem.hessian_norm, rho);
     const MprgpResult inner_result =
         mprgp_with_gradient(inner_problem, inner, x, g, gradient_is_current,
-                            qp::Budget(budget.remaining(result.counts.hessian)), inner_stop, {}, &gradient_error);
+                            budget, inner_stop, {}, &gradient_error);
     result.counts += inner_result.counts;
     result.rho = rho;
     if (globally_done) {

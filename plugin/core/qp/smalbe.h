@@ -40,10 +40,10 @@ struct SmalbeResult : QpResult {
 /// multiplier term `problem.equality_multiplier` (empty: 0). `problem.hessian_norm` is an
 /// upper estimate of ||H||_2. With `problem.preconditioner` M, an SPD approximation of H^{-1}
 /// on Ker C, the inner MPRGP preconditions in face with P M P + Q / rho (P = I - Q), the
-/// inverse's approximation of H + rho Q. The budget holds over all inner MPRGP calls.
+/// inverse's approximation of H + rho Q. The inner MPRGP calls charge the budget.
 /// `stop` receives x, gP(x, nu, 0) (the projected gradient of the Lagrangian without
 /// penalty) and its 2-norm; true ends the solve with `converged`.
-SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, Vec& x, const qp::Budget& budget,
+SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, Vec& x, qp::Budget& budget,
                     const StopTest& stop, const Monitor& monitor = {});
 
 }  // namespace ffeti

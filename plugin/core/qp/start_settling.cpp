@@ -1,7 +1,6 @@
 #include "qp/start_settling.h"
 
-#include "qp/disc.h"
-#include "qp/mprgp.h"
+#include "qp/constraint_set.h"
 
 #include <vector>
 
@@ -65,16 +64,14 @@ void solve_on_face(const LinearOperator& A, const std::vector<char>& face, int m
 void settle_start(const LinearOperator& A, const Vec& b, const qp::ConstraintSet& bounds, int rounds, int max_hessian,
                   Vec& x, Vec& g, IterationCounts& counts, const LinearOperator& preconditioner,
                   const Monitor& monitor) {
-  const Eigen::Index n = x.size();
-  std::vector<char> face(n);
+  std::vector<char> face;
   Vec y, gy, Ay;
   for (int round = 0; round < rounds && counts.hessian + 1 < max_hessian; ++round) {
-    for (Eigen::Index i = 0; i < n; ++i) face[i] = bounds.free(i, x[i]);
-    for (const Eigen::Index i : qp::held_disc_pairs(x, bounds)) face[i] = face[i + 1] = false;
+    face = bounds.free_components(x);
     y = x;
     gy = g;
     solve_on_face(A, face, max_hessian - 1, y, gy, counts, preconditioner);
-    const int released = project_onto_bounds(y, bounds);
+    const int released = bounds.project(y);
     if (released > 0) {
       A(y, Ay);
       ++counts.hessian;
@@ -84,8 +81,7 @@ void settle_start(const LinearOperator& A, const Vec& b, const qp::ConstraintSet
     x.swap(y);
     g.swap(gy);
     if (monitor)
-      monitor({"settle", round, projected_gradient(x, g, bounds).norm(), 0.0, counts.hessian,
-               off_bound_count(x, bounds.lower)});
+      monitor({"settle", round, bounds.projected_gradient(x, g).norm(), 0.0, counts.hessian, bounds.off_bound_count(x)});
     if (released == 0) return;
   }
 }
