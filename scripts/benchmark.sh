@@ -17,6 +17,8 @@
 #   ./scripts/benchmark.sh accuracy        what accuracy costs in time, every scene, tol 1e-2 .. 1e-10, and a
 #                                          design gradient's and design loops' accuracy against tol (~8 min,
 #                                          the 3D cubes near a million unknowns about 4 of them; 2.5 GB)
+#   ./scripts/benchmark.sh real-meshes     a real mesh (gmsh, METIS parts, node to face) weak scaling to 4.5 million
+#                                          unknowns (22 GB, 72 min on a loaded machine), part sizes, the MUMPS peer
 #   ./scripts/benchmark.sh dynamics        transient contact: a bar on a wall, a block sliding to rest (~2 min)
 #   ./scripts/benchmark.sh busy-machine    scenes idle and beside busy neighbour processes, threads (~2 min)
 #   ./scripts/benchmark.sh friction        Cattaneo-Mindlin and a block on a slope: tractions, stick/slip,
@@ -58,6 +60,7 @@ case "${1:-all}" in
   friction) /usr/bin/python3 "$root/scripts/friction_benchmark.py" ;;
   three-dimensions) /usr/bin/python3 "$root/scripts/three_dimensions_benchmark.py" "${@:2}" ;;
   elasticity-3d) /usr/bin/python3 "$root/scripts/three_dimensions_benchmark.py" --only elasticity ;;
+  real-meshes) /usr/bin/python3 "$root/scripts/real_meshes_benchmark.py" "${@:2}" ;;
   all) /usr/bin/python3 "$root/scripts/model_problem_benchmark.py"
        /usr/bin/python3 "$root/scripts/parallel_benchmark.py"
        /usr/bin/python3 "$root/scripts/hertz_benchmark.py"
@@ -70,6 +73,7 @@ case "${1:-all}" in
        /usr/bin/python3 "$root/scripts/accuracy_benchmark.py"
        /usr/bin/python3 "$root/scripts/busy_machine_benchmark.py"
        /usr/bin/python3 "$root/scripts/friction_benchmark.py"
-       /usr/bin/python3 "$root/scripts/three_dimensions_benchmark.py" ;;
-  *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization|scalability|large-contact|hard-cases|dynamics|accuracy|busy-machine|friction|three-dimensions|elasticity-3d]" >&2; exit 2 ;;
+       /usr/bin/python3 "$root/scripts/three_dimensions_benchmark.py"
+       /usr/bin/python3 "$root/scripts/real_meshes_benchmark.py" ;;
+  *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization|scalability|large-contact|hard-cases|dynamics|accuracy|busy-machine|friction|three-dimensions|elasticity-3d|real-meshes]" >&2; exit 2 ;;
 esac

@@ -17,6 +17,7 @@ Times are wall clock on the machine as it was (its load is in the run's row); co
 Usage: scripts/real_meshes_benchmark.py [--render] (--render: the page from the CSVs alone).
 FFETI_RUN_DIR=build/edp-tests runs the build's plugin."""
 import argparse
+import math
 import os
 import sys
 
@@ -65,6 +66,25 @@ def measure():
     end_run(PAGE, begun)
 
 
+MEMORY_PHASES = [("meshes read", "mb_meshes"), ("parts cut", "mb_parts"), ("assembled", "mb_assembly"),
+                 ("set up", "mb_setup"), ("solved", "mb_solve")]
+
+
+def per_unknown_kib(key):
+    """A table cell: the resident MiB in `key` as KiB per unknown."""
+    return lambda r: f"{f(r, key) * 1024 / f(r, 'unknowns'):.2f}"
+
+
+def nearest(rows, unknowns):
+    """The row whose size is closest to `unknowns` (by ratio)."""
+    return min(rows, key=lambda r: abs(math.log(f(r, "unknowns") / unknowns)))
+
+
+def nearest_boxes(unknowns):
+    """The 3D boxes' weak-scaling row (three-dimensions.md) closest in size."""
+    return nearest(read_csv("three-dimensions", "elasticity-weak"), unknowns)
+
+
 def per_unknown_us(row, key):
     return 1e6 * f(row, key) / f(row, "unknowns")
 
@@ -90,7 +110,8 @@ def plot(weak):
         axes[0].semilogx(unknowns, [per_unknown_us(r, key) for r in done], "o-", label=label)
     axes[0].semilogx(unknowns, [1e6 * whole(r) / f(r, "unknowns") for r in done], "k^-", label="whole run")
     axes[0].set_ylabel("seconds per unknown [µs]")
-    axes[0].legend(fontsize=8)
+    axes[0].set_ylim(0, 1.45 * max(1e6 * whole(r) / f(r, "unknowns") for r in done))  # room for the legend
+    axes[0].legend(fontsize=7, ncol=3, loc="upper center")
     axes[1].semilogx(unknowns, [f(r, "hessian") for r in done], "o-", label="Hessian multiplications")
     axes[1].semilogx(unknowns, [f(r, "outer") for r in done], "s--", label="outer iterations")
     axes[1].set_ylim(bottom=0)
@@ -131,6 +152,21 @@ def render():
              f"KiB per unknown at its peak, of which the factors "
              f"{f(largest, 'bytes_factor_per_unknown') / 1024:.1f} KiB.",
              ""]
+    boxes = nearest_boxes(f(largest, "unknowns"))
+    peak_kib = f(largest, "process_peak_mb") * 1024 / f(largest, "unknowns")
+    lines += ["What the aims of the real-mesh issue came to in this run:", "",
+              f"- Multiplications at the largest size against the smallest: {largest['hessian']} / {first['hessian']} = "
+              f"{f(largest, 'hessian') / f(first, 'hessian'):.2f} (aim: at most 1.5).",
+              f"- Against the 3D boxes at a similar size (three-dimensions.md, {f(boxes, 'unknowns'):,.0f} unknowns: "
+              f"{boxes['hessian']} multiplications): the real mesh at {f(nearest(done, f(boxes, 'unknowns')), 'unknowns'):,.0f} "
+              f"took {nearest(done, f(boxes, 'unknowns'))['hessian']}, "
+              f"{f(nearest(done, f(boxes, 'unknowns')), 'hessian') / f(boxes, 'hessian'):.1f} times (aim: at most 1.5; "
+              "not met: with each body in one subdomain the contact alone took about 50 at 38k unknowns, and "
+              "the METIS cuts about 35 more: docs/log.md, 2026-12-06).",
+              f"- Memory: {peak_kib:.1f} KiB per unknown at the peak (aim: at most 2), the factors "
+              f"{f(largest, 'bytes_factor_per_unknown') / 1024:.1f} of it; where the rest sits is the table "
+              "'Memory by phase' below.",
+              f"- Size: {f(largest, 'unknowns'):,.0f} unknowns on this 24 GiB machine (aim: 5 million or more).", ""]
     if stopped:
         s = stopped[0]
         lines += [f"The next size, -h {s['h']}, stopped at the {s['limit']} limit after {float(s['seconds']):.0f} s "
@@ -152,11 +188,21 @@ def render():
          lambda r: f"{f(r, 'process_peak_mb') * 1024 / f(r, 'unknowns'):.2f}" if r.get("unknowns") else "-"),
         ("GB/s", lambda r: f"{gbytes_per_second(r):.1f}" if r.get("unknowns") else "-"),
         ("status", lambda r: r["status"] if r["status"] != "stopped" else f"stopped ({r['limit']})")])
+    lines += ["", "## Memory by phase", "",
+              "The process's resident memory as each phase of the scene ended, KiB per unknown: the two bodies' "
+              "meshes read, the part meshes cut, the parts assembled (FreeFEM's matrices K_s, loads, coordinates and "
+              "condition lists), `fetiSetup` done (the plugin's copies of K_s and f_s, constraint rows, coarse "
+              "problem and factors: the factors alone in the next column), the solve done.", ""]
+    lines += markdown_table(done, [
+        ("unknowns", ("unknowns", ",.0f")),
+        *[(label, per_unknown_kib(key)) for label, key in MEMORY_PHASES],
+        ("of which factors", lambda r: f"{f(r, 'bytes_factor_per_unknown') / 1024:.2f}"),
+        ("peak", lambda r: f"{f(r, 'process_peak_mb') * 1024 / f(r, 'unknowns'):.2f}")])
     lines += ["", "## Part size", "",
               f"The same scene at -h {PART_SWEEP_H} cut into parts of 500 to 3500 nodes: smaller parts hold "
               "sparser factors (less memory per unknown, cheaper solves) against a larger dual and coarse problem.", ""]
     lines += markdown_table(parts, [
-        ("nodes per part (asked / mean)", lambda r: f"{r['part_nodes']} / {r['nodes_per_part']}"), ("parts", "subdomains"),
+        ("nodes per part: asked / mean (interface nodes in each part)", lambda r: f"{r['part_nodes']} / {r['nodes_per_part']}"), ("parts", "subdomains"),
         ("dual", ("dual", ",.0f")), ("coarse", "coarse"), ("Hessian", "hessian"), ("outer", "outer"),
         ("factorization [s]", ("time_factor", ".1f")), ("dual solve [s]", ("time_solve", ".1f")),
         ("whole run [s]", lambda r: f"{whole(r):.1f}"),
