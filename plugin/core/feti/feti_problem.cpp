@@ -1,5 +1,7 @@
 #include "feti/feti_problem.h"
 
+#include "feti/held_bytes.h"
+
 #include "constraints/surface_checks.h"
 
 #include "factor/blas_library.h"
@@ -173,6 +175,8 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
     if (counted.insert(&s->factor()).second)
       local_nonzeros += s->factor_nonzeros(), local_bytes += s->factor_bytes(), local_operator_bytes += s->operator_bytes();
   primal_dimension_ = static_cast<long>(comm.sum(static_cast<double>(local_primal)));
+  input_bytes_ = comm.sum(ffeti::input_bytes(inputs_));
+  kernel_bytes_ = comm.sum(ffeti::kernel_bytes(subdomains_));
   factor_nonzeros_ = comm.sum(local_nonzeros);
   factor_bytes_ = comm.sum(local_bytes);
   operator_bytes_ = comm.sum(local_operator_bytes);

@@ -2,6 +2,7 @@
 
 #include "service/options.h"
 #include "parallel/process.h"
+#include "feti/held_bytes.h"
 
 #include <sstream>
 
@@ -27,6 +28,9 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
       {"factor_nnz", problem.factor_nonzeros()},
       {"factor_bytes", problem.factor_bytes()},
       {"operator_bytes", problem.operator_bytes()},
+      {"input_bytes", problem.input_bytes()},
+      {"kernel_bytes", problem.kernel_bytes()},
+      {"constraint_bytes", constraint_bytes(c)},  // this rank's rows
       {"factorizations", static_cast<double>(problem.factorizations())},
       {"shared_factors", static_cast<double>(problem.shared_factors())},
       {"supernodal_factors", static_cast<double>(problem.supernodal_factors())},

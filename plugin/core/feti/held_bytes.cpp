@@ -1,0 +1,46 @@
+#include "feti/held_bytes.h"
+
+#include <unordered_set>
+
+namespace ffeti {
+namespace {
+
+template <class T>
+double vector_bytes(const std::vector<T>& v) {
+  return static_cast<double>(v.size() * sizeof(T));
+}
+
+double matrix_bytes(const SparseMatrix& K) {
+  using Index = SparseMatrix::StorageIndex;
+  return static_cast<double>(K.nonZeros()) * static_cast<double>(sizeof(double) + sizeof(Index)) +
+         static_cast<double>(K.outerSize() + 1) * static_cast<double>(sizeof(Index));
+}
+
+}  // namespace
+
+double input_bytes(const std::vector<SubdomainInput>& inputs) {
+  double bytes = 0;
+  std::unordered_set<const SparseMatrix*> counted;
+  for (const SubdomainInput& in : inputs) {
+    if (counted.insert(&in.K.get()).second) bytes += matrix_bytes(in.K);
+    bytes += static_cast<double>(in.f.size()) * sizeof(double);
+    bytes += vector_bytes(in.x) + vector_bytes(in.y) + vector_bytes(in.z) + vector_bytes(in.component);
+    bytes += vector_bytes(in.dirichlet_dofs) + vector_bytes(in.dirichlet_values);
+  }
+  return bytes;
+}
+
+double kernel_bytes(const SubdomainList& subdomains) {
+  double bytes = 0;
+  for (const auto& s : subdomains)
+    bytes += static_cast<double>(s->kernel().size()) * sizeof(double) + vector_bytes(s->fixing()) +
+             vector_bytes(s->interface());
+  return bytes;
+}
+
+double constraint_bytes(const Constraints& constraints) {
+  return vector_bytes(constraints.row_start) + vector_bytes(constraints.entries) + vector_bytes(constraints.rhs) +
+         vector_bytes(constraints.kind);
+}
+
+}  // namespace ffeti

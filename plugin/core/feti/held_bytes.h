@@ -1,0 +1,24 @@
+// What the plugin holds besides the factors, in bytes, for the report's memory keys: a user
+// who runs out of memory learns which part of a set-up to shrink (smaller subdomains hold
+// sparser factors; the copies of K_s and the constraint rows scale with the unknowns).
+#pragma once
+
+#include "constraints/constraints.h"
+#include "constraints/problem_input.h"
+#include "feti/subdomain.h"
+
+#include <vector>
+
+namespace ffeti {
+
+/// The plugin's copies of the subdomains' input: K_s (a matrix shared by identical
+/// subdomains counted once), f_s, coordinates, components and Dirichlet lists.
+double input_bytes(const std::vector<SubdomainInput>& inputs);
+
+/// The subdomains' kernel bases R_s and index maps (fixing dofs, kept dofs, interface).
+double kernel_bytes(const SubdomainList& subdomains);
+
+/// The constraint rows B, c and their kinds as this rank holds them.
+double constraint_bytes(const Constraints& constraints);
+
+}  // namespace ffeti
