@@ -6,6 +6,7 @@
 
 #include "base/errors.h"
 #include "factor/cholmod_factor.h"
+#include "factor/dense_rate.h"
 #include "service/statistics.h"
 #include "mesh/tetrahedron_quality.h"
 #include "parallel/process.h"
@@ -76,6 +77,10 @@ double feti_wall_time() {
 double feti_resident_mb() { return resident_memory_mb(); }
 double feti_peak_mb() { return peak_memory_mb(); }
 
+/// GFlop/s of a dense matrix product on one thread, measured once per process: beside
+/// fetiInfo's factor_flops / time_factor, how near the factorizations run to the machine.
+double feti_dense_gflops() { return dense_gflops_one_thread(); }
+
 /// The bound below which |volume| / (longest edge)^3 marks a tetrahedron as flat, the
 /// core's (ffeti-solve applies the same): ffeti.idp's ffetiFlatTetrahedron starts from it.
 double feti_flat_tetrahedron() { return kFlatTetrahedron; }
@@ -104,6 +109,7 @@ void add_utility_functions() {
   Global.Add("fetiWallTime", "(", new OneOperator0<double>(feti_wall_time));
   Global.Add("fetiResidentMb", "(", new OneOperator0<double>(feti_resident_mb));
   Global.Add("fetiPeakMb", "(", new OneOperator0<double>(feti_peak_mb));
+  Global.Add("fetiDenseGflops", "(", new OneOperator0<double>(feti_dense_gflops));
   Global.Add("fetiFlatTetrahedron", "(", new OneOperator0<double>(feti_flat_tetrahedron));
   Global.Add("fetiFactorizations", "(", new OneOperator0<long>(feti_factorizations));
 }

@@ -1,5 +1,7 @@
 // The report's memory keys (feti/held_bytes): bytes counted from the containers' sizes, a
-// stiffness shared by identical subdomains counted once, against sums worked out by hand.
+// stiffness shared by identical subdomains counted once, against sums worked out by hand;
+// and the dense rate the factorizations' rate is read against (factor/dense_rate).
+#include "factor/dense_rate.h"
 #include "feti/held_bytes.h"
 
 #include <gtest/gtest.h>
@@ -51,6 +53,16 @@ TEST(HeldBytes, ConstraintsCountTheirRowsEntriesRightHandSidesAndKinds) {
   c.kind = {RowKind::gluing, RowKind::contact};
   const double expected = 3 * sizeof(ConstraintEntry) + 3 * sizeof(int) + 2 * sizeof(double) + 2 * sizeof(RowKind);
   EXPECT_DOUBLE_EQ(constraint_bytes(c), expected);
+}
+
+// The yardstick of the factorizations' rate: a measured rate a core can reach (between a
+// tenth of a GFlop/s and the tens of a modern core's vector units, with room), the same
+// number on every call (measured once).
+TEST(DenseRate, IsMeasuredOnceAndPlausible) {
+  const double rate = dense_gflops_one_thread();
+  EXPECT_GT(rate, 0.1);
+  EXPECT_LT(rate, 1000.0);
+  EXPECT_EQ(dense_gflops_one_thread(), rate);
 }
 
 }  // namespace

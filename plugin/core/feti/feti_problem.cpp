@@ -168,18 +168,20 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   compute_dual_data();
 
   long local_primal = 0;
-  double local_nonzeros = 0, local_bytes = 0, local_operator_bytes = 0;
+  double local_nonzeros = 0, local_bytes = 0, local_operator_bytes = 0, local_flops = 0;
   for (size_t k = 0; k < inputs_.size(); ++k) local_primal += inputs_[k].K.rows();
   std::unordered_set<const CholmodFactor*> counted;  // a factor shared by identical subdomains counts once
   for (const auto& s : subdomains_)
     if (counted.insert(&s->factor()).second)
-      local_nonzeros += s->factor_nonzeros(), local_bytes += s->factor_bytes(), local_operator_bytes += s->operator_bytes();
+      local_nonzeros += s->factor_nonzeros(), local_bytes += s->factor_bytes(), local_operator_bytes += s->operator_bytes(),
+      local_flops += s->factor().analysis_flops();
   primal_dimension_ = static_cast<long>(comm.sum(static_cast<double>(local_primal)));
   input_bytes_ = comm.sum(ffeti::input_bytes(inputs_));
   kernel_bytes_ = comm.sum(ffeti::kernel_bytes(subdomains_));
   factor_nonzeros_ = comm.sum(local_nonzeros);
   factor_bytes_ = comm.sum(local_bytes);
   operator_bytes_ = comm.sum(local_operator_bytes);
+  factor_flops_ = comm.sum(local_flops);
   gather_rank_statistics(0.0);
   setup_times_ = {comm.max(setup_times_.constraints), comm.max(setup_times_.factorization),
                   comm.max(setup_times_.coarse_space), comm.max(setup_times_.dual_data), 0, 0, 0, 0};

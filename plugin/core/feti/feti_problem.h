@@ -170,6 +170,9 @@ class FetiProblem {
   /// The plugin's copies of the subdomains' input (K_s, f_s, coordinates, lists) and the
   /// kernels R_s with their index maps, summed over the ranks (feti/held_bytes.h).
   double input_bytes() const { return input_bytes_; }
+  /// Floating-point operations of the numeric factorizations (CHOLMOD's count from each
+  /// distinct factor's analysis), summed over the ranks: over time_factor, their rate.
+  double factor_flops() const { return factor_flops_; }
   double kernel_bytes() const { return kernel_bytes_; }
   /// The solver path the data call for (ALGORITHMS.md section 6).
   DualPath path() const { return dual_->path(); }
@@ -217,7 +220,7 @@ class FetiProblem {
   Vec step_start_;                      // friction: multipliers of the last load step (empty: none)
   long primal_dimension_ = 0;
   long factorizations_ = 0, shared_factors_ = 0, supernodal_factors_ = 0, interface_factors_ = 0, symbolic_analyses_ = 0;
-  double factor_nonzeros_ = 0, factor_bytes_ = 0, operator_bytes_ = 0, input_bytes_ = 0, kernel_bytes_ = 0;
+  double factor_nonzeros_ = 0, factor_bytes_ = 0, operator_bytes_ = 0, input_bytes_ = 0, kernel_bytes_ = 0, factor_flops_ = 0;
   mutable std::vector<RankStatistics> rank_statistics_;
   PhaseTimes setup_times_;
   double local_factor_seconds_ = 0;  // this rank's, for the rank report

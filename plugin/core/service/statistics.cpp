@@ -28,6 +28,7 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
       {"factor_nnz", problem.factor_nonzeros()},
       {"factor_bytes", problem.factor_bytes()},
       {"operator_bytes", problem.operator_bytes()},
+      {"factor_flops", problem.factor_flops()},
       {"input_bytes", problem.input_bytes()},
       {"kernel_bytes", problem.kernel_bytes()},
       {"constraint_bytes", constraint_bytes(c)},  // this rank's rows

@@ -1,0 +1,36 @@
+#include "factor/dense_rate.h"
+
+#include "base/stopwatch.h"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+
+namespace ffeti {
+namespace {
+
+double measure() {
+  constexpr int n = 512;
+  const Eigen::MatrixXd A = Eigen::MatrixXd::Random(n, n), B = Eigen::MatrixXd::Random(n, n);
+  Eigen::MatrixXd C(n, n);
+  const int previous = Eigen::nbThreads();
+  Eigen::setNbThreads(1);  // the rate of one core: subdomains factorize one per thread
+  double best = 0;
+  for (int run = 0; run < 3; ++run) {
+    Stopwatch clock;
+    C.noalias() = A * B;
+    const double seconds = clock.seconds();
+    if (seconds > 0) best = std::max(best, 2.0 * n * n * n / seconds / 1e9);
+  }
+  Eigen::setNbThreads(previous);
+  return best;
+}
+
+}  // namespace
+
+double dense_gflops_one_thread() {
+  static const double rate = measure();
+  return rate;
+}
+
+}  // namespace ffeti

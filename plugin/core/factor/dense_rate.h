@@ -1,0 +1,13 @@
+// The machine's dense floating-point rate, measured: the yardstick the report puts beside
+// each factorization's rate (a supernodal factorization is dense kernels on its fronts, so
+// its GFlop/s can approach this rate and never pass it).
+#pragma once
+
+namespace ffeti {
+
+/// GFlop/s of Eigen's dense matrix product C = A B on one thread (n = 512, 2 n^3 flops, the
+/// best of three runs: the first warms the caches and the allocator). Measured once per
+/// process, then returned as measured (about 0.3 s on a core of a few tens of GFlop/s).
+double dense_gflops_one_thread();
+
+}  // namespace ffeti
