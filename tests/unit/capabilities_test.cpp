@@ -61,6 +61,43 @@ TEST(Capabilities, TheInputChecksRefuseAKindInADimensionItLacks) {
             "contactSegments: " + unsupported(ContactKind::node_to_segment, Feature::rows, 3));
 }
 
+// Which kind the arguments choose is each unit's rule (check_combination), asked by validate_input.
+TEST(Capabilities, EachListKindRefusesTheOtherKindsInputForItsSlaves) {
+  const auto unit = [](ContactKind kind) -> const ContactDiscretization& {
+    return *contact_discretizations()[static_cast<size_t>(kind)];
+  };
+  ContactInput mortar;
+  mortar.slave_faces = {{{0, 1, 2, 3, 4, 5, 6, 7, 8}}};
+  EXPECT_NO_THROW(unit(ContactKind::mortar).check_combination(mortar));
+  mortar.slave_dofs = {{0}};
+  const std::string both = "contactSlaveFaces: the slave nodes of mortar contact are the corners of these faces; give "
+                           "contactSlave (node to face, obstacle) or contactSlaveFaces (mortar), not both";
+  EXPECT_EQ(refusal([&] { unit(ContactKind::mortar).check_combination(mortar); }), both);
+  mortar.slave_dofs.clear();
+  mortar.obstacle = true;
+  EXPECT_EQ(refusal([&] { unit(ContactKind::mortar).check_combination(mortar); }), both);
+
+  const std::string combined = "contactMaster: node-to-node contact cannot be combined with contactSegments, "
+                               "contactFaces or obstacle in one problem (the slave dofs would belong to both)";
+  ContactInput pairs;
+  pairs.slave_dofs = {{0}, {}};
+  pairs.master_dofs = {{}, {0}};
+  EXPECT_NO_THROW(unit(ContactKind::node_to_node).check_combination(pairs));
+  for (const auto& add : std::vector<std::function<void(ContactInput&)>>{
+           [](ContactInput& c) { c.master_segments = {{{0, 1, 2, 3}}, {}}; },
+           [](ContactInput& c) { c.master_faces = {{}, {{0, 1, 2, 3, 4, 5, 6, 7, 8}}}; },
+           [](ContactInput& c) { c.obstacle = true; }}) {
+    ContactInput with = pairs;
+    add(with);
+    EXPECT_EQ(refusal([&] { unit(ContactKind::node_to_node).check_combination(with); }), combined);
+  }
+  auto subdomains = membranes();
+  pairs.slave_dofs.resize(subdomains.size());
+  pairs.master_dofs.resize(subdomains.size());
+  pairs.obstacle = true;
+  EXPECT_EQ(refusal([&] { validate_input(subdomains, pairs); }), combined);
+}
+
 TEST(Capabilities, TheMarkdownTableHasARowPerKindAndSaysWhereAFeatureWorksInOneDimension) {
   const std::string table = capability_table_markdown();
   EXPECT_EQ(table.rfind("| contact | selected by | plane (2D) | solid (3D) | friction", 0), 0u) << table;

@@ -9,6 +9,7 @@
 #include "constraints/capabilities.h"
 #include "constraints/constraint_records.h"
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -68,6 +69,10 @@ class ContactDiscretization {
   /// The number of entries against input()'s fields, then check_parameters: read_input and
   /// validate_input (a caller that fills kind_parameters itself) ask it.
   void check_input(const std::vector<double>& values, int dimension) const;
+  /// Its rule against the other kinds' input (issue 54): InputError naming the arguments
+  /// where `contact` gives its lists together with input that would choose another kind
+  /// for the same slaves. validate_input asks every unit; the default refuses nothing.
+  virtual void check_combination(const ContactInput& /*contact*/) const {}
   /// Whether the input asks for this kind (on all ranks' records alike).
   virtual bool selected(const ContactRecords& in) const = 0;
   /// Appends one contact row per slave node (or none where no master is within reach).
@@ -78,6 +83,12 @@ class ContactDiscretization {
   virtual const char* searched_argument() const { return nullptr; }
   virtual const char* master_word() const { return nullptr; }
 };
+
+/// Whether any subdomain's list of one of ContactInput's per-subdomain lists has an entry.
+template <class Lists>
+bool any_entry(const Lists& lists) {
+  return std::any_of(lists.begin(), lists.end(), [](const auto& list) { return !list.empty(); });
+}
 
 /// Every kind, in the order its rows follow one another in B.
 const std::vector<std::unique_ptr<const ContactDiscretization>>& contact_discretizations();

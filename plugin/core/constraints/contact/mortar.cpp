@@ -80,6 +80,12 @@ Triangle3 enlarged(const Triangle3& t) {
 
 }  // namespace
 
+void Mortar::check_combination(const ContactInput& contact) const {
+  if (any_entry(contact.slave_faces) && (any_entry(contact.slave_dofs) || contact.obstacle))
+    throw InputError("contactSlaveFaces: the slave nodes of mortar contact are the corners of these faces; give "
+                     "contactSlave (node to face, obstacle) or contactSlaveFaces (mortar), not both");
+}
+
 Point3 MortarGeometry::normal() const {
   const double length = std::sqrt(dot(weighted_normal, weighted_normal));
   return {weighted_normal[0] / length, weighted_normal[1] / length, weighted_normal[2] / length};

@@ -53,6 +53,13 @@ std::vector<RowAt> NodeToNodeGeometry::slip_rows() const {
   return rows;
 }
 
+void NodeToNode::check_combination(const ContactInput& contact) const {
+  if (any_entry(contact.master_dofs) &&
+      (any_entry(contact.master_segments) || any_entry(contact.master_faces) || contact.obstacle))
+    throw InputError("contactMaster: node-to-node contact cannot be combined with contactSegments, contactFaces or "
+                     "obstacle in one problem (the slave dofs would belong to both)");
+}
+
 bool NodeToNode::selected(const ContactRecords& in) const {
   const auto& units = contact_discretizations();
   return std::none_of(units.begin(), units.end(),
