@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <functional>
 #include <string>
 
@@ -96,6 +97,27 @@ TEST(Capabilities, EachListKindRefusesTheOtherKindsInputForItsSlaves) {
   pairs.master_dofs.resize(subdomains.size());
   pairs.obstacle = true;
   EXPECT_EQ(refusal([&] { validate_input(subdomains, pairs); }), combined);
+}
+
+// fetiSetup reads the list kinds' per-subdomain arguments through the registry (read_list).
+TEST(Capabilities, EachListKindCutsItsOwnArgumentIntoEntries) {
+  std::vector<std::string> arguments;
+  for (const ContactDiscretization* kind : kinds_with_lists()) arguments.push_back(kind->list_input()->argument);
+  EXPECT_EQ(arguments, (std::vector<std::string>{"contactSegments", "contactSlaveFaces", "contactFaces", "contactMaster"}));
+  const auto& segments = *contact_discretizations()[static_cast<size_t>(ContactKind::node_to_segment)];
+  ContactInput contact;
+  segments.read_list({{}, {0, 1, 2, 3, 4, 5, 6, 7}}, {3, 5}, contact);
+  ASSERT_EQ(contact.master_segments.size(), 2u);
+  EXPECT_TRUE(contact.master_segments[0].empty());
+  EXPECT_EQ(contact.master_segments[1], (std::vector<std::array<int, 4>>{{0, 1, 2, 3}, {4, 5, 6, 7}}));
+  EXPECT_EQ(refusal([&] { segments.read_list({{0, 1, 2}}, {7}, contact); }),
+            "contactSegments[7]: needs 4 dofs per segment (a_x, a_y, b_x, b_y)");
+  const auto& faces = *contact_discretizations()[static_cast<size_t>(ContactKind::mortar)];
+  faces.read_list({{0, 1, 2, 3, 4, 5, 6, 7, 8}}, {0}, contact);
+  EXPECT_EQ(contact.slave_faces, (std::vector<std::vector<std::array<int, 9>>>{{{0, 1, 2, 3, 4, 5, 6, 7, 8}}}));
+  EXPECT_TRUE(contact.master_faces.empty());
+  EXPECT_EQ(refusal([&] { faces.read_list({{0, 1}}, {2}, contact); }),
+            "contactSlaveFaces[2]: needs 9 dofs per face (a_x, a_y, a_z, b_x, ..., c_z)");
 }
 
 TEST(Capabilities, TheMarkdownTableHasARowPerKindAndSaysWhereAFeatureWorksInOneDimension) {
