@@ -45,13 +45,15 @@ class FetiSetup : public WithNamedArguments {
   }
 
  private:
-  // Named parameters by position in name_param: these, then the arguments of the contact
-  // kinds that own their input (obstacle=, obstacleBall=, ...: kinds_with_input(), in the
-  // registry's order, constraints/contact/registry.cpp), then the set-up options.
-  enum Named { kDirichlet, kDirichletValues, kSlave, kMaster, kGap, kComponent, kComm, kSegments, kRadius,
-               kContactGap, kFriction, kSlipBound, kFrictionField, kZ, kFaces, kSlaveFaces, kSlipBoundField,
-               kStiffnessOf, kKindArguments };
-  static size_t options_start() { return kKindArguments + kinds_with_input().size(); }
+  // Named parameters by position in name_param: these, then the per-subdomain lists of the
+  // contact kinds that own one (contactMaster=, contactSegments=, ...: kinds_with_lists()),
+  // the arguments of the kinds that own their input (obstacle=, obstacleBall=, ...:
+  // kinds_with_input()), each in the registry's order (constraints/contact/registry.cpp),
+  // then the set-up options.
+  enum Named { kDirichlet, kDirichletValues, kSlave, kGap, kComponent, kComm, kRadius, kContactGap, kFriction,
+               kSlipBound, kFrictionField, kZ, kSlipBoundField, kStiffnessOf, kKindLists };
+  static size_t kind_arguments_start() { return kKindLists + kinds_with_lists().size(); }
+  static size_t options_start() { return kind_arguments_start() + kinds_with_input().size(); }
 
   long setup(Stack stack) const {
     auto& Ks = *GetAny<KN<Matrice_Creuse<double>>*>((*K)(stack));
@@ -193,51 +195,25 @@ class FetiSetup : public WithNamedArguments {
     }
   }
 
-  /// Triangles given as 9 dofs each (a_x, a_y, a_z, b_x, ..., c_z), per subdomain.
-  std::vector<std::vector<std::array<int, 9>>> faces(Stack stack, Named argument, const char* name, long count,
-                                                     const std::vector<int>& ids, const std::vector<long>& dofs) const {
-    const auto face_dofs = per_subdomain(optional_pointer<KN<KN<long>>>(nargs[argument], stack), count, ids, dofs, name);
-    std::vector<std::vector<std::array<int, 9>>> result;
-    for (size_t k = 0; k < face_dofs.size(); ++k) {
-      if (face_dofs[k].size() % 9 != 0)
-        throw InputError(std::string(name) + "[" + std::to_string(ids[k]) +
-                         "]: needs 9 dofs per face (a_x, a_y, a_z, b_x, ..., c_z)");
-      result.emplace_back();
-      for (size_t i = 0; i < face_dofs[k].size(); i += 9) {
-        std::array<int, 9> face{};
-        for (size_t j = 0; j < 9; ++j) face[j] = face_dofs[k][i + j];
-        result.back().push_back(face);
-      }
-    }
-    return result;
-  }
-
-  /// contactSlave=, contactMaster=, gap=, contactSegments=, contactFaces=, contactSlaveFaces=,
-  /// the arguments of the kinds that own their input (kinds_with_input()), contactRadius=,
+  /// contactSlave=, gap=, the lists of the kinds that own one (kinds_with_lists()), the
+  /// arguments of the kinds that own their input (kinds_with_input()), contactRadius=,
   /// contactGap=, friction=, slipBound=, frictionField=, slipBoundField=.
   ContactInput contact_input(Stack stack, long count, const std::vector<int>& ids, const std::vector<long>& dofs) const {
     ContactInput contact;
     contact.slave_dofs = per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kSlave], stack), count, ids,
                                                 dofs, "contactSlave");
-    contact.master_dofs = per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kMaster], stack), count, ids,
-                                                 dofs, "contactMaster");
     contact.gap = optional_real(nargs[kGap], stack, 0.0);
-    const auto segment_dofs = per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kSegments], stack), count,
-                                                     ids, dofs, "contactSegments");
-    for (size_t k = 0; k < segment_dofs.size(); ++k) {
-      if (segment_dofs[k].size() % 4 != 0)
-        throw InputError("contactSegments[" + std::to_string(ids[k]) + "]: needs 4 dofs per segment (a_x, a_y, b_x, b_y)");
-      contact.master_segments.emplace_back();
-      for (size_t i = 0; i < segment_dofs[k].size(); i += 4)
-        contact.master_segments.back().push_back({segment_dofs[k][i], segment_dofs[k][i + 1],
-                                                  segment_dofs[k][i + 2], segment_dofs[k][i + 3]});
+    // Each kind that owns a per-subdomain list cuts it into its entries and stores them.
+    const auto lists = kinds_with_lists();
+    for (size_t i = 0; i < lists.size(); ++i) {
+      const char* name = lists[i]->list_input()->argument;
+      const auto* given = optional_pointer<KN<KN<long>>>(nargs[kKindLists + i], stack);
+      lists[i]->read_list(per_subdomain(given, count, ids, dofs, name), ids, contact);
     }
-    contact.master_faces = faces(stack, kFaces, "contactFaces", count, ids, dofs);
-    contact.slave_faces = faces(stack, kSlaveFaces, "contactSlaveFaces", count, ids, dofs);
     // Each kind that owns its input reads and checks its own argument.
     const auto kinds = kinds_with_input();
     for (size_t i = 0; i < kinds.size(); ++i)
-      if (const auto* values = optional_pointer<KN<double>>(nargs[kKindArguments + i], stack))
+      if (const auto* values = optional_pointer<KN<double>>(nargs[kind_arguments_start() + i], stack))
         kinds[i]->read_input(to_std(*values), nargs[kZ] ? 3 : 2, contact);
     contact.search_distance = optional_real(nargs[kRadius], stack, contact.search_distance);
     // Not given: -1, no friction rows (a given negative value is refused by the core).
@@ -277,14 +253,14 @@ NamedParameters FetiSetup::name_param = named_parameters(
     [] {
       NamedParameters names{
           {"dirichlet", &typeid(KN<KN<long>>*)},         {"dirichletValues", &typeid(KN<KN<double>>*)},
-          {"contactSlave", &typeid(KN<KN<long>>*)},      {"contactMaster", &typeid(KN<KN<long>>*)},
-          {"gap", &typeid(double)},                      {"component", &typeid(KN<KN<long>>*)},
-          {"comm", &typeid(pcommworld)},                 {"contactSegments", &typeid(KN<KN<long>>*)},
+          {"contactSlave", &typeid(KN<KN<long>>*)},      {"gap", &typeid(double)},
+          {"component", &typeid(KN<KN<long>>*)},         {"comm", &typeid(pcommworld)},
           {"contactRadius", &typeid(double)},            {"contactGap", &typeid(KN<KN<double>>*)},
           {"friction", &typeid(double)},                 {"slipBound", &typeid(double)},
           {"frictionField", &typeid(KN<KN<double>>*)},   {"Z", &typeid(KN<KN<double>>*)},
-          {"contactFaces", &typeid(KN<KN<long>>*)},      {"contactSlaveFaces", &typeid(KN<KN<long>>*)},
           {"slipBoundField", &typeid(KN<KN<double>>*)},  {"stiffnessOf", &typeid(KN<long>*)}};
+      for (const ContactDiscretization* kind : kinds_with_lists())
+        names.push_back({kind->list_input()->argument, &typeid(KN<KN<long>>*)});
       for (const ContactDiscretization* kind : kinds_with_input())
         names.push_back({kind->input()->argument, &typeid(KN<double>*)});
       return names;

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <functional>
 #include <string>
 
@@ -59,6 +60,64 @@ TEST(Capabilities, TheInputChecksRefuseAKindInADimensionItLacks) {
   contact.master_segments = {{{0, 1, 2, 3}}, {}};
   EXPECT_EQ(refusal([&] { validate_input(subdomains, contact); }),
             "contactSegments: " + unsupported(ContactKind::node_to_segment, Feature::rows, 3));
+}
+
+// Which kind the arguments choose is each unit's rule (check_combination), asked by validate_input.
+TEST(Capabilities, EachListKindRefusesTheOtherKindsInputForItsSlaves) {
+  const auto unit = [](ContactKind kind) -> const ContactDiscretization& {
+    return *contact_discretizations()[static_cast<size_t>(kind)];
+  };
+  ContactInput mortar;
+  mortar.slave_faces = {{{0, 1, 2, 3, 4, 5, 6, 7, 8}}};
+  EXPECT_NO_THROW(unit(ContactKind::mortar).check_combination(mortar));
+  mortar.slave_dofs = {{0}};
+  const std::string both = "contactSlaveFaces: the slave nodes of mortar contact are the corners of these faces; give "
+                           "contactSlave (node to face, obstacle) or contactSlaveFaces (mortar), not both";
+  EXPECT_EQ(refusal([&] { unit(ContactKind::mortar).check_combination(mortar); }), both);
+  mortar.slave_dofs.clear();
+  mortar.obstacle = true;
+  EXPECT_EQ(refusal([&] { unit(ContactKind::mortar).check_combination(mortar); }), both);
+
+  const std::string combined = "contactMaster: node-to-node contact cannot be combined with contactSegments, "
+                               "contactFaces or obstacle in one problem (the slave dofs would belong to both)";
+  ContactInput pairs;
+  pairs.slave_dofs = {{0}, {}};
+  pairs.master_dofs = {{}, {0}};
+  EXPECT_NO_THROW(unit(ContactKind::node_to_node).check_combination(pairs));
+  for (const auto& add : std::vector<std::function<void(ContactInput&)>>{
+           [](ContactInput& c) { c.master_segments = {{{0, 1, 2, 3}}, {}}; },
+           [](ContactInput& c) { c.master_faces = {{}, {{0, 1, 2, 3, 4, 5, 6, 7, 8}}}; },
+           [](ContactInput& c) { c.obstacle = true; }}) {
+    ContactInput with = pairs;
+    add(with);
+    EXPECT_EQ(refusal([&] { unit(ContactKind::node_to_node).check_combination(with); }), combined);
+  }
+  auto subdomains = membranes();
+  pairs.slave_dofs.resize(subdomains.size());
+  pairs.master_dofs.resize(subdomains.size());
+  pairs.obstacle = true;
+  EXPECT_EQ(refusal([&] { validate_input(subdomains, pairs); }), combined);
+}
+
+// fetiSetup reads the list kinds' per-subdomain arguments through the registry (read_list).
+TEST(Capabilities, EachListKindCutsItsOwnArgumentIntoEntries) {
+  std::vector<std::string> arguments;
+  for (const ContactDiscretization* kind : kinds_with_lists()) arguments.push_back(kind->list_input()->argument);
+  EXPECT_EQ(arguments, (std::vector<std::string>{"contactSegments", "contactSlaveFaces", "contactFaces", "contactMaster"}));
+  const auto& segments = *contact_discretizations()[static_cast<size_t>(ContactKind::node_to_segment)];
+  ContactInput contact;
+  segments.read_list({{}, {0, 1, 2, 3, 4, 5, 6, 7}}, {3, 5}, contact);
+  ASSERT_EQ(contact.master_segments.size(), 2u);
+  EXPECT_TRUE(contact.master_segments[0].empty());
+  EXPECT_EQ(contact.master_segments[1], (std::vector<std::array<int, 4>>{{0, 1, 2, 3}, {4, 5, 6, 7}}));
+  EXPECT_EQ(refusal([&] { segments.read_list({{0, 1, 2}}, {7}, contact); }),
+            "contactSegments[7]: needs 4 dofs per segment (a_x, a_y, b_x, b_y)");
+  const auto& faces = *contact_discretizations()[static_cast<size_t>(ContactKind::mortar)];
+  faces.read_list({{0, 1, 2, 3, 4, 5, 6, 7, 8}}, {0}, contact);
+  EXPECT_EQ(contact.slave_faces, (std::vector<std::vector<std::array<int, 9>>>{{{0, 1, 2, 3, 4, 5, 6, 7, 8}}}));
+  EXPECT_TRUE(contact.master_faces.empty());
+  EXPECT_EQ(refusal([&] { faces.read_list({{0, 1}}, {2}, contact); }),
+            "contactSlaveFaces[2]: needs 9 dofs per face (a_x, a_y, a_z, b_x, ..., c_z)");
 }
 
 TEST(Capabilities, TheMarkdownTableHasARowPerKindAndSaysWhereAFeatureWorksInOneDimension) {

@@ -191,18 +191,15 @@ void check_subdomain(const SubdomainInput& sub, size_t s, bool check_K, const Su
 /// its unit. Such a kind takes the slave nodes of contactSlave: another kind for them is
 /// refused, naming both arguments.
 void check_kind_inputs(const ContactInput& contact, int dimension) {
-  const auto any = [](const auto& lists) {
-    return std::any_of(lists.begin(), lists.end(), [](const auto& list) { return !list.empty(); });
-  };
   const auto& units = contact_discretizations();
   for (const auto& [kind, values] : contact.kind_parameters) {
     const ContactDiscretization& unit = *units.at(static_cast<size_t>(kind));
     if (!unit.input()) throw InputError(std::string(unit.capabilities().name) + " contact takes no parameters");
     unit.check_input(values, dimension);
     const char* other = contact.obstacle                ? (contact.obstacle_radius > 0 ? "obstacleBall" : "obstacle")
-                        : any(contact.master_dofs)      ? "contactMaster"
-                        : any(contact.master_segments)  ? "contactSegments"
-                        : any(contact.master_faces)     ? "contactFaces"
+                        : any_entry(contact.master_dofs)      ? "contactMaster"
+                        : any_entry(contact.master_segments)  ? "contactSegments"
+                        : any_entry(contact.master_faces)     ? "contactFaces"
                         : contact.kind_parameters.size() > 1
                             ? units.at(static_cast<size_t>(contact.kind_parameters.begin()->first))->input()->argument
                             : nullptr;
@@ -242,8 +239,7 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
   // contact.three_d: set by a parallel set-up for a rank that may hold no subdomain.
   const bool three_d = contact.three_d || (!subdomains.empty() && !subdomains.front().z.empty());
   const int dimension = three_d ? 3 : 2;
-  if (std::any_of(contact.master_segments.begin(), contact.master_segments.end(),
-                  [](const auto& list) { return !list.empty(); }))
+  if (any_entry(contact.master_segments))
     require(ContactKind::node_to_segment, Feature::rows, dimension, "contactSegments");
   if (!three_d && contact.obstacle && (contact.obstacle_point[2] != 0 || contact.obstacle_normal[2] != 0))
     throw InputError("obstacle: six entries (a plane) need Z (three dimensions); a plane problem takes four");
@@ -255,9 +251,6 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
     for (const auto& segment : segments) segment_dofs.back().insert(segment_dofs.back().end(), segment.begin(), segment.end());
   }
   check_per_subdomain_lists(segment_dofs, ids, subdomains, "contactSegments");
-  const auto any = [](const auto& lists) {
-    return std::any_of(lists.begin(), lists.end(), [](const auto& list) { return !list.empty(); });
-  };
   for (const auto& [faces, name, kind] : {std::tuple{&contact.master_faces, "contactFaces", ContactKind::node_to_face},
                                           std::tuple{&contact.slave_faces, "contactSlaveFaces", ContactKind::mortar}}) {
     std::vector<std::vector<int>> face_dofs;
@@ -268,16 +261,12 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
     check_per_subdomain_lists(face_dofs, ids, subdomains, name);
     check_face_corners(*faces, ids, subdomains, name);
     check_face_orientation(*faces, ids, subdomains, name);
-    if (any(contact.slave_faces)) refuse_higher_order_faces(*faces, ids, subdomains, name);
-    if (any(*faces)) require(kind, Feature::rows, dimension, name);
+    if (any_entry(contact.slave_faces)) refuse_higher_order_faces(*faces, ids, subdomains, name);
+    if (any_entry(*faces)) require(kind, Feature::rows, dimension, name);
   }
-  if (any(contact.slave_faces) && (any(contact.slave_dofs) || contact.obstacle))
-    throw InputError("contactSlaveFaces: the slave nodes of mortar contact are the corners of these faces; give "
-                     "contactSlave (node to face, obstacle) or contactSlaveFaces (mortar), not both");
+  // Each kind's rule against the other kinds' input (which kind the arguments choose).
+  for (const auto& unit : contact_discretizations()) unit->check_combination(contact);
   if (!(contact.search_distance > 0)) throw InputError("contactRadius: must be > 0");
-  if (any(contact.master_dofs) && (any(contact.master_segments) || any(contact.master_faces) || contact.obstacle))
-    throw InputError("contactMaster: node-to-node contact cannot be combined with contactSegments, contactFaces or "
-                     "obstacle in one problem (the slave dofs would belong to both)");
   if (!std::isfinite(contact.gap)) throw InputError("gap: must be finite");
   validate_contact_gaps(contact.gap_field, subdomains, global_ids);
   for (const auto& [name, value] : {std::pair<const char*, double>{"friction", contact.friction},

@@ -9,6 +9,8 @@
 #include "constraints/capabilities.h"
 #include "constraints/constraint_records.h"
 
+#include <algorithm>
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -49,6 +51,15 @@ struct KindInput {
   const char* layout;
 };
 
+/// The per-subdomain list a kind owns in fetiSetup: an int[int][int] argument, one array of
+/// dofs per subdomain, `dofs` of them per entry (contactSlave, which several kinds share,
+/// stays the front end's).
+struct ListInput {
+  const char* argument;  ///< fetiSetup's named argument: "contactSegments"
+  size_t dofs;           ///< per entry: a master segment's 4, a face's 9
+  const char* layout;    ///< for messages: "4 dofs per segment (a_x, a_y, b_x, b_y)"
+};
+
 class ContactDiscretization {
  public:
   virtual ~ContactDiscretization() = default;
@@ -58,6 +69,13 @@ class ContactDiscretization {
   virtual KindCapabilities capabilities() const = 0;
   /// The input it owns (nullptr: it reads ContactInput's shared lists).
   virtual const KindInput* input() const { return nullptr; }
+  /// The per-subdomain list it owns (nullptr: none).
+  virtual const ListInput* list_input() const { return nullptr; }
+  /// Stores list_input()'s lists, one per subdomain of this rank (`ids`: their numbers in
+  /// messages; the dofs already checked against each subdomain's size), into `contact`:
+  /// InputError "<argument>[<id>]: needs <layout>" for a list that is not whole entries.
+  virtual void read_list(const std::vector<std::vector<int>>& /*lists*/, const std::vector<int>& /*ids*/,
+                         ContactInput& /*contact*/) const {}
   /// Checks the entries given to input()'s argument in a problem of `dimension` (2 or 3) and
   /// stores them into `contact`: InputError "<argument>: ..." on bad entries. The default
   /// keeps them as ContactInput::kind_parameters[kind()], checked by check_parameters.
@@ -68,6 +86,10 @@ class ContactDiscretization {
   /// The number of entries against input()'s fields, then check_parameters: read_input and
   /// validate_input (a caller that fills kind_parameters itself) ask it.
   void check_input(const std::vector<double>& values, int dimension) const;
+  /// Its rule against the other kinds' input (issue 54): InputError naming the arguments
+  /// where `contact` gives its lists together with input that would choose another kind
+  /// for the same slaves. validate_input asks every unit; the default refuses nothing.
+  virtual void check_combination(const ContactInput& /*contact*/) const {}
   /// Whether the input asks for this kind (on all ranks' records alike).
   virtual bool selected(const ContactRecords& in) const = 0;
   /// Appends one contact row per slave node (or none where no master is within reach).
@@ -79,11 +101,37 @@ class ContactDiscretization {
   virtual const char* master_word() const { return nullptr; }
 };
 
+/// Whether any subdomain's list of one of ContactInput's per-subdomain lists has an entry.
+template <class Lists>
+bool any_entry(const Lists& lists) {
+  return std::any_of(lists.begin(), lists.end(), [](const auto& list) { return !list.empty(); });
+}
+
 /// Every kind, in the order its rows follow one another in B.
 const std::vector<std::unique_ptr<const ContactDiscretization>>& contact_discretizations();
 
 /// The kinds that own their input (input() != nullptr), in the registry's order.
 std::vector<const ContactDiscretization*> kinds_with_input();
+
+/// The kinds that own a per-subdomain list (list_input() != nullptr), in the registry's order.
+std::vector<const ContactDiscretization*> kinds_with_lists();
+
+/// `lists` cut into entries of N dofs (N = spec.dofs): InputError "<argument>[<id>]: needs
+/// <layout>" for a list that is not whole entries.
+void check_whole_entries(const ListInput& spec, const std::vector<std::vector<int>>& lists, const std::vector<int>& ids);
+template <size_t N>
+std::vector<std::vector<std::array<int, N>>> list_entries(const ListInput& spec, const std::vector<std::vector<int>>& lists,
+                                                          const std::vector<int>& ids) {
+  check_whole_entries(spec, lists, ids);
+  std::vector<std::vector<std::array<int, N>>> result(lists.size());
+  for (size_t k = 0; k < lists.size(); ++k)
+    for (size_t i = 0; i < lists[k].size(); i += N) {
+      std::array<int, N> entry{};
+      std::copy_n(lists[k].begin() + static_cast<std::ptrdiff_t>(i), N, entry.begin());
+      result[k].push_back(entry);
+    }
+  return result;
+}
 
 /// The entries of a kind's array argument from its fields as read one by one (a problem
 /// file's object): `given[i]` empty where field i was left out. InputError naming the field

@@ -80,6 +80,22 @@ Triangle3 enlarged(const Triangle3& t) {
 
 }  // namespace
 
+const ListInput* Mortar::list_input() const {
+  static const ListInput spec{"contactSlaveFaces", 9, "9 dofs per face (a_x, a_y, a_z, b_x, ..., c_z)"};
+  return &spec;
+}
+
+void Mortar::read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
+                       ContactInput& contact) const {
+  contact.slave_faces = list_entries<9>(*list_input(), lists, ids);
+}
+
+void Mortar::check_combination(const ContactInput& contact) const {
+  if (any_entry(contact.slave_faces) && (any_entry(contact.slave_dofs) || contact.obstacle))
+    throw InputError("contactSlaveFaces: the slave nodes of mortar contact are the corners of these faces; give "
+                     "contactSlave (node to face, obstacle) or contactSlaveFaces (mortar), not both");
+}
+
 Point3 MortarGeometry::normal() const {
   const double length = std::sqrt(dot(weighted_normal, weighted_normal));
   return {weighted_normal[0] / length, weighted_normal[1] / length, weighted_normal[2] / length};

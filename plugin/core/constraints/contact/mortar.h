@@ -81,6 +81,11 @@ class Mortar final : public ContactDiscretization {
     return {kind(), "mortar", "contactSlaveFaces, contactFaces", kSolidOnly, kSolidOnly, kSolidOnly, kNowhere, kSolidOnly,
             kNowhere, kNowhere};
   }
+  /// The corners of contactSlaveFaces are its slaves: refuses contactSlave or an obstacle beside them.
+  void check_combination(const ContactInput& contact) const override;
+  const ListInput* list_input() const override;
+  void read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
+                 ContactInput& contact) const override;
   /// Any slave face (ContactInput::slave_faces) on any rank.
   bool selected(const ContactRecords& in) const override;
   void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;

@@ -50,6 +50,16 @@ bool on_bent_edge(const Point3& s, const FaceRecord& face, const FaceGrid& grid)
 
 }  // namespace
 
+const ListInput* NodeToFace::list_input() const {
+  static const ListInput spec{"contactFaces", 9, "9 dofs per face (a_x, a_y, a_z, b_x, ..., c_z)"};
+  return &spec;
+}
+
+void NodeToFace::read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
+                           ContactInput& contact) const {
+  contact.master_faces = list_entries<9>(*list_input(), lists, ids);
+}
+
 RowAt FaceGeometry::row_at(const NodeMotion& v, double t) const {
   const LinearizedFaceRow r = node_to_face_row(moved(slave_position(), v[0], t), moved(corners[0], v[1], t),
                                                moved(corners[1], v[2], t), moved(corners[2], v[3], t), false);

@@ -52,6 +52,9 @@ class NodeToFace final : public ContactDiscretization {
             kSolidOnly, kSolidOnly, kNowhere};
   }
   /// Master faces without slave faces (those make mortar).
+  const ListInput* list_input() const override;
+  void read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
+                 ContactInput& contact) const override;
   bool selected(const ContactRecords& in) const override;
   void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;
   const char* searched_argument() const override { return "contactFaces"; }

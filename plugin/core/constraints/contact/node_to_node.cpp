@@ -37,6 +37,16 @@ std::array<DofRef, 3> node_dofs(const NodeComponents& nodes, const DofRecord& at
 
 }  // namespace
 
+const ListInput* NodeToNode::list_input() const {
+  static const ListInput spec{"contactMaster", 1, "1 dof per entry"};
+  return &spec;
+}
+
+void NodeToNode::read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& /*ids*/,
+                           ContactInput& contact) const {
+  contact.master_dofs = lists;  // one dof per entry: every list is whole
+}
+
 std::vector<RowAt> NodeToNodeGeometry::slip_rows() const {
   Point3 n{0, 0, 0};
   n[static_cast<size_t>(component)] = -1;
@@ -51,6 +61,13 @@ std::vector<RowAt> NodeToNodeGeometry::slip_rows() const {
     rows.push_back(std::move(row));
   }
   return rows;
+}
+
+void NodeToNode::check_combination(const ContactInput& contact) const {
+  if (any_entry(contact.master_dofs) &&
+      (any_entry(contact.master_segments) || any_entry(contact.master_faces) || contact.obstacle))
+    throw InputError("contactMaster: node-to-node contact cannot be combined with contactSegments, contactFaces or "
+                     "obstacle in one problem (the slave dofs would belong to both)");
 }
 
 bool NodeToNode::selected(const ContactRecords& in) const {

@@ -47,6 +47,11 @@ class NodeToNode final : public ContactDiscretization {
     return {kind(), "node-to-node", "contactSlave, contactMaster", kBothDimensions, kBothDimensions, kBothDimensions, kNowhere,
             kBothDimensions, kPlaneOnly, kPlaneOnly};
   }
+  /// contactMaster pairs the slave dofs: refuses contactSegments, contactFaces or an obstacle beside it.
+  void check_combination(const ContactInput& contact) const override;
+  const ListInput* list_input() const override;
+  void read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
+                 ContactInput& contact) const override;
   /// The slaves' default pairing: where no other kind of the registry is selected (so a new
   /// kind needs no word here).
   bool selected(const ContactRecords& in) const override;

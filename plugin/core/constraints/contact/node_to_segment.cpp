@@ -84,6 +84,16 @@ Point moved(const Point& p, const Point3& velocity, double t) { return {p[0] + t
 
 }  // namespace
 
+const ListInput* NodeToSegment::list_input() const {
+  static const ListInput spec{"contactSegments", 4, "4 dofs per segment (a_x, a_y, b_x, b_y)"};
+  return &spec;
+}
+
+void NodeToSegment::read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
+                              ContactInput& contact) const {
+  contact.master_segments = list_entries<4>(*list_input(), lists, ids);
+}
+
 RowAt NodeToSegmentGeometry::row_at(const NodeMotion& v, double t) const {
   const LinearizedRow r = node_to_segment_row(moved(s, v[0], t), moved(a, v[1], t), moved(b, v[2], t), false);
   return {dofs(), {r.coefficients.begin(), r.coefficients.end()}, r.gap};

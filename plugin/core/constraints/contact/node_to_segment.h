@@ -40,6 +40,9 @@ class NodeToSegment final : public ContactDiscretization {
     return {kind(), "node-to-segment", "contactSlave, contactSegments", kPlaneOnly, kPlaneOnly, kPlaneOnly, kNowhere,
             kPlaneOnly, kPlaneOnly, kPlaneOnly};
   }
+  const ListInput* list_input() const override;
+  void read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
+                 ContactInput& contact) const override;
   bool selected(const ContactRecords& in) const override { return !in.segments.empty(); }
   void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;
   const char* searched_argument() const override { return "contactSegments"; }

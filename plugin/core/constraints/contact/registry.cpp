@@ -44,6 +44,19 @@ std::vector<const ContactDiscretization*> kinds_with_input() {
   return kinds;
 }
 
+std::vector<const ContactDiscretization*> kinds_with_lists() {
+  std::vector<const ContactDiscretization*> kinds;
+  for (const auto& unit : contact_discretizations())
+    if (unit->list_input()) kinds.push_back(unit.get());
+  return kinds;
+}
+
+void check_whole_entries(const ListInput& spec, const std::vector<std::vector<int>>& lists, const std::vector<int>& ids) {
+  for (size_t k = 0; k < lists.size(); ++k)
+    if (lists[k].size() % spec.dofs != 0)
+      throw InputError(std::string(spec.argument) + "[" + std::to_string(ids[k]) + "]: needs " + spec.layout);
+}
+
 namespace {
 
 size_t field_size(const InputField& field, int dimension) {
