@@ -7,7 +7,7 @@ namespace ffeti {
 
 /// GFlop/s of Eigen's dense matrix product C = A B on one thread (n = 512, 2 n^3 flops, the
 /// best of three runs: the first warms the caches and the allocator). Measured once per
-/// process, then returned as measured (about 0.3 s on a core of a few tens of GFlop/s).
+/// process (0.8 GFlop in all), then returned as measured.
 double dense_gflops_one_thread();
 
 }  // namespace ffeti

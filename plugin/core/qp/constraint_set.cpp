@@ -105,16 +105,25 @@ std::vector<char> ConstraintSet::free_components(const Vec& x) const {
 
 Vec ConstraintSet::projected_gradient(const Vec& x, const Vec& g) const {
   Vec gp(x.size());
-  for (const auto& kind : kinds_) kind->projected_gradient(x, g, gp);
+  projected_gradient(x, g, gp);
   return gp;
+}
+
+void ConstraintSet::projected_gradient(const Vec& x, const Vec& g, Vec& gp) const {
+  gp.resize(x.size());
+  for (const auto& kind : kinds_) kind->projected_gradient(x, g, gp);
 }
 
 double ConstraintSet::projected_gradient_max(const Vec& x, const Vec& g) const {
   return projected_gradient(x, g).lpNorm<Eigen::Infinity>();
 }
 
-ReducedFreeGradient ConstraintSet::reduced_free_gradient(const Vec& x, const Vec& phi, double abar) const {
-  Vec phit(x.size());
+bool ConstraintSet::curved() const {
+  return std::any_of(kinds_.begin(), kinds_.end(), [](const auto& kind) { return kind->curved(); });
+}
+
+ReducedFreeGradient ConstraintSet::reduced_free_gradient(const Vec& x, const Vec& phi, double abar, Vec& phit) const {
+  phit.resize(x.size());
   for (const auto& kind : kinds_) kind->reduced_free_gradient(x, phi, abar, phit);
   ReducedFreeGradient r;
   for (Eigen::Index i = 0; i < x.size(); ++i) {  // in order: the same sums whatever the blocks

@@ -62,10 +62,16 @@ class ConstraintSet {
   /// x_i = u_i, 0 where both; on a disc pair, g inside, g - min(n'g, 0) n on the circle (n the
   /// outward unit normal), 0 at radius 0.
   Vec projected_gradient(const Vec& x, const Vec& g) const;
+  /// The same into gp (sized like x): MPRGP's iterations reuse one vector.
+  void projected_gradient(const Vec& x, const Vec& g, Vec& gp) const;
   /// ||gP||_inf.
   double projected_gradient_max(const Vec& x, const Vec& g) const;
   /// phi'phit and ||phit||^2, summed component by component.
-  ReducedFreeGradient reduced_free_gradient(const Vec& x, const Vec& phi, double abar) const;
+  /// `phit` (sized like x) is the caller's workspace: one per solve, not one per iteration.
+  ReducedFreeGradient reduced_free_gradient(const Vec& x, const Vec& phi, double abar, Vec& phit) const;
+  /// Some block has a curved face (a disc's circle): a step inside the set's faces may need
+  /// project_curved after it; on flat faces it never does.
+  bool curved() const;
   /// Largest a >= 0 with x - a p in the set (SetKind::feasible_step).
   double feasible_step(const Vec& x, const Vec& p, bool slide_on_circles) const;
 

@@ -20,6 +20,7 @@ class DiscSet final : public SetKind {
   int project(Vec& x) const override;
   /// The same: every pair is on a curved face.
   int project_curved(Vec& x) const override { return project(x); }
+  bool curved() const override { return true; }
   bool contains(const Vec& x) const override;
 
   /// On a pair on its circle, v's part along the tangent at x (the tangent counts as free:

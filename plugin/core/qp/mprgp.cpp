@@ -52,6 +52,11 @@ bool cg_step(const qp::Problem& problem, double abar, double a_cg, const Vec& p,
   const Vec& b = problem.b;
   const qp::ConstraintSet& set = problem.constraints;
   const double a_norm = problem.hessian_norm;
+  if (!set.curved()) {  // the step stays in the flat faces: in place, nothing to project back
+    x -= a_cg * p;
+    g -= a_cg * Ap;
+    return false;
+  }
   Vec moved = x - a_cg * p;
   Vec moved_gradient = g - a_cg * Ap;  // at moved, before the projection
   if (set.project_curved(moved) == 0) {  // no pair slid: a plain CG step
@@ -122,7 +127,7 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
   const BudgetCharge charge(budget, counts);
 
   auto multiply = [&](const Vec& v, Vec& Av) { A(v, Av); ++counts.hessian; };
-  Vec phi(n), beta(n), p(n), Ap(n), z(n), step_Ap(n), trial, trial_gradient, A_trial;
+  Vec phi(n), beta(n), p(n), Ap(n), z(n), step_Ap(n), phit_work(n), trial, trial_gradient, A_trial;
   // z = M phi restricted to the face (z = phi without a preconditioner), divided on disc
   // pairs on their circle by 1 + the circle's curvature / ||A|| (without that a pair of small
   // radius and large -n'g, a row slipping fast under a small bound, sets every CG step: the
@@ -170,13 +175,14 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
     // Split the gradient gP = phi + beta: the chopped gradient beta (at a bound, the part
     // pointing into the set; on a circle gP couples the pair), and the reduced free
     // gradient's products. The sums run component by component.
-    beta = set.projected_gradient(x, g) - phi;
+    set.projected_gradient(x, g, beta);
+    beta -= phi;
     double beta_sq = 0, gp_sq = 0;
     for (Eigen::Index i = 0; i < n; ++i) {
       beta_sq += beta[i] * beta[i];
       gp_sq += phi[i] * phi[i] + beta[i] * beta[i];
     }
-    const qp::ReducedFreeGradient reduced = set.reduced_free_gradient(x, phi, abar);
+    const qp::ReducedFreeGradient reduced = set.reduced_free_gradient(x, phi, abar, phit_work);
     const double phit_phi = reduced.dot_phi, phit_sq = reduced.squared_norm;
     result.gradient_norm = std::sqrt(gp_sq);
     if (gradient_error > kSlideGradientError * result.gradient_norm) {  // g carried in, or gP fell since
@@ -256,7 +262,7 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
           // it, g there inexact by A times that, until the step below recomputes it.
           set.project_curved(x);
           set.free_gradient(x, g, a_norm, phi);
-          const qp::ReducedFreeGradient at_half = set.reduced_free_gradient(x, phi, abar);  // at x - a_f p
+          const qp::ReducedFreeGradient at_half = set.reduced_free_gradient(x, phi, abar, phit_work);  // at x - a_f p
           const double guaranteed =
               f_half - abar * at_half.dot_phi + 0.5 * a_norm * abar * abar * at_half.squared_norm;
           multiply(trial, A_trial);

@@ -49,6 +49,8 @@ class SetKind {
   /// step along the face of a feasible x, within feasible_step(..., slide = true), leaves a
   /// curved face by a second-order amount and stays in a flat one. Returns what moved.
   virtual int project_curved(Vec& x) const { (void)x; return 0; }
+  /// True where the set has curved faces (project_curved may move a point): discs.
+  virtual bool curved() const { return false; }
   /// Whether x lies in the set (no tolerance).
   virtual bool contains(const Vec& x) const = 0;
 
