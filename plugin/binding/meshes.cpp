@@ -1,5 +1,5 @@
 // Mesh functions for the scripts' partitions: parts made connected (fetiConnectParts) and a
-// mesh3 cut into its part meshes in one pass (fetiSplitMesh3). The mesh work itself is the
+// mesh or mesh3 cut into its part meshes in one pass (fetiSplitMesh, fetiSplitMesh3). The mesh work itself is the
 // core's (mesh/connect_parts, mesh/split_parts); here only FreeFEM's mesh types.
 #include "binding/convert.h"
 #include "binding/functions.h"
@@ -7,12 +7,14 @@
 
 #include "base/errors.h"
 #include "mesh/connect_parts.h"
+#include "mesh/facet_neighbours.h"
 #include "mesh/split_parts.h"
 
 #include "AFunction_ext.hpp"  // OneOperator5_
 
 #include <algorithm>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace ffeti::binding {
@@ -79,6 +81,61 @@ SplitInput split_input(const Mesh3& Th) {
   return body;
 }
 
+/// The plane body as split_parts reads it: the element across each edge from the
+/// element-to-node table (FreeFEM's own 2D adjacency keeps its links private), the labels
+/// from its boundary edges, an internal labelled edge from both sides.
+SplitInput split_input(const Mesh& Th) {
+  SplitInput body;
+  body.nodes_per_element = 3;
+  body.node_count = Th.nv;
+  body.element_nodes = element_nodes<3>(Th);
+  body.facet_neighbour = element_across_facets(body.element_nodes, 3);
+  body.facet_label.assign(body.element_nodes.size(), -1);
+  for (int b = 0; b < Th.neb; ++b) {
+    int j = 0;
+    const int k = Th.BoundaryElement(b, j);
+    const size_t at = 3 * static_cast<size_t>(k) + static_cast<size_t>(j);
+    body.facet_label[at] = Th.be(b).lab;
+    const int across = body.facet_neighbour[at];
+    if (across < 0) continue;
+    // The edge's side in the element across: the one opposite the node not on the edge.
+    for (int side = 0; side < 3; ++side) {
+      const int node = Th(across, side);
+      if (node != Th(k, (j + 1) % 3) && node != Th(k, (j + 2) % 3))
+        body.facet_label[3 * static_cast<size_t>(across) + static_cast<size_t>(side)] = Th.be(b).lab;
+    }
+  }
+  return body;
+}
+
+/// One part as a FreeFEM mesh: vertices and triangles with their labels, each boundary
+/// edge ordered as its triangle's edge (the part on its left, as trunc orders them).
+Mesh* part_mesh(const Mesh& Th, const MeshPart& piece) {
+  const int nv = static_cast<int>(piece.nodes.size()), nt = static_cast<int>(piece.elements.size());
+  const int nbe = static_cast<int>(piece.facet_elements.size());
+  auto* vertices = new Mesh::Vertex[static_cast<size_t>(nv)];
+  auto* triangles = new Mesh::Triangle[static_cast<size_t>(nt)];
+  auto* edges = new BoundaryEdge[static_cast<size_t>(nbe)];
+  for (int i = 0; i < nv; ++i) {
+    const Mesh::Vertex& from = Th(piece.nodes[static_cast<size_t>(i)]);
+    vertices[i].x = from.x;
+    vertices[i].y = from.y;
+    vertices[i].lab = from.lab;
+  }
+  for (int e = 0; e < nt; ++e) {
+    const size_t at = 3 * static_cast<size_t>(e);
+    triangles[e].set(vertices, piece.element_nodes[at], piece.element_nodes[at + 1], piece.element_nodes[at + 2],
+                     Th[piece.elements[static_cast<size_t>(e)]].lab);
+  }
+  for (int f = 0; f < nbe; ++f) {
+    const size_t at = 3 * static_cast<size_t>(piece.facet_elements[static_cast<size_t>(f)]);
+    const int side = piece.facet_sides[static_cast<size_t>(f)];
+    edges[f].set(vertices, piece.element_nodes[at + static_cast<size_t>((side + 1) % 3)],
+                 piece.element_nodes[at + static_cast<size_t>((side + 2) % 3)], piece.facet_labels[static_cast<size_t>(f)]);
+  }
+  return new Mesh(nv, nt, nbe, vertices, triangles, edges);
+}
+
 /// One part as a FreeFEM mesh3: vertices and tetrahedra with their labels, each boundary
 /// triangle ordered as its tetrahedron's face (outward, as FreeFEM orders faces).
 Mesh3* part_mesh(const Mesh3& Th, const MeshPart& piece) {
@@ -111,26 +168,30 @@ Mesh3* part_mesh(const Mesh3& Th, const MeshPart& piece) {
   return mesh;
 }
 
-/// Cuts the mesh3 ThBody into the parts `part` gives (one part number per tetrahedron, from
-/// 0 to nparts - 1, nparts = its largest entry + 1) and stores part p in Th3[first + p]: the
-/// body's boundary labels kept, the cuts labelled `interfaceLabel`, the same meshes as
+/// Cuts the mesh or mesh3 ThBody into the parts `part` gives (one part number per element,
+/// from 0 to nparts - 1, nparts = its largest entry + 1) and stores part p in Th[first + p]:
+/// the body's boundary labels kept, the cuts labelled `interfaceLabel`, the same meshes as
 /// trunc(ThBody, part == p, label = interfaceLabel) up to the numbering, in one pass over
 /// the body instead of one per part. Returns the number of parts.
-long feti_split_mesh3(KN<pmesh3>* const& Th3, const long& first, const Mesh3* const& body, KN<long>* const& part,
-                      const long& interface_label) {
-  return guarded("fetiSplitMesh3", [&] {
+template <class MeshType>
+long feti_split_mesh(KN<const MeshType*>* const& Th, const long& first, const MeshType* const& body,
+                     KN<long>* const& part, const long& interface_label) {
+  constexpr bool solid = std::is_same<MeshType, Mesh3>::value;
+  return guarded(solid ? "fetiSplitMesh3" : "fetiSplitMesh", [&] {
+    const std::string elements = solid ? "tetrahedra" : "triangles", element = solid ? "tetrahedron" : "triangle";
     if (part->N() != body->nt)
-      throw InputError("part: has " + std::to_string(part->N()) + " entries for the " + std::to_string(body->nt) +
-                       " tetrahedra of ThBody (one part number per tetrahedron)");
+      throw InputError("part: has " + std::to_string(part->N()) + " entries for the " + std::to_string(body->nt) + " " +
+                       elements + " of ThBody (one part number per " + element + ")");
     const std::vector<long> parts = part_numbers(*part);
     long count = 0;
     for (const long p : parts) count = std::max(count, p + 1);
-    if (first < 0 || first + count > Th3->N())
-      throw InputError("Th3: the parts " + std::to_string(first) + " .. " + std::to_string(first + count - 1) +
-                       " do not all lie in the mesh array of " + std::to_string(Th3->N()));
+    if (first < 0 || first + count > Th->N())
+      throw InputError(std::string(solid ? "Th3" : "Th") + ": the parts " + std::to_string(first) + " .. " +
+                       std::to_string(first + count - 1) + " do not all lie in the mesh array of " +
+                       std::to_string(Th->N()));
     const std::vector<MeshPart> pieces = split_parts(split_input(*body), parts, count, static_cast<int>(interface_label));
     for (long p = 0; p < count; ++p) {
-      pmesh3& slot = (*Th3)[first + p];
+      const MeshType*& slot = (*Th)[first + p];
       if (slot) slot->destroy();  // the array owns its meshes (FreeFEM's DestroyKN destroys them)
       slot = part_mesh(*body, pieces[static_cast<size_t>(p)]);
     }
@@ -143,8 +204,14 @@ long feti_split_mesh3(KN<pmesh3>* const& Th3, const long& first, const Mesh3* co
 void add_mesh_functions() {
   Global.Add("fetiConnectParts", "(", new OneOperator2_<long, pmesh, KN<long>*>(feti_connect_parts<Mesh, 3>));
   Global.Add("fetiConnectParts", "(", new OneOperator2_<long, pmesh3, KN<long>*>(feti_connect_parts<Mesh3, 4>));
+  Global.Add("fetiSplitMesh", "(",
+             new OneOperator5_<long, KN<pmesh>*, long, pmesh, KN<long>*, long>(feti_split_mesh<Mesh>));
+  // fetiSplitMesh takes either kind of mesh (the ffddm handoff macro serves both);
+  // fetiSplitMesh3 stays the solid one's name.
+  Global.Add("fetiSplitMesh", "(",
+             new OneOperator5_<long, KN<pmesh3>*, long, pmesh3, KN<long>*, long>(feti_split_mesh<Mesh3>));
   Global.Add("fetiSplitMesh3", "(",
-             new OneOperator5_<long, KN<pmesh3>*, long, pmesh3, KN<long>*, long>(feti_split_mesh3));
+             new OneOperator5_<long, KN<pmesh3>*, long, pmesh3, KN<long>*, long>(feti_split_mesh<Mesh3>));
 }
 
 }  // namespace ffeti::binding

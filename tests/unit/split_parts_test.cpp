@@ -3,6 +3,7 @@
 // Kuhn tetrahedra against counts worked out by hand.
 #include "base/errors.h"
 #include "kuhn_box.h"
+#include "mesh/facet_neighbours.h"
 #include "mesh/split_parts.h"
 
 #include <gtest/gtest.h>
@@ -101,6 +102,16 @@ TEST(SplitParts, LabelledInnerFacetsAreKeptOnceInsideAPartAndOnBothSidesOfACut) 
   // Split along z: the labelled plane is the cut, and both halves keep its label.
   const std::vector<MeshPart> along_z = split_parts(body, halves(2), 2, kInterface);
   for (const MeshPart& piece : along_z) EXPECT_EQ(label_counts(piece), (std::map<int, int>{{kOuter, 24}, {7, 8}}));
+}
+
+// The element across each facet (what the plane split reads instead of FreeFEM's private
+// adjacency) as the brute-force comparison of every pair of facets finds it, in 3D; in 2D
+// on two triangles sharing the edge 1-2 and a third sharing only a vertex.
+TEST(SplitParts, ElementAcrossFacetsMatchesThePairwiseSearch) {
+  EXPECT_EQ(element_across_facets(kuhn_box(2), 4), kuhn_body(-1).facet_neighbour);
+  const std::vector<int> triangles{0, 1, 2, 1, 3, 2, 2, 4, 5};
+  EXPECT_EQ(element_across_facets(triangles, 3), (std::vector<int>{1, -1, -1, -1, 0, -1, -1, -1, -1}));
+  EXPECT_THROW(element_across_facets({0, 1}, 3), InputError);
 }
 
 TEST(SplitParts, RefusesPartsOutOfRangeEmptyPartsAndSizesThatDoNotMatch) {

@@ -1,6 +1,7 @@
 // Which elements of a simplicial mesh touch across a facet (an edge of a triangle, a face of
 // a tetrahedron), from the element-to-node table alone: the same code for plane and solid
-// meshes, and no mesh library needed (connect_parts works on its answer).
+// meshes, and no mesh library needed (connect_parts works on its answer, the plane meshes'
+// split on which element lies across each facet).
 #pragma once
 
 #include <vector>
@@ -16,5 +17,11 @@ namespace ffeti {
 /// shared by more than two elements, each pair of them linked). InputError when nodes_per_element is
 /// not 3 or 4, the table's size is not a multiple of it or a node number is negative.
 std::vector<std::vector<int>> facet_neighbours(const std::vector<int>& element_nodes, int nodes_per_element);
+
+/// Per facet, the element across it: entry k * nodes_per_element + j is the element sharing
+/// element k's facet j (the one opposite its node j), -1 on the mesh's boundary (where a
+/// facet has more than two elements, each sees the next of them in node order). The same
+/// checks as facet_neighbours().
+std::vector<int> element_across_facets(const std::vector<int>& element_nodes, int nodes_per_element);
 
 }  // namespace ffeti
