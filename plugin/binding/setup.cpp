@@ -51,7 +51,7 @@ class FetiSetup : public WithNamedArguments {
   // kinds_with_input()), each in the registry's order (constraints/contact/registry.cpp),
   // then the set-up options.
   enum Named { kDirichlet, kDirichletValues, kSlave, kGap, kComponent, kComm, kRadius, kContactGap, kFriction,
-               kSlipBound, kFrictionField, kZ, kSlipBoundField, kStiffnessOf, kKindLists };
+               kSlipBound, kFrictionField, kZ, kSlipBoundField, kStiffnessOf, kReleaseK, kKindLists };
   static size_t kind_arguments_start() { return kKindLists + kinds_with_lists().size(); }
   static size_t options_start() { return kind_arguments_start() + kinds_with_input().size(); }
 
@@ -152,10 +152,14 @@ class FetiSetup : public WithNamedArguments {
     std::sort(matrices.begin(), matrices.end());
     matrices.erase(std::unique(matrices.begin(), matrices.end()), matrices.end());
     std::vector<SharedMatrix> converted(matrices.size());
+    // releaseK=true: each script matrix goes as soon as the plugin holds its copy, so that
+    // the script's K is gone before the factors come (the set-up's peak memory).
+    const bool release = nargs[kReleaseK] && GetAny<bool>((*nargs[kReleaseK])(stack));
     parallel_for_each(static_cast<int>(matrices.size()), threads, [&](int k) {
       const long m = matrices[static_cast<size_t>(k)];
       const std::string name = "K[" + std::to_string(m) + "]";
       converted[static_cast<size_t>(k)] = SharedMatrix(to_sparse(Ks[m], name), name);
+      if (release) Ks[m].A.destroy();  // distinct matrices per thread; the Matrice_Creuse stays, empty
     });
     std::vector<SubdomainInput> subdomains(ids.size());
     parallel_for_each(static_cast<int>(ids.size()), threads, [&](int k) {
@@ -258,7 +262,8 @@ NamedParameters FetiSetup::name_param = named_parameters(
           {"contactRadius", &typeid(double)},            {"contactGap", &typeid(KN<KN<double>>*)},
           {"friction", &typeid(double)},                 {"slipBound", &typeid(double)},
           {"frictionField", &typeid(KN<KN<double>>*)},   {"Z", &typeid(KN<KN<double>>*)},
-          {"slipBoundField", &typeid(KN<KN<double>>*)},  {"stiffnessOf", &typeid(KN<long>*)}};
+          {"slipBoundField", &typeid(KN<KN<double>>*)},  {"stiffnessOf", &typeid(KN<long>*)},
+          {"releaseK", &typeid(bool)}};
       for (const ContactDiscretization* kind : kinds_with_lists())
         names.push_back({kind->list_input()->argument, &typeid(KN<KN<long>>*)});
       for (const ContactDiscretization* kind : kinds_with_input())
