@@ -19,6 +19,7 @@
 #                                          the 3D cubes near a million unknowns about 4 of them; 2.5 GB)
 #   ./scripts/benchmark.sh real-meshes     a real mesh (gmsh, METIS parts, node to face) weak scaling to 4.5 million
 #                                          unknowns (22 GB, 72 min on a loaded machine), part sizes, the MUMPS peer
+#   ./scripts/benchmark.sh factor-rate     the factorizations' GFlop/s on one thread against a dense product (~2 min)
 #   ./scripts/benchmark.sh dynamics        transient contact: a bar on a wall, a block sliding to rest (~2 min)
 #   ./scripts/benchmark.sh busy-machine    scenes idle and beside busy neighbour processes, threads (~2 min)
 #   ./scripts/benchmark.sh friction        Cattaneo-Mindlin and a block on a slope: tractions, stick/slip,
@@ -49,6 +50,7 @@ case "${1:-all}" in
   model-problem) /usr/bin/python3 "$root/scripts/model_problem_benchmark.py" "${@:2}" ;;
   parallel) /usr/bin/python3 "$root/scripts/parallel_benchmark.py" ;;
   hertz) /usr/bin/python3 "$root/scripts/hertz_benchmark.py" ;;
+  factor-rate) /usr/bin/python3 "$root/scripts/factor_rate_benchmark.py" ;;
   multibody) /usr/bin/python3 "$root/scripts/multibody_picture.py" ;;
   shape-optimization) /usr/bin/python3 "$root/scripts/shape_optimization_benchmark.py" ;;
   busy-machine) /usr/bin/python3 "$root/scripts/busy_machine_benchmark.py" ;;
@@ -74,6 +76,7 @@ case "${1:-all}" in
        /usr/bin/python3 "$root/scripts/busy_machine_benchmark.py"
        /usr/bin/python3 "$root/scripts/friction_benchmark.py"
        /usr/bin/python3 "$root/scripts/three_dimensions_benchmark.py"
-       /usr/bin/python3 "$root/scripts/real_meshes_benchmark.py" ;;
-  *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization|scalability|large-contact|hard-cases|dynamics|accuracy|busy-machine|friction|three-dimensions|elasticity-3d|real-meshes]" >&2; exit 2 ;;
+       /usr/bin/python3 "$root/scripts/real_meshes_benchmark.py"
+       /usr/bin/python3 "$root/scripts/factor_rate_benchmark.py" ;;
+  *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization|scalability|large-contact|hard-cases|dynamics|accuracy|busy-machine|friction|three-dimensions|elasticity-3d|real-meshes|factor-rate]" >&2; exit 2 ;;
 esac
