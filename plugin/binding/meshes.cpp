@@ -171,7 +171,7 @@ Mesh3* part_mesh(const Mesh3& Th, const MeshPart& piece) {
 /// Cuts the mesh or mesh3 ThBody into the parts `part` gives (one part number per element,
 /// from 0 to nparts - 1, nparts = its largest entry + 1) and stores part p in Th[first + p]:
 /// the body's boundary labels kept, the cuts labelled `interfaceLabel`, the same meshes as
-/// trunc(ThBody, part == p, label = interfaceLabel) up to the numbering, in one pass over
+/// trunc(ThBody, part == p, label = interfaceLabel), numbered alike, in one pass over
 /// the body instead of one per part. Returns the number of parts.
 template <class MeshType>
 long feti_split_mesh(KN<const MeshType*>* const& Th, const long& first, const MeshType* const& body,

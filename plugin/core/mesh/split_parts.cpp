@@ -2,6 +2,7 @@
 
 #include "base/errors.h"
 
+#include <algorithm>
 #include <string>
 
 namespace ffeti {
@@ -66,6 +67,12 @@ std::vector<MeshPart> split_parts(const SplitInput& body, const std::vector<long
         }
       }
     }
+    // The nodes in the body's order, as trunc numbers them: the parts' dofs, hence every
+    // sum over them, come out as trunc's parts give them (the same answers to the last bit).
+    std::vector<int> first_met = piece.nodes;
+    std::sort(piece.nodes.begin(), piece.nodes.end());
+    for (size_t i = 0; i < piece.nodes.size(); ++i) local[static_cast<size_t>(piece.nodes[i])] = static_cast<int>(i);
+    for (int& position : piece.element_nodes) position = local[static_cast<size_t>(first_met[static_cast<size_t>(position)])];
     for (const int node : piece.nodes) local[static_cast<size_t>(node)] = -1;
   }
   return parts;

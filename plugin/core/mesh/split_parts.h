@@ -8,8 +8,8 @@
 
 namespace ffeti {
 
-/// One part of a split mesh. `nodes` are the body's node numbers the part uses, in the order
-/// they are first met; `elements` the body's element numbers of the part, ascending, and
+/// One part of a split mesh. `nodes` are the body's node numbers the part uses, ascending
+/// (trunc's order); `elements` the body's element numbers of the part, ascending, and
 /// `element_nodes` their nodes as positions in `nodes`. Each boundary facet of the part is
 /// (facet_elements[i], facet_sides[i], facet_labels[i]): a position in `elements`, the
 /// element's facet (the one opposite its node of that number) and the facet's label.
