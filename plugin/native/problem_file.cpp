@@ -261,26 +261,27 @@ ContactSpec read_contact(ObjectReader& r, int components) {
     }
     o.finish();
   }
-  // The kind this entry makes (its row says where friction works); a kind's own key below.
-  ContactKind kind = components == 1 ? ContactKind::node_to_node
-                     : c.obstacle    ? ContactKind::obstacle
-                     : dimension == 3 ? ContactKind::node_to_face
-                                      : ContactKind::node_to_segment;
+  // The kind this entry makes (its row says where friction works): a kind's own key, else
+  // the list kind of the problem's components (its key names the master group).
+  const ContactDiscretization* list_kind = file_list_kind(components);
+  const std::string master_key = list_kind->list_input()->file_key;
+  c.kind = c.obstacle ? ContactKind::obstacle : list_kind->kind();
   for (const ContactDiscretization* unit : kinds_with_input()) {
     const char* key = unit->input()->file_key;
     if (!key || !r.has(key)) continue;
     if (c.rigid()) r.fail(r.path(key), "give one obstacle per contact entry");
     read_kind_input(r, *unit, dimension, c);
-    kind = unit->kind();
+    c.kind = unit->kind();
   }
+  const ContactKind kind = c.kind;
   if (c.rigid()) {
     if (components < 2) r.fail(r.path("obstacle"), "needs displacements (\"components\": 2 or 3)");
-    if (r.has("master")) r.fail(r.path("master"), "give a master curve or an obstacle, not both");
+    if (r.has(master_key)) r.fail(r.path(master_key), "give a master curve or an obstacle, not both");
   } else {
-    c.master = r.required<int>("master");
+    c.master = r.required<int>(master_key);
   }
   // Each option only where it means something: node to segment or face searches, node to node has a gap.
-  const bool projected = components >= 2 && !c.rigid();
+  const bool projected = !c.rigid() && list_kind->searched_argument();
   if (r.has("search_distance")) {
     if (!projected)
       r.fail(r.path("search_distance"), "applies to node-to-segment or node-to-face contact (2 or 3 components, a master "
@@ -300,7 +301,7 @@ ContactSpec read_contact(ObjectReader& r, int components) {
     if (!(**law >= 0)) r.fail(r.path(key), "must be >= 0");
   }
   if (c.friction && c.slip_bound) r.fail(r.path("slip_bound"), "give one law, friction (Coulomb) or slip_bound (Tresca)");
-  if (c.slave == c.master) r.fail(r.path("master"), dimension == 3 ? "is the slave surface" : "is the slave curve");
+  if (c.slave == c.master) r.fail(r.path(master_key), dimension == 3 ? "is the slave surface" : "is the slave curve");
   return c;
 }
 

@@ -52,7 +52,11 @@ struct DirichletSpec {
 
 struct ContactSpec {
   int slave = 0;      ///< physical curve (surface in 3D) of the slave nodes
-  int master = 0;     ///< physical curve of the master segments (surface of the master triangles in 3D; 0 with an obstacle)
+  /// The physical group of the list kind's key (ListInput::file_key, "master": a curve of
+  /// master segments, a surface of master triangles in 3D, the master nodes' curve of a
+  /// scalar field); 0 with an obstacle.
+  int master = 0;
+  ContactKind kind = ContactKind::node_to_segment;  ///< the kind the entry makes
   std::optional<double> search_distance;  ///< node to segment or face only (default: no limit)
   std::optional<double> gap;              ///< node to node (scalar fields) only (default 0)
   bool obstacle = false;  ///< a rigid straight obstacle (a plane in 3D): a point and a normal, or a curve

@@ -99,6 +99,24 @@ TEST(Capabilities, EachListKindRefusesTheOtherKindsInputForItsSlaves) {
   EXPECT_EQ(refusal([&] { validate_input(subdomains, pairs); }), combined);
 }
 
+// ffeti-solve reads the list kinds' problem-file key through the registry: the key "master"
+// names the group whose nodes, segments or triangles make the list of the kind the problem's
+// components choose; mortar has no key.
+TEST(Capabilities, EachListKindDeclaresItsProblemFileKey) {
+  const std::pair<int, ContactKind> chosen[] = {
+      {1, ContactKind::node_to_node}, {2, ContactKind::node_to_segment}, {3, ContactKind::node_to_face}};
+  const MeshEntries entries[] = {MeshEntries::node_dofs, MeshEntries::segments, MeshEntries::triangles};
+  for (size_t i = 0; i < 3; ++i) {
+    const ContactDiscretization* kind = file_list_kind(chosen[i].first);
+    ASSERT_NE(kind, nullptr);
+    EXPECT_EQ(kind->kind(), chosen[i].second);
+    EXPECT_STREQ(kind->list_input()->file_key, "master");
+    EXPECT_EQ(kind->list_input()->file_entries, entries[i]);
+  }
+  EXPECT_EQ(file_list_kind(4), nullptr);
+  EXPECT_EQ(contact_discretizations()[static_cast<size_t>(ContactKind::mortar)]->list_input()->file_key, nullptr);
+}
+
 // fetiSetup reads the list kinds' per-subdomain arguments through the registry (read_list).
 TEST(Capabilities, EachListKindCutsItsOwnArgumentIntoEntries) {
   std::vector<std::string> arguments;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -51,13 +52,23 @@ struct KindInput {
   const char* layout;
 };
 
-/// The per-subdomain list a kind owns in fetiSetup: an int[int][int] argument, one array of
-/// dofs per subdomain, `dofs` of them per entry (contactSlave, which several kinds share,
-/// stays the front end's).
+/// What ffeti-solve reads from the mesh region a list kind's problem-file key names, as the
+/// entries of the kind's list: each node's dofs (one entry per dof), or the region's
+/// segments (triangles in a solid), each as its corners' dofs ordered so that its normal
+/// points out of the body holding it (the lists' convention: contactSegments, contactFaces).
+enum class MeshEntries : std::uint8_t { node_dofs, segments, triangles };
+
+/// The per-subdomain list a kind owns: fetiSetup's int[int][int] argument, one array of dofs
+/// per subdomain, `dofs` of them per entry (contactSlave, which several kinds share, stays
+/// the front end's); and where a problem file gives it, the key of a contact entry naming a
+/// physical group, read by ffeti-solve for the problems of `file_components` components.
 struct ListInput {
   const char* argument;  ///< fetiSetup's named argument: "contactSegments"
   size_t dofs;           ///< per entry: a master segment's 4, a face's 9
   const char* layout;    ///< for messages: "4 dofs per segment (a_x, a_y, b_x, b_y)"
+  const char* file_key = nullptr;  ///< the problem file's key: "master" (nullptr: none)
+  int file_components = 0;         ///< the problem's "components" for which the key makes this kind
+  MeshEntries file_entries = MeshEntries::node_dofs;  ///< what the key's group gives
 };
 
 class ContactDiscretization {
@@ -115,6 +126,10 @@ std::vector<const ContactDiscretization*> kinds_with_input();
 
 /// The kinds that own a per-subdomain list (list_input() != nullptr), in the registry's order.
 std::vector<const ContactDiscretization*> kinds_with_lists();
+
+/// The kind whose list a problem file's contact entry gives by its key (ListInput::file_key)
+/// in a problem of `components` field components (nullptr: none).
+const ContactDiscretization* file_list_kind(int components);
 
 /// `lists` cut into entries of N dofs (N = spec.dofs): InputError "<argument>[<id>]: needs
 /// <layout>" for a list that is not whole entries.

@@ -51,7 +51,8 @@ bool on_bent_edge(const Point3& s, const FaceRecord& face, const FaceGrid& grid)
 }  // namespace
 
 const ListInput* NodeToFace::list_input() const {
-  static const ListInput spec{"contactFaces", 9, "9 dofs per face (a_x, a_y, a_z, b_x, ..., c_z)"};
+  static const ListInput spec{"contactFaces", 9, "9 dofs per face (a_x, a_y, a_z, b_x, ..., c_z)", "master", 3,
+                              MeshEntries::triangles};
   return &spec;
 }
 

@@ -38,7 +38,7 @@ std::array<DofRef, 3> node_dofs(const NodeComponents& nodes, const DofRecord& at
 }  // namespace
 
 const ListInput* NodeToNode::list_input() const {
-  static const ListInput spec{"contactMaster", 1, "1 dof per entry"};
+  static const ListInput spec{"contactMaster", 1, "1 dof per entry", "master", 1, MeshEntries::node_dofs};
   return &spec;
 }
 

@@ -85,7 +85,8 @@ Point moved(const Point& p, const Point3& velocity, double t) { return {p[0] + t
 }  // namespace
 
 const ListInput* NodeToSegment::list_input() const {
-  static const ListInput spec{"contactSegments", 4, "4 dofs per segment (a_x, a_y, b_x, b_y)"};
+  static const ListInput spec{"contactSegments", 4, "4 dofs per segment (a_x, a_y, b_x, b_y)", "master", 2,
+                              MeshEntries::segments};
   return &spec;
 }
 

@@ -51,6 +51,12 @@ std::vector<const ContactDiscretization*> kinds_with_lists() {
   return kinds;
 }
 
+const ContactDiscretization* file_list_kind(int components) {
+  for (const ContactDiscretization* unit : kinds_with_lists())
+    if (unit->list_input()->file_key && unit->list_input()->file_components == components) return unit;
+  return nullptr;
+}
+
 void check_whole_entries(const ListInput& spec, const std::vector<std::vector<int>>& lists, const std::vector<int>& ids) {
   for (size_t k = 0; k < lists.size(); ++k)
     if (lists[k].size() % spec.dofs != 0)
