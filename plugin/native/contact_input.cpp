@@ -111,11 +111,12 @@ long add_master_faces(const std::vector<std::array<NodeTag, 3>>& triangles, cons
   return found;
 }
 
-/// The line of a straight obstacle curve, its normal pointing to the slave nodes' side.
-/// InputError if the curve is not straight or the slave nodes' centroid lies on it.
-void obstacle_from_curve(const ProblemFile& problem, const GmshMesh& mesh, const ContactSpec& c, const std::string& key,
-                         ContactInput& contact) {
-  const auto nodes = from_group(problem, key + ".obstacle.curve", [&] { return mesh.nodes(1, c.obstacle_curve); });
+/// The line of a straight curve (c.line_curve, named `where`), its normal pointing to the
+/// slave nodes' side: [px, py, nx, ny]. InputError if the curve is not straight or the slave
+/// nodes' centroid lies on it.
+std::vector<double> line_from_curve(const ProblemFile& problem, const GmshMesh& mesh, const ContactSpec& c,
+                                    const std::string& where) {
+  const auto nodes = from_group(problem, where, [&] { return mesh.nodes(1, c.line_curve); });
   const auto p0 = mesh.position(nodes.front());
   std::array<double, 3> far = p0;
   for (NodeTag node : nodes) {
@@ -123,12 +124,12 @@ void obstacle_from_curve(const ProblemFile& problem, const GmshMesh& mesh, const
     if (std::hypot(p[0] - p0[0], p[1] - p0[1]) > std::hypot(far[0] - p0[0], far[1] - p0[1])) far = p;
   }
   const double length = std::hypot(far[0] - p0[0], far[1] - p0[1]);
-  if (!(length > 0)) throw InputError(problem.path + ": " + key + ".obstacle.curve: the curve has no length");
+  if (!(length > 0)) throw InputError(problem.path + ": " + where + ": the curve has no length");
   std::array<double, 2> normal{-(far[1] - p0[1]) / length, (far[0] - p0[0]) / length};
   auto offset = [&](const std::array<double, 3>& p) { return normal[0] * (p[0] - p0[0]) + normal[1] * (p[1] - p0[1]); };
   for (NodeTag node : nodes)
     if (std::abs(offset(mesh.position(node))) > 1e-9 * length)
-      throw InputError(problem.path + ": " + key + ".obstacle.curve: curve " + std::to_string(c.obstacle_curve) +
+      throw InputError(problem.path + ": " + where + ": curve " + std::to_string(c.line_curve) +
                        " is not straight (node " + std::to_string(node) + " lies off the line): a rigid obstacle is a line");
   std::array<double, 3> centroid{0, 0, 0};  // z unused: a plane problem
   const auto slaves = mesh.nodes(1, c.slave);
@@ -136,11 +137,10 @@ void obstacle_from_curve(const ProblemFile& problem, const GmshMesh& mesh, const
     for (int k = 0; k < 2; ++k) centroid[k] += mesh.position(node)[k] / static_cast<double>(slaves.size());
   const double side = offset(centroid);
   if (std::abs(side) <= 1e-9 * length)
-    throw InputError(problem.path + ": " + key + ".obstacle.curve: the slave nodes' centroid lies on the obstacle's "
+    throw InputError(problem.path + ": " + where + ": the slave nodes' centroid lies on the obstacle's "
                      "line: give \"point\" and \"normal\" instead");
   if (side < 0) normal = {-normal[0], -normal[1]};
-  contact.obstacle_point = {p0[0], p0[1], 0.0};
-  contact.obstacle_normal = {normal[0], normal[1], 0.0};
+  return {p0[0], p0[1], normal[0], normal[1]};
 }
 
 /// Dofs of the local subdomains at `nodes` (sorted; all components).
@@ -178,6 +178,7 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
   contact.slave_dofs.resize(n);
   const auto& units = contact_discretizations();
   std::map<ContactKind, std::vector<std::vector<int>>> lists;  // of the list kinds' keys, per subdomain
+  bool rigid_given = false;
   const ContactSpec& first = problem.contact.front();
   if (first.search_distance) contact.search_distance = *first.search_distance;
   contact.gap = first.gap.value_or(0.0);
@@ -203,16 +204,16 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
     add_node_dofs(slaves, layouts, contact.slave_dofs);
     if (c.friction) set_friction(slaves, *c.friction, layouts, contact.friction_field);
     if (c.slip_bound) set_friction(slaves, *c.slip_bound, layouts, contact.slip_bound_field);
-    if (c.rigid()) {
-      if (contact.obstacle || !contact.kind_parameters.empty())
+    if (c.rigid()) {  // a kind's own key, stored by the kind as its fetiSetup argument is
+      if (rigid_given)
         throw InputError(problem.path + ": " + key + ": a second obstacle (one rigid obstacle per problem)");
-      contact.kind_parameters = c.kind_parameters;  // a kind's own key (read through the registry)
-      if (c.obstacle) {
-        contact.obstacle = true;
-        contact.obstacle_point = c.obstacle_point;  // z entries 0 in a plane problem
-        contact.obstacle_normal = c.obstacle_normal;
-        if (c.obstacle_curve > 0) obstacle_from_curve(problem, mesh, c, key, contact);
-      }
+      rigid_given = true;
+      const auto& [kind, values] = *c.kind_parameters.begin();
+      const ContactDiscretization& unit = *units.at(static_cast<size_t>(kind));
+      const KindInput& spec = *unit.input();
+      unit.read_input(c.line_curve > 0 ? line_from_curve(problem, mesh, c, key + "." + spec.file_key + "." + spec.line_key)
+                                       : values,
+                      problem.dimension(), contact);
     } else {  // a list kind's key: its entries read from the mesh group it names
       const ListInput& spec = *units.at(static_cast<size_t>(c.kind))->list_input();
       std::vector<std::vector<int>>& list = lists[c.kind];

@@ -38,6 +38,7 @@ struct InputField {
   const char* key;  ///< its key in the problem file's object; its name in messages
   int size;
   bool flag = false;
+  bool nonzero = false;  ///< a direction: all zero is refused (in a problem file, naming the key)
 };
 
 /// The input a kind owns, read alike by both front ends: fetiSetup's real array `argument`
@@ -50,6 +51,10 @@ struct KindInput {
   size_t required;       ///< the first `required` fields must be given
   /// The array's layout, for messages: "[cx, cy, cz, radius]".
   const char* layout;
+  /// A problem file may give, in a plane problem and instead of the first two fields (a
+  /// point and a normal), this key naming a straight physical curve: the line through it,
+  /// its normal towards the slave nodes (the plane obstacle's "curve"; nullptr: none).
+  const char* line_key = nullptr;
 };
 
 /// What ffeti-solve reads from the mesh region a list kind's problem-file key names, as the

@@ -23,8 +23,12 @@ RowAt ObstacleGeometry::row_at(const NodeMotion& v, double t) const {
 std::vector<RowAt> ObstacleGeometry::slip_rows() const { return rigid_slip_rows(slave, unit_normal, three_d()); }
 
 const KindInput* Obstacle::input() const {
-  static const KindInput spec{"obstacle", nullptr, {{"point", InputField::kDimension}, {"normal", InputField::kDimension}},
-                              2, "[point x, point y, normal x, normal y] (with Z: [px, py, pz, nx, ny, nz])"};
+  static const KindInput spec{"obstacle",
+                              "obstacle",
+                              {{"point", InputField::kDimension}, {"normal", InputField::kDimension, false, true}},
+                              2,
+                              "[point x, point y, normal x, normal y] (with Z: [px, py, pz, nx, ny, nz])",
+                              "curve"};
   return &spec;
 }
 

@@ -83,9 +83,14 @@ std::vector<double> input_values(const KindInput& input, const std::vector<std::
       continue;
     }
     const size_t size = field_size(field, dimension);
+    if (entries.size() != size && field.size == InputField::kDimension)
+      throw InputError(where + field.key + (dimension == 2 ? ": needs two numbers [x, y]"
+                                                           : ": needs three numbers [x, y, z] (\"components\": 3)"));
     if (entries.size() != size)
       throw InputError(where + field.key + ": needs " + (size == 1 ? "one number" : std::to_string(size) + " numbers") +
                        ", got " + std::to_string(entries.size()));
+    if (field.nonzero && std::all_of(entries.begin(), entries.end(), [](double v) { return v == 0; }))
+      throw InputError(where + field.key + ": must not be zero");
     values.insert(values.end(), entries.begin(), entries.end());
   }
   return values;
