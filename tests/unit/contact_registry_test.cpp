@@ -46,10 +46,16 @@ TEST(ContactRegistry, TheRigidObstaclesReadTheirOwnArgument) {
             }),
             "obstacle: with Z (three dimensions) needs six entries, a plane [px, py, pz, nx, ny, nz]; got four (a "
             "line of a plane problem)");
+  // The ball keeps its own entries (it shares no field with the plane).
   ContactInput ball;
   with_argument("obstacleBall").read_input({1, 2, 3, 0.5}, 3, ball);
-  EXPECT_EQ(ball.obstacle_point, (std::array<double, 3>{1, 2, 3}));
-  EXPECT_EQ(ball.obstacle_radius, 0.5);
+  EXPECT_FALSE(ball.obstacle);
+  EXPECT_EQ(ball.kind_parameters.at(ContactKind::ball), (std::vector<double>{1, 2, 3, 0.5}));
+  EXPECT_EQ(refusal([] {
+              ContactInput c;
+              with_argument("obstacleBall").read_input({1, 2, 0}, 2, c);
+            }),
+            "obstacleBall: the radius must be finite and > 0, got 0.000000");
   EXPECT_EQ(refusal([&] { with_argument("obstacleBall").read_input({1, 2, 0.5}, 2, plane); }),
             "obstacle, obstacleBall: give one obstacle, a plane or a ball");
 }

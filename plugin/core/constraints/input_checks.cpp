@@ -196,7 +196,7 @@ void check_kind_inputs(const ContactInput& contact, int dimension) {
     const ContactDiscretization& unit = *units.at(static_cast<size_t>(kind));
     if (!unit.input()) throw InputError(std::string(unit.capabilities().name) + " contact takes no parameters");
     unit.check_input(values, dimension);
-    const char* other = contact.obstacle                ? (contact.obstacle_radius > 0 ? "obstacleBall" : "obstacle")
+    const char* other = contact.obstacle                      ? "obstacle"
                         : any_entry(contact.master_dofs)      ? "contactMaster"
                         : any_entry(contact.master_segments)  ? "contactSegments"
                         : any_entry(contact.master_faces)     ? "contactFaces"
@@ -304,8 +304,6 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
   for (double v : {contact.obstacle_point[0], contact.obstacle_point[1], contact.obstacle_point[2],
                    contact.obstacle_normal[0], contact.obstacle_normal[1], contact.obstacle_normal[2]})
     if (contact.obstacle && !std::isfinite(v)) throw InputError("obstacle: the point and the normal must be finite");
-  if (contact.obstacle_radius != 0 && !(contact.obstacle_radius > 0 && std::isfinite(contact.obstacle_radius)))
-    throw InputError("obstacleBall: the radius must be finite and > 0, got " + std::to_string(contact.obstacle_radius));
   check_kind_inputs(contact, dimension);
 
 }

@@ -135,7 +135,7 @@ void refuse_higher_order_faces(const std::vector<std::vector<std::array<int, 9>>
 
 ObstacleFacing obstacle_facing(const std::vector<SubdomainInput>& subdomains, const ContactInput& contact) {
   ObstacleFacing out;
-  if (!contact.obstacle || contact.obstacle_radius > 0) return out;
+  if (!contact.obstacle) return out;
   const auto& normal = contact.obstacle_normal;
   const double norm = std::hypot(normal[0], normal[1], normal[2]);
   if (!(norm > 0)) return out;  // refused with the rows

@@ -91,7 +91,8 @@ void Mortar::read_list(const std::vector<std::vector<int>>& lists, const std::ve
 }
 
 void Mortar::check_combination(const ContactInput& contact) const {
-  if (any_entry(contact.slave_faces) && (any_entry(contact.slave_dofs) || contact.obstacle))
+  if (any_entry(contact.slave_faces) &&
+      (any_entry(contact.slave_dofs) || contact.obstacle || contact.kind_parameters.count(ContactKind::ball)))
     throw InputError("contactSlaveFaces: the slave nodes of mortar contact are the corners of these faces; give "
                      "contactSlave (node to face, obstacle) or contactSlaveFaces (mortar), not both");
 }

@@ -65,7 +65,8 @@ std::vector<RowAt> NodeToNodeGeometry::slip_rows() const {
 
 void NodeToNode::check_combination(const ContactInput& contact) const {
   if (any_entry(contact.master_dofs) &&
-      (any_entry(contact.master_segments) || any_entry(contact.master_faces) || contact.obstacle))
+      (any_entry(contact.master_segments) || any_entry(contact.master_faces) || contact.obstacle ||
+       contact.kind_parameters.count(ContactKind::ball)))
     throw InputError("contactMaster: node-to-node contact cannot be combined with contactSegments, contactFaces or "
                      "obstacle in one problem (the slave dofs would belong to both)");
 }
