@@ -102,6 +102,15 @@ class ContactDiscretization {
   /// The number of entries against input()'s fields, then check_parameters: read_input and
   /// validate_input (a caller that fills kind_parameters itself) ask it.
   void check_input(const std::vector<double>& values, int dimension) const;
+  /// Its input's checks against the subdomains (`ids`: their numbers in messages) in a
+  /// problem of `dimension`: its list's dofs within each subdomain and what its entries must
+  /// be (a face's corners and orientation), its rows' dimensions. validate_input asks every
+  /// unit, for callers other than fetiSetup too; InputError naming its argument.
+  virtual void check_against(const std::vector<SubdomainInput>& /*subdomains*/, const std::vector<size_t>& /*ids*/,
+                             const ContactInput& /*contact*/, int /*dimension*/) const {}
+  /// Whether `contact` gives its list (an entry on this rank): a kind that owns its input
+  /// (kind_parameters) takes contactSlave's nodes and refuses it (check_kind_inputs).
+  virtual bool list_given(const ContactInput& /*contact*/) const { return false; }
   /// Its rule against the other kinds' input (issue 54): InputError naming the arguments
   /// where `contact` gives its lists together with input that would choose another kind
   /// for the same slaves. validate_input asks every unit; the default refuses nothing.

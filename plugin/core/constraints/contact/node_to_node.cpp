@@ -1,6 +1,7 @@
 #include "constraints/contact/node_to_node.h"
 
 #include "constraints/constraint_rows.h"
+#include "constraints/input_checks.h"
 
 #include "base/errors.h"
 
@@ -45,6 +46,11 @@ const ListInput* NodeToNode::list_input() const {
 void NodeToNode::read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& /*ids*/,
                            ContactInput& contact) const {
   contact.master_dofs = lists;  // one dof per entry: every list is whole
+}
+
+void NodeToNode::check_against(const std::vector<SubdomainInput>& subdomains, const std::vector<size_t>& ids,
+                               const ContactInput& contact, int /*dimension*/) const {
+  check_list_dofs(contact.master_dofs, ids, subdomains, list_input()->argument);
 }
 
 std::vector<RowAt> NodeToNodeGeometry::slip_rows() const {

@@ -51,6 +51,17 @@ void Obstacle::read_input(const std::vector<double>& values, int dimension, Cont
   }
 }
 
+void Obstacle::check_against(const std::vector<SubdomainInput>& /*subdomains*/, const std::vector<size_t>& /*ids*/,
+                             const ContactInput& contact, int dimension) const {
+  if (!contact.obstacle) return;
+  const auto& point = contact.obstacle_point;
+  const auto& normal = contact.obstacle_normal;
+  if (dimension == 2 && (point[2] != 0 || normal[2] != 0))
+    throw InputError("obstacle: six entries (a plane) need Z (three dimensions); a plane problem takes four");
+  for (double v : {point[0], point[1], point[2], normal[0], normal[1], normal[2]})
+    if (!std::isfinite(v)) throw InputError("obstacle: the point and the normal must be finite");
+}
+
 void Obstacle::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
   const ContactInput& contact = in.contact;
   const auto& normal = contact.obstacle_normal;
