@@ -1,11 +1,13 @@
 // The contact entries of a problem file as the core's ContactInput, for this rank's
-// subdomains: slave nodes, master segments (faces in a solid) oriented out of their body,
-// obstacles, friction coefficients.
+// subdomains: slave nodes, the list kinds' entries read from the mesh groups their keys name
+// (master nodes, segments, faces in a solid oriented out of their body) and stored by the
+// kinds themselves (read_list), obstacles, friction coefficients.
 #include "native/contact_input.h"
 
 #include "native/mesh_groups.h"
 
 #include "base/errors.h"
+#include "constraints/contact/contact_discretization.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,12 +30,13 @@ EdgeMap edges_of(const std::vector<SubdomainLayout>& layouts) {
   return edges;
 }
 
-/// The master segments of curve `group` that lie on the local subdomains, as dofs of the
+/// The master segments of a curve that lie on the local subdomains, as dofs of the
 /// subdomain holding the segment's triangle, oriented with that triangle on the left (the
 /// core's convention, whatever the curve's orientation in the mesh). Returns how many of
 /// the curve's segments are here; the caller checks that every rank together found all.
 long add_master_segments(const std::vector<std::array<NodeTag, 2>>& segments, const GmshMesh& mesh,
-                         const std::vector<SubdomainLayout>& layouts, const EdgeMap& edges, ContactInput& contact) {
+                         const std::vector<SubdomainLayout>& layouts, const EdgeMap& edges,
+                         std::vector<std::vector<int>>& lists) {
   long found = 0;
   for (const auto& [a, b] : segments) {
     const auto edge = edges.find({std::min(a, b), std::max(a, b)});
@@ -43,8 +46,7 @@ long add_master_segments(const std::vector<std::array<NodeTag, 2>>& segments, co
     const double left = (pb[0] - pa[0]) * (pc[1] - pa[1]) - (pb[1] - pa[1]) * (pc[0] - pa[0]);
     const NodeTag first = left > 0 ? a : b, second = left > 0 ? b : a;
     const auto& rows = layouts[k].rows;
-    contact.master_segments[k].push_back(
-        {rows.at({first, 0}), rows.at({first, 1}), rows.at({second, 0}), rows.at({second, 1})});
+    lists[k].insert(lists[k].end(), {rows.at({first, 0}), rows.at({first, 1}), rows.at({second, 0}), rows.at({second, 1})});
     ++found;
   }
   return found;
@@ -75,13 +77,13 @@ FaceMap faces_of(const std::vector<SubdomainLayout>& layouts) {
   return faces;
 }
 
-/// The master triangles of surface `group` that lie on the local subdomains, as the 9 dofs
+/// The master triangles of a surface that lie on the local subdomains, as the 9 dofs
 /// of the subdomain holding the triangle's tetrahedron, ordered so that (b - a) x (c - a)
 /// points away from that tetrahedron (out of its body: the core's convention, whatever the
 /// surface's orientation in the mesh). Returns how many are here; the caller checks that
 /// every rank together found all.
 long add_master_faces(const std::vector<std::array<NodeTag, 3>>& triangles, const GmshMesh& mesh,
-                      const std::vector<SubdomainLayout>& layouts, const FaceMap& faces, ContactInput& contact) {
+                      const std::vector<SubdomainLayout>& layouts, const FaceMap& faces, std::vector<std::vector<int>>& lists) {
   long found = 0;
   for (std::array<NodeTag, 3> corners : triangles) {
     std::array<NodeTag, 3> key = corners;
@@ -102,20 +104,19 @@ long add_master_faces(const std::vector<std::array<NodeTag, 3>>& triangles, cons
     const std::array<double, 3> n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
     if (n[0] * (pd[0] - pa[0]) + n[1] * (pd[1] - pa[1]) + n[2] * (pd[2] - pa[2]) > 0) std::swap(corners[1], corners[2]);
     const auto& rows = layouts[k].rows;
-    std::array<int, 9> dofs{};
     for (size_t corner = 0; corner < 3; ++corner)
-      for (int c = 0; c < 3; ++c) dofs[3 * corner + static_cast<size_t>(c)] = rows.at({corners[corner], c});
-    contact.master_faces[k].push_back(dofs);
+      for (int c = 0; c < 3; ++c) lists[k].push_back(rows.at({corners[corner], c}));
     ++found;
   }
   return found;
 }
 
-/// The line of a straight obstacle curve, its normal pointing to the slave nodes' side.
-/// InputError if the curve is not straight or the slave nodes' centroid lies on it.
-void obstacle_from_curve(const ProblemFile& problem, const GmshMesh& mesh, const ContactSpec& c, const std::string& key,
-                         ContactInput& contact) {
-  const auto nodes = from_group(problem, key + ".obstacle.curve", [&] { return mesh.nodes(1, c.obstacle_curve); });
+/// The line of a straight curve (c.line_curve, named `where`), its normal pointing to the
+/// slave nodes' side: [px, py, nx, ny]. InputError if the curve is not straight or the slave
+/// nodes' centroid lies on it.
+std::vector<double> line_from_curve(const ProblemFile& problem, const GmshMesh& mesh, const ContactSpec& c,
+                                    const std::string& where) {
+  const auto nodes = from_group(problem, where, [&] { return mesh.nodes(1, c.line_curve); });
   const auto p0 = mesh.position(nodes.front());
   std::array<double, 3> far = p0;
   for (NodeTag node : nodes) {
@@ -123,12 +124,12 @@ void obstacle_from_curve(const ProblemFile& problem, const GmshMesh& mesh, const
     if (std::hypot(p[0] - p0[0], p[1] - p0[1]) > std::hypot(far[0] - p0[0], far[1] - p0[1])) far = p;
   }
   const double length = std::hypot(far[0] - p0[0], far[1] - p0[1]);
-  if (!(length > 0)) throw InputError(problem.path + ": " + key + ".obstacle.curve: the curve has no length");
+  if (!(length > 0)) throw InputError(problem.path + ": " + where + ": the curve has no length");
   std::array<double, 2> normal{-(far[1] - p0[1]) / length, (far[0] - p0[0]) / length};
   auto offset = [&](const std::array<double, 3>& p) { return normal[0] * (p[0] - p0[0]) + normal[1] * (p[1] - p0[1]); };
   for (NodeTag node : nodes)
     if (std::abs(offset(mesh.position(node))) > 1e-9 * length)
-      throw InputError(problem.path + ": " + key + ".obstacle.curve: curve " + std::to_string(c.obstacle_curve) +
+      throw InputError(problem.path + ": " + where + ": curve " + std::to_string(c.line_curve) +
                        " is not straight (node " + std::to_string(node) + " lies off the line): a rigid obstacle is a line");
   std::array<double, 3> centroid{0, 0, 0};  // z unused: a plane problem
   const auto slaves = mesh.nodes(1, c.slave);
@@ -136,11 +137,10 @@ void obstacle_from_curve(const ProblemFile& problem, const GmshMesh& mesh, const
     for (int k = 0; k < 2; ++k) centroid[k] += mesh.position(node)[k] / static_cast<double>(slaves.size());
   const double side = offset(centroid);
   if (std::abs(side) <= 1e-9 * length)
-    throw InputError(problem.path + ": " + key + ".obstacle.curve: the slave nodes' centroid lies on the obstacle's "
+    throw InputError(problem.path + ": " + where + ": the slave nodes' centroid lies on the obstacle's "
                      "line: give \"point\" and \"normal\" instead");
   if (side < 0) normal = {-normal[0], -normal[1]};
-  contact.obstacle_point = {p0[0], p0[1], 0.0};
-  contact.obstacle_normal = {normal[0], normal[1], 0.0};
+  return {p0[0], p0[1], normal[0], normal[1]};
 }
 
 /// Dofs of the local subdomains at `nodes` (sorted; all components).
@@ -176,6 +176,9 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
   const int boundary = problem.dimension() - 1;  // slave and master groups: curves, surfaces in 3D
   const size_t n = layouts.size();
   contact.slave_dofs.resize(n);
+  const auto& units = contact_discretizations();
+  std::map<ContactKind, std::vector<std::vector<int>>> lists;  // of the list kinds' keys, per subdomain
+  bool rigid_given = false;
   const ContactSpec& first = problem.contact.front();
   if (first.search_distance) contact.search_distance = *first.search_distance;
   contact.gap = first.gap.value_or(0.0);
@@ -201,32 +204,37 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
     add_node_dofs(slaves, layouts, contact.slave_dofs);
     if (c.friction) set_friction(slaves, *c.friction, layouts, contact.friction_field);
     if (c.slip_bound) set_friction(slaves, *c.slip_bound, layouts, contact.slip_bound_field);
-    if (c.rigid()) {
-      if (contact.obstacle || !contact.kind_parameters.empty())
+    if (c.rigid()) {  // a kind's own key, stored by the kind as its fetiSetup argument is
+      if (rigid_given)
         throw InputError(problem.path + ": " + key + ": a second obstacle (one rigid obstacle per problem)");
-      contact.kind_parameters = c.kind_parameters;  // a kind's own key (read through the registry)
-      if (c.obstacle) {
-        contact.obstacle = true;
-        contact.obstacle_point = c.obstacle_point;  // z entries 0 in a plane problem
-        contact.obstacle_normal = c.obstacle_normal;
-        if (c.obstacle_curve > 0) obstacle_from_curve(problem, mesh, c, key, contact);
+      rigid_given = true;
+      const auto& [kind, values] = *c.kind_parameters.begin();
+      const ContactDiscretization& unit = *units.at(static_cast<size_t>(kind));
+      const KindInput& spec = *unit.input();
+      unit.read_input(c.line_curve > 0 ? line_from_curve(problem, mesh, c, key + "." + spec.file_key + "." + spec.line_key)
+                                       : values,
+                      problem.dimension(), contact);
+    } else {  // a list kind's key: its entries read from the mesh group it names
+      const ListInput& spec = *units.at(static_cast<size_t>(c.kind))->list_input();
+      std::vector<std::vector<int>>& list = lists[c.kind];
+      list.resize(n);
+      const std::string where = key + "." + spec.file_key;
+      if (spec.file_entries == MeshEntries::node_dofs) {
+        add_node_dofs(from_group(problem, where, [&] { return mesh.nodes(boundary, c.master); }), layouts, list);
+      } else if (spec.file_entries == MeshEntries::triangles) {
+        const auto triangles = from_group(problem, where, [&] { return mesh.faces(c.master); });
+        segments_total += static_cast<long>(triangles.size());
+        segments_here += add_master_faces(triangles, mesh, layouts, faces, list);
+      } else {
+        const auto segments = from_group(problem, where, [&] { return mesh.segments(c.master); });
+        segments_total += static_cast<long>(segments.size());
+        segments_here += add_master_segments(segments, mesh, layouts, edges, list);
       }
-    } else if (problem.components == 1) {  // node to node, matching meshes
-      contact.master_dofs.resize(n);
-      add_node_dofs(from_group(problem, key + ".master", [&] { return mesh.nodes(boundary, c.master); }), layouts,
-                    contact.master_dofs);
-    } else if (solid) {  // node to face
-      contact.master_faces.resize(n);
-      const auto triangles = from_group(problem, key + ".master", [&] { return mesh.faces(c.master); });
-      segments_total += static_cast<long>(triangles.size());
-      segments_here += add_master_faces(triangles, mesh, layouts, faces, contact);
-    } else {
-      contact.master_segments.resize(n);
-      const auto segments = from_group(problem, key + ".master", [&] { return mesh.segments(c.master); });
-      segments_total += static_cast<long>(segments.size());
-      segments_here += add_master_segments(segments, mesh, layouts, edges, contact);
     }
   }
+  std::vector<int> ids;
+  for (const SubdomainLayout& layout : layouts) ids.push_back(layout.id);
+  for (const auto& [kind, list] : lists) units.at(static_cast<size_t>(kind))->read_list(list, ids, contact);
   return contact;
 }
 

@@ -4,6 +4,7 @@
 #include "native/mesh_groups.h"
 
 #include "base/errors.h"
+#include "constraints/contact/contact_discretization.h"
 #include "service/options.h"
 
 #include <algorithm>
@@ -144,7 +145,8 @@ void check_contact_bodies(const ProblemFile& problem, const GmshMesh& mesh, cons
     const std::set<int> slave = bodies_of_group(problem, mesh, split, c.slave, key + ".slave");
     if (c.rigid()) continue;
     const std::string kind = problem.dimension() == 3 ? "surface " : "curve ";
-    for (int body : bodies_of_group(problem, mesh, split, c.master, key + ".master"))
+    const std::string master_key = contact_discretizations().at(static_cast<size_t>(c.kind))->list_input()->file_key;
+    for (int body : bodies_of_group(problem, mesh, split, c.master, key + "." + master_key))
       if (slave.count(body))
         throw InputError(problem.path + ": " + key + ": the slave " + kind + std::to_string(c.slave) +
                          " and the master " + kind + std::to_string(c.master) + " both lie on body " +

@@ -7,7 +7,6 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -129,15 +128,6 @@ std::vector<T> read_list(ObjectReader& parent, const std::string& key, bool requ
   return items;
 }
 
-/// A point or a vector: [x, y] in a plane problem, [x, y, z] in a solid one.
-std::array<double, 3> coordinates(ObjectReader& reader, const std::string& key, int dimension) {
-  const auto values = reader.required<std::vector<double>>(key);
-  if (static_cast<int>(values.size()) != dimension)
-    reader.fail(reader.path(key), dimension == 2 ? "needs two numbers [x, y]"
-                                                 : "needs three numbers [x, y, z] (\"components\": 3)");
-  return {values[0], values[1], dimension == 3 ? values[2] : 0.0};
-}
-
 DofMapSpec read_dof_map(ObjectReader& r) {
   DofMapSpec dofs;
   dofs.getdp_pre = r.optional<std::string>("getdp", "");
@@ -219,10 +209,24 @@ DirichletSpec read_dirichlet(ObjectReader& r, int components) {
 }
 
 /// The key of a kind that owns its input (KindInput::file_key), one entry per field, into
-/// c.kind_parameters; the unit's checks name the key instead of the script's argument.
+/// c.kind_parameters; the unit's checks name the key instead of the script's argument. Its
+/// line key (KindInput::line_key) instead: the curve into c.line_curve, the entries read
+/// from the mesh (native/contact_input.cpp).
 void read_kind_input(ObjectReader& r, const ContactDiscretization& unit, int dimension, ContactSpec& c) {
   const KindInput& spec = *unit.input();
   ObjectReader o(r.child(spec.file_key), r.file(), r.path(spec.file_key));
+  if (spec.line_key && o.has(spec.line_key)) {
+    const std::string point = spec.fields[0].key, normal = spec.fields[1].key;
+    c.line_curve = o.required<int>(spec.line_key);
+    if (o.has(point) || o.has(normal))
+      o.fail(o.path(spec.line_key), "give a curve or a " + point + " and a " + normal + ", not both");
+    if (dimension == 3)
+      o.fail(o.path(spec.line_key), std::string("a plane problem's ") + unit.capabilities().name + " line; a solid's " +
+                                        "plane takes \"" + point + "\" and \"" + normal + "\"");
+    o.finish();
+    c.kind_parameters[unit.kind()] = {};
+    return;
+  }
   std::vector<std::vector<double>> given;  // per field, empty where left out
   for (const InputField& field : spec.fields)
     given.push_back(!o.has(field.key) ? std::vector<double>{}
@@ -246,41 +250,27 @@ ContactSpec read_contact(ObjectReader& r, int components) {
   ContactSpec c;
   const int dimension = components == 3 ? 3 : 2;
   c.slave = r.required<int>("slave");
-  c.obstacle = r.has("obstacle");
-  if (c.obstacle) {
-    ObjectReader o(r.child("obstacle"), r.file(), r.path("obstacle"));
-    if (o.has("curve")) {
-      c.obstacle_curve = o.required<int>("curve");
-      if (o.has("point") || o.has("normal")) o.fail(o.path("curve"), "give a curve or a point and a normal, not both");
-      if (dimension == 3) o.fail(o.path("curve"), "a plane problem's obstacle line; a solid's plane takes \"point\" and \"normal\"");
-    } else {
-      c.obstacle_point = coordinates(o, "point", dimension);
-      c.obstacle_normal = coordinates(o, "normal", dimension);
-      const auto& n = c.obstacle_normal;
-      if (!(std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) > 0)) o.fail(o.path("normal"), "must not be zero");
-    }
-    o.finish();
-  }
-  // The kind this entry makes (its row says where friction works); a kind's own key below.
-  ContactKind kind = components == 1 ? ContactKind::node_to_node
-                     : c.obstacle    ? ContactKind::obstacle
-                     : dimension == 3 ? ContactKind::node_to_face
-                                      : ContactKind::node_to_segment;
+  // The kind this entry makes (its row says where friction works): a kind's own key, else
+  // the list kind of the problem's components (its key names the master group).
+  const ContactDiscretization* list_kind = file_list_kind(components);
+  const std::string master_key = list_kind->list_input()->file_key;
+  c.kind = list_kind->kind();
   for (const ContactDiscretization* unit : kinds_with_input()) {
     const char* key = unit->input()->file_key;
     if (!key || !r.has(key)) continue;
     if (c.rigid()) r.fail(r.path(key), "give one obstacle per contact entry");
     read_kind_input(r, *unit, dimension, c);
-    kind = unit->kind();
+    c.kind = unit->kind();
   }
+  const ContactKind kind = c.kind;
   if (c.rigid()) {
     if (components < 2) r.fail(r.path("obstacle"), "needs displacements (\"components\": 2 or 3)");
-    if (r.has("master")) r.fail(r.path("master"), "give a master curve or an obstacle, not both");
+    if (r.has(master_key)) r.fail(r.path(master_key), "give a master curve or an obstacle, not both");
   } else {
-    c.master = r.required<int>("master");
+    c.master = r.required<int>(master_key);
   }
   // Each option only where it means something: node to segment or face searches, node to node has a gap.
-  const bool projected = components >= 2 && !c.rigid();
+  const bool projected = !c.rigid() && list_kind->searched_argument();
   if (r.has("search_distance")) {
     if (!projected)
       r.fail(r.path("search_distance"), "applies to node-to-segment or node-to-face contact (2 or 3 components, a master "
@@ -300,7 +290,7 @@ ContactSpec read_contact(ObjectReader& r, int components) {
     if (!(**law >= 0)) r.fail(r.path(key), "must be >= 0");
   }
   if (c.friction && c.slip_bound) r.fail(r.path("slip_bound"), "give one law, friction (Coulomb) or slip_bound (Tresca)");
-  if (c.slave == c.master) r.fail(r.path("master"), dimension == 3 ? "is the slave surface" : "is the slave curve");
+  if (c.slave == c.master) r.fail(r.path(master_key), dimension == 3 ? "is the slave surface" : "is the slave curve");
   return c;
 }
 

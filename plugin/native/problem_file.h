@@ -52,18 +52,22 @@ struct DirichletSpec {
 
 struct ContactSpec {
   int slave = 0;      ///< physical curve (surface in 3D) of the slave nodes
-  int master = 0;     ///< physical curve of the master segments (surface of the master triangles in 3D; 0 with an obstacle)
+  /// The physical group of the list kind's key (ListInput::file_key, "master": a curve of
+  /// master segments, a surface of master triangles in 3D, the master nodes' curve of a
+  /// scalar field); 0 with an obstacle.
+  int master = 0;
+  ContactKind kind = ContactKind::node_to_segment;  ///< the kind the entry makes
   std::optional<double> search_distance;  ///< node to segment or face only (default: no limit)
   std::optional<double> gap;              ///< node to node (scalar fields) only (default 0)
-  bool obstacle = false;  ///< a rigid straight obstacle (a plane in 3D): a point and a normal, or a curve
-  std::array<double, 3> obstacle_point{0, 0, 0}, obstacle_normal{0, 1, 0};  ///< z entries: 3D only
-  int obstacle_curve = 0;  ///< > 0: a straight physical curve, its normal towards the slave
   /// A kind that owns its input, given by its key (KindInput::file_key, read through
   /// the registry: constraints/contact/contact_discretization.h): its entries, as its fetiSetup
-  /// argument takes them. At most one per entry.
+  /// argument takes them (none where line_curve gives them). At most one per entry.
   std::map<ContactKind, std::vector<double>> kind_parameters;
-  /// A rigid obstacle (the plane's "obstacle" or a kind's own key): no master group.
-  bool rigid() const { return obstacle || !kind_parameters.empty(); }
+  /// > 0: the kind's line key (KindInput::line_key, the plane obstacle's "curve"): a straight
+  /// physical curve, the line's point and normal (towards the slave) read from the mesh.
+  int line_curve = 0;
+  /// A rigid obstacle (a kind's own key: "obstacle", "cylinder"): no master group.
+  bool rigid() const { return !kind_parameters.empty(); }
   std::optional<double> friction;    ///< Coulomb coefficient of this entry's rows (capability table: where)
   std::optional<double> slip_bound;  ///< Tresca bound of each of this entry's rows, a force
 };

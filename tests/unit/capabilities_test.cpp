@@ -99,6 +99,51 @@ TEST(Capabilities, EachListKindRefusesTheOtherKindsInputForItsSlaves) {
   EXPECT_EQ(refusal([&] { validate_input(subdomains, pairs); }), combined);
 }
 
+// ffeti-solve reads the list kinds' problem-file key through the registry: the key "master"
+// names the group whose nodes, segments or triangles make the list of the kind the problem's
+// components choose; mortar has no key.
+TEST(Capabilities, EachListKindDeclaresItsProblemFileKey) {
+  const std::pair<int, ContactKind> chosen[] = {
+      {1, ContactKind::node_to_node}, {2, ContactKind::node_to_segment}, {3, ContactKind::node_to_face}};
+  const MeshEntries entries[] = {MeshEntries::node_dofs, MeshEntries::segments, MeshEntries::triangles};
+  for (size_t i = 0; i < 3; ++i) {
+    const ContactDiscretization* kind = file_list_kind(chosen[i].first);
+    ASSERT_NE(kind, nullptr);
+    EXPECT_EQ(kind->kind(), chosen[i].second);
+    EXPECT_STREQ(kind->list_input()->file_key, "master");
+    EXPECT_EQ(kind->list_input()->file_entries, entries[i]);
+  }
+  EXPECT_EQ(file_list_kind(4), nullptr);
+  EXPECT_EQ(contact_discretizations()[static_cast<size_t>(ContactKind::mortar)]->list_input()->file_key, nullptr);
+}
+
+// Each list kind says whether its own list is given (check_kind_inputs names it beside a
+// kind that owns its input) and checks it (check_against, asked by validate_input).
+TEST(Capabilities, EachListKindKnowsAndChecksItsOwnList) {
+  const auto given = [](const ContactInput& contact) {
+    std::vector<std::string> arguments;
+    for (const ContactDiscretization* kind : kinds_with_lists())
+      if (kind->list_given(contact)) arguments.push_back(kind->list_input()->argument);
+    return arguments;
+  };
+  ContactInput contact;
+  EXPECT_TRUE(given(contact).empty());
+  contact.master_dofs = {{}, {0}};
+  contact.master_segments = {{{0, 1, 2, 3}}, {}};
+  EXPECT_EQ(given(contact), (std::vector<std::string>{"contactSegments", "contactMaster"}));
+  auto subdomains = membranes();
+  ContactInput bad;
+  bad.slave_dofs.resize(subdomains.size());
+  bad.master_dofs.resize(subdomains.size());
+  bad.master_dofs[1] = {100000};
+  std::vector<size_t> ids(subdomains.size());
+  for (size_t k = 0; k < ids.size(); ++k) ids[k] = k;
+  const auto& pairs = *contact_discretizations()[static_cast<size_t>(ContactKind::node_to_node)];
+  EXPECT_EQ(refusal([&] { pairs.check_against(subdomains, ids, bad, 2); }).rfind("contactMaster[1]: dof 100000 is outside", 0),
+            0u);
+  EXPECT_EQ(refusal([&] { validate_input(subdomains, bad); }).rfind("contactMaster[1]: dof 100000 is outside", 0), 0u);
+}
+
 // fetiSetup reads the list kinds' per-subdomain arguments through the registry (read_list).
 TEST(Capabilities, EachListKindCutsItsOwnArgumentIntoEntries) {
   std::vector<std::string> arguments;

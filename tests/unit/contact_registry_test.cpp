@@ -46,10 +46,16 @@ TEST(ContactRegistry, TheRigidObstaclesReadTheirOwnArgument) {
             }),
             "obstacle: with Z (three dimensions) needs six entries, a plane [px, py, pz, nx, ny, nz]; got four (a "
             "line of a plane problem)");
+  // The ball keeps its own entries (it shares no field with the plane).
   ContactInput ball;
   with_argument("obstacleBall").read_input({1, 2, 3, 0.5}, 3, ball);
-  EXPECT_EQ(ball.obstacle_point, (std::array<double, 3>{1, 2, 3}));
-  EXPECT_EQ(ball.obstacle_radius, 0.5);
+  EXPECT_FALSE(ball.obstacle);
+  EXPECT_EQ(ball.kind_parameters.at(ContactKind::ball), (std::vector<double>{1, 2, 3, 0.5}));
+  EXPECT_EQ(refusal([] {
+              ContactInput c;
+              with_argument("obstacleBall").read_input({1, 2, 0}, 2, c);
+            }),
+            "obstacleBall: the radius must be finite and > 0, got 0.000000");
   EXPECT_EQ(refusal([&] { with_argument("obstacleBall").read_input({1, 2, 0.5}, 2, plane); }),
             "obstacle, obstacleBall: give one obstacle, a plane or a ball");
 }
@@ -61,8 +67,28 @@ TEST(ContactRegistry, AProblemFilesFieldsBecomeTheArgumentsEntries) {
   EXPECT_EQ(input_values(spec, {{1, 2}, {4}, {1}}, 2, "f: contact[0].thing."), (std::vector<double>{1, 2, 4, 1}));
   EXPECT_EQ(refusal([&] { input_values(spec, {{1, 2, 3}, {}, {}}, 3, "f: contact[0].thing."); }),
             "f: contact[0].thing.size: missing");
+  // A point or vector of the problem's dimension in the words of its "components"; a field
+  // of fixed size by its count.
   EXPECT_EQ(refusal([&] { input_values(spec, {{1, 2}, {4}, {}}, 3, "f: contact[0].thing."); }),
-            "f: contact[0].thing.point: needs 3 numbers, got 2");
+            "f: contact[0].thing.point: needs three numbers [x, y, z] (\"components\": 3)");
+  EXPECT_EQ(refusal([&] { input_values(spec, {{1, 2, 3}, {4}, {}}, 2, "f: contact[0].thing."); }),
+            "f: contact[0].thing.point: needs two numbers [x, y]");
+  EXPECT_EQ(refusal([&] { input_values(spec, {{1, 2}, {4, 5}, {}}, 2, "f: contact[0].thing."); }),
+            "f: contact[0].thing.size: needs one number, got 2");
+  const KindInput directed{"obstacleArrow", "arrow", {{"direction", 3, false, true}}, 1, "[dx, dy, dz]"};
+  EXPECT_EQ(refusal([&] { input_values(directed, {{0, 0, 0}}, 3, "f: contact[0].arrow."); }),
+            "f: contact[0].arrow.direction: must not be zero");
+}
+
+// The plane obstacle's key is its own (point and normal, or a straight curve of the mesh).
+TEST(ContactRegistry, ThePlaneObstacleDeclaresItsProblemFileKey) {
+  const KindInput& plane = *with_argument("obstacle").input();
+  EXPECT_STREQ(plane.file_key, "obstacle");
+  EXPECT_STREQ(plane.line_key, "curve");
+  EXPECT_EQ(input_values(plane, {{0, -1}, {0, 2}}, 2, "f: contact[0].obstacle."), (std::vector<double>{0, -1, 0, 2}));
+  EXPECT_EQ(refusal([&] { input_values(plane, {{0, -1, 0}, {0, 0, 0}}, 3, "f: contact[0].obstacle."); }),
+            "f: contact[0].obstacle.normal: must not be zero");
+  EXPECT_EQ(with_argument("obstacleBall").input()->file_key, nullptr);
 }
 
 }  // namespace

@@ -140,9 +140,7 @@ std::vector<SubdomainInput> block_halves() {
 ContactInput on_ball(const std::vector<SubdomainInput>& subdomains, const Law& law) {
   ContactInput contact;
   contact.slave_dofs = bottom_dofs(subdomains);
-  contact.obstacle = true;
-  contact.obstacle_point = kCentre;
-  contact.obstacle_radius = kRadius;
+  contact.kind_parameters[ContactKind::ball] = {kCentre[0], kCentre[1], kCentre[2], kRadius};
   law(contact);
   return contact;
 }

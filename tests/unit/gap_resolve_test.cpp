@@ -116,16 +116,19 @@ std::vector<SubdomainInput> upper_body(std::vector<SubdomainInput> all) {
   return upper;
 }
 
-/// Rigid obstacles under the upper body alone: a line or plane at 0, or a disc touching it
-/// at x = 0.5.
+/// Rigid obstacles under the upper body alone: a line or plane at 0, or (radius > 0, a
+/// plane problem) a disc touching it at x = 0.5.
 ContactInput obstacle(const std::vector<SubdomainInput>& upper, int axis, double radius) {
   ContactInput contact;
   contact.slave_dofs = nodes_on_zero(upper, axis, 0);
+  if (radius > 0) {
+    contact.kind_parameters[ContactKind::ball] = {0.5, -radius, radius};
+    return contact;
+  }
   contact.obstacle = true;
-  contact.obstacle_point = {0.5, radius > 0 && axis == 1 ? -radius : 0.0, radius > 0 && axis == 2 ? -radius : 0.0};
+  contact.obstacle_point = {0.5, 0.0, 0.0};
   contact.obstacle_normal = {0, 0, 0};
   contact.obstacle_normal[static_cast<size_t>(axis)] = 1;
-  contact.obstacle_radius = radius;
   return contact;
 }
 

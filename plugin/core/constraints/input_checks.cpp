@@ -12,7 +12,6 @@
 #include <cmath>
 #include <sstream>
 #include <string>
-#include <tuple>
 #include <unordered_set>
 
 namespace ffeti {
@@ -76,14 +75,6 @@ void check_dofs(const std::vector<int>& dofs, Eigen::Index n, const std::string&
                        std::to_string(n - 1));
 }
 
-void check_per_subdomain_lists(const std::vector<std::vector<int>>& lists, const std::vector<size_t>& ids,
-                               const std::vector<SubdomainInput>& subdomains, const char* name) {
-  if (!lists.empty() && lists.size() != subdomains.size())
-    throw InputError(std::string(name) + ": has " + std::to_string(lists.size()) +
-                     " entries for " + std::to_string(subdomains.size()) + " subdomains");
-  for (size_t k = 0; k < lists.size(); ++k) check_dofs(lists[k], subdomains[k].K.rows(), indexed(name, ids[k]));
-}
-
 /// Contact triangles (9 dofs each, indices already checked): each corner's three dofs are
 /// its x, y and z (component 0, 1, 2) at one node, and the corners are distinct nodes. Rows
 /// built from a face listed otherwise would push along the wrong axes without a word.
@@ -120,6 +111,25 @@ void check_face_corners(const std::vector<std::vector<std::array<int, 9>>>& face
     }
   }
 }
+
+}  // namespace
+
+void check_list_dofs(const std::vector<std::vector<int>>& lists, const std::vector<size_t>& ids,
+                     const std::vector<SubdomainInput>& subdomains, const char* name) {
+  if (!lists.empty() && lists.size() != subdomains.size())
+    throw InputError(std::string(name) + ": has " + std::to_string(lists.size()) +
+                     " entries for " + std::to_string(subdomains.size()) + " subdomains");
+  for (size_t k = 0; k < lists.size(); ++k) check_dofs(lists[k], subdomains[k].K.rows(), indexed(name, ids[k]));
+}
+
+void check_face_list(const std::vector<std::vector<std::array<int, 9>>>& faces, const std::vector<size_t>& ids,
+                     const std::vector<SubdomainInput>& subdomains, const char* name) {
+  check_entry_dofs(faces, ids, subdomains, name);
+  check_face_corners(faces, ids, subdomains, name);
+  check_face_orientation(faces, ids, subdomains, name);
+}
+
+namespace {
 
 /// A field of one value per dof and subdomain (empty entries allowed), each finite and at
 /// least `lowest`.
@@ -196,10 +206,9 @@ void check_kind_inputs(const ContactInput& contact, int dimension) {
     const ContactDiscretization& unit = *units.at(static_cast<size_t>(kind));
     if (!unit.input()) throw InputError(std::string(unit.capabilities().name) + " contact takes no parameters");
     unit.check_input(values, dimension);
-    const char* other = contact.obstacle                ? (contact.obstacle_radius > 0 ? "obstacleBall" : "obstacle")
-                        : any_entry(contact.master_dofs)      ? "contactMaster"
-                        : any_entry(contact.master_segments)  ? "contactSegments"
-                        : any_entry(contact.master_faces)     ? "contactFaces"
+    const auto list = std::find_if(units.begin(), units.end(), [&](const auto& u) { return u->list_given(contact); });
+    const char* other = contact.obstacle        ? "obstacle"
+                        : list != units.end() ? (*list)->list_input()->argument
                         : contact.kind_parameters.size() > 1
                             ? units.at(static_cast<size_t>(contact.kind_parameters.begin()->first))->input()->argument
                             : nullptr;
@@ -239,32 +248,10 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
   // contact.three_d: set by a parallel set-up for a rank that may hold no subdomain.
   const bool three_d = contact.three_d || (!subdomains.empty() && !subdomains.front().z.empty());
   const int dimension = three_d ? 3 : 2;
-  if (any_entry(contact.master_segments))
-    require(ContactKind::node_to_segment, Feature::rows, dimension, "contactSegments");
-  if (!three_d && contact.obstacle && (contact.obstacle_point[2] != 0 || contact.obstacle_normal[2] != 0))
-    throw InputError("obstacle: six entries (a plane) need Z (three dimensions); a plane problem takes four");
-  check_per_subdomain_lists(contact.slave_dofs, ids, subdomains, "contactSlave");
-  check_per_subdomain_lists(contact.master_dofs, ids, subdomains, "contactMaster");
-  std::vector<std::vector<int>> segment_dofs;
-  for (const auto& segments : contact.master_segments) {
-    segment_dofs.emplace_back();
-    for (const auto& segment : segments) segment_dofs.back().insert(segment_dofs.back().end(), segment.begin(), segment.end());
-  }
-  check_per_subdomain_lists(segment_dofs, ids, subdomains, "contactSegments");
-  for (const auto& [faces, name, kind] : {std::tuple{&contact.master_faces, "contactFaces", ContactKind::node_to_face},
-                                          std::tuple{&contact.slave_faces, "contactSlaveFaces", ContactKind::mortar}}) {
-    std::vector<std::vector<int>> face_dofs;
-    for (const auto& list : *faces) {
-      face_dofs.emplace_back();
-      for (const auto& face : list) face_dofs.back().insert(face_dofs.back().end(), face.begin(), face.end());
-    }
-    check_per_subdomain_lists(face_dofs, ids, subdomains, name);
-    check_face_corners(*faces, ids, subdomains, name);
-    check_face_orientation(*faces, ids, subdomains, name);
-    if (any_entry(contact.slave_faces)) refuse_higher_order_faces(*faces, ids, subdomains, name);
-    if (any_entry(*faces)) require(kind, Feature::rows, dimension, name);
-  }
-  // Each kind's rule against the other kinds' input (which kind the arguments choose).
+  check_list_dofs(contact.slave_dofs, ids, subdomains, "contactSlave");
+  // Each kind's own input against the subdomains (its lists), then its rule against the
+  // other kinds' input (which kind the arguments choose).
+  for (const auto& unit : contact_discretizations()) unit->check_against(subdomains, ids, contact, dimension);
   for (const auto& unit : contact_discretizations()) unit->check_combination(contact);
   if (!(contact.search_distance > 0)) throw InputError("contactRadius: must be > 0");
   if (!std::isfinite(contact.gap)) throw InputError("gap: must be finite");
@@ -301,11 +288,6 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
     throw InputError("frictionField, slipBoundField: give one law, Coulomb (frictionField=) or Tresca (slipBoundField=)");
   if (contact.friction >= 0 && contact.slip_bound >= 0)
     throw InputError("friction, slipBound: give one law, Coulomb (friction=) or Tresca (slipBound=), not both");
-  for (double v : {contact.obstacle_point[0], contact.obstacle_point[1], contact.obstacle_point[2],
-                   contact.obstacle_normal[0], contact.obstacle_normal[1], contact.obstacle_normal[2]})
-    if (contact.obstacle && !std::isfinite(v)) throw InputError("obstacle: the point and the normal must be finite");
-  if (contact.obstacle_radius != 0 && !(contact.obstacle_radius > 0 && std::isfinite(contact.obstacle_radius)))
-    throw InputError("obstacleBall: the radius must be finite and > 0, got " + std::to_string(contact.obstacle_radius));
   check_kind_inputs(contact, dimension);
 
 }

@@ -58,30 +58,36 @@ struct SubdomainInput {
 };
 
 /// Contact conditions, linearized for small displacements; one row per physical slave node
-/// (its copies in other subdomains are glued to it).
-/// - Node to node (matching meshes): each slave dof pairs with the master dof of another
-///   body at the same position and component: u_slave - u_master <= gap. (For the seed's
-///   membranes, u1(1,y) <= u2(1,y): slaves on body 1, masters on body 2.)
-/// - Node to segment (2D vector fields): each slave node (both its dofs in slave_dofs) is
-///   projected on the nearest master segment of another body within search_distance; with
-///   p = (1 - xi) a + xi b and n the segment's outward normal, n.(u_p - u_slave) <=
-///   n.(x_slave - p). Segments run with their body on the left (FreeFEM's orientation of a
-///   counter-clockwise border), so n = (b - a) rotated clockwise.
-/// - Rigid obstacle: a line (a plane in 3D) through obstacle_point with outward normal
-///   obstacle_normal (pointing away from the obstacle): -n.u_slave <= n.(x_slave - point).
+/// (its copies in other subdomains are glued to it). Each contact kind is a unit of
+/// constraints/contact/ that reads, checks and uses its own input: the fields below are
+/// grouped by the kind that owns them (docs/architecture.md, "A contact kind").
 struct ContactInput {
-  std::vector<std::vector<int>> slave_dofs;   ///< per subdomain (may be empty)
-  std::vector<std::vector<int>> master_dofs;  ///< per subdomain: node-to-node partners
-  std::vector<std::vector<std::array<int, 4>>> master_segments;  ///< per subdomain: (a_x, a_y, b_x, b_y)
-  /// Three dimensions, node to face: per subdomain the master triangles, each the x, y, z
-  /// dofs of its corners a, b, c, ordered so that (b - a) x (c - a) points out of its body.
-  /// Each slave node (its three dofs in slave_dofs) is projected on the nearest face of
-  /// another body within search_distance, p its closest point, n the face's unit normal:
-  /// n.(u_p - u_slave) <= n.(x_slave - p), u_p interpolated linearly on the face.
+  /// Shared: the slave dofs of every kind but mortar, per subdomain (may be empty).
+  std::vector<std::vector<int>> slave_dofs;
+
+  // ---- each list kind's own per-subdomain list (ListInput: read by its read_list, checked
+  // by its check_against; fetiSetup's argument and ffeti-solve's key in its unit) ----
+  /// Node to node (contactMaster; matching meshes): each slave dof pairs with the master
+  /// dof of another body at the same position and component: u_slave - u_master <= gap.
+  /// (For the seed's membranes, u1(1,y) <= u2(1,y): slaves on body 1, masters on body 2.)
+  std::vector<std::vector<int>> master_dofs;
+  double gap = 0;  ///< node to node's gap
+  /// Node to segment (contactSegments; 2D vector fields): per subdomain (a_x, a_y, b_x, b_y).
+  /// Each slave node (both its dofs in slave_dofs) is projected on the nearest master segment
+  /// of another body within search_distance; with p = (1 - xi) a + xi b and n the segment's
+  /// outward normal, n.(u_p - u_slave) <= n.(x_slave - p). Segments run with their body on the
+  /// left (FreeFEM's orientation of a counter-clockwise border), so n = (b - a) rotated clockwise.
+  std::vector<std::vector<std::array<int, 4>>> master_segments;
+  /// Node to face (contactFaces; three dimensions; mortar's master faces too): per subdomain
+  /// the master triangles, each the x, y, z dofs of its corners a, b, c, ordered so that
+  /// (b - a) x (c - a) points out of its body. Each slave node (its three dofs in slave_dofs)
+  /// is projected on the nearest face of another body within search_distance, p its closest
+  /// point, n the face's unit normal: n.(u_p - u_slave) <= n.(x_slave - p), u_p interpolated
+  /// linearly on the face.
   std::vector<std::vector<std::array<int, 9>>> master_faces;
-  /// Mortar contact (three dimensions): per subdomain the slave triangles, ordered like the
-  /// master faces (outward normal). Their corners are the slave nodes (slave_dofs then stays
-  /// empty), each with one row: the normal gap weighted by its shape function phi_j and
+  /// Mortar (contactSlaveFaces; three dimensions): per subdomain the slave triangles, ordered
+  /// like the master faces (outward normal). Their corners are the slave nodes (slave_dofs then
+  /// stays empty), each with one row: the normal gap weighted by its shape function phi_j and
   /// integrated over the overlap of its slave faces with the master faces of another body
   /// facing them (each slave face projected on a master face's plane along that face's
   /// normal n, within search_distance and the nearest master's distance plus two edges):
@@ -89,23 +95,26 @@ struct ContactInput {
   /// int phi_j so that the multiplier is a force as in the other rows. A uniform pressure
   /// passes exactly (docs/algorithms.md, "Mortar").
   std::vector<std::vector<std::array<int, 9>>> slave_faces;
-  double gap = 0;                             ///< node to node only
+  /// The kinds that search masters (node to segment, node to face, mortar): farther slaves get no row.
+  double search_distance = 1e300;
+
+  // ---- the kinds that own an array of parameters (KindInput) ----
+  /// The plane obstacle (obstacle=, read by contact/obstacle.cpp): a line (a plane in 3D)
+  /// through obstacle_point with outward normal obstacle_normal (pointing away from the
+  /// obstacle): -n.u_slave <= n.(x_slave - point).
+  bool obstacle = false;
+  std::array<double, 3> obstacle_point{0, 0, 0}, obstacle_normal{0, 1, 0};  ///< z entries: 3D only
+  /// The other kinds that own their input (the ball, the cylinder, ...): per kind the entries
+  /// of its fetiSetup argument (or of its problem-file key's fields), read and checked by its
+  /// unit. A kind given here takes the slave nodes of contactSlave.
+  std::map<ContactKind, std::vector<double>> kind_parameters;
+
+  // ---- shared by every kind ----
   /// Per subdomain, one value per dof (empty: none): a clearance added to the right-hand
   /// side of the contact row of each slave node, read at its slave dof (node to node) or
   /// at its component-0 dof (node to segment, obstacle): a gap per contact row, e.g. the
   /// profile of a contact surface described by its gap rather than by its mesh.
   std::vector<std::vector<double>> gap_field;
-  double search_distance = 1e300;             ///< node to segment and to face: farther slaves get no row
-  bool obstacle = false;
-  std::array<double, 3> obstacle_point{0, 0, 0}, obstacle_normal{0, 1, 0};  ///< z entries: 3D only
-  /// > 0: the obstacle is a rigid ball (a disc in the plane) of this radius centred at
-  /// obstacle_point instead, the bodies outside it; each slave node s gets the row of the
-  /// tangent plane at its nearest point, n = (s - c)/|s - c|: -n.u_s <= |s - c| - radius.
-  double obstacle_radius = 0;
-  /// The input of the kinds that own theirs (constraints/contact/contact_discretization.h,
-  /// KindInput): per kind the entries of its fetiSetup argument (or of its problem-file key's
-  /// fields), read and checked by its unit. A kind given here takes the slave nodes of contactSlave.
-  std::map<ContactKind, std::vector<double>> kind_parameters;
   /// Set by the set-up (not the caller): the subdomains have a third coordinate.
   bool three_d = false;
   /// Friction (every kind; docs/algorithms.md, "Friction"): each contact row gets a

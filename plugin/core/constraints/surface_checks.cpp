@@ -2,6 +2,7 @@
 
 #include "base/errors.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
@@ -84,8 +85,14 @@ void check_face_orientation(const std::vector<std::vector<std::array<int, 9>>>& 
 void refuse_higher_order_faces(const std::vector<std::vector<std::array<int, 9>>>& faces, const std::vector<size_t>& ids,
                                const std::vector<SubdomainInput>& subdomains, const char* name) {
   for (size_t k = 0; k < faces.size(); ++k) {
+    if (k >= subdomains.size()) break;  // a list for more subdomains: refused by its list's own check
     const SubdomainInput& sub = subdomains[k];
     if (faces[k].empty() || sub.z.empty()) continue;
+    // A face with a dof outside its subdomain is refused by its list's own check.
+    const auto outside = [&](int dof) { return dof < 0 || static_cast<size_t>(dof) >= sub.x.size(); };
+    if (std::any_of(faces[k].begin(), faces[k].end(),
+                    [&](const auto& face) { return std::any_of(face.begin(), face.end(), outside); }))
+      continue;
     // The x dofs of the faces' corners by position, rounded to a length far below any edge.
     double lo = INFINITY, hi = -INFINITY;
     for (const auto& face : faces[k])
@@ -135,7 +142,7 @@ void refuse_higher_order_faces(const std::vector<std::vector<std::array<int, 9>>
 
 ObstacleFacing obstacle_facing(const std::vector<SubdomainInput>& subdomains, const ContactInput& contact) {
   ObstacleFacing out;
-  if (!contact.obstacle || contact.obstacle_radius > 0) return out;
+  if (!contact.obstacle) return out;
   const auto& normal = contact.obstacle_normal;
   const double norm = std::hypot(normal[0], normal[1], normal[2]);
   if (!(norm > 0)) return out;  // refused with the rows

@@ -1,6 +1,6 @@
-// A rigid ball (a disc in the plane) of ContactInput::obstacle_radius centred at
-// obstacle_point, the bodies outside it: each slave node s against the tangent plane at its
-// nearest point, n = (s - c)/|s - c|: -n.u_s <= |s - c| - radius.
+// A rigid ball (a disc in the plane) of obstacleBall = [centre, radius], kept as the ball's
+// own input (ContactInput::kind_parameters), the bodies outside it: each slave node s against
+// the tangent plane at its nearest point, n = (s - c)/|s - c|: -n.u_s <= |s - c| - radius.
 #pragma once
 
 #include "constraints/contact/contact_discretization.h"
@@ -41,10 +41,12 @@ class Ball final : public ContactDiscretization {
   }
   /// obstacleBall = [cx, cy, radius] (with Z: [cx, cy, cz, radius]).
   const KindInput* input() const override;
-  /// Into ContactInput::obstacle, obstacle_point and obstacle_radius (one obstacle: a plane
-  /// given before is refused).
+  /// Its entries into ContactInput::kind_parameters (one obstacle: a plane given before is
+  /// refused; the entries against the dimension, then check_parameters).
   void read_input(const std::vector<double>& values, int dimension, ContactInput& contact) const override;
-  bool selected(const ContactRecords& in) const override { return in.contact.obstacle && in.contact.obstacle_radius > 0; }
+  /// A finite centre, a radius finite and > 0.
+  void check_parameters(const std::vector<double>& values, int dimension) const override;
+  bool selected(const ContactRecords& in) const override { return in.contact.kind_parameters.count(kind()) > 0; }
   void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;
 };
 

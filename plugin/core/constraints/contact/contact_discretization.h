@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,6 +38,7 @@ struct InputField {
   const char* key;  ///< its key in the problem file's object; its name in messages
   int size;
   bool flag = false;
+  bool nonzero = false;  ///< a direction: all zero is refused (in a problem file, naming the key)
 };
 
 /// The input a kind owns, read alike by both front ends: fetiSetup's real array `argument`
@@ -49,15 +51,29 @@ struct KindInput {
   size_t required;       ///< the first `required` fields must be given
   /// The array's layout, for messages: "[cx, cy, cz, radius]".
   const char* layout;
+  /// A problem file may give, in a plane problem and instead of the first two fields (a
+  /// point and a normal), this key naming a straight physical curve: the line through it,
+  /// its normal towards the slave nodes (the plane obstacle's "curve"; nullptr: none).
+  const char* line_key = nullptr;
 };
 
-/// The per-subdomain list a kind owns in fetiSetup: an int[int][int] argument, one array of
-/// dofs per subdomain, `dofs` of them per entry (contactSlave, which several kinds share,
-/// stays the front end's).
+/// What ffeti-solve reads from the mesh region a list kind's problem-file key names, as the
+/// entries of the kind's list: each node's dofs (one entry per dof), or the region's
+/// segments (triangles in a solid), each as its corners' dofs ordered so that its normal
+/// points out of the body holding it (the lists' convention: contactSegments, contactFaces).
+enum class MeshEntries : std::uint8_t { node_dofs, segments, triangles };
+
+/// The per-subdomain list a kind owns: fetiSetup's int[int][int] argument, one array of dofs
+/// per subdomain, `dofs` of them per entry (contactSlave, which several kinds share, stays
+/// the front end's); and where a problem file gives it, the key of a contact entry naming a
+/// physical group, read by ffeti-solve for the problems of `file_components` components.
 struct ListInput {
   const char* argument;  ///< fetiSetup's named argument: "contactSegments"
   size_t dofs;           ///< per entry: a master segment's 4, a face's 9
   const char* layout;    ///< for messages: "4 dofs per segment (a_x, a_y, b_x, b_y)"
+  const char* file_key = nullptr;  ///< the problem file's key: "master" (nullptr: none)
+  int file_components = 0;         ///< the problem's "components" for which the key makes this kind
+  MeshEntries file_entries = MeshEntries::node_dofs;  ///< what the key's group gives
 };
 
 class ContactDiscretization {
@@ -86,6 +102,15 @@ class ContactDiscretization {
   /// The number of entries against input()'s fields, then check_parameters: read_input and
   /// validate_input (a caller that fills kind_parameters itself) ask it.
   void check_input(const std::vector<double>& values, int dimension) const;
+  /// Its input's checks against the subdomains (`ids`: their numbers in messages) in a
+  /// problem of `dimension`: its list's dofs within each subdomain and what its entries must
+  /// be (a face's corners and orientation), its rows' dimensions. validate_input asks every
+  /// unit, for callers other than fetiSetup too; InputError naming its argument.
+  virtual void check_against(const std::vector<SubdomainInput>& /*subdomains*/, const std::vector<size_t>& /*ids*/,
+                             const ContactInput& /*contact*/, int /*dimension*/) const {}
+  /// Whether `contact` gives its list (an entry on this rank): a kind that owns its input
+  /// (kind_parameters) takes contactSlave's nodes and refuses it (check_kind_inputs).
+  virtual bool list_given(const ContactInput& /*contact*/) const { return false; }
   /// Its rule against the other kinds' input (issue 54): InputError naming the arguments
   /// where `contact` gives its lists together with input that would choose another kind
   /// for the same slaves. validate_input asks every unit; the default refuses nothing.
@@ -115,6 +140,10 @@ std::vector<const ContactDiscretization*> kinds_with_input();
 
 /// The kinds that own a per-subdomain list (list_input() != nullptr), in the registry's order.
 std::vector<const ContactDiscretization*> kinds_with_lists();
+
+/// The kind whose list a problem file's contact entry gives by its key (ListInput::file_key)
+/// in a problem of `components` field components (nullptr: none).
+const ContactDiscretization* file_list_kind(int components);
 
 /// `lists` cut into entries of N dofs (N = spec.dofs): InputError "<argument>[<id>]: needs
 /// <layout>" for a list that is not whole entries.

@@ -84,6 +84,11 @@ class Mortar final : public ContactDiscretization {
   /// The corners of contactSlaveFaces are its slaves: refuses contactSlave or an obstacle beside them.
   void check_combination(const ContactInput& contact) const override;
   const ListInput* list_input() const override;
+  /// contactSlaveFaces: three dimensions, each face checked (check_face_list); the slave
+  /// faces and their masters (contactFaces) P1 faces only.
+  void check_against(const std::vector<SubdomainInput>& subdomains, const std::vector<size_t>& ids,
+                     const ContactInput& contact, int dimension) const override;
+  bool list_given(const ContactInput& contact) const override { return any_entry(contact.slave_faces); }
   void read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
                  ContactInput& contact) const override;
   /// Any slave face (ContactInput::slave_faces) on any rank.

@@ -1,6 +1,7 @@
 #include "constraints/contact/node_to_face.h"
 
 #include "constraints/constraint_rows.h"
+#include "constraints/input_checks.h"
 #include "constraints/contact/contact_linearization.h"
 #include "constraints/contact/face_grid.h"
 
@@ -51,13 +52,20 @@ bool on_bent_edge(const Point3& s, const FaceRecord& face, const FaceGrid& grid)
 }  // namespace
 
 const ListInput* NodeToFace::list_input() const {
-  static const ListInput spec{"contactFaces", 9, "9 dofs per face (a_x, a_y, a_z, b_x, ..., c_z)"};
+  static const ListInput spec{"contactFaces", 9, "9 dofs per face (a_x, a_y, a_z, b_x, ..., c_z)", "master", 3,
+                              MeshEntries::triangles};
   return &spec;
 }
 
 void NodeToFace::read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
                            ContactInput& contact) const {
   contact.master_faces = list_entries<9>(*list_input(), lists, ids);
+}
+
+void NodeToFace::check_against(const std::vector<SubdomainInput>& subdomains, const std::vector<size_t>& ids,
+                               const ContactInput& contact, int dimension) const {
+  check_face_list(contact.master_faces, ids, subdomains, list_input()->argument);
+  if (any_entry(contact.master_faces)) require(kind(), Feature::rows, dimension, list_input()->argument);
 }
 
 RowAt FaceGeometry::row_at(const NodeMotion& v, double t) const {

@@ -53,6 +53,10 @@ class NodeToFace final : public ContactDiscretization {
   }
   /// Master faces without slave faces (those make mortar).
   const ListInput* list_input() const override;
+  /// contactFaces: three dimensions, each face checked (check_face_list).
+  void check_against(const std::vector<SubdomainInput>& subdomains, const std::vector<size_t>& ids,
+                     const ContactInput& contact, int dimension) const override;
+  bool list_given(const ContactInput& contact) const override { return any_entry(contact.master_faces); }
   void read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
                  ContactInput& contact) const override;
   bool selected(const ContactRecords& in) const override;

@@ -1,6 +1,7 @@
 #include "constraints/contact/node_to_node.h"
 
 #include "constraints/constraint_rows.h"
+#include "constraints/input_checks.h"
 
 #include "base/errors.h"
 
@@ -38,13 +39,18 @@ std::array<DofRef, 3> node_dofs(const NodeComponents& nodes, const DofRecord& at
 }  // namespace
 
 const ListInput* NodeToNode::list_input() const {
-  static const ListInput spec{"contactMaster", 1, "1 dof per entry"};
+  static const ListInput spec{"contactMaster", 1, "1 dof per entry", "master", 1, MeshEntries::node_dofs};
   return &spec;
 }
 
 void NodeToNode::read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& /*ids*/,
                            ContactInput& contact) const {
   contact.master_dofs = lists;  // one dof per entry: every list is whole
+}
+
+void NodeToNode::check_against(const std::vector<SubdomainInput>& subdomains, const std::vector<size_t>& ids,
+                               const ContactInput& contact, int /*dimension*/) const {
+  check_list_dofs(contact.master_dofs, ids, subdomains, list_input()->argument);
 }
 
 std::vector<RowAt> NodeToNodeGeometry::slip_rows() const {
@@ -65,7 +71,8 @@ std::vector<RowAt> NodeToNodeGeometry::slip_rows() const {
 
 void NodeToNode::check_combination(const ContactInput& contact) const {
   if (any_entry(contact.master_dofs) &&
-      (any_entry(contact.master_segments) || any_entry(contact.master_faces) || contact.obstacle))
+      (any_entry(contact.master_segments) || any_entry(contact.master_faces) || contact.obstacle ||
+       contact.kind_parameters.count(ContactKind::ball)))
     throw InputError("contactMaster: node-to-node contact cannot be combined with contactSegments, contactFaces or "
                      "obstacle in one problem (the slave dofs would belong to both)");
 }

@@ -50,6 +50,10 @@ class NodeToNode final : public ContactDiscretization {
   /// contactMaster pairs the slave dofs: refuses contactSegments, contactFaces or an obstacle beside it.
   void check_combination(const ContactInput& contact) const override;
   const ListInput* list_input() const override;
+  /// contactMaster's dofs within each subdomain.
+  void check_against(const std::vector<SubdomainInput>& subdomains, const std::vector<size_t>& ids,
+                     const ContactInput& contact, int dimension) const override;
+  bool list_given(const ContactInput& contact) const override { return any_entry(contact.master_dofs); }
   void read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
                  ContactInput& contact) const override;
   /// The slaves' default pairing: where no other kind of the registry is selected (so a new

@@ -1,6 +1,7 @@
 #include "constraints/contact/node_to_segment.h"
 
 #include "constraints/constraint_rows.h"
+#include "constraints/input_checks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -85,13 +86,20 @@ Point moved(const Point& p, const Point3& velocity, double t) { return {p[0] + t
 }  // namespace
 
 const ListInput* NodeToSegment::list_input() const {
-  static const ListInput spec{"contactSegments", 4, "4 dofs per segment (a_x, a_y, b_x, b_y)"};
+  static const ListInput spec{"contactSegments", 4, "4 dofs per segment (a_x, a_y, b_x, b_y)", "master", 2,
+                              MeshEntries::segments};
   return &spec;
 }
 
 void NodeToSegment::read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
                               ContactInput& contact) const {
   contact.master_segments = list_entries<4>(*list_input(), lists, ids);
+}
+
+void NodeToSegment::check_against(const std::vector<SubdomainInput>& subdomains, const std::vector<size_t>& ids,
+                                  const ContactInput& contact, int dimension) const {
+  if (any_entry(contact.master_segments)) require(kind(), Feature::rows, dimension, list_input()->argument);
+  check_entry_dofs(contact.master_segments, ids, subdomains, list_input()->argument);
 }
 
 RowAt NodeToSegmentGeometry::row_at(const NodeMotion& v, double t) const {

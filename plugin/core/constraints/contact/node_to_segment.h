@@ -41,6 +41,10 @@ class NodeToSegment final : public ContactDiscretization {
             kPlaneOnly, kPlaneOnly, kPlaneOnly};
   }
   const ListInput* list_input() const override;
+  /// contactSegments: plane problems only, its dofs within each subdomain.
+  void check_against(const std::vector<SubdomainInput>& subdomains, const std::vector<size_t>& ids,
+                     const ContactInput& contact, int dimension) const override;
+  bool list_given(const ContactInput& contact) const override { return any_entry(contact.master_segments); }
   void read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
                  ContactInput& contact) const override;
   bool selected(const ContactRecords& in) const override { return !in.segments.empty(); }

@@ -23,8 +23,12 @@ RowAt ObstacleGeometry::row_at(const NodeMotion& v, double t) const {
 std::vector<RowAt> ObstacleGeometry::slip_rows() const { return rigid_slip_rows(slave, unit_normal, three_d()); }
 
 const KindInput* Obstacle::input() const {
-  static const KindInput spec{"obstacle", nullptr, {{"point", InputField::kDimension}, {"normal", InputField::kDimension}},
-                              2, "[point x, point y, normal x, normal y] (with Z: [px, py, pz, nx, ny, nz])"};
+  static const KindInput spec{"obstacle",
+                              "obstacle",
+                              {{"point", InputField::kDimension}, {"normal", InputField::kDimension, false, true}},
+                              2,
+                              "[point x, point y, normal x, normal y] (with Z: [px, py, pz, nx, ny, nz])",
+                              "curve"};
   return &spec;
 }
 
@@ -45,6 +49,17 @@ void Obstacle::read_input(const std::vector<double>& values, int dimension, Cont
     contact.obstacle_point = {values[0], values[1], 0.0};
     contact.obstacle_normal = {values[2], values[3], 0.0};
   }
+}
+
+void Obstacle::check_against(const std::vector<SubdomainInput>& /*subdomains*/, const std::vector<size_t>& /*ids*/,
+                             const ContactInput& contact, int dimension) const {
+  if (!contact.obstacle) return;
+  const auto& point = contact.obstacle_point;
+  const auto& normal = contact.obstacle_normal;
+  if (dimension == 2 && (point[2] != 0 || normal[2] != 0))
+    throw InputError("obstacle: six entries (a plane) need Z (three dimensions); a plane problem takes four");
+  for (double v : {point[0], point[1], point[2], normal[0], normal[1], normal[2]})
+    if (!std::isfinite(v)) throw InputError("obstacle: the point and the normal must be finite");
 }
 
 void Obstacle::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {

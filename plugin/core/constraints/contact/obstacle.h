@@ -40,9 +40,10 @@ class Obstacle final : public ContactDiscretization {
   const KindInput* input() const override;
   /// Into ContactInput::obstacle, obstacle_point and obstacle_normal.
   void read_input(const std::vector<double>& values, int dimension, ContactInput& contact) const override;
-  bool selected(const ContactRecords& in) const override {
-    return in.contact.obstacle && !(in.contact.obstacle_radius > 0);
-  }
+  /// For a caller that fills them itself: z entries only with Z, finite entries.
+  void check_against(const std::vector<SubdomainInput>& subdomains, const std::vector<size_t>& ids,
+                     const ContactInput& contact, int dimension) const override;
+  bool selected(const ContactRecords& in) const override { return in.contact.obstacle; }
   void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;
 };
 

@@ -51,6 +51,12 @@ std::vector<const ContactDiscretization*> kinds_with_lists() {
   return kinds;
 }
 
+const ContactDiscretization* file_list_kind(int components) {
+  for (const ContactDiscretization* unit : kinds_with_lists())
+    if (unit->list_input()->file_key && unit->list_input()->file_components == components) return unit;
+  return nullptr;
+}
+
 void check_whole_entries(const ListInput& spec, const std::vector<std::vector<int>>& lists, const std::vector<int>& ids) {
   for (size_t k = 0; k < lists.size(); ++k)
     if (lists[k].size() % spec.dofs != 0)
@@ -77,9 +83,14 @@ std::vector<double> input_values(const KindInput& input, const std::vector<std::
       continue;
     }
     const size_t size = field_size(field, dimension);
+    if (entries.size() != size && field.size == InputField::kDimension)
+      throw InputError(where + field.key + (dimension == 2 ? ": needs two numbers [x, y]"
+                                                           : ": needs three numbers [x, y, z] (\"components\": 3)"));
     if (entries.size() != size)
       throw InputError(where + field.key + ": needs " + (size == 1 ? "one number" : std::to_string(size) + " numbers") +
                        ", got " + std::to_string(entries.size()));
+    if (field.nonzero && std::all_of(entries.begin(), entries.end(), [](double v) { return v == 0; }))
+      throw InputError(where + field.key + ": must not be zero");
     values.insert(values.end(), entries.begin(), entries.end());
   }
   return values;
