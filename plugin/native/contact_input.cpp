@@ -178,6 +178,7 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
   contact.slave_dofs.resize(n);
   const ContactSpec& first = problem.contact.front();
   if (first.search_distance) contact.search_distance = *first.search_distance;
+  contact.normal = first.normal.value_or(ContactNormal::master);
   contact.gap = first.gap.value_or(0.0);
   // Coulomb: a coefficient per entry, Tresca: a bound per entry (0, no friction, for an
   // entry without one); one law per problem.
@@ -193,9 +194,9 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
   for (size_t i = 0; i < problem.contact.size(); ++i) {
     const ContactSpec& c = problem.contact[i];
     const std::string key = "contact[" + std::to_string(i) + "]";
-    if (c.search_distance != first.search_distance || c.gap != first.gap)
+    if (c.search_distance != first.search_distance || c.gap != first.gap || c.normal != first.normal)
       throw InputError(problem.path + ": " + key +
-                       ": search_distance and gap must be those of contact[0] (one value per problem)");
+                       ": search_distance, gap and contact_normal must be those of contact[0] (one value per problem)");
     const std::vector<NodeTag> slaves =
         from_group(problem, key + ".slave", [&] { return mesh.nodes(boundary, c.slave); });
     add_node_dofs(slaves, layouts, contact.slave_dofs);
@@ -220,6 +221,11 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
       const auto triangles = from_group(problem, key + ".master", [&] { return mesh.faces(c.master); });
       segments_total += static_cast<long>(triangles.size());
       segments_here += add_master_faces(triangles, mesh, layouts, faces, contact);
+      if (contact.normal != ContactNormal::master) {  // the slave surface's normal from its faces (they get no rows)
+        const auto own = from_group(problem, key + ".slave", [&] { return mesh.faces(c.slave); });
+        segments_total += static_cast<long>(own.size());
+        segments_here += add_master_faces(own, mesh, layouts, faces, contact);
+      }
     } else {
       contact.master_segments.resize(n);
       const auto segments = from_group(problem, key + ".master", [&] { return mesh.segments(c.master); });

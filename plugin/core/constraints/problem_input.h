@@ -69,6 +69,11 @@ struct SubdomainInput {
 ///   counter-clockwise border), so n = (b - a) rotated clockwise.
 /// - Rigid obstacle: a line (a plane in 3D) through obstacle_point with outward normal
 ///   obstacle_normal (pointing away from the obstacle): -n.u_slave <= n.(x_slave - point).
+/// Whose normal a node-to-face row takes (contactNormal=): the master face's (the default),
+/// the slave surface's at the slave node (the area-weighted normals of the slave body's
+/// faces in contactFaces around it), or the two averaged (docs/reference.md, "contactNormal").
+enum class ContactNormal { master, slave, average };
+
 struct ContactInput {
   std::vector<std::vector<int>> slave_dofs;   ///< per subdomain (may be empty)
   std::vector<std::vector<int>> master_dofs;  ///< per subdomain: node-to-node partners
@@ -96,6 +101,7 @@ struct ContactInput {
   /// profile of a contact surface described by its gap rather than by its mesh.
   std::vector<std::vector<double>> gap_field;
   double search_distance = 1e300;             ///< node to segment and to face: farther slaves get no row
+  ContactNormal normal = ContactNormal::master;  ///< node to face only
   bool obstacle = false;
   std::array<double, 3> obstacle_point{0, 0, 0}, obstacle_normal{0, 1, 0};  ///< z entries: 3D only
   /// > 0: the obstacle is a rigid ball (a disc in the plane) of this radius centred at
