@@ -4,6 +4,7 @@
 #pragma once
 
 #include "constraints/contact/contact_discretization.h"
+#include "constraints/contact/contact_linearization.h"
 #include "constraints/contact/contact_row_geometry.h"
 
 namespace ffeti {
