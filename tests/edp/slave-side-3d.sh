@@ -7,7 +7,10 @@
 # - contactNormal="average" with either body as slave: the rows' normals are the same lines
 #   (the average of the two surfaces' normals does not depend on which is the slave), so c/a
 #   must agree within BOUND_AVERAGE; only the slave nodes and the faces they meet differ.
-# Bounds from the measured differences (docs/results/friction.md, "Which body is the slave").
+# Measured (h = 0.5): c/a 0.6657 and 0.6757 (1.5 % apart; 9.6 % and 8.3 % off Mindlin's),
+# average 0.6838 and 0.6987 (2.2 %); the sphere's normal with the block as slave would be 15 %
+# from the sphere as slave (h = 0.4, docs/results/friction.md, "Which body is the slave"),
+# so the bounds of 5 % tell the two apart.
 # Usage: slave-side-3d.sh SOURCE_DIR   (run where freefem++.pref points at the build)
 set -euo pipefail
 source_dir=$1
@@ -39,9 +42,9 @@ agree() {
 }
 for line in "$sphere_master" "$block_slave"; do
   if awk -v e="$(value "$line" stick_ratio_error)" 'BEGIN { exit !(e <= 0.1) }'; then
-    echo "ok: slave $(value "$line" slave), normal $(value "$line" normal): c/a $(value "$line" stick_ratio_error) off Mindlin's"
+    echo "ok: slave $(value "$line" slave), normal $(value "$line" normal): c/a error $(value "$line" stick_ratio_error) against Mindlin's"
   else
-    echo "FAILED: slave $(value "$line" slave), normal $(value "$line" normal): c/a $(value "$line" stick_ratio_error) off Mindlin's"
+    echo "FAILED: slave $(value "$line" slave), normal $(value "$line" normal): c/a error $(value "$line" stick_ratio_error) against Mindlin's"
     failures=$((failures + 1))
   fi
 done
