@@ -53,8 +53,9 @@ bool on_bent_edge(const Point3& s, const FaceRecord& face, const FaceGrid& grid)
   return bent;
 }
 
-/// The slave's fan: the faces of its own body with a corner at s (within 1e-9 of their
-/// first edge), their other corners numbered once per dof.
+/// The slave's fan: the faces of its own body with a corner at s (within 1e-9 of s's size:
+/// the same node's coordinates, copied into every subdomain that holds it), their other
+/// corners numbered once per dof.
 SlaveFan fan_at(const Point3& s, int body, const FaceGrid& grid, ContactNormal normal) {
   SlaveFan fan{normal, {}, {}, {}};
   const double near = 1e-9 * (1 + std::abs(s[0]) + std::abs(s[1]) + std::abs(s[2]));
