@@ -6,6 +6,7 @@
 #include "native/mesh_groups.h"
 
 #include "base/errors.h"
+#include "constraints/contact/node_to_face.h"
 
 #include <algorithm>
 #include <cmath>
@@ -178,7 +179,14 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
   contact.slave_dofs.resize(n);
   const ContactSpec& first = problem.contact.front();
   if (first.search_distance) contact.search_distance = *first.search_distance;
-  contact.normal = first.normal.value_or(ContactNormal::master);
+  if (first.normal) {
+    try {
+      contact.normal = contact_normal_named(*first.normal);
+    } catch (const InputError&) {
+      throw InputError(problem.path + ": contact[0].contact_normal: must be \"master\", \"slave\" or \"average\", got \"" +
+                       *first.normal + "\"");
+    }
+  }
   contact.gap = first.gap.value_or(0.0);
   // Coulomb: a coefficient per entry, Tresca: a bound per entry (0, no friction, for an
   // entry without one); one law per problem.
@@ -197,6 +205,9 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
     if (c.search_distance != first.search_distance || c.gap != first.gap || c.normal != first.normal)
       throw InputError(problem.path + ": " + key +
                        ": search_distance, gap and contact_normal must be those of contact[0] (one value per problem)");
+    if (c.normal && (c.rigid() || !solid || problem.components != 3))
+      throw InputError(problem.path + ": " + key +
+                       ".contact_normal: applies to node-to-face contact (3 components, a master group) only");
     const std::vector<NodeTag> slaves =
         from_group(problem, key + ".slave", [&] { return mesh.nodes(boundary, c.slave); });
     add_node_dofs(slaves, layouts, contact.slave_dofs);

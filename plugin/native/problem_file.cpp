@@ -3,7 +3,6 @@
 #include "base/errors.h"
 #include "constraints/capabilities.h"
 #include "constraints/contact/contact_discretization.h"
-#include "constraints/contact/node_to_face.h"
 
 #include <nlohmann/json.hpp>
 
@@ -289,16 +288,7 @@ ContactSpec read_contact(ObjectReader& r, int components) {
     c.search_distance = r.required<double>("search_distance");
     if (!(*c.search_distance > 0)) r.fail(r.path("search_distance"), "must be > 0");
   }
-  if (r.has("contact_normal")) {
-    if (!projected || dimension != 3)
-      r.fail(r.path("contact_normal"), "applies to node-to-face contact (3 components, a master group) only");
-    const std::string word = r.required<std::string>("contact_normal");
-    try {
-      c.normal = contact_normal_named(word);
-    } catch (const InputError&) {
-      r.fail(r.path("contact_normal"), "must be \"master\", \"slave\" or \"average\", got \"" + word + "\"");
-    }
-  }
+  if (r.has("contact_normal")) c.normal = r.required<std::string>("contact_normal");  // checked by build_contact
   if (r.has("gap")) {
     if (components != 1) r.fail(r.path("gap"), "applies to node-to-node contact (1 component) only");
     c.gap = r.required<double>("gap");

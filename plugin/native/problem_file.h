@@ -4,7 +4,6 @@
 #pragma once
 
 #include "constraints/capabilities.h"
-#include "constraints/problem_input.h"
 #include "service/options.h"
 
 #include <array>
@@ -56,7 +55,7 @@ struct ContactSpec {
   int master = 0;     ///< physical curve of the master segments (surface of the master triangles in 3D; 0 with an obstacle)
   std::optional<double> search_distance;  ///< node to segment or face only (default: no limit)
   std::optional<double> gap;              ///< node to node (scalar fields) only (default 0)
-  std::optional<ContactNormal> normal;    ///< node to face only, "contact_normal" (default master)
+  std::optional<std::string> normal;      ///< node to face only, "contact_normal" (default "master")
   bool obstacle = false;  ///< a rigid straight obstacle (a plane in 3D): a point and a normal, or a curve
   std::array<double, 3> obstacle_point{0, 0, 0}, obstacle_normal{0, 1, 0};  ///< z entries: 3D only
   int obstacle_curve = 0;  ///< > 0: a straight physical curve, its normal towards the slave
