@@ -11,7 +11,7 @@ import tempfile
 import matplotlib.pyplot as plt
 from matplotlib.patches import Circle
 
-from ffeti_bench import OUT, ROOT, begin_run, end_run, f, markdown_table, read_csv, run, run_machine, span, write_csv
+from ffeti_bench import OUT, ROOT, begin_run, end_run, f, markdown_table, own_run_words, read_csv, run, span, write_csv
 
 PAGE = "friction"
 SCENE = "cattaneo-mindlin-3d.edp"
@@ -26,6 +26,7 @@ BAND = 1.0       # the line through the centre: rows within BAND h of it
 SIDES = [(slave, contact, normal) for contact, normals in (("node", ("master", "slave", "average")), ("mortar", ("master",)))
          for normal in normals for slave in ("sphere", "block")]
 SIDE_MESHES = [0.4, MESH]
+PAGE_RUN = "the page's run"  # where a table comes from unless it was re-run on its own
 SIDES_RUN = "3d-sides-run"  # the record of the slave-side table's last run on its own (main)
 
 
@@ -262,16 +263,6 @@ def section():
     ]
 
 
-def sides_run_words():
-    """Which run the slave-side table comes from: the page's, or its own later run (main)."""
-    path = os.path.join(OUT, f"{PAGE}-{SIDES_RUN}.csv")
-    if not os.path.exists(path):
-        return "the page's run"
-    own = read_csv(PAGE, SIDES_RUN)[0]
-    return (f"a run of this table on its own on {run_machine(own)} ({own['date']}, {float(own['elapsed_s']):.0f} s, "
-            f"load average {float(own['load_at_start']):.1f} as it started), after the page's run")
-
-
 def sides_section(sides, finest_09):
     """Which body is the slave: per contact kind, contactNormal and slave side the c/a errors at
     each Q/(mu P) on both meshes, the stick zone's offset and what step 1 leaves; the reading.
@@ -320,7 +311,7 @@ def sides_section(sides, finest_09):
         "Row normal from: the surface whose normal the rows take. Rim tilt: the largest angle between a",
         "closed row's normal and e_z; after step 1, a pure normal load under which Hertz has no shear",
         "between similar bodies: the rows already slipping (h = 0.4 / 0.2) and the friction used,",
-        f"Σ‖λ_t‖ / Σ μλ_n. From {sides_run_words()}. Raw data: [friction-3d-sides.csv](friction-3d-sides.csv).",
+        f"Σ‖λ_t‖ / Σ μλ_n. From {own_run_words(PAGE, SIDES_RUN, PAGE_RUN)}. Raw data: [friction-3d-sides.csv](friction-3d-sides.csv).",
         "",
         *header,
         *body,
