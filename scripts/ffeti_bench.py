@@ -172,6 +172,16 @@ def run_machine(run_row):
     return run_row.get("cpu") or "an unrecorded machine"
 
 
+def own_run_words(page, table, otherwise):
+    """Which run a table comes from: `otherwise` (the page's run), or its own later run recorded
+    in docs/results/<page>-<table>.csv (end_run with that table)."""
+    if not os.path.exists(csv_path(page, table)):
+        return otherwise
+    own = read_csv(page, table)[0]
+    return (f"a run of this table on its own on {run_machine(own)} ({own['date']}, {float(own['elapsed_s']):.0f} s, "
+            f"load average {float(own['load_at_start']):.1f} as it started), after the page's run")
+
+
 def csv_path(page, table):
     return os.path.join(OUT, f"{page}-{table}.csv")
 

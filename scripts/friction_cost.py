@@ -13,7 +13,7 @@ runs a build tree's plugin instead of the installed one)."""
 import argparse
 import os
 
-from ffeti_bench import OUT, ROOT, begin_run, end_run, f, markdown_table, read_csv, run, run_machine, span, write_csv
+from ffeti_bench import OUT, ROOT, begin_run, end_run, f, markdown_table, own_run_words, read_csv, run, span, write_csv
 
 PAGE = "friction"
 MESHES = os.path.join(ROOT, "meshes")
@@ -106,7 +106,7 @@ def section():
         "top held along x). `edp/block-shear.edp`: a 2 x 1 (x 1) steel block, n = 4, pressed on a",
         "rigid floor by 1 µm, then sheared by Q = 0.6 μP on its top (μ = 0.3), or forced to slide",
         "by 20 µm in one step. \"before\": the code before this change (its own run, saved as",
-        f"[{PAGE}-cost-before.csv]({PAGE}-cost-before.csv)); \"after\": " + own_run_words(),
+        f"[{PAGE}-cost-before.csv]({PAGE}-cost-before.csv)); \"after\": " + own_run_words(PAGE, OWN_RUN, "this run"),
         f"([{PAGE}-cost.csv]({PAGE}-cost.csv)). Answer change: the largest change of the normal or",
         "friction force sum relative to the normal force sum. Aim: at most 3 times the frictionless",
         "count on every step. In 3D the \"after\" columns also have the disc solver's CG round the circles",
@@ -136,16 +136,6 @@ def section():
 
 
 OWN_RUN = "cost-run"  # the record of the table's last run on its own (main with --save cost)
-
-
-def own_run_words():
-    """Which run the "after" columns come from: the page's run, or the table's own later run."""
-    path = os.path.join(OUT, f"{PAGE}-{OWN_RUN}.csv")
-    if not os.path.exists(path):
-        return "this run"
-    own = read_csv(PAGE, OWN_RUN)[0]
-    return (f"a run of this table on its own on {run_machine(own)} ({own['date']}, {float(own['elapsed_s']):.0f} s, load average "
-            f"{float(own['load_at_start']):.1f} as it started), after the page's run")
 
 
 def forget_own_run():

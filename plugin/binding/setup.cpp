@@ -9,6 +9,7 @@
 #include "base/errors.h"
 #include "base/parallel_for.h"
 #include "constraints/contact/contact_discretization.h"
+#include "constraints/contact/node_to_face.h"
 #include "parallel/mpi_communicator.h"
 #include "parallel/ownership.h"
 
@@ -51,7 +52,7 @@ class FetiSetup : public WithNamedArguments {
   // kinds_with_input()), each in the registry's order (constraints/contact/registry.cpp),
   // then the set-up options.
   enum Named { kDirichlet, kDirichletValues, kSlave, kGap, kComponent, kComm, kRadius, kContactGap, kFriction,
-               kSlipBound, kFrictionField, kZ, kSlipBoundField, kStiffnessOf, kReleaseK, kKindLists };
+               kSlipBound, kFrictionField, kZ, kSlipBoundField, kStiffnessOf, kReleaseK, kNormal, kKindLists };
   static size_t kind_arguments_start() { return kKindLists + kinds_with_lists().size(); }
   static size_t options_start() { return kind_arguments_start() + kinds_with_input().size(); }
 
@@ -201,7 +202,7 @@ class FetiSetup : public WithNamedArguments {
 
   /// contactSlave=, gap=, the lists of the kinds that own one (kinds_with_lists()), the
   /// arguments of the kinds that own their input (kinds_with_input()), contactRadius=,
-  /// contactGap=, friction=, slipBound=, frictionField=, slipBoundField=.
+  /// contactNormal=, contactGap=, friction=, slipBound=, frictionField=, slipBoundField=.
   ContactInput contact_input(Stack stack, long count, const std::vector<int>& ids, const std::vector<long>& dofs) const {
     ContactInput contact;
     contact.slave_dofs = per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kSlave], stack), count, ids,
@@ -220,6 +221,7 @@ class FetiSetup : public WithNamedArguments {
       if (const auto* values = optional_pointer<KN<double>>(nargs[kind_arguments_start() + i], stack))
         kinds[i]->read_input(to_std(*values), nargs[kZ] ? 3 : 2, contact);
     contact.search_distance = optional_real(nargs[kRadius], stack, contact.search_distance);
+    if (nargs[kNormal]) contact.normal = contact_normal_named(optional_string(nargs[kNormal], stack, ""));
     // Not given: -1, no friction rows (a given negative value is refused by the core).
     contact.friction = optional_real(nargs[kFriction], stack, -1.0);
     contact.slip_bound = optional_real(nargs[kSlipBound], stack, -1.0);
@@ -263,7 +265,7 @@ NamedParameters FetiSetup::name_param = named_parameters(
           {"friction", &typeid(double)},                 {"slipBound", &typeid(double)},
           {"frictionField", &typeid(KN<KN<double>>*)},   {"Z", &typeid(KN<KN<double>>*)},
           {"slipBoundField", &typeid(KN<KN<double>>*)},  {"stiffnessOf", &typeid(KN<long>*)},
-          {"releaseK", &typeid(bool)}};
+          {"releaseK", &typeid(bool)},                   {"contactNormal", &typeid(std::string*)}};
       for (const ContactDiscretization* kind : kinds_with_lists())
         names.push_back({kind->list_input()->argument, &typeid(KN<KN<long>>*)});
       for (const ContactDiscretization* kind : kinds_with_input())

@@ -278,6 +278,7 @@ ContactSpec read_contact(ObjectReader& r, int components) {
     c.search_distance = r.required<double>("search_distance");
     if (!(*c.search_distance > 0)) r.fail(r.path("search_distance"), "must be > 0");
   }
+  if (r.has("contact_normal")) c.normal = r.required<std::string>("contact_normal");  // checked by build_contact
   if (r.has("gap")) {
     if (components != 1) r.fail(r.path("gap"), "applies to node-to-node contact (1 component) only");
     c.gap = r.required<double>("gap");

@@ -98,4 +98,22 @@ expect "a flat tetrahedron" \
   "p['mesh'] = 'flat.msh'"
 expect "a nearly flat tetrahedron" "subdomains\[3\].volumes: ./nearly-flat.msh: physical volume 202: tetrahedron [0-9]* .* is flat or degenerate" \
   "p['mesh'] = 'nearly-flat.msh'"
+expect "a contact_normal that is no choice" \
+  'contact\[0\].contact_normal: must be "master", "slave" or "average", got "normal"' \
+  "p['contact'][0]['contact_normal'] = 'normal'"
+expect "a contact_normal on an obstacle" "contact\[0\].contact_normal: applies to node-to-face contact" \
+  "p['contact'] = [{'slave': 4, 'obstacle': {'point': [0, 0, 0], 'normal': [0, 0, 1]}, 'contact_normal': 'slave'}]"
+# A valid choice runs: the rows take the slave surface's normal (its faces added to the
+# master faces by ffeti-solve).
+python3 -c "
+import json
+p = json.load(open('sphere-block.json'))
+p['output'] = {}
+p['contact'][0]['contact_normal'] = 'average'
+open('case.json', 'w').write(json.dumps(p))"
+if "$ffeti_solve" case.json > out.txt 2>&1 && grep -q "status_name=converged" out.txt; then
+  echo "ok: contact_normal average runs"
+else
+  echo "FAILED: contact_normal average:"; cat out.txt; failures=$((failures + 1))
+fi
 if [ "$failures" -eq 0 ]; then echo "all cases refused clearly"; else echo "FAILED: $failures cases"; exit 1; fi

@@ -57,6 +57,11 @@ struct SubdomainInput {
   std::vector<double> dirichlet_values; ///< their values (empty: all zero)
 };
 
+/// Whose normal a node-to-face row takes (contactNormal=): the master face's (the default),
+/// the slave surface's at the slave node (the area-weighted normals of the slave body's
+/// faces in contactFaces around it), or the two averaged (docs/reference.md, "contactNormal").
+enum class ContactNormal { master, slave, average };
+
 /// Contact conditions, linearized for small displacements; one row per physical slave node
 /// (its copies in other subdomains are glued to it). Each contact kind is a unit of
 /// constraints/contact/ that reads, checks and uses its own input: the fields below are
@@ -85,6 +90,7 @@ struct ContactInput {
   /// point, n the face's unit normal: n.(u_p - u_slave) <= n.(x_slave - p), u_p interpolated
   /// linearly on the face.
   std::vector<std::vector<std::array<int, 9>>> master_faces;
+  ContactNormal normal = ContactNormal::master;  ///< node to face's row normal (contactNormal=)
   /// Mortar (contactSlaveFaces; three dimensions): per subdomain the slave triangles, ordered
   /// like the master faces (outward normal). Their corners are the slave nodes (slave_dofs then
   /// stays empty), each with one row: the normal gap weighted by its shape function phi_j and

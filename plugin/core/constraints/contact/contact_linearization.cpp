@@ -66,13 +66,21 @@ std::array<double, 3> plane_weights(const Point3& s, const Point3& a, const Poin
   return {1 - wb - wc, wb, wc};
 }
 
-LinearizedFaceRow node_to_face_row(const Point3& s, const Point3& a, const Point3& b, const Point3& c,
-                                   bool clamp) {
+LinearizedFaceRow node_to_face_row(const Point3& s, const Point3& a, const Point3& b, const Point3& c, bool clamp,
+                                   const Point3* direction) {
   const Point3 ab = minus(b, a), ac = minus(c, a);
   Point3 n = cross(ab, ac);
   const double length = std::sqrt(dot(n, n));
   for (double& component : n) component /= length;
-  const std::array<double, 3> w = clamp ? closest_point_weights(s, a, b, c) : plane_weights(s, a, b, c);
+  // The point the weights are taken at: s itself (its projection along the face's normal),
+  // or the point of the face's plane s reaches along `direction`.
+  Point3 along = s;
+  if (direction) {
+    const double distance = dot(n, minus(s, a)) / dot(n, *direction);
+    for (size_t i = 0; i < 3; ++i) along[i] -= distance * (*direction)[i];
+    n = *direction;
+  }
+  const std::array<double, 3> w = clamp ? closest_point_weights(along, a, b, c) : plane_weights(along, a, b, c);
   Point3 p{};
   for (size_t i = 0; i < 3; ++i) p[i] = w[0] * a[i] + w[1] * b[i] + w[2] * c[i];
   LinearizedFaceRow row{};
@@ -81,6 +89,7 @@ LinearizedFaceRow node_to_face_row(const Point3& s, const Point3& a, const Point
     for (size_t corner = 0; corner < 3; ++corner) row.coefficients[3 + 3 * corner + i] = w[corner] * n[i];
   }
   row.gap = dot(n, minus(s, p));
+  row.weights = w;
   return row;
 }
 

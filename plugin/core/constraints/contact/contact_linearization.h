@@ -34,11 +34,15 @@ LinearizedRow node_to_segment_slip(const Point& s, const Point& a, const Point& 
 struct LinearizedFaceRow {
   std::array<double, 12> coefficients;
   double gap;
+  std::array<double, 3> weights;  ///< w of p
 };
 /// `clamp` keeps p on the triangle (the set-up); the derivative of a row keeps its pairing
 /// and differentiates the unclamped formula (p the projection on the triangle's plane).
+/// `direction` (a unit vector, not parallel to the plane; contactNormal slave or average):
+/// the row's n instead of the face's, p the point of the plane s projects on along it
+/// (clamped: the triangle's point nearest to that one).
 LinearizedFaceRow node_to_face_row(const Point3& s, const Point3& a, const Point3& b, const Point3& c,
-                                   bool clamp = true);
+                                   bool clamp = true, const Point3* direction = nullptr);
 /// The barycentric weights (w_a, w_b, w_c) of s's projection on the plane of triangle a, b, c:
 /// negative outside the triangle (a row's derivative keeps them unclamped).
 std::array<double, 3> plane_weights(const Point3& s, const Point3& a, const Point3& b, const Point3& c);

@@ -5,14 +5,19 @@
 #include "constraints/contact/contact_linearization.h"
 #include "constraints/contact/face_grid.h"
 
+#include "base/errors.h"
+
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace ffeti {
 namespace {
 
 /// A barycentric weight this close to 0 puts a point on the triangle's boundary.
 constexpr double kEdge = 1e-9;
+/// cos 75 degrees: a row's normal this far from its face's normal measures no gap to speak of.
+constexpr double kFacing = 0.2588;
 
 /// s projects along the face's normal inside the triangle (its edges included).
 bool over_face(const Point3& s, const std::array<Point3, 3>& corners) {
@@ -49,7 +54,98 @@ bool on_bent_edge(const Point3& s, const FaceRecord& face, const FaceGrid& grid)
   return bent;
 }
 
+/// The slave's fan: the faces of its own body with a corner at s (within 1e-9 of s's size:
+/// the same node's coordinates, copied into every subdomain that holds it), their other
+/// corners numbered once per dof.
+SlaveFan fan_at(const Point3& s, int body, const FaceGrid& grid, ContactNormal normal) {
+  SlaveFan fan{normal, {}, {}, {}};
+  const double near = 1e-9 * (1 + std::abs(s[0]) + std::abs(s[1]) + std::abs(s[2]));
+  grid.for_each_in_box({s[0] - near, s[1] - near, s[2] - near}, {s[0] + near, s[1] + near, s[2] + near},
+                       [&](const FaceRecord& f) {
+                         if (f.body != body) return;
+                         std::array<int, 3> corners{};
+                         bool at_slave = false;
+                         for (size_t k = 0; k < 3; ++k) {
+                           const Point3 d = minus(f.corners[k], s);
+                           if (std::sqrt(dot(d, d)) <= near) {
+                             corners[k] = -1;
+                             at_slave = true;
+                             continue;
+                           }
+                           const DofRef dof{f.subdomain, f.dofs[3 * k]};
+                           const auto at = std::find(fan.neighbours.begin(), fan.neighbours.end(), dof);
+                           corners[k] = static_cast<int>(at - fan.neighbours.begin());
+                           if (at == fan.neighbours.end()) {
+                             fan.neighbours.push_back(dof);
+                             fan.positions.push_back(f.corners[k]);
+                           }
+                         }
+                         if (at_slave) fan.faces.push_back(corners);
+                       });
+  return fan;
+}
+
+std::string where(const Point3& s) {
+  return "(" + std::to_string(s[0]) + ", " + std::to_string(s[1]) + ", " + std::to_string(s[2]) + ")";
+}
+
 }  // namespace
+
+ContactNormal contact_normal_named(const std::string& word) {
+  if (word == "master") return ContactNormal::master;
+  if (word == "slave") return ContactNormal::slave;
+  if (word == "average") return ContactNormal::average;
+  throw InputError("contactNormal: must be \"master\", \"slave\" or \"average\", got \"" + word + "\"");
+}
+
+Point3 fan_normal(const SlaveFan& fan, const Point3& s, const std::vector<Point3>& neighbours) {
+  Point3 sum{0, 0, 0};
+  for (const std::array<int, 3>& f : fan.faces) {
+    const auto corner = [&](size_t k) { return f[k] < 0 ? s : neighbours[static_cast<size_t>(f[k])]; };
+    const Point3 n = cross(minus(corner(1), corner(0)), minus(corner(2), corner(0)));
+    for (size_t i = 0; i < 3; ++i) sum[i] += n[i];
+  }
+  const double length = std::sqrt(dot(sum, sum));
+  return {sum[0] / length, sum[1] / length, sum[2] / length};
+}
+
+Point3 row_direction(ContactNormal normal, const Point3& m, const Point3& o) {
+  if (normal == ContactNormal::master) return m;
+  if (normal == ContactNormal::slave) return {-o[0], -o[1], -o[2]};
+  Point3 n{m[0] - o[0], m[1] - o[1], m[2] - o[2]};
+  const double length = std::sqrt(dot(n, n));
+  return {n[0] / length, n[1] / length, n[2] / length};
+}
+
+FaceGeometry::FaceGeometry(std::array<DofRef, 3> slave, const Point3& s, std::array<DofRef, 9> face,
+                           const std::array<Point3, 3>& corners, bool on_bent_edge, SlaveFan fan)
+    : ContactRowGeometry(ContactKind::node_to_face, slave[0], s, true), slave(slave), face(face), corners(corners),
+      on_bent_edge(on_bent_edge), fan(std::move(fan)) {}
+
+std::vector<DofRef> FaceGeometry::moving_nodes() const {
+  std::vector<DofRef> nodes{slave[0], face[0], face[3], face[6]};
+  nodes.insert(nodes.end(), fan.neighbours.begin(), fan.neighbours.end());
+  return nodes;
+}
+
+LinearizedFaceRow FaceGeometry::linearized(const NodeMotion& v, double t, bool clamp) const {
+  const Point3 s = moved(slave_position(), v[0], t), a = moved(corners[0], v[1], t), b = moved(corners[1], v[2], t),
+               c = moved(corners[2], v[3], t);
+  if (fan.normal == ContactNormal::master) return node_to_face_row(s, a, b, c, clamp);
+  std::vector<Point3> neighbours;
+  for (size_t k = 0; k < fan.positions.size(); ++k) neighbours.push_back(moved(fan.positions[k], v[4 + k], t));
+  const Point3 direction = row_direction(fan.normal, unit_normal({a, b, c}), fan_normal(fan, s, neighbours));
+  return node_to_face_row(s, a, b, c, clamp, &direction);
+}
+
+void NodeToFace::check_combination(const ContactInput& contact) const {
+  if (contact.normal == ContactNormal::master) return;
+  if (!any_entry(contact.master_faces) || any_entry(contact.slave_faces))
+    throw InputError(std::string("contactNormal: \"") + (contact.normal == ContactNormal::slave ? "slave" : "average") +
+                     "\" applies to node-to-face contact (contactSlave with contactFaces, the slave surface's faces "
+                     "among them); mortar (contactSlaveFaces) and the other kinds take their master's or obstacle's "
+                     "normal");
+}
 
 const ListInput* NodeToFace::list_input() const {
   static const ListInput spec{"contactFaces", 9, "9 dofs per face (a_x, a_y, a_z, b_x, ..., c_z)", "master", 3,
@@ -69,8 +165,7 @@ void NodeToFace::check_against(const std::vector<SubdomainInput>& subdomains, co
 }
 
 RowAt FaceGeometry::row_at(const NodeMotion& v, double t) const {
-  const LinearizedFaceRow r = node_to_face_row(moved(slave_position(), v[0], t), moved(corners[0], v[1], t),
-                                               moved(corners[1], v[2], t), moved(corners[2], v[3], t), false);
+  const LinearizedFaceRow r = linearized(v, t, false);
   RowAt row{{slave[0], slave[1], slave[2]}, {r.coefficients.begin(), r.coefficients.end()}, r.gap};
   row.dofs.insert(row.dofs.end(), face.begin(), face.end());
   return row;
@@ -80,8 +175,7 @@ std::string FaceGeometry::unverified_motion(const NodeMotion& v) const {
   double speed = 0;
   for (const Point3& w : v) speed = std::max(speed, std::hypot(w[0], w[1], w[2]));
   if (speed == 0) return "";
-  const Point3& s = slave_position();
-  const std::array<double, 3> w = plane_weights(s, corners[0], corners[1], corners[2]);
+  const std::array<double, 3> w = linearized({}, 0, false).weights;
   if (*std::min_element(w.begin(), w.end()) >= kEdge) return "";  // over the face's interior
   if (*std::min_element(w.begin(), w.end()) < -kEdge)
     return "the slave node lies beyond the edges of its master face (its row projects it on the face's boundary, "
@@ -92,10 +186,7 @@ std::string FaceGeometry::unverified_motion(const NodeMotion& v) const {
   // the neighbouring face on one side: the gradient has two one-sided values, and the row's
   // derivative is one of them.
   const double step = 1e-6 * length() / speed;
-  const auto at = [&](double t) {
-    return plane_weights(moved(s, v[0], t), moved(corners[0], v[1], t), moved(corners[1], v[2], t),
-                         moved(corners[2], v[3], t));
-  };
+  const auto at = [&](double t) { return linearized(v, t, false).weights; };
   const std::array<double, 3> plus = at(step), minus = at(-step);
   for (size_t k = 0; k < 3; ++k)
     if (w[k] < kEdge && std::abs(plus[k] - minus[k]) / (2 * step) > 1e-6 * speed / length())
@@ -119,14 +210,13 @@ double FaceGeometry::length() const {
 }
 
 Point3 FaceGeometry::normal() const {
-  const Point3 normal_direction = cross(minus(corners[1], corners[0]), minus(corners[2], corners[0]));
-  const double area = std::sqrt(dot(normal_direction, normal_direction));
-  return {normal_direction[0] / area, normal_direction[1] / area, normal_direction[2] / area};
+  if (fan.normal == ContactNormal::master) return unit_normal(corners);
+  return row_direction(fan.normal, unit_normal(corners), fan_normal(fan, slave_position(), fan.positions));
 }
 
 std::vector<RowAt> FaceGeometry::slip_rows() const {
   const Point3 n = normal();
-  const std::array<double, 3> w = closest_point_weights(slave_position(), corners[0], corners[1], corners[2]);
+  const std::array<double, 3> w = linearized({}, 0, true).weights;
   std::vector<RowAt> rows;
   for (const Point3& t : tangent_pair(n)) {
     RowAt row{{slave[0], slave[1], slave[2]}, {t[0], t[1], t[2]}, 0.0};
@@ -157,12 +247,26 @@ void NodeToFace::add_rows(const ContactRecords& in, std::vector<Row>& rows) cons
     if (!face || (beyond_reach && !over_face(s, face->corners))) continue;
     std::array<DofRef, 9> face_dofs;
     for (size_t k = 0; k < 9; ++k) face_dofs[k] = {face->subdomain, face->dofs[k]};
+    SlaveFan fan;
+    if (in.contact.normal != ContactNormal::master) {
+      fan = fan_at(s, node.x_dof->body, grid, in.contact.normal);
+      if (fan.faces.empty())
+        throw InputError("contactNormal: the slave node at " + where(s) +
+                         " has no face of its own body in contactFaces: the slave surface's normal is taken from its "
+                         "faces, give them in contactFaces too (a slave pairs with faces of other bodies only)");
+      const Point3 n = row_direction(in.contact.normal, unit_normal(face->corners), fan_normal(fan, s, fan.positions));
+      if (dot(n, unit_normal(face->corners)) < kFacing)
+        throw InputError("contactNormal: the slave node at " + where(s) +
+                         ": its row's normal lies within 15 degrees of its master face's plane (the two surfaces "
+                         "do not face each other there): give contactNormal=\"master\", or leave this node out of "
+                         "contactSlave");
+    }
     const auto geometry = std::make_shared<const FaceGeometry>(
         std::array<DofRef, 3>{{{node.x_dof->subdomain, node.x_dof->dof},
                                {node.y_dof->subdomain, node.y_dof->dof},
                                {node.z_dof->subdomain, node.z_dof->dof}}},
-        s, face_dofs, face->corners, on_bent_edge(s, *face, grid));
-    const LinearizedFaceRow linear = node_to_face_row(s, face->corners[0], face->corners[1], face->corners[2]);
+        s, face_dofs, face->corners, on_bent_edge(s, *face, grid), std::move(fan));
+    const LinearizedFaceRow linear = geometry->linearized({}, 0, true);
     Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction, beyond_reach};
     if (beyond_reach && row.rhs < 0) continue;  // behind the face from the start: not a contact it missed
     const DofRecord* slave[3] = {node.x_dof, node.y_dof, node.z_dof};

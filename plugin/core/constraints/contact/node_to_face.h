@@ -4,27 +4,55 @@
 #pragma once
 
 #include "constraints/contact/contact_discretization.h"
+#include "constraints/contact/contact_linearization.h"
 #include "constraints/contact/contact_row_geometry.h"
 
 namespace ffeti {
 
+/// The slave surface around a slave node, whose normal a row takes with contactNormal
+/// slave or average: the slave body's faces in contactFaces that have the node as a corner.
+struct SlaveFan {
+  ContactNormal normal = ContactNormal::master;  ///< master: no fan, the face's normal
+  std::vector<DofRef> neighbours;                ///< the other corners' x dofs (moving nodes 4, 5, ...)
+  std::vector<Point3> positions;                 ///< their positions
+  /// Each face's corners in its order (outward of the slave's body): -1 the slave node,
+  /// k >= 0 neighbours[k].
+  std::vector<std::array<int, 3>> faces;
+};
+
+/// The unit outward normal of the slave surface at its node s: the fan's faces' (b - a) x
+/// (c - a) summed (area-weighted), `neighbours` the fan's corners' positions.
+Point3 fan_normal(const SlaveFan& fan, const Point3& s, const std::vector<Point3>& neighbours);
+
+/// The row's normal n (out of the master, towards the slave) for master face normal m:
+/// m, minus the slave's own normal o, or (m - o)/|m - o|.
+Point3 row_direction(ContactNormal normal, const Point3& m, const Point3& o);
+
+/// contactNormal's word: "master", "slave" or "average"; InputError naming contactNormal
+/// otherwise.
+ContactNormal contact_normal_named(const std::string& word);
+
 /// n.(sum_i w_i u_i - u_s) <= n.(s - p), p the slave's projection on the triangle
-/// (node_to_face_row).
+/// (node_to_face_row); with a fan, n from the slave surface (row_direction) and p the point
+/// of the face's plane the slave reaches along it.
 class FaceGeometry final : public ContactRowGeometry {
  public:
   FaceGeometry(std::array<DofRef, 3> slave, const Point3& s, std::array<DofRef, 9> face,
-               const std::array<Point3, 3>& corners, bool on_bent_edge = false)
-      : ContactRowGeometry(ContactKind::node_to_face, slave[0], s, true), slave(slave), face(face), corners(corners),
-        on_bent_edge(on_bent_edge) {}
+               const std::array<Point3, 3>& corners, bool on_bent_edge = false, SlaveFan fan = {});
 
-  std::vector<DofRef> moving_nodes() const override { return {slave[0], face[0], face[3], face[6]}; }
+  /// The slave, the face's corners a, b, c, then the fan's neighbours (their motion turns
+  /// the slave's normal).
+  std::vector<DofRef> moving_nodes() const override;
   RowAt row_at(const NodeMotion& v, double t) const override;
+  /// The row at the nodes moved by t v: clamped (the set-up) or not (its derivative).
+  LinearizedFaceRow linearized(const NodeMotion& v, double t, bool clamp) const;
   /// The face's first edge.
   double length() const override;
-  /// (b - a) x (c - a), normalized: out of the master's body.
+  /// The row's normal: the face's (b - a) x (c - a), normalized, out of the master's body;
+  /// with a fan, row_direction's.
   Point3 normal() const override;
-  /// t.(u_s - sum_i w_i u_i) along tangent_pair(n) of the face's normal, w the weights of
-  /// the slave's closest point on the face.
+  /// t.(u_s - sum_i w_i u_i) along tangent_pair(n) of the row's normal, w the weights of
+  /// the row's point p on the face.
   std::vector<RowAt> slip_rows() const override;
   /// Refuses a motion whose derivative is one-sided: the slave on an edge or a corner of its
   /// face moving across it relative to the face (it changes face on one side), or a slave
@@ -40,6 +68,7 @@ class FaceGeometry final : public ContactRowGeometry {
   const std::array<DofRef, 9> face;   ///< the triangle's x, y, z dofs of corners a, b, c
   const std::array<Point3, 3> corners;
   const bool on_bent_edge;            ///< the slave on an edge or corner shared with a face of another normal
+  const SlaveFan fan;
 };
 
 class NodeToFace final : public ContactDiscretization {
@@ -59,7 +88,12 @@ class NodeToFace final : public ContactDiscretization {
   bool list_given(const ContactInput& contact) const override { return any_entry(contact.master_faces); }
   void read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
                  ContactInput& contact) const override;
+  /// contactNormal other than master: only with contactFaces and not mortar's contactSlaveFaces.
+  void check_combination(const ContactInput& contact) const override;
   bool selected(const ContactRecords& in) const override;
+  /// With contactNormal slave or average, each slave's fan from the faces of its own body;
+  /// InputError naming contactNormal for a slave without any, or one whose row's normal lies
+  /// within 15 degrees of its face's plane.
   void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;
   const char* searched_argument() const override { return "contactFaces"; }
   const char* master_word() const override { return "face"; }
