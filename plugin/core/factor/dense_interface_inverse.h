@@ -42,20 +42,26 @@ class PackedSymmetric {
 
 /// The t x t matrix S(a, b) = (A^{-1})(columns[a], columns[b]) for the factor's A, with zero
 /// rows and columns where columns[k] < 0 (a generalized inverse that is zero on some dofs:
-/// a semidefinite subdomain's fixing dofs). Formed by block solves with the identity's
-/// columns, `width` at a time (each block one pass over the factor), on the caller's
-/// workspace (thread-safe across workspaces). Symmetric to round-off; its lower triangle is
-/// kept. Cost: ceil(t / width) block solves.
+/// a semidefinite subdomain's fixing dofs). Where a simplicial factor ordered those columns
+/// last (interface_solves), from L's block on them alone (closed under the elimination
+/// tree's ancestors): A^{-1} there is L_II^{-T} D^{-1} L_II^{-1}, 2/3 t^3 dense flops. Otherwise by block solves with the
+/// identity's columns, `width` at a time (each block one pass over the factor, 4 nnz(L)
+/// width flops), on the caller's workspace (thread-safe across workspaces). Its lower
+/// triangle is kept.
 PackedSymmetric dense_interface_inverse(const CholmodFactor& factor, const std::vector<int>& columns,
                                         CholmodSolveWorkspace& workspace, Eigen::Index width = 64);
 
-/// Whether a held inverse beats solving: its bytes (PackedSymmetric::bytes, read once per
-/// product) at most the bytes one triangular pass of the solve reads (`solve_pass_bytes`,
-/// the interface block or the whole factor). A solve's two passes read those bytes twice
-/// where the factor does not stay in cache, at a third to a fifth of the dense product's
-/// rate, so this is a multiplication at least twice as cheap in bytes; and memory grows by at
-/// most what the factor's pass holds (docs/algorithms.md).
-bool explicit_inverse_pays(double packed_bytes, double solve_pass_bytes);
+/// Whether a held inverse beats solving: it forms from the factor's interface block
+/// (`from_interface_block`: a simplicial factor with the interface last, 2/3 t^3 dense flops,
+/// about a third of the factorization's time on the 2D model problem) and its bytes
+/// (PackedSymmetric::bytes, read once per product) are at most those one triangular pass
+/// of the solve reads (`solve_pass_bytes`). A solve's two passes read those bytes twice
+/// where the factor does not stay in cache, at a third of the dense product's rate or less,
+/// so the multiplication is at least twice as cheap and memory grows by at most what the
+/// factor's pass holds. Formed by block solves instead (3D supernodal factors) a block cost
+/// 9 times the factorization on the 3D cubes, repaid after ~600 multiplications: never
+/// automatic (docs/results/dual-operator.md).
+bool explicit_inverse_pays(double packed_bytes, double solve_pass_bytes, bool from_interface_block);
 
 /// PackedSymmetric::bytes of a t x t matrix, before forming it.
 double packed_symmetric_bytes(Eigen::Index t);

@@ -154,7 +154,9 @@ void Subdomain::apply_pseudo_inverse_on_interface(const Eigen::MatrixXd& b, Eige
 bool Subdomain::form_explicit_block(DualOperatorForm form) {
   if (form == DualOperatorForm::implicit || interface_.empty()) return false;
   const auto t = static_cast<Eigen::Index>(interface_.size());
-  if (form == DualOperatorForm::automatic && !explicit_inverse_pays(packed_symmetric_bytes(t), factor_operator_bytes_))
+  const bool from_interface_block = interface_solves() && !supernodal();
+  if (form == DualOperatorForm::automatic &&
+      !explicit_inverse_pays(packed_symmetric_bytes(t), factor_operator_bytes_, from_interface_block))
     return false;
   explicit_block_ = std::make_shared<const PackedSymmetric>(dense_interface_inverse(*factor_, interface_columns_, workspace_));
   return true;

@@ -94,13 +94,15 @@ std::vector<Option> make_options() {
        false, "`\"auto\"`",
        "how a multiplication by the dual operator applies each subdomain's K_s⁺ on its interface: `\"implicit\"` by "
        "the factor's triangular solves (the interface block's where `ordering` put it last); `\"explicit\"` by a "
-       "dense symmetric block of K_s⁺ on the interface, formed once after the factorization by block solves with "
-       "the identity's columns (the same generalized inverse, zero on the fixing dofs; shared by subdomains that "
-       "share a factor) and held as its packed lower triangle: one dense product per multiplication that streams "
-       "t(t+1)/2 values for t interface dofs; `\"auto\"`: explicit where the block holds at most the bytes one "
-       "triangular pass of the factor's solve reads. The factors stay (loads, primal recovery and sensitivities "
-       "solve with them). For speed only: the same answers to round-off. fetiInfo's `explicit_operators` counts "
-       "the explicit subdomains, `explicit_bytes` their blocks' memory, `time_explicit` the seconds forming them "
+       "dense symmetric block of K_s⁺ on the interface (the same generalized inverse, zero on the fixing dofs), "
+       "formed once after the factorization (from the factor's interface block where the interface is last, else by "
+       "block solves with the identity's columns: several factorizations' time in 3D), shared by subdomains that "
+       "share a factor, held as its packed lower triangle: one dense product per multiplication that streams "
+       "t(t+1)/2 values for t interface dofs; `\"auto\"`: explicit where the block forms from the interface block "
+       "and holds at most the bytes one triangular pass of the factor's solve reads (the 2D subdomains). The "
+       "factors stay (loads, primal recovery and sensitivities solve with them). For speed only: the same answers "
+       "to round-off. fetiInfo's `explicit_operators` counts the explicit subdomains, `explicit_bytes` their "
+       "blocks' memory, `time_explicit` the seconds forming them "
        "([dual operator](results/dual-operator.md))",
        [](SolverSettings& s, const OptionValue& v) {
          s.setup.dual_operator =
