@@ -1,9 +1,9 @@
 // A factor's inverse restricted to a few of its columns, formed once and held dense: the
 // explicit form of a solve that only ever reads and writes those columns (the FETI dual
 // operator's K_s^+ on a subdomain's interface). Applying it is a dense symmetric
-// matrix-vector product that streams t(t+1)/2 values at the memory's rate, where a sparse
-// triangular solve reads its factor's values and indices twice (L, then L') at a third to a
-// fifth of that rate (docs/results/dual-operator.md).
+// matrix-vector product that streams t(t+1)/2 values, where a sparse triangular solve reads
+// its factor's values and indices twice (L, then L') at a fraction of the memory's rate
+// (docs/results/model-problem.md: 4-6 GB/s against STREAM's 26; docs/results/dual-operator.md).
 #pragma once
 
 #include "factor/cholmod_factor.h"
@@ -27,8 +27,9 @@ class PackedSymmetric {
   double bytes() const { return static_cast<double>(values_.size() * sizeof(double)); }
 
   /// y = S x. Per column j, one dot product and one update on the same t - j values, the
-  /// second from L1: on this machine as fast as Eigen's selfadjointView product on full
-  /// storage (which holds twice the memory) and faster than a full GEMV (twice the bytes).
+  /// second from L1: on this machine about as fast as Eigen's selfadjointView product on
+  /// full storage (which holds twice the memory), mostly faster than a full GEMV (twice the
+  /// bytes; docs/log.md, 2026-12-06).
   void apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
   /// Y = S X for a block of columns, in one pass over the values.
   void apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const;
