@@ -20,7 +20,7 @@ import argparse
 import os
 import statistics
 
-from bandwidth_bound import bandwidth, cache_note
+from bandwidth_bound import bandwidth
 from ffeti_bench import begin_run, end_run, f, machine_line, markdown_table, read_csv, run, save_page, write_csv
 
 PAGE = "dual-operator"
@@ -86,7 +86,7 @@ def ms(key):
     return lambda r: f"{1e3 * r[key]:.3f}"
 
 
-def section_table(summaries, stream):
+def section_table(summaries):
     mib = 1e6
     return markdown_table(summaries, [
         ("problem", "problem"), ("size", "size"), ("unknowns", "primal"), ("subdomains", "subdomains"),
@@ -94,7 +94,6 @@ def section_table(summaries, stream):
         ("factor MB", lambda r: f"{float(r['factor_bytes']) / mib:.1f}"),
         ("blocks MB", lambda r: f"{float(r['explicit_bytes']) / mib:.1f}"),
         ("read per pass MB", lambda r: f"{float(r['operator_bytes']) / mib:.1f}"),
-        ("in cache", lambda r: cache_note(r, stream)),
         ("F min [ms]", ms("t_operator_min")), ("F median [ms]", ms("t_operator_median")),
         ("bound [ms]", ms("t_bound")), ("F min / bound", lambda r: f"{r['t_operator_min'] / r['t_bound']:.2f}"),
         ("Hessian min [ms]", ms("t_hessian_min")),
@@ -139,7 +138,7 @@ def render():
         "(`time_factor`). Hessian multiplications "
         + ("are the same for the three forms in every scene." if same else "DIFFER between forms somewhere: see the CSV."),
         "",
-        *section_table(summaries, stream),
+        *section_table(summaries),
         "",
     ]
     save_page(f"{PAGE}.md", lines)
