@@ -140,6 +140,9 @@ class CholmodFactor {
   /// columns of L (0 without interface solves).
   double interface_bytes() const;
   bool supernodal() const { return factor_ && factor_->is_super; }
+  /// CHOLMOD's factor itself, read-only (null before a factorization): for the dense kernels
+  /// of factor/ that read L's layout (dense_interface_inverse).
+  const cholmod_factor* cholmod() const { return factor_; }
   /// The analysis' flop count of the factorization and nnz(L) without the supernodes'
   /// padding (CHOLMOD's Common->fl and ->lnz): what an automatic choice judged.
   double analysis_flops() const { return analysis_flops_; }

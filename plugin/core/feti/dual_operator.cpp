@@ -38,7 +38,7 @@ DualOperator::DualOperator(const SubdomainList& subdomains, const std::vector<Lo
     local_rhs_[s].resize(subdomains[s]->size());
     local_solution_[s].resize(subdomains[s]->size());
     local_result_[s].resize(static_cast<Eigen::Index>(local[s].rows.size()));
-    if (subdomains[s]->interface_solves() && !local[s].rows.empty())
+    if (subdomains[s]->solves_on_interface() && !local[s].rows.empty())
       interface_B_[s] = columns_on_interface(local[s].B, subdomains[s]->interface());
     interface_rhs_[s].resize(interface_B_[s].cols()), interface_solution_[s].resize(interface_B_[s].cols());
   }
@@ -93,21 +93,19 @@ void DualOperator::apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
     gathered.resize(static_cast<Eigen::Index>(local_[i].rows.size()), x.cols());
     for (size_t k = 0; k < local_[i].rows.size(); ++k)
       gathered.row(static_cast<Eigen::Index>(k)) = x.row(local_[i].rows[k]);
-    // A block solve reads the whole factor once for all columns, interface solves read the
-    // interface block once per column: the cheaper of the two.
+    // An explicit block is read once for all columns. Otherwise a block solve reads the
+    // whole factor once for all columns, interface solves read the interface block once per
+    // column: the cheaper of the two.
     const Subdomain& subdomain = *subdomains_[i];
-    const bool on_interface = interface_B_[i].rows() > 0 &&
-                              static_cast<double>(x.cols()) * subdomain.operator_bytes() < subdomain.factor_bytes();
+    const bool on_interface =
+        interface_B_[i].rows() > 0 &&
+        (subdomain.has_explicit_block() ||
+         static_cast<double>(x.cols()) * subdomain.operator_bytes() < subdomain.factor_bytes());
     const SparseMatrix& B = on_interface ? interface_B_[i] : local_[i].B;
     block_rhs_[i].noalias() = B.transpose() * gathered;
     const Stopwatch solve_clock;
     if (on_interface) {
-      block_solution_[i].resize(block_rhs_[i].rows(), x.cols());
-      for (Eigen::Index j = 0; j < x.cols(); ++j) {
-        interface_rhs_[i] = block_rhs_[i].col(j);
-        subdomain.apply_pseudo_inverse_on_interface(interface_rhs_[i], interface_solution_[i]);
-        block_solution_[i].col(j) = interface_solution_[i];
-      }
+      subdomain.apply_pseudo_inverse_on_interface(block_rhs_[i], block_solution_[i]);
     } else {
       subdomain.apply_pseudo_inverse(block_rhs_[i], block_solution_[i]);
     }

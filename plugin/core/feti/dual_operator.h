@@ -24,8 +24,10 @@ class DualOperator {
 
   /// y = F x: in parallel over subdomains w_s = K_s^+ B_s' x, then y = sum_s B_s w_s
   /// added in global subdomain order (the same sum for any thread or rank count). Where a
-  /// subdomain's factor ordered its interface last and B_s touches nothing else, w_s is
-  /// solved on the interface alone (Subdomain::apply_pseudo_inverse_on_interface).
+  /// subdomain holds an explicit block of K_s^+ on its interface or its factor ordered the
+  /// interface last, and B_s touches nothing else, w_s is computed on the interface alone
+  /// (Subdomain::apply_pseudo_inverse_on_interface: a dense product, or a solve that reads
+  /// the factor's interface block).
   void apply(const Vec& x, Vec& y) const;
 
   /// Y = F X for a block of dual vectors (columns): one pass over each subdomain's factor

@@ -138,6 +138,12 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   Stopwatch factor_clock;
   factorize(constraints);
   setup_times_.factorization = local_factor_seconds_ = factor_clock.seconds();
+  collectively(comm, [&] {  // a rank out of memory fails every rank alike
+    explicit_blocks_ = form_explicit_blocks(subdomains_, settings_.dual_operator, resolve_thread_count(settings_.threads));
+  });
+  explicit_blocks_ = {static_cast<long>(comm.sum(static_cast<double>(explicit_blocks_.subdomains))),
+                      comm.max(explicit_blocks_.seconds)};
+  explicit_bytes_ = comm.sum(explicit_block_bytes(subdomains_));
 
   Stopwatch coarse_clock;
   try {

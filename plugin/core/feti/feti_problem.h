@@ -37,7 +37,10 @@ struct FetiSetupSettings {
   GramLayout coarse_gram = GramLayout::automatic;
   /// Where nothing floats (a time step's K + c M): the conjugate projector onto the
   /// subdomains' rigid modes on the equality rows (ConjugateProjector).
-  bool conjugate_projector = false;
+  bool conjugate_projector = false;  /// How the dual operator applies each K_s^+ on its interface: the factor's solves, or a
+  /// dense block formed once (Subdomain::form_explicit_block), or the latter where it reads
+  /// fewer bytes. A speed option: the same answers to round-off.
+  DualOperatorForm dual_operator = DualOperatorForm::automatic;
 };
 
 /// A solve of the problem: the dual solve's outcome (its times the slowest rank's), and
@@ -137,6 +140,13 @@ class FetiProblem {
   /// Subdomains whose factor ordered the interface last (the dual operator solves on it).
   long interface_factors() const { return interface_factors_; }
   long symbolic_analyses() const { return symbolic_analyses_; }
+  /// Subdomains whose dual operator applies an explicit block of K_s^+ on the interface
+  /// (FetiSetupSettings::dual_operator), over all ranks; the distinct blocks' bytes (held
+  /// besides the factors) and the slowest rank's seconds forming them (not in
+  /// setup_times().factorization).
+  long explicit_operators() const { return explicit_blocks_.subdomains; }
+  double explicit_bytes() const { return explicit_bytes_; }
+  double explicit_seconds() const { return explicit_blocks_.seconds; }
   /// Per-rank figures gathered at set-up and after each solve (rank order).
   const std::vector<RankStatistics>& rank_statistics() const { return rank_statistics_; }
   const Constraints& constraints() const { return dual_->constraints(); }
@@ -163,9 +173,10 @@ class FetiProblem {
   /// Bytes one pass over every distinct factor reads (CholmodFactor::factor_bytes): the
   /// memory the factors hold.
   double factor_bytes() const { return factor_bytes_; }
-  /// Of it, what one triangular pass of a dual-operator multiplication reads
-  /// (Subdomain::operator_bytes: less where the subdomains solve on their interface), each
-  /// distinct factor once: what a pass must bring from memory unless it stays in cache.
+  /// What one pass of a dual-operator multiplication reads (Subdomain::operator_bytes: less
+  /// where the subdomains solve on their interface; an explicit block's bytes where one is
+  /// held), each distinct factor once: what a pass must bring from memory unless it stays
+  /// in cache.
   double operator_bytes() const { return operator_bytes_; }
   /// The plugin's copies of the subdomains' input (K_s, f_s, coordinates, lists) and the
   /// kernels R_s with their index maps, summed over the ranks (feti/held_bytes.h).
@@ -223,6 +234,8 @@ class FetiProblem {
   double factor_nonzeros_ = 0, factor_bytes_ = 0, operator_bytes_ = 0, input_bytes_ = 0, kernel_bytes_ = 0, factor_flops_ = 0;
   mutable std::vector<RankStatistics> rank_statistics_;
   PhaseTimes setup_times_;
+  ExplicitBlocks explicit_blocks_;      // over all ranks (seconds: the slowest rank's)
+  double explicit_bytes_ = 0;           // over all ranks
   double local_factor_seconds_ = 0;  // this rank's, for the rank report
 };
 

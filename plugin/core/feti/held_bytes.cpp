@@ -38,6 +38,14 @@ double kernel_bytes(const SubdomainList& subdomains) {
   return bytes;
 }
 
+double explicit_block_bytes(const SubdomainList& subdomains) {
+  double bytes = 0;
+  std::unordered_set<const PackedSymmetric*> counted;
+  for (const auto& s : subdomains)
+    if (s->explicit_block() && counted.insert(s->explicit_block()).second) bytes += s->explicit_block()->bytes();
+  return bytes;
+}
+
 double constraint_bytes(const Constraints& constraints) {
   return vector_bytes(constraints.row_start) + vector_bytes(constraints.entries) + vector_bytes(constraints.rhs) +
          vector_bytes(constraints.kind);

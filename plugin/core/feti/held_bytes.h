@@ -18,6 +18,10 @@ double input_bytes(const std::vector<SubdomainInput>& inputs);
 /// The subdomains' kernel bases R_s and index maps (fixing dofs, kept dofs, interface).
 double kernel_bytes(const SubdomainList& subdomains);
 
+/// The explicit blocks of K_s^+ on the interfaces the dual operator applies
+/// (Subdomain::form_explicit_block), a block shared by identical subdomains counted once.
+double explicit_block_bytes(const SubdomainList& subdomains);
+
 /// The constraint rows B, c and their kinds as this rank holds them.
 double constraint_bytes(const Constraints& constraints);
 

@@ -1,11 +1,15 @@
 #include "feti/subdomain.h"
 
 #include "base/errors.h"
+#include "base/parallel_for.h"
+#include "base/stopwatch.h"
 #include "feti/kernel.h"
 
 #include <algorithm>
 #include <random>
+#include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 namespace ffeti {
 namespace {
@@ -58,11 +62,13 @@ Subdomain::Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& ke
   fixing_ = fixing_dofs(R_);
   reduced_to_full_ = kept_dofs(K.rows(), fixing_);
   std::vector<int> reduced_interface;  // reduced_to_full_ is sorted: a binary search per dof
+  interface_columns_.assign(interface_.size(), -1);
   for (size_t k = 0; k < interface_.size(); ++k) {
     const auto at = std::lower_bound(reduced_to_full_.begin(), reduced_to_full_.end(), interface_[k]);
     if (at == reduced_to_full_.end() || *at != interface_[k]) continue;  // a fixing dof: K_s^+ is zero there
     interface_kept_.push_back(static_cast<int>(k));
     reduced_interface.push_back(static_cast<int>(at - reduced_to_full_.begin()));
+    interface_columns_[k] = reduced_interface.back();
   }
   interface_rhs_.resize(static_cast<Eigen::Index>(reduced_interface.size()));
   const auto kept = static_cast<Eigen::Index>(reduced_to_full_.size());
@@ -102,7 +108,7 @@ Subdomain::Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& ke
                      std::to_string(outcome.failed) + " of " + std::to_string(kept) +
                      " fails; kernel dimension found " + std::to_string(R_.cols()) +
                      "). Is the subdomain mesh connected and the matrix a stiffness matrix?" + coordinates_hint);
-  operator_bytes_ = interface_solves() ? factor_->interface_bytes() : factor_->factor_bytes();
+  factor_operator_bytes_ = interface_solves() ? factor_->interface_bytes() : factor_->factor_bytes();
   if (!(outcome.residual <= 1e-6))
     throw InputError(name + ": the generalized inverse does not verify (||K K+ K v - K v|| / "
                      "||K v|| = " + std::to_string(outcome.residual) +
@@ -119,12 +125,47 @@ void Subdomain::apply_pseudo_inverse(const Vec& b, Vec& x) const {
 }
 
 void Subdomain::apply_pseudo_inverse_on_interface(const Vec& b, Vec& x) const {
+  if (explicit_block_) {
+    explicit_block_->apply(b, x);
+    return;
+  }
   for (size_t j = 0; j < interface_kept_.size(); ++j)
     interface_rhs_[static_cast<Eigen::Index>(j)] = b[interface_kept_[j]];
   factor_->solve_on_interface(interface_rhs_, interface_solution_, workspace_);
   x.setZero(static_cast<Eigen::Index>(interface_.size()));
   for (size_t j = 0; j < interface_kept_.size(); ++j)
     x[interface_kept_[j]] = interface_solution_[static_cast<Eigen::Index>(j)];
+}
+
+void Subdomain::apply_pseudo_inverse_on_interface(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) const {
+  if (explicit_block_) {
+    explicit_block_->apply(b, x);
+    return;
+  }
+  x.resize(b.rows(), b.cols());
+  Vec column, solved;
+  for (Eigen::Index j = 0; j < b.cols(); ++j) {
+    column = b.col(j);
+    apply_pseudo_inverse_on_interface(column, solved);
+    x.col(j) = solved;
+  }
+}
+
+bool Subdomain::form_explicit_block(DualOperatorForm form) {
+  if (form == DualOperatorForm::implicit || interface_.empty()) return false;
+  const auto t = static_cast<Eigen::Index>(interface_.size());
+  const bool from_interface_block = interface_solves() && !supernodal();
+  if (form == DualOperatorForm::automatic &&
+      !explicit_inverse_pays(packed_symmetric_bytes(t), factor_operator_bytes_, from_interface_block))
+    return false;
+  explicit_block_ = std::make_shared<const PackedSymmetric>(dense_interface_inverse(*factor_, interface_columns_, workspace_));
+  return true;
+}
+
+void Subdomain::share_explicit_block(const Subdomain& identical) {
+  if (&identical.factor() != &factor())
+    throw std::logic_error("Subdomain::share_explicit_block: the subdomains do not share a factor");
+  explicit_block_ = identical.explicit_block_;
 }
 
 void Subdomain::apply_pseudo_inverse(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) const {
@@ -146,6 +187,25 @@ double Subdomain::pseudo_inverse_residual(const SparseMatrix& K) const {
   apply_pseudo_inverse(Kv, z);
   const double denominator = Kv.norm();
   return denominator > 0 ? (K * z - Kv).norm() / denominator : 0.0;
+}
+
+ExplicitBlocks form_explicit_blocks(SubdomainList& subdomains, DualOperatorForm form, int threads) {
+  ExplicitBlocks made;
+  if (form == DualOperatorForm::implicit) return made;
+  const Stopwatch clock;
+  std::unordered_map<const CholmodFactor*, size_t> first;  // each distinct factor's first subdomain
+  std::vector<size_t> distinct;
+  for (size_t s = 0; s < subdomains.size(); ++s)
+    if (first.emplace(&subdomains[s]->factor(), s).second) distinct.push_back(s);
+  parallel_for_each(static_cast<int>(distinct.size()), threads,
+                    [&](int k) { subdomains[distinct[static_cast<size_t>(k)]]->form_explicit_block(form); });
+  for (size_t s = 0; s < subdomains.size(); ++s) {
+    const size_t owner = first.at(&subdomains[s]->factor());
+    if (owner != s) subdomains[s]->share_explicit_block(*subdomains[owner]);
+    made.subdomains += subdomains[s]->has_explicit_block() ? 1 : 0;
+  }
+  made.seconds = clock.seconds();
+  return made;
 }
 
 }  // namespace ffeti

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "factor/cholmod_factor.h"
+#include "factor/dense_interface_inverse.h"
 #include "factor/shared_factors.h"
 
 #include <Eigen/Dense>
@@ -11,6 +12,12 @@
 #include <vector>
 
 namespace ffeti {
+
+/// How the dual operator applies K_s^+ on a subdomain's interface: by the factor's solves
+/// (`implicit`), by a dense block of K_s^+ on the interface formed once after the
+/// factorization (`explicit_block`), or the latter where it reads fewer bytes
+/// (`automatic`: explicit_inverse_pays).
+enum class DualOperatorForm { implicit, explicit_block, automatic };
 
 class Subdomain {
  public:
@@ -44,9 +51,27 @@ class Subdomain {
   /// True when apply_pseudo_inverse_on_interface is available (the factor ordered the
   /// interface last: CholmodFactor::factorize).
   bool interface_solves() const { return factor_->interface_solves(); }
+  /// True when apply_pseudo_inverse_on_interface is available: interface solves, or an
+  /// explicit block.
+  bool solves_on_interface() const { return interface_solves() || explicit_block_ != nullptr; }
   /// (K_s^+ b) on the interface for b zero elsewhere; b and x are indexed like interface().
-  /// Reads only the factor's interface block: the dual operator's solve.
+  /// The dual operator's solve: a product with the explicit block where one was formed,
+  /// else a solve that reads only the factor's interface block.
   void apply_pseudo_inverse_on_interface(const Vec& b, Vec& x) const;
+  /// The same for every column of b (with the explicit block: one pass over it).
+  void apply_pseudo_inverse_on_interface(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) const;
+
+  /// Forms the explicit block, K_s^+ restricted to the interface (zero on fixing dofs, the
+  /// same generalized inverse the factor applies), where `form` asks for it: always with
+  /// `explicit_block`, where explicit_inverse_pays with `automatic`. Needs an interface.
+  /// Returns whether it formed one. Thread-safe across distinct subdomains.
+  bool form_explicit_block(DualOperatorForm form);
+  /// Takes the explicit block of `identical`, a subdomain that shares this one's factor
+  /// (so the same K, fixing dofs and interface: SharedFactors), if it has one.
+  void share_explicit_block(const Subdomain& identical);
+  bool has_explicit_block() const { return explicit_block_ != nullptr; }
+  /// The explicit block, or null (shared by identical subdomains: the same pointer).
+  const PackedSymmetric* explicit_block() const { return explicit_block_.get(); }
 
   /// ||K K^+ K v - K v|| / ||K v|| for a fixed pseudo-random v, K the matrix this
   /// subdomain was built from (the check run at set-up).
@@ -55,9 +80,10 @@ class Subdomain {
   const CholmodFactor& factor() const { return *factor_; }
   double factor_nonzeros() const { return factor_->factor_nonzeros(); }
   double factor_bytes() const { return factor_->factor_bytes(); }
-  /// The factor's bytes one triangular solve of the dual operator reads: the interface
-  /// block's with interface solves, else the whole factor's.
-  double operator_bytes() const { return operator_bytes_; }
+  /// The bytes one pass of the dual operator's solve reads: the explicit block's where one
+  /// was formed (its product is the whole solve), else one triangular solve's of the factor
+  /// (the interface block's with interface solves, else the whole factor's).
+  double operator_bytes() const { return explicit_block_ ? explicit_block_->bytes() : factor_operator_bytes_; }
   bool supernodal() const { return factor_->supernodal(); }
 
  private:
@@ -68,14 +94,27 @@ class Subdomain {
   std::vector<int> reduced_to_full_;  // dofs kept in the regular block
   std::vector<int> interface_;
   std::vector<int> interface_kept_;   // positions in interface_ that are not fixing dofs
+  std::vector<int> interface_columns_;  // per interface dof its column of the factor, -1 at fixing dofs
   std::shared_ptr<const CholmodFactor> factor_;  // possibly shared with identical subdomains
   mutable CholmodSolveWorkspace workspace_;     // this subdomain's own: solves run concurrently
-  double operator_bytes_ = 0;
+  double factor_operator_bytes_ = 0;
+  std::shared_ptr<const PackedSymmetric> explicit_block_;  // possibly shared like the factor
   mutable Vec reduced_rhs_, reduced_solution_, interface_rhs_, interface_solution_;
   mutable Eigen::MatrixXd reduced_block_rhs_, reduced_block_solution_;
 };
 
 /// Subdomains are built in parallel and hold non-movable factors: owned through pointers.
 using SubdomainList = std::vector<std::unique_ptr<Subdomain>>;
+
+/// What form_explicit_blocks did on this rank (their bytes: held_bytes.h).
+struct ExplicitBlocks {
+  long subdomains = 0;  ///< that hold an explicit block (shared ones included)
+  double seconds = 0;   ///< wall-clock, forming them
+};
+
+/// Subdomain::form_explicit_block on every subdomain as `form` says, on `threads` threads,
+/// each distinct factor's block formed once and shared by the subdomains of that factor.
+/// Throws what a forming throws (out of memory) after all ran.
+ExplicitBlocks form_explicit_blocks(SubdomainList& subdomains, DualOperatorForm form, int threads);
 
 }  // namespace ffeti

@@ -38,6 +38,7 @@ const char* const kVariants[] = {"feti1", "tfeti"};
 const char* const kFactors[] = {"auto", "simplicial", "supernodal"};
 const char* const kOrderings[] = {"auto", "fill", "interface"};
 const char* const kSharing[] = {"on", "off"};
+const char* const kDualOperators[] = {"auto", "implicit", "explicit"};
 const char* const kPreconditioners[] = {"lumped", "dirichlet", "none"};
 const char* const kProjectors[] = {"none", "conjugate"};
 const char* const kCoarseGrams[] = {"auto", "contact-last", "separate"};
@@ -89,6 +90,25 @@ std::vector<Option> make_options() {
        "the same answer, bit for bit, from fewer factorizations and less memory; `\"off\"`: one factorization per subdomain (to measure what "
        "sharing saves). fetiInfo's `shared_factors` counts the subdomains that shared",
        [](SolverSettings& s, const OptionValue& v) { s.setup.share_factors = pick(v, {true, false}, kSharing); }},
+      {"dualOperator", S::setup, K::word, {kDualOperators[0], kDualOperators[1], kDualOperators[2]}, 0, 0, false,
+       false, "`\"auto\"`",
+       "how a multiplication by the dual operator applies each subdomain's K_s⁺ on its interface: `\"implicit\"` by "
+       "the factor's triangular solves (the interface block's where `ordering` put it last); `\"explicit\"` by a "
+       "dense symmetric block of K_s⁺ on the interface (the same generalized inverse, zero on the fixing dofs), "
+       "formed once after the factorization (from the factor's interface block where the interface is last, else by "
+       "block solves with the identity's columns: several factorizations' time in 3D), shared by subdomains that "
+       "share a factor, held as its packed lower triangle: one dense product per multiplication that streams "
+       "t(t+1)/2 values for t interface dofs; `\"auto\"`: explicit where the block forms from the interface block "
+       "and holds at most the bytes one triangular pass of the factor's solve reads (the 2D subdomains). The "
+       "factors stay (loads, primal recovery and sensitivities solve with them). For speed only: the same answers "
+       "to round-off. fetiInfo's `explicit_operators` counts the explicit subdomains, `explicit_bytes` their "
+       "blocks' memory, `time_explicit` the seconds forming them "
+       "([dual operator](results/dual-operator.md))",
+       [](SolverSettings& s, const OptionValue& v) {
+         s.setup.dual_operator =
+             pick(v, {DualOperatorForm::automatic, DualOperatorForm::implicit, DualOperatorForm::explicit_block},
+                  kDualOperators);
+       }},
       {"preconditioner", S::setup, K::word, {kPreconditioners[0], kPreconditioners[1], kPreconditioners[2]}, 0, 0,
        false, false, "`\"lumped\"`",
        "the preconditioner of the dual problem on every path (CG and projected CG directly; MPRGP in face, also inside "

@@ -1,0 +1,129 @@
+#include "factor/dense_interface_inverse.h"
+
+#include <algorithm>
+
+namespace ffeti {
+
+PackedSymmetric::PackedSymmetric(const Eigen::MatrixXd& full) : size_(full.rows()) {
+  values_.reserve(static_cast<size_t>(size_ * (size_ + 1) / 2));
+  for (Eigen::Index j = 0; j < size_; ++j)
+    values_.insert(values_.end(), full.col(j).data() + j, full.col(j).data() + size_);
+}
+
+void PackedSymmetric::apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  y.setZero(size_);
+  const double* column = values_.data();
+  for (Eigen::Index j = 0; j < size_; ++j) {
+    const Eigen::Index below = size_ - j - 1;
+    const Eigen::Map<const Eigen::VectorXd> lower(column + 1, below);  // rows j+1..t-1 of column j
+    y[j] += column[0] * x[j] + lower.dot(x.tail(below));
+    y.tail(below).noalias() += x[j] * lower;
+    column += below + 1;
+  }
+}
+
+void PackedSymmetric::apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
+  y.setZero(size_, x.cols());
+  const double* column = values_.data();
+  for (Eigen::Index j = 0; j < size_; ++j) {
+    const Eigen::Index below = size_ - j - 1;
+    const Eigen::Map<const Eigen::VectorXd> lower(column + 1, below);
+    y.row(j).noalias() += column[0] * x.row(j) + lower.transpose() * x.bottomRows(below);
+    y.bottomRows(below).noalias() += lower * x.row(j);
+    column += below + 1;
+  }
+}
+
+Eigen::MatrixXd PackedSymmetric::full() const {
+  Eigen::MatrixXd S(size_, size_);
+  const double* column = values_.data();
+  for (Eigen::Index j = 0; j < size_; ++j) {
+    for (Eigen::Index i = j; i < size_; ++i) S(i, j) = S(j, i) = column[i - j];
+    column += size_ - j;
+  }
+  return S;
+}
+
+namespace {
+
+/// Where a simplicial factor ordered `present`'s columns last (the interface of
+/// InterfaceOrdering::interface_last), they are closed under the elimination tree's
+/// ancestors: with A = P'LDL'P (or LL'), L's columns there have rows there only, so L^{-1}'s
+/// columns there do too, and A^{-1} on them is W'D_I^{-1}W with W = L_II^{-1}, L_II the
+/// (lower triangular) block of L on them: 2/3 t^3 dense flops, no pass over the rest of L.
+/// Returns false (S untouched) where a column there has a row elsewhere.
+bool inverse_from_interface_block(const cholmod_factor& L, const std::vector<int>& columns,
+                                  const std::vector<Eigen::Index>& present, Eigen::MatrixXd& S) {
+  const auto n = static_cast<Eigen::Index>(L.n), count = static_cast<Eigen::Index>(present.size());
+  const auto* permutation = static_cast<const int*>(L.Perm);
+  std::vector<Eigen::Index> position_of(static_cast<size_t>(n), -1);  // factor column -> interface position
+  for (Eigen::Index p : present) position_of[static_cast<size_t>(columns[static_cast<size_t>(p)])] = p;
+  std::vector<Eigen::Index> local(static_cast<size_t>(n), -1), positions;  // L's column -> block index
+  for (Eigen::Index k = 0; k < n; ++k)
+    if (position_of[static_cast<size_t>(permutation[k])] >= 0)
+      local[static_cast<size_t>(k)] = static_cast<Eigen::Index>(positions.size()), positions.push_back(k);
+  if (static_cast<Eigen::Index>(positions.size()) != count) return false;
+  const auto* start = static_cast<const int*>(L.p);
+  const auto* entries = static_cast<const int*>(L.nz);
+  const auto* rows = static_cast<const int*>(L.i);
+  const auto* values = static_cast<const double*>(L.x);
+  Eigen::MatrixXd block_of_L = Eigen::MatrixXd::Zero(count, count);
+  Eigen::VectorXd pivots = Eigen::VectorXd::Ones(count);  // D (LDL'); 1 for LL'
+  for (Eigen::Index j = 0; j < count; ++j) {
+    const Eigen::Index column = positions[static_cast<size_t>(j)];
+    for (int e = start[column]; e < start[column] + entries[column]; ++e) {
+      const Eigen::Index row = local[static_cast<size_t>(rows[e])];
+      if (row < 0) return false;
+      if (row == j && !L.is_ll) pivots[j] = values[e], block_of_L(j, j) = 1;
+      else block_of_L(row, j) = values[e];
+    }
+  }
+  // V = D^{-1/2} W, so that A^{-1} on the block is V'V.
+  Eigen::MatrixXd V = block_of_L.triangularView<Eigen::Lower>().solve(Eigen::MatrixXd::Identity(count, count));
+  V = pivots.cwiseSqrt().cwiseInverse().asDiagonal() * V;
+  Eigen::MatrixXd inverse = Eigen::MatrixXd::Zero(count, count);
+  inverse.selfadjointView<Eigen::Lower>().rankUpdate(V.transpose());
+  for (Eigen::Index b = 0; b < count; ++b)
+    for (Eigen::Index a = b; a < count; ++a) {  // its lower triangle, into S's by interface position
+      const Eigen::Index pa = position_of[static_cast<size_t>(permutation[positions[static_cast<size_t>(a)]])];
+      const Eigen::Index pb = position_of[static_cast<size_t>(permutation[positions[static_cast<size_t>(b)]])];
+      S(std::max(pa, pb), std::min(pa, pb)) = inverse(a, b);
+    }
+  return true;
+}
+
+}  // namespace
+
+PackedSymmetric dense_interface_inverse(const CholmodFactor& factor, const std::vector<int>& columns,
+                                        CholmodSolveWorkspace& workspace, Eigen::Index width) {
+  const auto t = static_cast<Eigen::Index>(columns.size());
+  std::vector<Eigen::Index> present;  // positions k with columns[k] >= 0
+  for (Eigen::Index k = 0; k < t; ++k)
+    if (columns[static_cast<size_t>(k)] >= 0) present.push_back(k);
+  const auto count = static_cast<Eigen::Index>(present.size());
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(t, t);
+  if (factor.interface_solves() && !factor.supernodal() && inverse_from_interface_block(*factor.cholmod(), columns, present, S))
+    return PackedSymmetric(S);
+  Eigen::MatrixXd identity_columns, solved;
+  for (Eigen::Index start = 0; start < count; start += width) {
+    const Eigen::Index block = std::min(width, count - start);
+    identity_columns.setZero(factor.size(), block);
+    for (Eigen::Index c = 0; c < block; ++c)
+      identity_columns(columns[static_cast<size_t>(present[static_cast<size_t>(start + c)])], c) = 1;
+    factor.solve(identity_columns, solved, workspace);
+    // Only the lower triangle is kept: rows from the column's own position on.
+    for (Eigen::Index c = 0; c < block; ++c)
+      for (Eigen::Index a = start + c; a < count; ++a)
+        S(present[static_cast<size_t>(a)], present[static_cast<size_t>(start + c)]) =
+            solved(columns[static_cast<size_t>(present[static_cast<size_t>(a)])], c);
+  }
+  return PackedSymmetric(S);
+}
+
+double packed_symmetric_bytes(Eigen::Index t) { return static_cast<double>(t) * static_cast<double>(t + 1) / 2 * sizeof(double); }
+
+bool explicit_inverse_pays(double packed_bytes, double solve_pass_bytes, bool from_interface_block) {
+  return from_interface_block && packed_bytes > 0 && packed_bytes <= solve_pass_bytes;
+}
+
+}  // namespace ffeti
