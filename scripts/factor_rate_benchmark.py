@@ -12,12 +12,12 @@ crowned-punch-3d.edp (1000 and 3500 nodes). Times are wall clock on the machine 
 (its load is in the run's row); the flops do not depend on the machine.
 Usage: scripts/factor_rate_benchmark.py [--render] (--render: the page from the CSVs alone).
 FFETI_RUN_DIR=build/edp-tests runs the build's plugin."""
-import argparse
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from ffeti_bench import begin_run, end_run, f, machine_line, markdown_table, read_csv, run, save_page, write_csv  # noqa: E402
+from ffeti_bench import (begin_run, end_run, f, machine_line, markdown_table, measure_and_render, read_csv, run,  # noqa: E402
+                         save_page, write_csv)
 
 PAGE = "factor-rate"
 # (scene label, script, arguments): one thread each, so that the rate compares with the
@@ -77,13 +77,5 @@ def render():
     save_page(f"{PAGE}.md", lines)
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--render", action="store_true", help="redraw the page from the CSVs alone")
-    if not parser.parse_args().render:
-        measure()
-    render()
-
-
 if __name__ == "__main__":
-    main()
+    measure_and_render(__doc__, measure, render)

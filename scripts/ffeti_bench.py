@@ -11,6 +11,7 @@ formatter all drivers share. The run itself (machine, load, duration) is one mor
 <page>-run.csv (begin_run / end_run, machine_line).
 
 FFETI_RESULTS overrides the output folder (to try a driver without touching docs/results)."""
+import argparse
 import csv
 import datetime
 import os
@@ -295,3 +296,13 @@ def plot_cost_over_unknowns(runs, title, name, legend_columns=3):
     fig.tight_layout(rect=(0, 0.14, 1, 1))
     fig.savefig(os.path.join(OUT, name), dpi=110)
     plt.close(fig)
+
+
+def measure_and_render(doc, measure, render):
+    """A driver's command line: measure() then render() the page, or with --render only
+    render() it from the CSVs; `doc` (the driver's docstring) describes it."""
+    parser = argparse.ArgumentParser(description=doc.split("\n")[0])
+    parser.add_argument("--render", action="store_true", help="redraw the page from the CSVs alone")
+    if not parser.parse_args().render:
+        measure()
+    render()

@@ -16,7 +16,6 @@ Times are wall clock on the machine as it was (its load is in the run's row); co
 (Hessian multiplications, outer iterations) and bytes do not depend on the machine.
 Usage: scripts/real_meshes_benchmark.py [--render] (--render: the page from the CSVs alone).
 FFETI_RUN_DIR=build/edp-tests runs the build's plugin."""
-import argparse
 import math
 import os
 import sys
@@ -27,8 +26,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after the backend)
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from ffeti_bench import (OUT, OverLimit, begin_run, end_run, f, machine_line, markdown_table, read_csv,  # noqa: E402
-                         run, save_page, write_csv)
+from ffeti_bench import (OUT, OverLimit, begin_run, end_run, f, machine_line, markdown_table, measure_and_render,  # noqa: E402
+                         read_csv, run, save_page, write_csv)
 
 PAGE = "real-meshes"
 SIZES = [float(h) for h in os.environ.get("FFETI_REAL_SIZES", "0.7 0.5 0.35 0.25 0.2 0.16").split()]
@@ -222,13 +221,5 @@ def render():
     save_page(f"{PAGE}.md", lines)
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--render", action="store_true", help="redraw the page from the CSVs alone")
-    if not parser.parse_args().render:
-        measure()
-    render()
-
-
 if __name__ == "__main__":
-    main()
+    measure_and_render(__doc__, measure, render)
