@@ -19,6 +19,8 @@
 #                                          the 3D cubes near a million unknowns about 4 of them; 2.5 GB)
 #   ./scripts/benchmark.sh real-meshes     a real mesh (gmsh, METIS parts, node to face) weak scaling to 4.5 million
 #                                          unknowns (22 GB, 72 min on a loaded machine), part sizes, the MUMPS peer
+#   ./scripts/benchmark.sh dual-operator   the dual operator implicit, explicit and automatic side by side against the
+#                                          memory-bandwidth bound: 2D model problem, 3D cubes, the real mesh (~5 min)
 #   ./scripts/benchmark.sh factor-rate     the factorizations' GFlop/s on one thread against a dense product (~2 min)
 #   ./scripts/benchmark.sh dynamics        transient contact: a bar on a wall, a block sliding to rest (~2 min)
 #   ./scripts/benchmark.sh busy-machine    scenes idle and beside busy neighbour processes, threads (~2 min)
@@ -51,6 +53,7 @@ case "${1:-all}" in
   parallel) /usr/bin/python3 "$root/scripts/parallel_benchmark.py" ;;
   hertz) /usr/bin/python3 "$root/scripts/hertz_benchmark.py" ;;
   factor-rate) /usr/bin/python3 "$root/scripts/factor_rate_benchmark.py" ;;
+  dual-operator) /usr/bin/python3 "$root/scripts/dual_operator_benchmark.py" ;;
   multibody) /usr/bin/python3 "$root/scripts/multibody_picture.py" ;;
   shape-optimization) /usr/bin/python3 "$root/scripts/shape_optimization_benchmark.py" ;;
   busy-machine) /usr/bin/python3 "$root/scripts/busy_machine_benchmark.py" ;;
@@ -77,6 +80,7 @@ case "${1:-all}" in
        /usr/bin/python3 "$root/scripts/friction_benchmark.py"
        /usr/bin/python3 "$root/scripts/three_dimensions_benchmark.py"
        /usr/bin/python3 "$root/scripts/real_meshes_benchmark.py"
-       /usr/bin/python3 "$root/scripts/factor_rate_benchmark.py" ;;
-  *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization|scalability|large-contact|hard-cases|dynamics|accuracy|busy-machine|friction|three-dimensions|elasticity-3d|real-meshes|factor-rate]" >&2; exit 2 ;;
+       /usr/bin/python3 "$root/scripts/factor_rate_benchmark.py"
+       /usr/bin/python3 "$root/scripts/dual_operator_benchmark.py" ;;
+  *) echo "usage: $0 [model-problem|parallel|hertz|multibody|shape-optimization|scalability|large-contact|hard-cases|dynamics|accuracy|busy-machine|friction|three-dimensions|elasticity-3d|real-meshes|factor-rate|dual-operator]" >&2; exit 2 ;;
 esac
