@@ -62,10 +62,11 @@ def render():
              f"{max(gflops(r) for r in rows) / dense_rate:.0%} of the dense rate.", "",
              "Each row is one scene on one thread (`-threads 1`). `factor_flops` is CHOLMOD's count of the "
              "numeric factorizations' operations from each distinct factor's analysis (identical subdomains "
-             "share one factor and count once); `time_factor` the kernels' and factorizations' seconds. "
-             "Small 2D and 3D boxes have small supernodes: their dense blocks are too small for the "
-             "matrix-product kernels' rate, and the time spent outside them (symbolic work, the kernel's "
-             "detection, copies) weighs more. Raw data: [factor-rate-scenes.csv](factor-rate-scenes.csv).", ""]
+             "share one factor and count once); `time_factor` the kernels' and factorizations' seconds "
+             "(the kernels' detection included). `supernodal` counts the subdomains factored supernodal (the "
+             "dense kernels); the others are simplicial (column by column, no dense blocks). Where the time of "
+             "one of these factorizations goes, measured apart, is in the [log](../log.md) (2026-12-06). "
+             "Raw data: [factor-rate-scenes.csv](factor-rate-scenes.csv).", ""]
     lines += markdown_table(rows, [
         ("scene", "scene"), ("arguments", "arguments"), ("unknowns", lambda r: f"{int(f(r, 'unknowns') if r.get('unknowns') else f(r, 'primal')):,}"),
         ("subdomains", "subdomains"), ("distinct factors", "factorizations"),

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace ffeti::binding {
@@ -55,58 +56,49 @@ long feti_connect_parts(const MeshType* const& mesh, KN<long>* const& part) {
   });
 }
 
-/// The body as split_parts reads it: FreeFEM's own adjacency (built with the mesh) gives
-/// the element across each face, its boundary triangles the labels.
-SplitInput split_input(const Mesh3& Th) {
+/// The body as split_parts reads it, the element across each facet given
+/// (`facet_neighbour`): its element-to-node table, and the labels of its boundary facets
+/// (an internal labelled facet from both sides: in the element across, the facet opposite
+/// the node the two elements do not share).
+template <int n, class MeshType>
+SplitInput split_input(const MeshType& Th, std::vector<int> facet_neighbour) {
   SplitInput body;
-  body.nodes_per_element = 4;
+  body.nodes_per_element = n;
   body.node_count = Th.nv;
-  body.element_nodes = element_nodes<4>(Th);
-  body.facet_neighbour.assign(body.element_nodes.size(), -1);
+  body.element_nodes = element_nodes<n>(Th);
+  body.facet_neighbour = std::move(facet_neighbour);
   body.facet_label.assign(body.element_nodes.size(), -1);
-  for (int k = 0; k < Th.nt; ++k)
-    for (int j = 0; j < 4; ++j) {
-      int face_there = j;
-      const int across = Th.ElementAdj(k, face_there);
-      body.facet_neighbour[4 * static_cast<size_t>(k) + static_cast<size_t>(j)] = across >= 0 ? across : -1;
-    }
-  for (int b = 0; b < Th.nbe; ++b) {
+  for (int b = 0; b < Th.nbBrdElmts(); ++b) {
     int j = 0;
     const int k = Th.BoundaryElement(b, j);
-    body.facet_label[4 * static_cast<size_t>(k) + static_cast<size_t>(j)] = Th.be(b).lab;
-    int face_there = j;
-    const int across = Th.ElementAdj(k, face_there);  // an internal labelled face: both sides
-    if (across >= 0) body.facet_label[4 * static_cast<size_t>(across) + static_cast<size_t>(face_there)] = Th.be(b).lab;
+    const size_t at = n * static_cast<size_t>(k) + static_cast<size_t>(j);
+    body.facet_label[at] = Th.be(b).lab;
+    const int across = body.facet_neighbour[at];
+    if (across < 0) continue;
+    for (int side = 0; side < n; ++side) {
+      bool shared = false;  // the node is one of the facet's (element k's but its j-th)
+      for (int i = 0; i < n; ++i) shared = shared || (i != j && Th(across, side) == Th(k, i));
+      if (!shared) body.facet_label[n * static_cast<size_t>(across) + static_cast<size_t>(side)] = Th.be(b).lab;
+    }
   }
   return body;
 }
 
-/// The plane body as split_parts reads it: the element across each edge from the
-/// element-to-node table (FreeFEM's own 2D adjacency keeps its links private), the labels
-/// from its boundary edges, an internal labelled edge from both sides.
-SplitInput split_input(const Mesh& Th) {
-  SplitInput body;
-  body.nodes_per_element = 3;
-  body.node_count = Th.nv;
-  body.element_nodes = element_nodes<3>(Th);
-  body.facet_neighbour = element_across_facets(body.element_nodes, 3);
-  body.facet_label.assign(body.element_nodes.size(), -1);
-  for (int b = 0; b < Th.neb; ++b) {
-    int j = 0;
-    const int k = Th.BoundaryElement(b, j);
-    const size_t at = 3 * static_cast<size_t>(k) + static_cast<size_t>(j);
-    body.facet_label[at] = Th.be(b).lab;
-    const int across = body.facet_neighbour[at];
-    if (across < 0) continue;
-    // The edge's side in the element across: the one opposite the node not on the edge.
-    for (int side = 0; side < 3; ++side) {
-      const int node = Th(across, side);
-      if (node != Th(k, (j + 1) % 3) && node != Th(k, (j + 2) % 3))
-        body.facet_label[3 * static_cast<size_t>(across) + static_cast<size_t>(side)] = Th.be(b).lab;
+/// A mesh3 as split_parts reads it: FreeFEM's own adjacency (built with the mesh) gives the
+/// element across each face.
+SplitInput split_input(const Mesh3& Th) {
+  std::vector<int> across(4 * static_cast<size_t>(Th.nt), -1);
+  for (int k = 0; k < Th.nt; ++k)
+    for (int j = 0; j < 4; ++j) {
+      int face_there = j;
+      across[4 * static_cast<size_t>(k) + static_cast<size_t>(j)] = std::max(Th.ElementAdj(k, face_there), -1);
     }
-  }
-  return body;
+  return split_input<4>(Th, std::move(across));
 }
+
+/// A plane mesh as split_parts reads it: the element across each edge from the
+/// element-to-node table (FreeFEM's own 2D adjacency keeps its links private).
+SplitInput split_input(const Mesh& Th) { return split_input<3>(Th, element_across_facets(element_nodes<3>(Th), 3)); }
 
 /// One part as a FreeFEM mesh: vertices and triangles with their labels, each boundary
 /// edge ordered as its triangle's edge (the part on its left, as trunc orders them).

@@ -124,17 +124,22 @@ void Subdomain::apply_pseudo_inverse(const Vec& b, Vec& x) const {
     x[reduced_to_full_[k]] = reduced_solution_[static_cast<Eigen::Index>(k)];
 }
 
+void Subdomain::solve_interface_column(Eigen::Ref<const Vec> b, Eigen::Ref<Vec> x) const {
+  for (size_t j = 0; j < interface_kept_.size(); ++j)
+    interface_rhs_[static_cast<Eigen::Index>(j)] = b[interface_kept_[j]];
+  factor_->solve_on_interface(interface_rhs_, interface_solution_, workspace_);
+  x.setZero();
+  for (size_t j = 0; j < interface_kept_.size(); ++j)
+    x[interface_kept_[j]] = interface_solution_[static_cast<Eigen::Index>(j)];
+}
+
 void Subdomain::apply_pseudo_inverse_on_interface(const Vec& b, Vec& x) const {
   if (explicit_block_) {
     explicit_block_->apply(b, x);
     return;
   }
-  for (size_t j = 0; j < interface_kept_.size(); ++j)
-    interface_rhs_[static_cast<Eigen::Index>(j)] = b[interface_kept_[j]];
-  factor_->solve_on_interface(interface_rhs_, interface_solution_, workspace_);
-  x.setZero(static_cast<Eigen::Index>(interface_.size()));
-  for (size_t j = 0; j < interface_kept_.size(); ++j)
-    x[interface_kept_[j]] = interface_solution_[static_cast<Eigen::Index>(j)];
+  x.resize(static_cast<Eigen::Index>(interface_.size()));
+  solve_interface_column(b, x);
 }
 
 void Subdomain::apply_pseudo_inverse_on_interface(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) const {
@@ -142,13 +147,9 @@ void Subdomain::apply_pseudo_inverse_on_interface(const Eigen::MatrixXd& b, Eige
     explicit_block_->apply(b, x);
     return;
   }
-  x.resize(b.rows(), b.cols());
-  Vec column, solved;
-  for (Eigen::Index j = 0; j < b.cols(); ++j) {
-    column = b.col(j);
-    apply_pseudo_inverse_on_interface(column, solved);
-    x.col(j) = solved;
-  }
+  // Column by column through the subdomain's own buffers: no allocation per application.
+  x.resize(static_cast<Eigen::Index>(interface_.size()), b.cols());
+  for (Eigen::Index j = 0; j < b.cols(); ++j) solve_interface_column(b.col(j), x.col(j));
 }
 
 bool Subdomain::form_explicit_block(DualOperatorForm form) {

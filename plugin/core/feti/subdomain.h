@@ -99,6 +99,10 @@ class Subdomain {
   mutable CholmodSolveWorkspace workspace_;     // this subdomain's own: solves run concurrently
   double factor_operator_bytes_ = 0;
   std::shared_ptr<const PackedSymmetric> explicit_block_;  // possibly shared like the factor
+  /// One column of apply_pseudo_inverse_on_interface by the factor's interface solve (x
+  /// sized like the interface).
+  void solve_interface_column(Eigen::Ref<const Vec> b, Eigen::Ref<Vec> x) const;
+
   mutable Vec reduced_rhs_, reduced_solution_, interface_rhs_, interface_solution_;
   mutable Eigen::MatrixXd reduced_block_rhs_, reduced_block_solution_;
 };
