@@ -298,11 +298,18 @@ def plot_cost_over_unknowns(runs, title, name, legend_columns=3):
     plt.close(fig)
 
 
-def measure_and_render(doc, measure, render):
+def measure_and_render(doc, measure, render, parts=None):
     """A driver's command line: measure() then render() the page, or with --render only
-    render() it from the CSVs; `doc` (the driver's docstring) describes it."""
+    render() it from the CSVs, or with --only NAME the part `parts[NAME]` (a function that
+    measures one table and writes its own run row) alone, the other tables kept; `doc` (the
+    driver's docstring) describes it."""
     parser = argparse.ArgumentParser(description=doc.split("\n")[0])
     parser.add_argument("--render", action="store_true", help="redraw the page from the CSVs alone")
-    if not parser.parse_args().render:
+    if parts:
+        parser.add_argument("--only", choices=sorted(parts), help="measure this part alone, keep the other tables")
+    options = parser.parse_args()
+    if getattr(options, "only", None):
+        parts[options.only]()
+    elif not options.render:
         measure()
     render()
