@@ -26,8 +26,9 @@ constexpr double kCrawlShrink = 0.5;
 /// the wait after one undone, SMALBE's plain crawl resumed for the rest of the solve.)
 class HeldModeSteps {
  public:
-  HeldModeSteps(const qp::Problem& problem, const qp::ConstraintSet& bounds) {
-    if (!problem.equality_rows) return;
+  /// Nothing to balance unless `wanted`, C given and some mode held by boxes and discs alone.
+  HeldModeSteps(bool wanted, const qp::Problem& problem, const qp::ConstraintSet& bounds) {
+    if (!wanted || !problem.equality_rows) return;
     held_ = std::make_unique<qp::HeldModes>(*problem.equality_rows, bounds);
     if (held_->empty()) held_.reset();
   }
@@ -140,7 +141,8 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
   inner_problem.preconditioner = inner_preconditioner;
   inner_problem.constraints = bounds;
 
-  HeldModeSteps held(problem, bounds);  // the modes friction alone holds, where SMALBE crawls
+  // The modes friction alone holds, balanced where SMALBE crawls (smalbe_m).
+  HeldModeSteps held(settings.balance_held_modes && settings.variant == SmalbeVariant::smalbe_m, problem, bounds);
 
   for (int outer = 0;; ++outer) {
     bool globally_done = false;
@@ -191,7 +193,7 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
     // Q x is current: the inner stop test computed it at this x.
     const double q_norm = Qx.norm();
     const double lagrangian = 0.5 * x.dot(g - shifted_b);  // L(x, nu, rho) = 1/2 x'Ax - x'(b - nu)
-    if (settings.balance_held_modes && held.undo(lagrangian, x, g, nu)) {
+    if (held.undo(lagrangian, x, g, nu)) {
       shifted_b = b - nu;
       gradient_is_current = true;
       continue;
@@ -222,10 +224,8 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
         best_q_norm = q_norm;
         ++result.counts.penalty_increases;
       }
-      if (settings.balance_held_modes) {
-        held.step(x, g - rho * Qx, rho * q_norm, promised, g, nu);
-        shifted_b = b - nu;
-      }
+      held.step(x, g - rho * Qx, rho * q_norm, promised, g, nu);
+      shifted_b = b - nu;
     } else if (q_norm <= eta) {
       eta *= settings.alpha;
     } else {
