@@ -166,8 +166,10 @@ DualSystem::Formulation DualSystem::free_rows_qp(const DualData& data, const Dua
   // Bodies float as a whole: their balance is left to SMALBE. Otherwise T leaves no
   // equality part, bounds only, and MPRGP is SMALBE without a multiplier to update.
   f.solver = T.remaining() > 0 ? QpSolver::smalbe : QpSolver::mprgp;
-  if (f.solver == QpSolver::smalbe)
+  if (f.solver == QpSolver::smalbe) {
     qp.range_projector = [&T](const Vec& v, Vec& y) { T.project_remaining_range(v, y); };
+    qp.equality_rows = &T.remaining_rows();  // the bodies' slides that friction alone holds (qp/held_modes.h)
+  }
   f.to_multipliers = [&T](const Vec& x, Vec& mu) { T.apply(x, mu); };
   f.equality_norm = [this](const Vec& mu) { return (coarse_->G() * mu).norm(); };  // G lambda - e = G mu
   f.iterate_equality_norm = [&T](const Vec& x) { return T.remaining_norm(x); };  // ||G T x|| = ||C x||

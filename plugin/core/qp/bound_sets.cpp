@@ -122,6 +122,17 @@ int BoundSet<kTwoSided>::off_bound_count(const Vec& x) const {
 }
 
 template <bool kTwoSided>
+double BoundSet<kTwoSided>::linear_minimum(const Vec& y, Vec& x) const {
+  if constexpr (!kTwoSided) return SetKind::linear_minimum(y, x);  // a half-line: unbounded along y < 0
+  double value = 0;
+  for (Eigen::Index i = block().first; i < block().first + block().size; ++i) {
+    x[i] = y[i] > 0 ? lower(i) : y[i] < 0 ? upper(i) : 0.5 * (lower(i) + upper(i));
+    value += y[i] * x[i];
+  }
+  return value;
+}
+
+template <bool kTwoSided>
 void BoundSet<kTwoSided>::write_bounds(Vec& lower, Vec& upper) const {
   lower.segment(block().first, block().size) = lower_;
   if constexpr (kTwoSided) upper.segment(block().first, block().size) = upper_;

@@ -39,6 +39,7 @@ class BoundSet final : public SetKind {
   void reduced_free_gradient(const Vec& x, const Vec& phi, double abar, Vec& phit) const override;
   double feasible_step(const Vec& x, const Vec& p, bool slide_on_circles) const override;
   int off_bound_count(const Vec& x) const override;
+  double linear_minimum(const Vec& y, Vec& x) const override;
   void write_bounds(Vec& lower, Vec& upper) const override;
 
  private:

@@ -78,6 +78,11 @@ class ConstraintSet {
   void add_curvature(const Vec& x, const Vec& g, const Vec& p, Vec& Ap) const;
   void precondition_curvature(const Vec& x, const Vec& g, double a_norm, Vec& v) const;
   bool holds_tangents(const Vec& x, const Vec& g, double a_norm) const;
+  /// Over the bounded blocks (box, disc) only, SetKind::linear_minimum: the point of each
+  /// minimizing y'x written into x there (x's other components untouched), the sum returned.
+  double linear_minimum(const Vec& y, Vec& x) const;
+  /// Over the bounded blocks, SetKind::add_linear_minimizer_change.
+  void add_linear_minimizer_change(const Vec& y, const Vec& dy, Vec& dx) const;
   /// Components above a finite lower bound: for the FETI dual, the contact set.
   int off_bound_count(const Vec& x) const;
 

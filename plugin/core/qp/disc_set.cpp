@@ -148,4 +148,25 @@ bool DiscSet::holds_tangents(const Vec& x, const Vec& g, double a_norm) const {
   return false;
 }
 
+double DiscSet::linear_minimum(const Vec& y, Vec& x) const {
+  double value = 0;
+  for (Eigen::Index i = block().first; i < block().first + block().size; i += 2) {
+    const Eigen::Vector2d yi = y.segment<2>(i), c = centre_.segment<2>(i - block().first);
+    const double norm = yi.norm();
+    x.segment<2>(i) = norm > 0 ? Eigen::Vector2d(c - (radius(i) / norm) * yi) : c;
+    value += yi.dot(x.segment<2>(i));
+  }
+  return value;
+}
+
+void DiscSet::add_linear_minimizer_change(const Vec& y, const Vec& dy, Vec& dx) const {
+  for (Eigen::Index i = block().first; i < block().first + block().size; i += 2) {
+    const Eigen::Vector2d yi = y.segment<2>(i), dyi = dy.segment<2>(i);
+    const double norm = yi.norm();
+    if (norm == 0) continue;
+    const Eigen::Vector2d across = dyi - (yi.dot(dyi) / (norm * norm)) * yi;
+    dx.segment<2>(i) -= (radius(i) / norm) * across;
+  }
+}
+
 }  // namespace ffeti::qp

@@ -53,6 +53,8 @@ class DiscSet final : public SetKind {
   void precondition_curvature(const Vec& x, const Vec& g, double a_norm, Vec& v) const override;
   /// Whether a pair on its circle is stiff (restrict_to_face holds its tangent).
   bool holds_tangents(const Vec& x, const Vec& g, double a_norm) const override;
+  double linear_minimum(const Vec& y, Vec& x) const override;
+  void add_linear_minimizer_change(const Vec& y, const Vec& dy, Vec& dx) const override;
 
  private:
   /// The first component of every pair not strictly inside its disc: on the circle (to a

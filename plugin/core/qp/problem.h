@@ -13,6 +13,8 @@
 #include "qp/constraint_set.h"
 #include "qp/qp_types.h"
 
+#include <Eigen/Dense>
+
 namespace ffeti::qp {
 
 /// The QP. Owns b and the bounds; the operators are handles whose captured objects must
@@ -28,6 +30,10 @@ struct Problem {
   /// x and nu (SmalbeResult::multiplier); with x alone the Lagrangian's gradient at the
   /// start is off by the whole of nu, and every solve costs as much as a cold one.
   Vec equality_multiplier;
+  /// C itself (k x n, full row rank) where the formulation holds it, optional: SMALBE then
+  /// balances the modes that only bounded blocks hold by their rigid-plastic model
+  /// (qp/held_modes.h). Not owned: it must outlive the Problem.
+  const Eigen::MatrixXd* equality_rows = nullptr;
   ConstraintSet constraints;       ///< one block per group of components (qp/constraint_set.h)
 
   Eigen::Index size() const { return b.size(); }

@@ -13,6 +13,7 @@
 #include "qp/qp_types.h"
 
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 namespace ffeti::qp {
@@ -84,6 +85,20 @@ class SetKind {
   virtual bool holds_tangents(const Vec& x, const Vec& g, double a_norm) const {
     (void)x, (void)g, (void)a_norm;
     return false;
+  }
+
+  /// Bounded kinds only (box, disc; qp/held_modes.h): writes into x's block the point of the
+  /// set minimizing y'x (a box: the bound against y_i's sign, the middle where y_i = 0; a
+  /// disc: c - g y/||y||, c where y = 0) and returns y'x there. Free and half-line blocks
+  /// are unbounded along some y and throw std::logic_error.
+  virtual double linear_minimum(const Vec& y, Vec& x) const {
+    (void)y, (void)x;
+    throw std::logic_error("linear_minimum: an unbounded block");
+  }
+  /// Adds to dx that point's change along dy: on a disc pair -g (I - yy'/||y||^2) dy / ||y||
+  /// (the point turns round its circle), 0 on flat faces.
+  virtual void add_linear_minimizer_change(const Vec& y, const Vec& dy, Vec& dx) const {
+    (void)y, (void)dy, (void)dx;
   }
 
   /// Components above a finite lower bound: for the FETI dual, contact rows in contact.

@@ -1,10 +1,81 @@
 #include "qp/smalbe.h"
 
+#include "qp/held_modes.h"
+
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 namespace ffeti {
+namespace {
+
+/// SMALBE's crawl on the held modes: their imbalance U'x kept within this cosine of its
+/// direction over an outer round ...
+constexpr double kCrawlCosine = 0.9;
+/// ... and above this share of its size.
+constexpr double kCrawlShrink = 0.5;
+
+/// The held modes' balance (qp/held_modes.h) as a multiplier step of SMALBE-M, safeguarded.
+/// Taken only where the plain updates crawl (above), and only where it moves the multiplier
+/// further than the plain update did. A step whose next round ends with a Lagrangian below
+/// what the plain update promised (L + rho/2 ||Qx||^2, which a gradient step on the dual
+/// function of step rho guarantees) is undone: x, g and nu back to the plain update's, and
+/// no step for as many rounds as steps were undone. (Every round a step: q = 0.5 on the 3D
+/// block of the onset table lost a round to an undone step in most Tresca solves; without
+/// the wait after one undone, SMALBE's plain crawl resumed for the rest of the solve.)
+class HeldModeSteps {
+ public:
+  /// Nothing to balance unless `wanted`, C given and some mode held by boxes and discs alone.
+  HeldModeSteps(bool wanted, const qp::Problem& problem, const qp::ConstraintSet& bounds) {
+    if (!wanted || !problem.equality_rows) return;
+    held_ = std::make_unique<qp::HeldModes>(*problem.equality_rows, bounds);
+    if (held_->empty()) held_.reset();
+  }
+
+  /// After an inner solve, before the multiplier update: true when the last step is undone
+  /// (x, g and nu restored; the round is then over).
+  bool undo(double lagrangian, Vec& x, Vec& g, Vec& nu) {
+    if (!pending_) return false;
+    pending_ = false;
+    if (lagrangian >= required_) return false;
+    x = x_, g = g_, nu = nu_;
+    quiet_rounds_ = ++undone_;
+    return true;
+  }
+
+  /// After the plain update (`promised`: the Lagrangian it guarantees; g the gradient of
+  /// L(x, nu, rho), g0 of L(x, nu, 0)): moves nu and g by the balance where SMALBE crawls.
+  void step(const Vec& x, const Vec& g0, double plain_step, double promised, Vec& g, Vec& nu) {
+    if (!held_) return;
+    const Vec imbalance = held_->basis().transpose() * x;
+    const bool crawling = last_imbalance_.size() == imbalance.size() &&
+                          imbalance.norm() > kCrawlShrink * last_imbalance_.norm() &&
+                          imbalance.dot(last_imbalance_) > kCrawlCosine * imbalance.norm() * last_imbalance_.norm();
+    last_imbalance_ = imbalance;
+    if (quiet_rounds_ > 0) {
+      --quiet_rounds_;
+      return;
+    }
+    Vec d;
+    if (!crawling || !held_->balance(g0, d) || !(d.norm() > plain_step)) return;
+    pending_ = true;
+    x_ = x, g_ = g, nu_ = nu;
+    required_ = promised;
+    nu += d;
+    g += d;
+  }
+
+ private:
+  std::unique_ptr<qp::HeldModes> held_;
+  Vec last_imbalance_;
+  int undone_ = 0, quiet_rounds_ = 0;
+  bool pending_ = false;
+  Vec x_, g_, nu_;  // the plain update's state, to go back to
+  double required_ = 0;
+};
+
+}  // namespace
 
 void SmalbeSettings::validate() const {
   if (!(rho_factor > 0)) throw std::invalid_argument("SMALBE rho_factor must be > 0");
@@ -70,6 +141,9 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
   inner_problem.preconditioner = inner_preconditioner;
   inner_problem.constraints = bounds;
 
+  // The modes friction alone holds, balanced where SMALBE crawls (smalbe_m).
+  HeldModeSteps held(settings.balance_held_modes && settings.variant == SmalbeVariant::smalbe_m, problem, bounds);
+
   for (int outer = 0;; ++outer) {
     bool globally_done = false;
     bool first_call = true;
@@ -119,6 +193,12 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
     // Q x is current: the inner stop test computed it at this x.
     const double q_norm = Qx.norm();
     const double lagrangian = 0.5 * x.dot(g - shifted_b);  // L(x, nu, rho) = 1/2 x'Ax - x'(b - nu)
+    if (held.undo(lagrangian, x, g, nu)) {
+      shifted_b = b - nu;
+      gradient_is_current = true;
+      continue;
+    }
+    const double promised = lagrangian + 0.5 * rho * q_norm * q_norm;
     nu += rho * Qx;          // multiplier update mu <- mu + rho C x
     shifted_b = b - nu;
     g += rho * Qx;           // g = A x - (b - nu) with the new nu
@@ -144,6 +224,8 @@ SmalbeResult smalbe(const qp::Problem& problem, const SmalbeSettings& settings, 
         best_q_norm = q_norm;
         ++result.counts.penalty_increases;
       }
+      held.step(x, g - rho * Qx, rho * q_norm, promised, g, nu);
+      shifted_b = b - nu;
     } else if (q_norm <= eta) {
       eta *= settings.alpha;
     } else {

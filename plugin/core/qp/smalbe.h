@@ -23,6 +23,9 @@ struct SmalbeSettings {
   double alpha = 0.1;         ///< seed_alg31: eta <- alpha eta when ||Qx|| <= eta
   double beta = 2.0;          ///< smalbe_m: M <- M / beta; seed_alg31: rho <- beta rho
   int stall_rounds = 10;      ///< smalbe_m: rho <- beta rho after this many rounds without ||Qx|| < 0.9 its best
+  /// smalbe_m: where the plain updates crawl, balance the modes that only bounded blocks hold
+  /// by their rigid-plastic model (Problem::equality_rows; qp/held_modes.h), safeguarded.
+  bool balance_held_modes = true;
   MprgpSettings inner{};      ///< of every inner MPRGP call (each gets what remains of the budget)
 
   void validate() const;
