@@ -182,15 +182,9 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
   bool rigid_given = false;
   const ContactSpec& first = problem.contact.front();
   if (first.search_distance) contact.search_distance = *first.search_distance;
-  if (first.normal) {
-    try {
-      contact.normal = contact_normal_named(*first.normal);
-    } catch (const InputError&) {
-      throw InputError(problem.path + ": contact[0].contact_normal: must be \"master\", \"slave\" or \"average\", got \"" +
-                       *first.normal + "\"");
-    }
-  }
-  contact.gap = first.gap.value_or(0.0);
+  // The list kind's own keys (one value per problem: checked below), stored by the kind.
+  if (!first.rigid())
+    for (const auto& [option, value] : first.options) units.at(static_cast<size_t>(first.kind))->read_option(option, value, contact);
   // Coulomb: a coefficient per entry, Tresca: a bound per entry (0, no friction, for an
   // entry without one); one law per problem.
   const bool coulomb = std::any_of(problem.contact.begin(), problem.contact.end(),
@@ -205,12 +199,9 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
   for (size_t i = 0; i < problem.contact.size(); ++i) {
     const ContactSpec& c = problem.contact[i];
     const std::string key = "contact[" + std::to_string(i) + "]";
-    if (c.search_distance != first.search_distance || c.gap != first.gap || c.normal != first.normal)
+    if (c.search_distance != first.search_distance || c.options != first.options)
       throw InputError(problem.path + ": " + key +
                        ": search_distance, gap and contact_normal must be those of contact[0] (one value per problem)");
-    if (c.normal && (c.rigid() || !solid || problem.components != 3))
-      throw InputError(problem.path + ": " + key +
-                       ".contact_normal: applies to node-to-face contact (3 components, a master group) only");
     const std::vector<NodeTag> slaves =
         from_group(problem, key + ".slave", [&] { return mesh.nodes(boundary, c.slave); });
     add_node_dofs(slaves, layouts, contact.slave_dofs);
@@ -237,7 +228,7 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
         const auto triangles = from_group(problem, where, [&] { return mesh.faces(c.master); });
         segments_total += static_cast<long>(triangles.size());
         segments_here += add_master_faces(triangles, mesh, layouts, faces, list);
-        if (contact.normal != ContactNormal::master) {  // the slave surface's normal from its faces (they get no rows)
+        if (contact.input_of<NodeToFaceInput>().normal != ContactNormal::master) {  // the slave surface's normal from its faces (they get no rows)
           const auto own = from_group(problem, key + ".slave", [&] { return mesh.faces(c.slave); });
           segments_total += static_cast<long>(own.size());
           segments_here += add_master_faces(own, mesh, layouts, faces, list);

@@ -1,6 +1,7 @@
 // Hard cases of floating bodies held only by contact (rows of docs/results/hard-cases.md,
 // recorded as hard_cases_test.cpp's): a body on a rigid obstacle and a chain of three.
 #include "feti/feti_problem.h"
+#include "constraints/contact/node_to_node.h"
 #include "hard_case_record.h"
 #include "membrane_model.h"
 
@@ -97,7 +98,7 @@ TEST(HardCases, ChainOfThreeFloatingBodiesHeldOnlyByContact) {
           if (b > 0 && std::abs(s.x[k] - b) < 1e-12) master.push_back(k);
         }
         contact.slave_dofs.push_back(slave);
-        contact.master_dofs.push_back(master);
+        contact.input_of<NodeToNodeInput>().masters.push_back(master);
         subs.push_back(std::move(s));
       }
   std::vector<double> load_of_body(bodies, 0.0);

@@ -254,7 +254,6 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
   for (const auto& unit : contact_discretizations()) unit->check_against(subdomains, ids, contact, dimension);
   for (const auto& unit : contact_discretizations()) unit->check_combination(contact);
   if (!(contact.search_distance > 0)) throw InputError("contactRadius: must be > 0");
-  if (!std::isfinite(contact.gap)) throw InputError("gap: must be finite");
   validate_contact_gaps(contact.gap_field, subdomains, global_ids);
   for (const auto& [name, value] : {std::pair<const char*, double>{"friction", contact.friction},
                                     std::pair<const char*, double>{"slipBound", contact.slip_bound}})

@@ -93,13 +93,14 @@ const ListInput* NodeToSegment::list_input() const {
 
 void NodeToSegment::read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
                               ContactInput& contact) const {
-  contact.master_segments = list_entries<4>(*list_input(), lists, ids);
+  contact.input_of<NodeToSegmentInput>().segments = list_entries<4>(*list_input(), lists, ids);
 }
 
 void NodeToSegment::check_against(const std::vector<SubdomainInput>& subdomains, const std::vector<size_t>& ids,
                                   const ContactInput& contact, int dimension) const {
-  if (any_entry(contact.master_segments)) require(kind(), Feature::rows, dimension, list_input()->argument);
-  check_entry_dofs(contact.master_segments, ids, subdomains, list_input()->argument);
+  const auto& segments = contact.input_of<NodeToSegmentInput>().segments;
+  if (any_entry(segments)) require(kind(), Feature::rows, dimension, list_input()->argument);
+  check_entry_dofs(segments, ids, subdomains, list_input()->argument);
 }
 
 RowAt NodeToSegmentGeometry::row_at(const NodeMotion& v, double t) const {
