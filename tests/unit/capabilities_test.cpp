@@ -8,6 +8,7 @@
 #include "constraints/contact/mortar.h"
 #include "constraints/contact/node_to_segment.h"
 #include "constraints/contact/node_to_node.h"
+#include "constraints/contact/obstacle.h"
 #include "constraints/input_checks.h"
 #include "base/errors.h"
 #include "membrane_model.h"
@@ -79,7 +80,7 @@ TEST(Capabilities, EachListKindRefusesTheOtherKindsInputForItsSlaves) {
                            "contactSlave (node to face, obstacle) or contactSlaveFaces (mortar), not both";
   EXPECT_EQ(refusal([&] { unit(ContactKind::mortar).check_combination(mortar); }), both);
   mortar.slave_dofs.clear();
-  mortar.obstacle = true;
+  mortar.input_of<ObstacleInput>().given = true;
   EXPECT_EQ(refusal([&] { unit(ContactKind::mortar).check_combination(mortar); }), both);
 
   const std::string combined = "contactMaster: node-to-node contact cannot be combined with contactSegments, "
@@ -91,7 +92,7 @@ TEST(Capabilities, EachListKindRefusesTheOtherKindsInputForItsSlaves) {
   for (const auto& add : std::vector<std::function<void(ContactInput&)>>{
            [](ContactInput& c) { c.input_of<NodeToSegmentInput>().segments = {{{0, 1, 2, 3}}, {}}; },
            [](ContactInput& c) { c.input_of<NodeToFaceInput>().faces = {{}, {{0, 1, 2, 3, 4, 5, 6, 7, 8}}}; },
-           [](ContactInput& c) { c.obstacle = true; }}) {
+           [](ContactInput& c) { c.input_of<ObstacleInput>().given = true; }}) {
     ContactInput with = pairs;
     add(with);
     EXPECT_EQ(refusal([&] { unit(ContactKind::node_to_node).check_combination(with); }), combined);
@@ -99,7 +100,7 @@ TEST(Capabilities, EachListKindRefusesTheOtherKindsInputForItsSlaves) {
   auto subdomains = membranes();
   pairs.slave_dofs.resize(subdomains.size());
   pairs.input_of<NodeToNodeInput>().masters.resize(subdomains.size());
-  pairs.obstacle = true;
+  pairs.input_of<ObstacleInput>().given = true;
   EXPECT_EQ(refusal([&] { validate_input(subdomains, pairs); }), combined);
 }
 

@@ -2,6 +2,7 @@
 #include "constraints/contact/node_to_node.h"
 #include "constraints/contact/node_to_segment.h"
 #include "base/errors.h"
+#include "constraints/contact/obstacle.h"
 #include "membrane_model.h"
 
 #include <Eigen/Dense>
@@ -181,9 +182,9 @@ TEST(Constraints, RigidObstacleRowUsesTheUnitNormal) {
   const std::vector<SubdomainInput> subs = {vector_nodes({{0.5, 0.1}, {1.0, 0.3}}, 0)};
   ContactInput contact;
   contact.slave_dofs = {{0, 1, 2, 3}};
-  contact.obstacle = true;
-  contact.obstacle_point = {0.0, -1.0};
-  contact.obstacle_normal = {0.0, 2.0};  // not unit: normalized
+  contact.input_of<ObstacleInput>().given = true;
+  contact.input_of<ObstacleInput>().point = {0.0, -1.0};
+  contact.input_of<ObstacleInput>().normal = {0.0, 2.0};  // not unit: normalized
   const Constraints c = build_constraints(subs, contact, FetiVariant::tfeti);
   ASSERT_EQ(c.rows(), 2);
   EXPECT_NEAR(c.rhs[0], 1.1, 1e-14);
@@ -196,7 +197,7 @@ TEST(Constraints, SlaveNodeNeedsBothComponents) {
   const std::vector<SubdomainInput> subs = {vector_nodes({{0.5, 0.1}}, 0)};
   ContactInput contact;
   contact.slave_dofs = {{0}};
-  contact.obstacle = true;
+  contact.input_of<ObstacleInput>().given = true;
   EXPECT_THROW(build_constraints(subs, contact, FetiVariant::tfeti), InputError);
 }
 

@@ -10,6 +10,7 @@
 #include "constraints/contact/mortar.h"
 #include "constraints/contact/node_to_segment.h"
 #include "constraints/contact/node_to_node.h"
+#include "constraints/contact/obstacle.h"
 #include "factor/cholmod_factor.h"
 #include "friction_scenes.h"
 #include "sens/sensitivity.h"
@@ -129,10 +130,10 @@ ContactInput obstacle(const std::vector<SubdomainInput>& upper, int axis, double
     contact.kind_parameters[ContactKind::ball] = {0.5, -radius, radius};
     return contact;
   }
-  contact.obstacle = true;
-  contact.obstacle_point = {0.5, 0.0, 0.0};
-  contact.obstacle_normal = {0, 0, 0};
-  contact.obstacle_normal[static_cast<size_t>(axis)] = 1;
+  contact.input_of<ObstacleInput>().given = true;
+  contact.input_of<ObstacleInput>().point = {0.5, 0.0, 0.0};
+  contact.input_of<ObstacleInput>().normal = {0, 0, 0};
+  contact.input_of<ObstacleInput>().normal[static_cast<size_t>(axis)] = 1;
   return contact;
 }
 

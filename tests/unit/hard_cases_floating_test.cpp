@@ -2,6 +2,7 @@
 // recorded as hard_cases_test.cpp's): a body on a rigid obstacle and a chain of three.
 #include "feti/feti_problem.h"
 #include "constraints/contact/node_to_node.h"
+#include "constraints/contact/obstacle.h"
 #include "hard_case_record.h"
 #include "membrane_model.h"
 
@@ -39,9 +40,9 @@ TEST(HardCases, BodyHeldOnlyByARigidObstacle) {
     contact.slave_dofs.push_back(slaves);
     subs.push_back(std::move(s));
   }
-  contact.obstacle = true;
-  contact.obstacle_point = {0.0, 0.0};
-  contact.obstacle_normal = {0.0, 1.0};
+  contact.input_of<ObstacleInput>().given = true;
+  contact.input_of<ObstacleInput>().point = {0.0, 0.0};
+  contact.input_of<ObstacleInput>().normal = {0.0, 1.0};
   const FetiProblem problem(subs, contact);
   DualSolveSettings settings;
   settings.tolerance = 1e-8;

@@ -3,6 +3,7 @@
 // promise that no sensitivity solve factorizes anything.
 #include "base/errors.h"
 #include "constraints/contact/node_to_segment.h"
+#include "constraints/contact/obstacle.h"
 #include "feti/feti_problem.h"
 #include "membrane_model.h"
 #include "sens/sensitivity.h"
@@ -348,9 +349,9 @@ TEST(Sensitivity, MovingObstacleSlavesMatchFiniteDifferences) {
   base[0].f.setConstant(-0.01);  // pressed onto the obstacle
   ContactInput contact;
   contact.slave_dofs = {scene.contact.slave_dofs[1]};
-  contact.obstacle = true;
-  contact.obstacle_point = {0.0, 0.99};
-  contact.obstacle_normal = {0.1, 1.0};
+  contact.input_of<ObstacleInput>().given = true;
+  contact.input_of<ObstacleInput>().point = {0.0, 0.99};
+  contact.input_of<ObstacleInput>().normal = {0.1, 1.0};
   const auto velocity = [&](int c) {
     std::vector<std::vector<double>> v(1);
     for (size_t k = 0; k < base[0].x.size(); ++k) v[0].push_back(c == 0 ? 0.0 : 0.3 * base[0].x[k]);

@@ -5,6 +5,7 @@
 #include "base/errors.h"
 #include "constraints/contact/node_to_face.h"
 #include "constraints/contact/mortar.h"
+#include "constraints/contact/obstacle.h"
 #include "constraints/input_checks.h"
 #include "feti/feti_problem.h"
 #include "solid_block.h"
@@ -110,9 +111,9 @@ ContactInput plane_below(const std::vector<SubdomainInput>& block) {
   ContactInput contact = node_to_face(block, {});
   contact.input_of<NodeToFaceInput>().faces.clear();
   contact.slave_dofs.resize(1);
-  contact.obstacle = true;
-  contact.obstacle_point = {0, 0, -0.001};
-  contact.obstacle_normal = {0, 0, 1};
+  contact.input_of<ObstacleInput>().given = true;
+  contact.input_of<ObstacleInput>().point = {0, 0, -0.001};
+  contact.input_of<ObstacleInput>().normal = {0, 0, 1};
   return contact;
 }
 
@@ -121,11 +122,11 @@ TEST(SurfaceChecks, PlaneWhoseNormalPointsIntoTheBodyIsRefused) {
   std::vector<SubdomainInput> block = {stacked_blocks()[0]};
   ContactInput contact = plane_below(block);
   EXPECT_EQ(refusal([&] { FetiProblem(block, contact, FetiSetupSettings{}); }), "");
-  contact.obstacle_normal = {0, 0, -1};
+  contact.input_of<ObstacleInput>().normal = {0, 0, -1};
   const std::string message = refusal([&] { FetiProblem(block, contact, FetiSetupSettings{}); });
   EXPECT_NE(message.find("obstacle: its normal points into the bodies"), std::string::npos) << message;
   // Every node of the block slave (a closed surface): the outward pushes cancel, no verdict.
-  contact.obstacle_normal = {0, 0, 1};
+  contact.input_of<ObstacleInput>().normal = {0, 0, 1};
   contact.slave_dofs[0].clear();
   for (int k = 0; k < static_cast<int>(block[0].K.rows()); ++k) contact.slave_dofs[0].push_back(k);
   EXPECT_EQ(refusal([&] { FetiProblem(block, contact, FetiSetupSettings{}); }).find("normal points into"),
@@ -158,7 +159,7 @@ TEST(SurfaceChecks, AMassMatrixGivesNoVerdictAndALumpedMassKeepsTheStiffnessOne)
   stepped[0].K = SparseMatrix(K + diagonal);
   EXPECT_EQ(refusal([&] { FetiProblem(mass, contact, FetiSetupSettings{}); }), "");
   EXPECT_EQ(refusal([&] { FetiProblem(stepped, contact, FetiSetupSettings{}); }), "");
-  contact.obstacle_normal = {0, 0, -1};
+  contact.input_of<ObstacleInput>().normal = {0, 0, -1};
   EXPECT_EQ(refusal([&] { FetiProblem(mass, contact, FetiSetupSettings{}); }).find("normal points into"), std::string::npos);
   const std::string message = refusal([&] { FetiProblem(stepped, contact, FetiSetupSettings{}); });
   EXPECT_NE(message.find("obstacle: its normal points into the bodies"), std::string::npos) << message;

@@ -67,10 +67,11 @@ struct ContactInput {
   /// Shared: the slave dofs of every kind but mortar, per subdomain (may be empty).
   std::vector<std::vector<int>> slave_dofs;
 
-  // ---- each list kind's own input: its unit's struct (NodeToNodeInput, NodeToSegmentInput,
-  // NodeToFaceInput, MortarInput, ...: its per-subdomain list, e.g. node to face's master
-  // triangles, and its scalar arguments), stored by its read_list and read_option, checked by
-  // its check_against; a new kind declares its own and adds nothing here ----
+  // ---- each list kind's own input, and the plane's: its unit's struct (NodeToNodeInput,
+  // NodeToSegmentInput, NodeToFaceInput, MortarInput, ObstacleInput, ...: its per-subdomain
+  // list, e.g. node to face's master triangles, and its scalar arguments), stored by its
+  // read_list, read_option or read_input, checked by its check_against; a new kind declares
+  // its own and adds nothing here ----
   /// `Input` to fill in: made at first use with its unit's defaults.
   template <class Input>
   Input& input_of() {
@@ -91,12 +92,8 @@ struct ContactInput {
   double search_distance = 1e300;
 
   // ---- the kinds that own an array of parameters (KindInput) ----
-  /// The plane obstacle (obstacle=, read by contact/obstacle.cpp): a line (a plane in 3D)
-  /// through obstacle_point with outward normal obstacle_normal (pointing away from the
-  /// obstacle): -n.u_slave <= n.(x_slave - point).
-  bool obstacle = false;
-  std::array<double, 3> obstacle_point{0, 0, 0}, obstacle_normal{0, 1, 0};  ///< z entries: 3D only
-  /// The other kinds that own their input (the ball, the cylinder, ...): per kind the entries
+  /// The kinds that own their input (the ball, the cylinder, ...; the plane keeps its own
+  /// ObstacleInput in list_inputs): per kind the entries
   /// of its fetiSetup argument (or of its problem-file key's fields), read and checked by its
   /// unit. A kind given here takes the slave nodes of contactSlave.
   std::map<ContactKind, std::vector<double>> kind_parameters;

@@ -1,5 +1,6 @@
 #include "constraints/contact/ball.h"
 
+#include "constraints/contact/obstacle.h"
 #include "constraints/constraint_rows.h"
 
 #include "base/errors.h"
@@ -31,7 +32,7 @@ const KindInput* Ball::input() const {
 }
 
 void Ball::read_input(const std::vector<double>& values, int dimension, ContactInput& contact) const {
-  if (contact.obstacle) throw InputError("obstacle, obstacleBall: give one obstacle, a plane or a ball");
+  if (contact.input_of<ObstacleInput>().given) throw InputError("obstacle, obstacleBall: give one obstacle, a plane or a ball");
   const size_t n = values.size();
   if (n != 3 && n != 4)
     throw InputError(std::string("obstacleBall: needs ") + input()->layout + ", got " + std::to_string(n) + " entries");

@@ -110,6 +110,10 @@ class ContactDiscretization {
   /// needs <layout>" for a list that is not whole entries.
   virtual void read_list(const std::vector<std::vector<int>>& /*lists*/, const std::vector<int>& /*ids*/,
                          ContactInput& /*contact*/) const {}
+  /// Whether ffeti-solve reads the slave group of a contact entry into its list too, as it
+  /// reads the master group (node to face with contactNormal slave or average: the slave
+  /// surface's faces give the rows' normal, and get no rows).
+  virtual bool lists_slave_group(const ContactInput& /*contact*/) const { return false; }
   /// Stores the value of list_input()->options[option] (a word's position) into its own input.
   virtual void read_option(size_t /*option*/, double /*value*/, ContactInput& /*contact*/) const {}
   /// Checks the entries given to input()'s argument in a problem of `dimension` (2 or 3) and

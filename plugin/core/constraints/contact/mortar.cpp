@@ -6,6 +6,7 @@
 #include "constraints/contact/face_grid.h"
 #include "constraints/contact/mortar_integration.h"
 #include "constraints/contact/node_to_face.h"
+#include "constraints/contact/obstacle.h"
 
 #include "base/errors.h"
 
@@ -108,7 +109,7 @@ void Mortar::check_against(const std::vector<SubdomainInput>& subdomains, const 
 
 void Mortar::check_combination(const ContactInput& contact) const {
   if (list_given(contact) &&
-      (any_entry(contact.slave_dofs) || contact.obstacle || contact.kind_parameters.count(ContactKind::ball)))
+      (any_entry(contact.slave_dofs) || contact.input_of<ObstacleInput>().given || contact.kind_parameters.count(ContactKind::ball)))
     throw InputError("contactSlaveFaces: the slave nodes of mortar contact are the corners of these faces; give "
                      "contactSlave (node to face, obstacle) or contactSlaveFaces (mortar), not both");
 }

@@ -102,6 +102,10 @@ class NodeToFace final : public ContactDiscretization {
                  ContactInput& contact) const override;
   /// contactNormal= (its word's position in ContactNormal's order).
   void read_option(size_t option, double value, ContactInput& contact) const override;
+  /// With contactNormal slave or average (the slave surface's faces give the normal).
+  bool lists_slave_group(const ContactInput& contact) const override {
+    return contact.input_of<NodeToFaceInput>().normal != ContactNormal::master;
+  }
   void add_faces(const std::vector<SubdomainInput>& local, const std::vector<int>& global_ids,
                  const ContactInput& local_contact, std::vector<FaceRecord>& faces) const override {
     add_face_records(local_contact.input_of<NodeToFaceInput>().faces, false, local, global_ids, faces);

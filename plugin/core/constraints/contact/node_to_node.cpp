@@ -1,5 +1,6 @@
 #include "constraints/contact/node_to_node.h"
 
+#include "constraints/contact/obstacle.h"
 #include "constraints/constraint_rows.h"
 #include "constraints/input_checks.h"
 
@@ -79,7 +80,7 @@ std::vector<RowAt> NodeToNodeGeometry::slip_rows() const {
 void NodeToNode::check_combination(const ContactInput& contact) const {
   if (list_given(contact) &&
       (ffeti::list_given(ContactKind::node_to_segment, contact) || ffeti::list_given(ContactKind::node_to_face, contact) ||
-       contact.obstacle || contact.kind_parameters.count(ContactKind::ball)))
+       contact.input_of<ObstacleInput>().given || contact.kind_parameters.count(ContactKind::ball)))
     throw InputError("contactMaster: node-to-node contact cannot be combined with contactSegments, contactFaces or "
                      "obstacle in one problem (the slave dofs would belong to both)");
 }
