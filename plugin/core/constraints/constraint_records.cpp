@@ -173,7 +173,7 @@ std::vector<double> pack(const std::vector<DofRecord>& records) {
   for (const DofRecord& r : records) {
     const double flags = (r.fixed ? 1 : 0) + (r.slave ? 2 : 0) + (r.master ? 4 : 0);
     packed.insert(packed.end(), {double(r.subdomain), double(r.dof), double(r.body), double(r.component),
-                                 r.x, r.y, r.z, flags, r.value, r.gap, r.friction});
+                                 r.x, r.y, r.z, flags, r.value, r.gap, r.law_value});
   }
   return packed;
 }

@@ -20,7 +20,7 @@ struct DofRecord {
   bool fixed, slave, master;
   double value;  // Dirichlet value where fixed
   double gap;    // ContactInput::gap_field's entry (0 without one)
-  double friction;  // Coulomb's coefficient at this dof (friction_field's entry, else friction), or Tresca's bound (slip_bound_field, slip_bound)
+  double law_value;  // the friction law's value at this dof: Coulomb's mu (friction_field's entry, else friction) or Tresca's g (slip_bound_field, slip_bound)
 };
 
 /// A master segment of the node-to-segment contact: its dofs (a_x, a_y, b_x, b_y) and ends.

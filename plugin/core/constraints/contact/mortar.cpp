@@ -328,7 +328,7 @@ void Mortar::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
         std::move(pairs[j]), snap, std::move(jump), pending_row.normal);
     // Divided by int phi_j, so that the multiplier is a force like the other rows'.
     Row row{{}, pending_row.gap / pending_row.weight + node.x_dof->gap, RowKind::contact, false, geometry,
-            -1, node.x_dof->friction};
+            -1, node.x_dof->law_value};
     for (const auto& [dof, coefficient] : pending_row.coefficients)
       if (coefficient != 0) row.entries.push_back({dof.first, dof.second, coefficient / pending_row.weight});
     rows.push_back(std::move(row));

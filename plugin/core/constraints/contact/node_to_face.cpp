@@ -268,7 +268,7 @@ void NodeToFace::add_rows(const ContactRecords& in, std::vector<Row>& rows) cons
                                {node.z_dof->subdomain, node.z_dof->dof}}},
         s, face_dofs, face->corners, on_bent_edge(s, *face, grid), std::move(fan));
     const LinearizedFaceRow linear = geometry->linearized({}, 0, true);
-    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction, beyond_reach};
+    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->law_value, beyond_reach};
     if (beyond_reach && row.rhs < 0) continue;  // behind the face from the start: not a contact it missed
     const DofRecord* slave[3] = {node.x_dof, node.y_dof, node.z_dof};
     for (size_t i = 0; i < 3; ++i)

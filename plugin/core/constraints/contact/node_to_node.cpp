@@ -108,7 +108,7 @@ void NodeToNode::add_rows(const ContactRecords& in, std::vector<Row>& rows) cons
                         Point3{slave->x, slave->y, slave->z}, gap, in.contact.three_d, slave->component, slave_node,
                         master_node),
                     -1,
-                    slave->friction});
+                    slave->law_value});
   }
 }
 

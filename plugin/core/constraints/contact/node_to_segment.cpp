@@ -141,7 +141,7 @@ void NodeToSegment::add_rows(const ContactRecords& in, std::vector<Row>& rows) c
         std::array<DofRef, 2>{{{node.x_dof->subdomain, node.x_dof->dof}, {node.y_dof->subdomain, node.y_dof->dof}}},
         master, Point{sx, sy}, Point{best->ax, best->ay}, Point{best->bx, best->by});
     const LinearizedRow linear = node_to_segment_row(geometry->s, geometry->a, geometry->b);
-    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction, beyond_reach};
+    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->law_value, beyond_reach};
     if (beyond_reach && row.rhs < 0) continue;  // behind the segment from the start
     const std::vector<DofRef> dofs = geometry->dofs();
     for (size_t k = 0; k < 6; ++k)

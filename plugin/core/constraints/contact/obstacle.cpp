@@ -87,7 +87,7 @@ void Obstacle::add_rows(const ContactRecords& in, std::vector<Row>& rows) const 
     }
     const auto geometry = std::make_shared<const ObstacleGeometry>(
         dofs, Point3{node.x_dof->x, node.x_dof->y, node.x_dof->z}, point, n, contact.three_d);
-    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction};
+    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->law_value};
     for (size_t k = 0; k < (contact.three_d ? 3u : 2u); ++k)
       if (linear.coefficients[k] != 0) row.entries.push_back({slave[k]->subdomain, slave[k]->dof, linear.coefficients[k]});
     rows.push_back(std::move(row));
