@@ -9,7 +9,6 @@
 #include "base/errors.h"
 #include "base/parallel_for.h"
 #include "constraints/contact/contact_discretization.h"
-#include "constraints/contact/node_to_face.h"
 #include "parallel/mpi_communicator.h"
 #include "parallel/ownership.h"
 
@@ -47,13 +46,14 @@ class FetiSetup : public WithNamedArguments {
 
  private:
   // Named parameters by position in name_param: these, then the per-subdomain lists of the
-  // contact kinds that own one (contactMaster=, contactSegments=, ...: kinds_with_lists()),
-  // the arguments of the kinds that own their input (obstacle=, obstacleBall=, ...:
-  // kinds_with_input()), each in the registry's order (constraints/contact/registry.cpp),
-  // then the set-up options.
-  enum Named { kDirichlet, kDirichletValues, kSlave, kGap, kComponent, kComm, kRadius, kContactGap, kFriction,
-               kSlipBound, kFrictionField, kZ, kSlipBoundField, kStiffnessOf, kReleaseK, kNormal, kKindLists };
-  static size_t kind_arguments_start() { return kKindLists + kinds_with_lists().size(); }
+  // contact kinds that own one (contactMaster=, contactSegments=, ...: kinds_with_lists()) and
+  // their scalar arguments (gap=, contactNormal=: list_options()), the arguments of the kinds
+  // that own their input (obstacle=, obstacleBall=, ...: kinds_with_input()), each in the
+  // registry's order (constraints/contact/registry.cpp), then the set-up options.
+  enum Named { kDirichlet, kDirichletValues, kSlave, kComponent, kComm, kRadius, kContactGap, kFriction,
+               kSlipBound, kFrictionField, kZ, kSlipBoundField, kStiffnessOf, kReleaseK, kKindLists };
+  static size_t list_options_start() { return kKindLists + kinds_with_lists().size(); }
+  static size_t kind_arguments_start() { return list_options_start() + list_options().size(); }
   static size_t options_start() { return kind_arguments_start() + kinds_with_input().size(); }
 
   long setup(Stack stack) const {
@@ -200,14 +200,14 @@ class FetiSetup : public WithNamedArguments {
     }
   }
 
-  /// contactSlave=, gap=, the lists of the kinds that own one (kinds_with_lists()), the
-  /// arguments of the kinds that own their input (kinds_with_input()), contactRadius=,
-  /// contactNormal=, contactGap=, friction=, slipBound=, frictionField=, slipBoundField=.
+  /// contactSlave=, the lists of the kinds that own one (kinds_with_lists()), the arguments of
+  /// the kinds that own their input (kinds_with_input()), the list kinds' scalar arguments
+  /// (gap=, contactNormal=: list_options()), contactRadius=, contactGap=, friction=,
+  /// slipBound=, frictionField=, slipBoundField=.
   ContactInput contact_input(Stack stack, long count, const std::vector<int>& ids, const std::vector<long>& dofs) const {
     ContactInput contact;
     contact.slave_dofs = per_subdomain(optional_pointer<KN<KN<long>>>(nargs[kSlave], stack), count, ids,
                                                 dofs, "contactSlave");
-    contact.gap = optional_real(nargs[kGap], stack, 0.0);
     // Each kind that owns a per-subdomain list cuts it into its entries and stores them.
     const auto lists = kinds_with_lists();
     for (size_t i = 0; i < lists.size(); ++i) {
@@ -220,8 +220,23 @@ class FetiSetup : public WithNamedArguments {
     for (size_t i = 0; i < kinds.size(); ++i)
       if (const auto* values = optional_pointer<KN<double>>(nargs[kind_arguments_start() + i], stack))
         kinds[i]->read_input(to_std(*values), nargs[kZ] ? 3 : 2, contact);
+    // Each list kind's scalar arguments, a word read as its position among the option's words.
+    const auto options = list_options();
+    for (size_t i = 0; i < options.size(); ++i) {
+      const Expression given = nargs[list_options_start() + i];
+      if (!given) continue;
+      const ListOption& option = *options[i].option;
+      double value = 0;
+      if (option.words.empty()) {
+        value = optional_real(given, stack, 0.0);
+      } else {
+        const std::string word = optional_string(given, stack, "");
+        value = word_position(option, word);
+        if (value < 0) throw InputError(std::string(option.argument) + ": " + word_refusal(option, word));
+      }
+      options[i].kind->read_option(options[i].index, value, contact);
+    }
     contact.search_distance = optional_real(nargs[kRadius], stack, contact.search_distance);
-    if (nargs[kNormal]) contact.normal = contact_normal_named(optional_string(nargs[kNormal], stack, ""));
     // Not given: -1, no friction rows (a given negative value is refused by the core).
     contact.friction = optional_real(nargs[kFriction], stack, -1.0);
     contact.slip_bound = optional_real(nargs[kSlipBound], stack, -1.0);
@@ -259,15 +274,16 @@ NamedParameters FetiSetup::name_param = named_parameters(
     [] {
       NamedParameters names{
           {"dirichlet", &typeid(KN<KN<long>>*)},         {"dirichletValues", &typeid(KN<KN<double>>*)},
-          {"contactSlave", &typeid(KN<KN<long>>*)},      {"gap", &typeid(double)},
-          {"component", &typeid(KN<KN<long>>*)},         {"comm", &typeid(pcommworld)},
-          {"contactRadius", &typeid(double)},            {"contactGap", &typeid(KN<KN<double>>*)},
-          {"friction", &typeid(double)},                 {"slipBound", &typeid(double)},
-          {"frictionField", &typeid(KN<KN<double>>*)},   {"Z", &typeid(KN<KN<double>>*)},
-          {"slipBoundField", &typeid(KN<KN<double>>*)},  {"stiffnessOf", &typeid(KN<long>*)},
-          {"releaseK", &typeid(bool)},                   {"contactNormal", &typeid(std::string*)}};
+          {"contactSlave", &typeid(KN<KN<long>>*)},      {"component", &typeid(KN<KN<long>>*)},
+          {"comm", &typeid(pcommworld)},                 {"contactRadius", &typeid(double)},
+          {"contactGap", &typeid(KN<KN<double>>*)},      {"friction", &typeid(double)},
+          {"slipBound", &typeid(double)},                {"frictionField", &typeid(KN<KN<double>>*)},
+          {"Z", &typeid(KN<KN<double>>*)},               {"slipBoundField", &typeid(KN<KN<double>>*)},
+          {"stiffnessOf", &typeid(KN<long>*)},           {"releaseK", &typeid(bool)}};
       for (const ContactDiscretization* kind : kinds_with_lists())
         names.push_back({kind->list_input()->argument, &typeid(KN<KN<long>>*)});
+      for (const KindOption& kind : list_options())
+        names.push_back({kind.option->argument, kind.option->words.empty() ? &typeid(double) : &typeid(std::string*)});
       for (const ContactDiscretization* kind : kinds_with_input())
         names.push_back({kind->input()->argument, &typeid(KN<double>*)});
       return names;

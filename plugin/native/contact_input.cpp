@@ -8,7 +8,6 @@
 
 #include "base/errors.h"
 #include "constraints/contact/contact_discretization.h"
-#include "constraints/contact/node_to_face.h"
 
 #include <algorithm>
 #include <cmath>
@@ -182,15 +181,9 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
   bool rigid_given = false;
   const ContactSpec& first = problem.contact.front();
   if (first.search_distance) contact.search_distance = *first.search_distance;
-  if (first.normal) {
-    try {
-      contact.normal = contact_normal_named(*first.normal);
-    } catch (const InputError&) {
-      throw InputError(problem.path + ": contact[0].contact_normal: must be \"master\", \"slave\" or \"average\", got \"" +
-                       *first.normal + "\"");
-    }
-  }
-  contact.gap = first.gap.value_or(0.0);
+  // The list kind's own keys (one value per problem: checked below), stored by the kind.
+  if (!first.rigid())
+    for (const auto& [option, value] : first.options) units.at(static_cast<size_t>(first.kind))->read_option(option, value, contact);
   // Coulomb: a coefficient per entry, Tresca: a bound per entry (0, no friction, for an
   // entry without one); one law per problem.
   const bool coulomb = std::any_of(problem.contact.begin(), problem.contact.end(),
@@ -205,12 +198,9 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
   for (size_t i = 0; i < problem.contact.size(); ++i) {
     const ContactSpec& c = problem.contact[i];
     const std::string key = "contact[" + std::to_string(i) + "]";
-    if (c.search_distance != first.search_distance || c.gap != first.gap || c.normal != first.normal)
+    if (c.search_distance != first.search_distance || c.options != first.options)
       throw InputError(problem.path + ": " + key +
                        ": search_distance, gap and contact_normal must be those of contact[0] (one value per problem)");
-    if (c.normal && (c.rigid() || !solid || problem.components != 3))
-      throw InputError(problem.path + ": " + key +
-                       ".contact_normal: applies to node-to-face contact (3 components, a master group) only");
     const std::vector<NodeTag> slaves =
         from_group(problem, key + ".slave", [&] { return mesh.nodes(boundary, c.slave); });
     add_node_dofs(slaves, layouts, contact.slave_dofs);
@@ -227,26 +217,26 @@ ContactInput build_contact(const ProblemFile& problem, const GmshMesh& mesh, con
                                        : values,
                       problem.dimension(), contact);
     } else {  // a list kind's key: its entries read from the mesh group it names
-      const ListInput& spec = *units.at(static_cast<size_t>(c.kind))->list_input();
+      const ContactDiscretization& unit = *units.at(static_cast<size_t>(c.kind));
+      const ListInput& spec = *unit.list_input();
       std::vector<std::vector<int>>& list = lists[c.kind];
       list.resize(n);
-      const std::string where = key + "." + spec.file_key;
-      if (spec.file_entries == MeshEntries::node_dofs) {
-        add_node_dofs(from_group(problem, where, [&] { return mesh.nodes(boundary, c.master); }), layouts, list);
-      } else if (spec.file_entries == MeshEntries::triangles) {
-        const auto triangles = from_group(problem, where, [&] { return mesh.faces(c.master); });
-        segments_total += static_cast<long>(triangles.size());
-        segments_here += add_master_faces(triangles, mesh, layouts, faces, list);
-        if (contact.normal != ContactNormal::master) {  // the slave surface's normal from its faces (they get no rows)
-          const auto own = from_group(problem, key + ".slave", [&] { return mesh.faces(c.slave); });
-          segments_total += static_cast<long>(own.size());
-          segments_here += add_master_faces(own, mesh, layouts, faces, list);
+      // The entries of a group (its physical tag, `where` in messages) as the kind's list takes them.
+      const auto add_group = [&](int group, const std::string& where) {
+        if (spec.file_entries == MeshEntries::node_dofs) {
+          add_node_dofs(from_group(problem, where, [&] { return mesh.nodes(boundary, group); }), layouts, list);
+        } else if (spec.file_entries == MeshEntries::triangles) {
+          const auto triangles = from_group(problem, where, [&] { return mesh.faces(group); });
+          segments_total += static_cast<long>(triangles.size());
+          segments_here += add_master_faces(triangles, mesh, layouts, faces, list);
+        } else {
+          const auto segments = from_group(problem, where, [&] { return mesh.segments(group); });
+          segments_total += static_cast<long>(segments.size());
+          segments_here += add_master_segments(segments, mesh, layouts, edges, list);
         }
-      } else {
-        const auto segments = from_group(problem, where, [&] { return mesh.segments(c.master); });
-        segments_total += static_cast<long>(segments.size());
-        segments_here += add_master_segments(segments, mesh, layouts, edges, list);
-      }
+      };
+      add_group(c.master, key + "." + spec.file_key);
+      if (unit.lists_slave_group(contact)) add_group(c.slave, key + ".slave");
     }
   }
   std::vector<int> ids;

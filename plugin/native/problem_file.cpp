@@ -269,7 +269,8 @@ ContactSpec read_contact(ObjectReader& r, int components) {
   } else {
     c.master = r.required<int>(master_key);
   }
-  // Each option only where it means something: node to segment or face searches, node to node has a gap.
+  // Each option only where it means something: node to segment or face searches, node to node has a gap,
+  // node to face a contact_normal.
   const bool projected = !c.rigid() && list_kind->searched_argument();
   if (r.has("search_distance")) {
     if (!projected)
@@ -278,10 +279,18 @@ ContactSpec read_contact(ObjectReader& r, int components) {
     c.search_distance = r.required<double>("search_distance");
     if (!(*c.search_distance > 0)) r.fail(r.path("search_distance"), "must be > 0");
   }
-  if (r.has("contact_normal")) c.normal = r.required<std::string>("contact_normal");  // checked by build_contact
-  if (r.has("gap")) {
-    if (components != 1) r.fail(r.path("gap"), "applies to node-to-node contact (1 component) only");
-    c.gap = r.required<double>("gap");
+  for (const KindOption& given : list_options()) {  // the list kinds' own keys, read through the registry
+    const ListOption& option = *given.option;
+    if (!r.has(option.file_key)) continue;
+    if (c.rigid() || given.kind != list_kind) r.fail(r.path(option.file_key), std::string("applies to ") + option.applies + " only");
+    if (option.words.empty()) {
+      c.options[given.index] = r.required<double>(option.file_key);
+      continue;
+    }
+    const std::string word = r.required<std::string>(option.file_key);
+    const int at = word_position(option, word);
+    if (at < 0) r.fail(r.path(option.file_key), word_refusal(option, word));
+    c.options[given.index] = at;
   }
   for (const auto& [key, law] : {std::pair<const char*, std::optional<double>*>{"friction", &c.friction},
                                  std::pair<const char*, std::optional<double>*>{"slip_bound", &c.slip_bound}}) {

@@ -58,8 +58,10 @@ struct ContactSpec {
   int master = 0;
   ContactKind kind = ContactKind::node_to_segment;  ///< the kind the entry makes
   std::optional<double> search_distance;  ///< node to segment or face only (default: no limit)
-  std::optional<double> gap;              ///< node to node (scalar fields) only (default 0)
-  std::optional<std::string> normal;      ///< node to face only, "contact_normal" (default "master")
+  /// The given scalar keys of the entry's list kind (ListInput::options: node to node's "gap",
+  /// node to face's "contact_normal"), by their position among its options; a word as its
+  /// position among the option's words. One value per problem.
+  std::map<size_t, double> options;
   /// A kind that owns its input, given by its key (KindInput::file_key, read through
   /// the registry: constraints/contact/contact_discretization.h): its entries, as its fetiSetup
   /// argument takes them (none where line_curve gives them). At most one per entry.

@@ -4,6 +4,11 @@
 #include "constraints/capabilities.h"
 #include "constraints/constraints.h"
 #include "constraints/contact/contact_discretization.h"
+#include "constraints/contact/node_to_face.h"
+#include "constraints/contact/mortar.h"
+#include "constraints/contact/node_to_segment.h"
+#include "constraints/contact/node_to_node.h"
+#include "constraints/contact/obstacle.h"
 #include "constraints/input_checks.h"
 #include "base/errors.h"
 #include "membrane_model.h"
@@ -57,7 +62,7 @@ TEST(Capabilities, TheInputChecksRefuseAKindInADimensionItLacks) {
   auto subdomains = membranes();
   for (SubdomainInput& s : subdomains) s.z.assign(s.x.size(), 0.0);
   ContactInput contact;
-  contact.master_segments = {{{0, 1, 2, 3}}, {}};
+  contact.input_of<NodeToSegmentInput>().segments = {{{0, 1, 2, 3}}, {}};
   EXPECT_EQ(refusal([&] { validate_input(subdomains, contact); }),
             "contactSegments: " + unsupported(ContactKind::node_to_segment, Feature::rows, 3));
 }
@@ -68,34 +73,34 @@ TEST(Capabilities, EachListKindRefusesTheOtherKindsInputForItsSlaves) {
     return *contact_discretizations()[static_cast<size_t>(kind)];
   };
   ContactInput mortar;
-  mortar.slave_faces = {{{0, 1, 2, 3, 4, 5, 6, 7, 8}}};
+  mortar.input_of<MortarInput>().slave_faces = {{{0, 1, 2, 3, 4, 5, 6, 7, 8}}};
   EXPECT_NO_THROW(unit(ContactKind::mortar).check_combination(mortar));
   mortar.slave_dofs = {{0}};
   const std::string both = "contactSlaveFaces: the slave nodes of mortar contact are the corners of these faces; give "
                            "contactSlave (node to face, obstacle) or contactSlaveFaces (mortar), not both";
   EXPECT_EQ(refusal([&] { unit(ContactKind::mortar).check_combination(mortar); }), both);
   mortar.slave_dofs.clear();
-  mortar.obstacle = true;
+  mortar.input_of<ObstacleInput>().given = true;
   EXPECT_EQ(refusal([&] { unit(ContactKind::mortar).check_combination(mortar); }), both);
 
   const std::string combined = "contactMaster: node-to-node contact cannot be combined with contactSegments, "
                                "contactFaces or obstacle in one problem (the slave dofs would belong to both)";
   ContactInput pairs;
   pairs.slave_dofs = {{0}, {}};
-  pairs.master_dofs = {{}, {0}};
+  pairs.input_of<NodeToNodeInput>().masters = {{}, {0}};
   EXPECT_NO_THROW(unit(ContactKind::node_to_node).check_combination(pairs));
   for (const auto& add : std::vector<std::function<void(ContactInput&)>>{
-           [](ContactInput& c) { c.master_segments = {{{0, 1, 2, 3}}, {}}; },
-           [](ContactInput& c) { c.master_faces = {{}, {{0, 1, 2, 3, 4, 5, 6, 7, 8}}}; },
-           [](ContactInput& c) { c.obstacle = true; }}) {
+           [](ContactInput& c) { c.input_of<NodeToSegmentInput>().segments = {{{0, 1, 2, 3}}, {}}; },
+           [](ContactInput& c) { c.input_of<NodeToFaceInput>().faces = {{}, {{0, 1, 2, 3, 4, 5, 6, 7, 8}}}; },
+           [](ContactInput& c) { c.input_of<ObstacleInput>().given = true; }}) {
     ContactInput with = pairs;
     add(with);
     EXPECT_EQ(refusal([&] { unit(ContactKind::node_to_node).check_combination(with); }), combined);
   }
   auto subdomains = membranes();
   pairs.slave_dofs.resize(subdomains.size());
-  pairs.master_dofs.resize(subdomains.size());
-  pairs.obstacle = true;
+  pairs.input_of<NodeToNodeInput>().masters.resize(subdomains.size());
+  pairs.input_of<ObstacleInput>().given = true;
   EXPECT_EQ(refusal([&] { validate_input(subdomains, pairs); }), combined);
 }
 
@@ -128,14 +133,14 @@ TEST(Capabilities, EachListKindKnowsAndChecksItsOwnList) {
   };
   ContactInput contact;
   EXPECT_TRUE(given(contact).empty());
-  contact.master_dofs = {{}, {0}};
-  contact.master_segments = {{{0, 1, 2, 3}}, {}};
+  contact.input_of<NodeToNodeInput>().masters = {{}, {0}};
+  contact.input_of<NodeToSegmentInput>().segments = {{{0, 1, 2, 3}}, {}};
   EXPECT_EQ(given(contact), (std::vector<std::string>{"contactSegments", "contactMaster"}));
   auto subdomains = membranes();
   ContactInput bad;
   bad.slave_dofs.resize(subdomains.size());
-  bad.master_dofs.resize(subdomains.size());
-  bad.master_dofs[1] = {100000};
+  bad.input_of<NodeToNodeInput>().masters.resize(subdomains.size());
+  bad.input_of<NodeToNodeInput>().masters[1] = {100000};
   std::vector<size_t> ids(subdomains.size());
   for (size_t k = 0; k < ids.size(); ++k) ids[k] = k;
   const auto& pairs = *contact_discretizations()[static_cast<size_t>(ContactKind::node_to_node)];
@@ -152,15 +157,15 @@ TEST(Capabilities, EachListKindCutsItsOwnArgumentIntoEntries) {
   const auto& segments = *contact_discretizations()[static_cast<size_t>(ContactKind::node_to_segment)];
   ContactInput contact;
   segments.read_list({{}, {0, 1, 2, 3, 4, 5, 6, 7}}, {3, 5}, contact);
-  ASSERT_EQ(contact.master_segments.size(), 2u);
-  EXPECT_TRUE(contact.master_segments[0].empty());
-  EXPECT_EQ(contact.master_segments[1], (std::vector<std::array<int, 4>>{{0, 1, 2, 3}, {4, 5, 6, 7}}));
+  ASSERT_EQ(contact.input_of<NodeToSegmentInput>().segments.size(), 2u);
+  EXPECT_TRUE(contact.input_of<NodeToSegmentInput>().segments[0].empty());
+  EXPECT_EQ(contact.input_of<NodeToSegmentInput>().segments[1], (std::vector<std::array<int, 4>>{{0, 1, 2, 3}, {4, 5, 6, 7}}));
   EXPECT_EQ(refusal([&] { segments.read_list({{0, 1, 2}}, {7}, contact); }),
             "contactSegments[7]: needs 4 dofs per segment (a_x, a_y, b_x, b_y)");
   const auto& faces = *contact_discretizations()[static_cast<size_t>(ContactKind::mortar)];
   faces.read_list({{0, 1, 2, 3, 4, 5, 6, 7, 8}}, {0}, contact);
-  EXPECT_EQ(contact.slave_faces, (std::vector<std::vector<std::array<int, 9>>>{{{0, 1, 2, 3, 4, 5, 6, 7, 8}}}));
-  EXPECT_TRUE(contact.master_faces.empty());
+  EXPECT_EQ(contact.input_of<MortarInput>().slave_faces, (std::vector<std::vector<std::array<int, 9>>>{{{0, 1, 2, 3, 4, 5, 6, 7, 8}}}));
+  EXPECT_TRUE(contact.input_of<NodeToFaceInput>().faces.empty());
   EXPECT_EQ(refusal([&] { faces.read_list({{0, 1}}, {2}, contact); }),
             "contactSlaveFaces[2]: needs 9 dofs per face (a_x, a_y, a_z, b_x, ..., c_z)");
 }

@@ -1,6 +1,8 @@
 #include "constraints/constraints.h"
+#include "constraints/contact/node_to_node.h"
 #include "constraints/contact/node_to_segment.h"
 #include "base/errors.h"
+#include "constraints/contact/obstacle.h"
 #include "membrane_model.h"
 
 #include <Eigen/Dense>
@@ -70,7 +72,7 @@ TEST(Constraints, GluingRowsVanishOnContinuousFields) {
 TEST(Constraints, ContactSlaveWithoutMasterIsAnInputError) {
   auto subs = test::membrane_subdomains(test::membrane_options(4, 1));
   ContactInput contact = test::membrane_contact(subs);
-  contact.master_dofs[1].pop_back();  // one slave loses its partner
+  contact.input_of<NodeToNodeInput>().masters[1].pop_back();  // one slave loses its partner
   try {
     build_constraints(subs, contact, FetiVariant::feti1);
     FAIL() << "expected an InputError";
@@ -111,7 +113,7 @@ TEST(Constraints, NodeToSegmentRowHasProjectionWeightsNormalAndGap) {
   const std::vector<SubdomainInput> subs = {vector_nodes({{0, 0}, {2, 0}}, 0), vector_nodes({{0.5, 0.1}}, 1)};
   ContactInput contact;
   contact.slave_dofs = {{}, {0, 1}};
-  contact.master_segments = {{{2, 3, 0, 1}}, {}};
+  contact.input_of<NodeToSegmentInput>().segments = {{{2, 3, 0, 1}}, {}};
   const Constraints c = build_constraints(subs, contact, FetiVariant::tfeti);
   ASSERT_EQ(c.rows(), 1);
   EXPECT_EQ(c.kind[0], RowKind::contact);
@@ -142,8 +144,8 @@ TEST(Constraints, NodeToSegmentPicksTheNearestSegmentAsAFullSearchWould) {
   }
   const std::vector<SubdomainInput> subs = {vector_nodes(polyline, 0), vector_nodes(slaves, 1)};
   ContactInput contact;
-  contact.master_segments.resize(2), contact.slave_dofs.resize(2);
-  for (int i = 0; i < 400; ++i) contact.master_segments[0].push_back({2 * (i + 1), 2 * (i + 1) + 1, 2 * i, 2 * i + 1});
+  contact.input_of<NodeToSegmentInput>().segments.resize(2), contact.slave_dofs.resize(2);
+  for (int i = 0; i < 400; ++i) contact.input_of<NodeToSegmentInput>().segments[0].push_back({2 * (i + 1), 2 * (i + 1) + 1, 2 * i, 2 * i + 1});
   for (int k = 0; k < static_cast<int>(slaves.size()); ++k) contact.slave_dofs[1].insert(contact.slave_dofs[1].end(), {2 * k, 2 * k + 1});
   for (const double reach : {1e300, 0.07}) {
     contact.search_distance = reach;
@@ -180,9 +182,9 @@ TEST(Constraints, RigidObstacleRowUsesTheUnitNormal) {
   const std::vector<SubdomainInput> subs = {vector_nodes({{0.5, 0.1}, {1.0, 0.3}}, 0)};
   ContactInput contact;
   contact.slave_dofs = {{0, 1, 2, 3}};
-  contact.obstacle = true;
-  contact.obstacle_point = {0.0, -1.0};
-  contact.obstacle_normal = {0.0, 2.0};  // not unit: normalized
+  contact.input_of<ObstacleInput>().given = true;
+  contact.input_of<ObstacleInput>().point = {0.0, -1.0};
+  contact.input_of<ObstacleInput>().normal = {0.0, 2.0};  // not unit: normalized
   const Constraints c = build_constraints(subs, contact, FetiVariant::tfeti);
   ASSERT_EQ(c.rows(), 2);
   EXPECT_NEAR(c.rhs[0], 1.1, 1e-14);
@@ -195,7 +197,7 @@ TEST(Constraints, SlaveNodeNeedsBothComponents) {
   const std::vector<SubdomainInput> subs = {vector_nodes({{0.5, 0.1}}, 0)};
   ContactInput contact;
   contact.slave_dofs = {{0}};
-  contact.obstacle = true;
+  contact.input_of<ObstacleInput>().given = true;
   EXPECT_THROW(build_constraints(subs, contact, FetiVariant::tfeti), InputError);
 }
 

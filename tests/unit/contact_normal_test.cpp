@@ -3,6 +3,7 @@
 // row's derivative when a neighbour of the slave moves (the sensitivities' motion of that
 // normal) against the closed form.
 #include "base/errors.h"
+#include "constraints/contact/mortar.h"
 #include "constraints/contact/node_to_face.h"
 #include "sens/contact_derivative.h"
 
@@ -112,19 +113,19 @@ TEST(ContactNormal, TheRowsDerivativeFollowsTheSlavesNeighbours) {
 }
 
 TEST(ContactNormal, AWrongWordOrKindIsRefusedByName) {
-  EXPECT_EQ(contact_normal_named("average"), ContactNormal::average);
-  try {
-    contact_normal_named("slaves");
-    FAIL() << "accepted";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("contactNormal: must be \"master\", \"slave\" or \"average\", got \"slaves\""),
-              std::string::npos)
-        << e.what();
-  }
+  // The word, node to face's option in the registry, read as both front ends read it.
+  const NodeToFace unit;
+  const ListOption& option = unit.list_input()->options.at(0);
+  EXPECT_STREQ(option.argument, "contactNormal");
+  ContactInput given;
+  unit.read_option(0, word_position(option, "average"), given);
+  EXPECT_EQ(given.input_of<NodeToFaceInput>().normal, ContactNormal::average);
+  EXPECT_EQ(word_position(option, "slaves"), -1);
+  EXPECT_EQ(word_refusal(option, "slaves"), "must be \"master\", \"slave\" or \"average\", got \"slaves\"");
   ContactInput mortar;
-  mortar.normal = ContactNormal::slave;
-  mortar.master_faces = {{{0, 1, 2, 3, 4, 5, 6, 7, 8}}};
-  mortar.slave_faces = {{{0, 1, 2, 3, 4, 5, 6, 7, 8}}};
+  mortar.input_of<NodeToFaceInput>().normal = ContactNormal::slave;
+  mortar.input_of<NodeToFaceInput>().faces = {{{0, 1, 2, 3, 4, 5, 6, 7, 8}}};
+  mortar.input_of<MortarInput>().slave_faces = {{{0, 1, 2, 3, 4, 5, 6, 7, 8}}};
   try {
     NodeToFace().check_combination(mortar);
     FAIL() << "accepted";
@@ -132,7 +133,7 @@ TEST(ContactNormal, AWrongWordOrKindIsRefusedByName) {
     EXPECT_NE(std::string(e.what()).find("contactNormal: \"slave\" applies to node-to-face contact"), std::string::npos)
         << e.what();
   }
-  mortar.normal = ContactNormal::master;
+  mortar.input_of<NodeToFaceInput>().normal = ContactNormal::master;
   EXPECT_NO_THROW(NodeToFace().check_combination(mortar));
 }
 

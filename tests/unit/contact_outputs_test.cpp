@@ -6,6 +6,7 @@
 #include "base/errors.h"
 #include "constraints/contact/node_to_face.h"
 #include "constraints/contact/node_to_segment.h"
+#include "constraints/contact/obstacle.h"
 #include "feti/feti_problem.h"
 #include "service/statistics.h"
 #include "solid_block.h"
@@ -46,9 +47,9 @@ BlockOnPlane block_on_plane(const std::array<double, 3>& top, const Point3& norm
   b.contact.slave_dofs.emplace_back();
   for (int k = 0; k < static_cast<int>(b.subdomains[0].z.size()); ++k)
     if (b.subdomains[0].z[static_cast<size_t>(k)] == 0) b.contact.slave_dofs.back().push_back(k);
-  b.contact.obstacle = true;
-  b.contact.obstacle_point = {0, 0, -kGap};
-  b.contact.obstacle_normal = normal;
+  b.contact.input_of<ObstacleInput>().given = true;
+  b.contact.input_of<ObstacleInput>().point = {0, 0, -kGap};
+  b.contact.input_of<ObstacleInput>().normal = normal;
   return b;
 }
 
@@ -104,7 +105,7 @@ TEST(ContactOutputs, TheForcesOnABodyHeldByItsContactAloneBalanceItsLoad) {
   s.dirichlet_dofs.clear(), s.dirichlet_values.clear();
   for (size_t d = 2; d < s.x.size(); d += 3) s.f[static_cast<Eigen::Index>(d)] = -1;
   b.contact.slip_bound = 1;
-  b.contact.obstacle_point = {0, 0, -0.2};  // below every node: the block falls onto it
+  b.contact.input_of<ObstacleInput>().point = {0, 0, -0.2};  // below every node: the block falls onto it
   FetiSetupSettings setup;
   setup.variant = FetiVariant::tfeti;
   const FetiProblem p(b.subdomains, b.contact, setup);

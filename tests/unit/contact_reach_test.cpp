@@ -3,6 +3,8 @@
 // left without a row are now checked after the solve: counted, their deepest penetration
 // reported, and none reported when the radius reaches every slave.
 #include "feti/feti_problem.h"
+#include "constraints/contact/node_to_face.h"
+#include "constraints/contact/node_to_segment.h"
 #include "service/statistics.h"
 #include "membrane_model.h"
 #include "solid_block.h"
@@ -40,7 +42,7 @@ std::pair<std::vector<SubdomainInput>, ContactInput> pressed_on_a_slope() {
           for (int c = 0; c < 3; ++c) face[3 * corner + static_cast<size_t>(c)] = 3 * t[corner] + c;
         faces.push_back(face);
       }
-  contact.master_faces = {{}, faces};
+  contact.input_of<NodeToFaceInput>().faces = {{}, faces};
   return {{std::move(upper), std::move(lower)}, contact};
 }
 
@@ -98,7 +100,7 @@ TEST(ContactReach, NodeToSegmentSlavesBeyondTheRadiusToo) {
                                       test::two_components(test::p1_rectangle(0.05, 1.02, 0.9, 1, 5, 7, 1.0, zero, 1))};
   for (size_t k = 0; k < subs[0].y.size(); ++k) subs[0].y[k] += 0.01 * subs[0].x[k] * subs[0].y[k];
   ContactInput contact;
-  contact.slave_dofs.resize(2), contact.master_segments.resize(2);
+  contact.slave_dofs.resize(2), contact.input_of<NodeToSegmentInput>().segments.resize(2);
   for (size_t s = 0; s < 2; ++s)
     for (int k = 0; k < static_cast<int>(subs[s].x.size()); ++k) {
       const bool bottom = s == 0 && subs[s].y[static_cast<size_t>(k)] < 1e-12;
@@ -110,7 +112,7 @@ TEST(ContactReach, NodeToSegmentSlavesBeyondTheRadiusToo) {
       if (s == 1 && subs[s].y[static_cast<size_t>(k)] < 1.02 + 1e-12) contact.slave_dofs[1].push_back(k);
     }
   for (int i = 8; i > 0; --i)  // the lower body's top edge (nodes 72 + i), right to left: the body on the left
-    contact.master_segments[0].push_back({2 * (72 + i), 2 * (72 + i) + 1, 2 * (71 + i), 2 * (71 + i) + 1});
+    contact.input_of<NodeToSegmentInput>().segments[0].push_back({2 * (72 + i), 2 * (72 + i) + 1, 2 * (71 + i), 2 * (71 + i) + 1});
   contact.search_distance = 0.015;
   const FetiProblem problem(subs, contact, FetiSetupSettings{});
   const FetiResult result = problem.solve();

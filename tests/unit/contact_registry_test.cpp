@@ -4,6 +4,7 @@
 // and checked alike from a script's array or a problem file's fields.
 #include "constraints/capabilities.h"
 #include "constraints/contact/contact_discretization.h"
+#include "constraints/contact/obstacle.h"
 #include "refusal.h"
 
 #include <gtest/gtest.h>
@@ -37,9 +38,9 @@ TEST(ContactRegistry, AKindIsItsPositionAndTheTableIsTheUnitsRows) {
 TEST(ContactRegistry, TheRigidObstaclesReadTheirOwnArgument) {
   ContactInput plane;
   with_argument("obstacle").read_input({0, -1, 0, 2}, 2, plane);
-  EXPECT_TRUE(plane.obstacle);
-  EXPECT_EQ(plane.obstacle_point, (std::array<double, 3>{0, -1, 0}));
-  EXPECT_EQ(plane.obstacle_normal, (std::array<double, 3>{0, 2, 0}));
+  EXPECT_TRUE(plane.input_of<ObstacleInput>().given);
+  EXPECT_EQ(plane.input_of<ObstacleInput>().point, (std::array<double, 3>{0, -1, 0}));
+  EXPECT_EQ(plane.input_of<ObstacleInput>().normal, (std::array<double, 3>{0, 2, 0}));
   EXPECT_EQ(refusal([] {
               ContactInput c;
               with_argument("obstacle").read_input({0, 0, 0, 1}, 3, c);
@@ -49,7 +50,7 @@ TEST(ContactRegistry, TheRigidObstaclesReadTheirOwnArgument) {
   // The ball keeps its own entries (it shares no field with the plane).
   ContactInput ball;
   with_argument("obstacleBall").read_input({1, 2, 3, 0.5}, 3, ball);
-  EXPECT_FALSE(ball.obstacle);
+  EXPECT_FALSE(ball.input_of<ObstacleInput>().given);
   EXPECT_EQ(ball.kind_parameters.at(ContactKind::ball), (std::vector<double>{1, 2, 3, 0.5}));
   EXPECT_EQ(refusal([] {
               ContactInput c;

@@ -6,6 +6,7 @@
 // pressed onto a shaft against finite differences of re-solves, its place in the registry
 // and the refusals of bad input naming obstacleCylinder.
 #include "constraints/contact/cylinder.h"
+#include "constraints/contact/obstacle.h"
 #include "constraints/input_checks.h"
 #include "feti/feti_problem.h"
 #include "sens/sensitivity.h"
@@ -253,8 +254,8 @@ TEST(CylinderInput, BadEntriesAreErrorsNamingObstacleCylinder) {
             "obstacleCylinder: given twice (one cylinder per problem)");
   auto subdomains = block_halves();
   ContactInput with_plane = on_cylinder(subdomains, kShaft);
-  with_plane.obstacle = true;
-  with_plane.obstacle_normal = {0, 0, 1};
+  with_plane.input_of<ObstacleInput>().given = true;
+  with_plane.input_of<ObstacleInput>().normal = {0, 0, 1};
   EXPECT_EQ(refusal([&] { validate_input(subdomains, with_plane); }),
             "obstacleCylinder, obstacle: the slave nodes of contactSlave take one kind of contact; give one");
   // Parameters set directly (not through read_input) are checked by validate_input as well.

@@ -1,6 +1,7 @@
 // FetiProblem's refusals of bad input (each names its argument) and the thread count's
 // default.
 #include "feti/coarse_space.h"
+#include "constraints/contact/obstacle.h"
 #include "feti/dual_operator.h"
 #include "base/errors.h"
 #include "feti/feti_problem.h"
@@ -70,7 +71,7 @@ TEST(FetiProblem, BadInputIsAnErrorNamingTheArgument) {
   expect_input_error([] {
     auto subs = test::membrane_subdomains(test::membrane_options(8, 2));
     ContactInput contact = test::membrane_contact(subs);
-    contact.obstacle = true;
+    contact.input_of<ObstacleInput>().given = true;
     FetiProblem problem(std::move(subs), contact);
   }, "contactMaster");
   // Positive diagonal but indefinite (a large symmetric off-diagonal pair between free

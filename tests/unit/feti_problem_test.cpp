@@ -1,4 +1,5 @@
 #include "feti/coarse_space.h"
+#include "constraints/contact/node_to_node.h"
 #include "feti/dual_operator.h"
 #include "base/errors.h"
 #include "feti/feti_problem.h"
@@ -370,7 +371,7 @@ TEST(FetiProblem, AStartAtTheSolutionCostsAFewMultiplicationsAndAnyStartConverge
                         Case{floating, 0.0, CoarseConstraints::penalty, DualPath::smalbe}}) {
     auto subs = test::membrane_subdomains(c.options);
     ContactInput contact = c.options.with_contact ? test::membrane_contact(subs) : ContactInput{};
-    contact.gap = c.gap;
+    contact.input_of<NodeToNodeInput>().gap = c.gap;
     const FetiProblem problem(std::move(subs), contact, FetiSetupSettings{});
     ASSERT_EQ(problem.path(), c.path);
     DualSolveSettings settings;

@@ -138,9 +138,9 @@ std::vector<SubdomainInput> halves(double turn) {
 ContactInput on_plane(const std::vector<SubdomainInput>& subdomains) {
   ContactInput contact;
   contact.slave_dofs = bottom_dofs(subdomains);
-  contact.obstacle = true;
-  contact.obstacle_point = {0, 0, -kGap};
-  contact.obstacle_normal = {0, 0, 1};
+  contact.input_of<ObstacleInput>().given = true;
+  contact.input_of<ObstacleInput>().point = {0, 0, -kGap};
+  contact.input_of<ObstacleInput>().normal = {0, 0, 1};
   return contact;
 }
 

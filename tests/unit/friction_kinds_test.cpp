@@ -36,9 +36,9 @@ ContactInput stacked_contact(const std::vector<SubdomainInput>& subdomains, int 
   const auto on_face = dofs_on_zero(subdomains, axis, axis);
   for (size_t s = 0; s < subdomains.size(); ++s) {
     contact.slave_dofs.push_back(subdomains[s].body == 1 ? on_face[s] : std::vector<int>{});
-    contact.master_dofs.push_back(subdomains[s].body == 0 ? on_face[s] : std::vector<int>{});
+    contact.input_of<NodeToNodeInput>().masters.push_back(subdomains[s].body == 0 ? on_face[s] : std::vector<int>{});
   }
-  contact.gap = kGap;
+  contact.input_of<NodeToNodeInput>().gap = kGap;
   law(contact);
   return contact;
 }
@@ -273,7 +273,7 @@ TEST(FrictionKindsInput, NodeToNodeFrictionTakesOneSlaveDofPerNode) {
   ContactInput contact = stacked_contact(subdomains, 1, coulomb(0.3));
   const auto tangential = dofs_on_zero(subdomains, 1, 0);
   contact.slave_dofs[1].insert(contact.slave_dofs[1].end(), tangential[1].begin(), tangential[1].end());
-  contact.master_dofs[0].insert(contact.master_dofs[0].end(), tangential[0].begin(), tangential[0].end());
+  contact.input_of<NodeToNodeInput>().masters[0].insert(contact.input_of<NodeToNodeInput>().masters[0].end(), tangential[0].begin(), tangential[0].end());
   EXPECT_NE(refusal([&] { build_constraints(subdomains, contact, FetiVariant::tfeti); })
                 .find("node-to-node friction takes one slave dof per node"),
             std::string::npos);

@@ -6,6 +6,7 @@
 //   slips   (1/w_j) sum_k D_jk t.(u_s - u_m)_k,  t = e_x, -e_y (tangent_pair(-e_z)).
 #include "constraints/constraints.h"
 #include "constraints/contact/mortar.h"
+#include "constraints/contact/node_to_face.h"
 #include "friction_scenes.h"
 
 #include <gtest/gtest.h>
@@ -46,8 +47,8 @@ ContactInput mortar_contact(int parts, const Law& law) {
         if (body == 0) std::swap(t[1], t[2]);
         faces.push_back(corner_dofs(t));
       }
-      contact.slave_faces.push_back(body == 1 ? faces : std::vector<std::array<int, 9>>{});
-      contact.master_faces.push_back(body == 0 ? faces : std::vector<std::array<int, 9>>{});
+      contact.input_of<MortarInput>().slave_faces.push_back(body == 1 ? faces : std::vector<std::array<int, 9>>{});
+      contact.input_of<NodeToFaceInput>().faces.push_back(body == 0 ? faces : std::vector<std::array<int, 9>>{});
     }
   law(contact);
   return contact;

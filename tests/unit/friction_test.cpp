@@ -3,6 +3,7 @@
 // undivided block's dual (B K^-1 B' with a dense K) by enumerating every assignment of the
 // rows to their bounds, an exact active-set method that shares no code with qp/.
 #include "feti/feti_problem.h"
+#include "constraints/contact/obstacle.h"
 #include "feti/friction.h"
 #include "sens/sensitivity.h"
 #include "base/errors.h"
@@ -31,9 +32,9 @@ ContactInput on_plane(const std::vector<SubdomainInput>& subdomains) {
     for (int k = 0; k < static_cast<int>(s.y.size()); ++k)
       if (s.y[static_cast<size_t>(k)] == 0) contact.slave_dofs.back().push_back(k);
   }
-  contact.obstacle = true;
-  contact.obstacle_point = {0, -kGap};
-  contact.obstacle_normal = {0, 1};
+  contact.input_of<ObstacleInput>().given = true;
+  contact.input_of<ObstacleInput>().point = {0, -kGap};
+  contact.input_of<ObstacleInput>().normal = {0, 1};
   return contact;
 }
 

@@ -6,6 +6,11 @@
 // new load step), in FETI-1 and Total FETI; the sensitivities of the re-solved state are
 // those of the fresh one.
 #include "base/errors.h"
+#include "constraints/contact/node_to_face.h"
+#include "constraints/contact/mortar.h"
+#include "constraints/contact/node_to_segment.h"
+#include "constraints/contact/node_to_node.h"
+#include "constraints/contact/obstacle.h"
 #include "factor/cholmod_factor.h"
 #include "friction_scenes.h"
 #include "sens/sensitivity.h"
@@ -56,7 +61,7 @@ ContactInput node_to_node(const std::vector<SubdomainInput>& subdomains, int axi
   const auto on_face = dofs_on_zero(subdomains, axis, axis);
   for (size_t s = 0; s < subdomains.size(); ++s) {
     contact.slave_dofs.push_back(subdomains[s].body == 1 ? on_face[s] : std::vector<int>{});
-    contact.master_dofs.push_back(subdomains[s].body == 0 ? on_face[s] : std::vector<int>{});
+    contact.input_of<NodeToNodeInput>().masters.push_back(subdomains[s].body == 0 ? on_face[s] : std::vector<int>{});
   }
   return contact;
 }
@@ -68,11 +73,11 @@ ContactInput node_to_segment(const std::vector<SubdomainInput>& plates) {
   contact.slave_dofs = nodes_on_zero(plates, 1, 1);
   const auto x_dofs = dofs_on_zero(plates, 1, 0);
   for (size_t s = 0; s < plates.size(); ++s) {
-    contact.master_segments.emplace_back();
+    contact.input_of<NodeToSegmentInput>().segments.emplace_back();
     if (plates[s].body != 0) continue;
     for (size_t k = 0; k + 1 < x_dofs[s].size(); ++k) {
       const int a = x_dofs[s][k], b = x_dofs[s][k + 1];  // ascending x along the edge
-      contact.master_segments.back().push_back({a, a + 1, b, b + 1});
+      contact.input_of<NodeToSegmentInput>().segments.back().push_back({a, a + 1, b, b + 1});
     }
   }
   return contact;
@@ -101,9 +106,9 @@ std::vector<std::array<int, 9>> face_triangles(int nx, int ny, bool upward) {
 ContactInput on_faces(const std::vector<SubdomainInput>& blocks, int parts, bool mortar) {
   ContactInput contact;
   for (const SubdomainInput& s : blocks) {
-    contact.master_faces.push_back(s.body == 0 ? face_triangles(4 / parts, 2, false) : std::vector<std::array<int, 9>>{});
+    contact.input_of<NodeToFaceInput>().faces.push_back(s.body == 0 ? face_triangles(4 / parts, 2, false) : std::vector<std::array<int, 9>>{});
     if (mortar)
-      contact.slave_faces.push_back(s.body == 1 ? face_triangles(4 / parts, 2, true) : std::vector<std::array<int, 9>>{});
+      contact.input_of<MortarInput>().slave_faces.push_back(s.body == 1 ? face_triangles(4 / parts, 2, true) : std::vector<std::array<int, 9>>{});
   }
   if (!mortar) contact.slave_dofs = nodes_on_zero(blocks, 2, 1);
   return contact;
@@ -125,10 +130,10 @@ ContactInput obstacle(const std::vector<SubdomainInput>& upper, int axis, double
     contact.kind_parameters[ContactKind::ball] = {0.5, -radius, radius};
     return contact;
   }
-  contact.obstacle = true;
-  contact.obstacle_point = {0.5, 0.0, 0.0};
-  contact.obstacle_normal = {0, 0, 0};
-  contact.obstacle_normal[static_cast<size_t>(axis)] = 1;
+  contact.input_of<ObstacleInput>().given = true;
+  contact.input_of<ObstacleInput>().point = {0.5, 0.0, 0.0};
+  contact.input_of<ObstacleInput>().normal = {0, 0, 0};
+  contact.input_of<ObstacleInput>().normal[static_cast<size_t>(axis)] = 1;
   return contact;
 }
 

@@ -1,6 +1,8 @@
 // Hard cases of floating bodies held only by contact (rows of docs/results/hard-cases.md,
 // recorded as hard_cases_test.cpp's): a body on a rigid obstacle and a chain of three.
 #include "feti/feti_problem.h"
+#include "constraints/contact/node_to_node.h"
+#include "constraints/contact/obstacle.h"
 #include "hard_case_record.h"
 #include "membrane_model.h"
 
@@ -38,9 +40,9 @@ TEST(HardCases, BodyHeldOnlyByARigidObstacle) {
     contact.slave_dofs.push_back(slaves);
     subs.push_back(std::move(s));
   }
-  contact.obstacle = true;
-  contact.obstacle_point = {0.0, 0.0};
-  contact.obstacle_normal = {0.0, 1.0};
+  contact.input_of<ObstacleInput>().given = true;
+  contact.input_of<ObstacleInput>().point = {0.0, 0.0};
+  contact.input_of<ObstacleInput>().normal = {0.0, 1.0};
   const FetiProblem problem(subs, contact);
   DualSolveSettings settings;
   settings.tolerance = 1e-8;
@@ -97,7 +99,7 @@ TEST(HardCases, ChainOfThreeFloatingBodiesHeldOnlyByContact) {
           if (b > 0 && std::abs(s.x[k] - b) < 1e-12) master.push_back(k);
         }
         contact.slave_dofs.push_back(slave);
-        contact.master_dofs.push_back(master);
+        contact.input_of<NodeToNodeInput>().masters.push_back(master);
         subs.push_back(std::move(s));
       }
   std::vector<double> load_of_body(bodies, 0.0);

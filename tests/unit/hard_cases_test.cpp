@@ -7,6 +7,7 @@
 // records a row of docs/results/hard-cases.md (scripts/hard_cases_table.py reads the rows
 // from the XML output of `ffeti_unit_tests --gtest_filter=HardCases*:Extreme*`).
 #include "feti/feti_problem.h"
+#include "constraints/contact/node_to_node.h"
 #include "hard_case_record.h"
 #include "membrane_model.h"
 
@@ -150,7 +151,7 @@ TEST(HardCases, GapSweepShiftsTheFloatingMembraneExactly) {
     auto subs = test::membrane_subdomains(test::membrane_options(32, 2));
     for (auto& s : subs) s.f *= load_factor;
     ContactInput contact = test::membrane_contact(subs);
-    contact.gap = gap;
+    contact.input_of<NodeToNodeInput>().gap = gap;
     const FetiProblem problem(subs, contact, FetiSetupSettings{});
     DualSolveSettings settings;
     settings.tolerance = 1e-10;
@@ -331,7 +332,7 @@ TEST(HardCases, EveryCoupleActiveOrNone) {
     auto subs = test::membrane_subdomains(o);
     for (auto& s : subs) s.f *= load_factor;
     ContactInput contact = with_contact ? test::membrane_contact(subs) : ContactInput{};
-    contact.gap = gap;
+    contact.input_of<NodeToNodeInput>().gap = gap;
     const FetiProblem problem(subs, contact, FetiSetupSettings{});
     DualSolveSettings settings;
     settings.tolerance = 1e-8;

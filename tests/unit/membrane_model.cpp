@@ -1,4 +1,5 @@
 #include "membrane_model.h"
+#include "constraints/contact/node_to_node.h"
 
 #include <Eigen/SparseLU>
 
@@ -108,11 +109,11 @@ std::vector<SubdomainInput> membrane_subdomains(const MembraneOptions& o) {
 ContactInput membrane_contact(const std::vector<SubdomainInput>& subs) {
   ContactInput contact;
   contact.slave_dofs.resize(subs.size());
-  contact.master_dofs.resize(subs.size());
+  contact.input_of<NodeToNodeInput>().masters.resize(subs.size());
   for (size_t s = 0; s < subs.size(); ++s)
     for (int k = 0; k < static_cast<int>(subs[s].x.size()); ++k)
       if (std::abs(subs[s].x[k] - 1.0) < 1e-12)
-        (subs[s].body == 0 ? contact.slave_dofs : contact.master_dofs)[s].push_back(k);
+        (subs[s].body == 0 ? contact.slave_dofs : contact.input_of<NodeToNodeInput>().masters)[s].push_back(k);
   return contact;
 }
 

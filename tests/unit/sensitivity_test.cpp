@@ -2,6 +2,8 @@
 // against the direct mode, weakly active rows against one-sided differences, and the
 // promise that no sensitivity solve factorizes anything.
 #include "base/errors.h"
+#include "constraints/contact/node_to_segment.h"
+#include "constraints/contact/obstacle.h"
 #include "feti/feti_problem.h"
 #include "membrane_model.h"
 #include "sens/sensitivity.h"
@@ -251,14 +253,14 @@ struct SegmentScene {
       }
       sub.f = Vec::Constant(sub.K.rows(), 0.01);  // a small body load everywhere
     }
-    contact.slave_dofs.resize(2), contact.master_segments.resize(2);
+    contact.slave_dofs.resize(2), contact.input_of<NodeToSegmentInput>().segments.resize(2);
     for (int k = 0; k < static_cast<int>(base[1].x.size()); ++k)
       if (base[1].y[k] < 1.02 + 1e-12) contact.slave_dofs[1].push_back(k);
     // Body 0's top edge, nodes 2(72+i), left to right: the body lies below, on the right
     // of a -> b, so segments run right to left to keep it on the left.
     for (int i = 8; i > 0; --i) {
       const int b = 72 + i - 1, a = 72 + i;
-      contact.master_segments[0].push_back({2 * a, 2 * a + 1, 2 * b, 2 * b + 1});
+      contact.input_of<NodeToSegmentInput>().segments[0].push_back({2 * a, 2 * a + 1, 2 * b, 2 * b + 1});
     }
   }
   /// Node velocity of the design: body 0's top face tilts, V = (0.02 y, 0.1 x y).
@@ -347,9 +349,9 @@ TEST(Sensitivity, MovingObstacleSlavesMatchFiniteDifferences) {
   base[0].f.setConstant(-0.01);  // pressed onto the obstacle
   ContactInput contact;
   contact.slave_dofs = {scene.contact.slave_dofs[1]};
-  contact.obstacle = true;
-  contact.obstacle_point = {0.0, 0.99};
-  contact.obstacle_normal = {0.1, 1.0};
+  contact.input_of<ObstacleInput>().given = true;
+  contact.input_of<ObstacleInput>().point = {0.0, 0.99};
+  contact.input_of<ObstacleInput>().normal = {0.1, 1.0};
   const auto velocity = [&](int c) {
     std::vector<std::vector<double>> v(1);
     for (size_t k = 0; k < base[0].x.size(); ++k) v[0].push_back(c == 0 ? 0.0 : 0.3 * base[0].x[k]);

@@ -3,6 +3,9 @@
 // sub-triangles given to mortar contact. Each is refused naming the argument; the correctly
 // listed scenes pass.
 #include "base/errors.h"
+#include "constraints/contact/node_to_face.h"
+#include "constraints/contact/mortar.h"
+#include "constraints/contact/obstacle.h"
 #include "constraints/input_checks.h"
 #include "feti/feti_problem.h"
 #include "solid_block.h"
@@ -51,7 +54,7 @@ ContactInput node_to_face(const std::vector<SubdomainInput>& subs, std::vector<s
   contact.slave_dofs = {{}, {}};
   for (int k = 0; k < static_cast<int>(subs[0].z.size()); ++k)
     if (subs[0].z[static_cast<size_t>(k)] == 0) contact.slave_dofs[0].push_back(k);
-  contact.master_faces = {{}, std::move(faces)};
+  contact.input_of<NodeToFaceInput>().faces = {{}, std::move(faces)};
   return contact;
 }
 
@@ -94,11 +97,11 @@ TEST(SurfaceChecks, MortarSlaveFacesAreJudgedToo) {
   for (auto& face : bottom)
     for (int& dof : face) dof -= 3 * (kCells + 1) * (kCells + 1);  // the same triangles on layer z = 0
   ContactInput contact;
-  contact.master_faces = {{}, lower_top_faces()};
-  contact.slave_faces = {bottom, {}};
+  contact.input_of<NodeToFaceInput>().faces = {{}, lower_top_faces()};
+  contact.input_of<MortarInput>().slave_faces = {bottom, {}};
   std::string message = refusal([&] { validate_input(subs, contact); });
   EXPECT_NE(message.find("contactSlaveFaces[0]: face 0 "), std::string::npos) << message;
-  for (auto& face : contact.slave_faces[0]) swap_corners(face);
+  for (auto& face : contact.input_of<MortarInput>().slave_faces[0]) swap_corners(face);
   EXPECT_EQ(refusal([&] { validate_input(subs, contact); }), "");
 }
 
@@ -106,11 +109,11 @@ TEST(SurfaceChecks, MortarSlaveFacesAreJudgedToo) {
 /// block's bottom nodes the slaves.
 ContactInput plane_below(const std::vector<SubdomainInput>& block) {
   ContactInput contact = node_to_face(block, {});
-  contact.master_faces.clear();
+  contact.input_of<NodeToFaceInput>().faces.clear();
   contact.slave_dofs.resize(1);
-  contact.obstacle = true;
-  contact.obstacle_point = {0, 0, -0.001};
-  contact.obstacle_normal = {0, 0, 1};
+  contact.input_of<ObstacleInput>().given = true;
+  contact.input_of<ObstacleInput>().point = {0, 0, -0.001};
+  contact.input_of<ObstacleInput>().normal = {0, 0, 1};
   return contact;
 }
 
@@ -119,11 +122,11 @@ TEST(SurfaceChecks, PlaneWhoseNormalPointsIntoTheBodyIsRefused) {
   std::vector<SubdomainInput> block = {stacked_blocks()[0]};
   ContactInput contact = plane_below(block);
   EXPECT_EQ(refusal([&] { FetiProblem(block, contact, FetiSetupSettings{}); }), "");
-  contact.obstacle_normal = {0, 0, -1};
+  contact.input_of<ObstacleInput>().normal = {0, 0, -1};
   const std::string message = refusal([&] { FetiProblem(block, contact, FetiSetupSettings{}); });
   EXPECT_NE(message.find("obstacle: its normal points into the bodies"), std::string::npos) << message;
   // Every node of the block slave (a closed surface): the outward pushes cancel, no verdict.
-  contact.obstacle_normal = {0, 0, 1};
+  contact.input_of<ObstacleInput>().normal = {0, 0, 1};
   contact.slave_dofs[0].clear();
   for (int k = 0; k < static_cast<int>(block[0].K.rows()); ++k) contact.slave_dofs[0].push_back(k);
   EXPECT_EQ(refusal([&] { FetiProblem(block, contact, FetiSetupSettings{}); }).find("normal points into"),
@@ -156,7 +159,7 @@ TEST(SurfaceChecks, AMassMatrixGivesNoVerdictAndALumpedMassKeepsTheStiffnessOne)
   stepped[0].K = SparseMatrix(K + diagonal);
   EXPECT_EQ(refusal([&] { FetiProblem(mass, contact, FetiSetupSettings{}); }), "");
   EXPECT_EQ(refusal([&] { FetiProblem(stepped, contact, FetiSetupSettings{}); }), "");
-  contact.obstacle_normal = {0, 0, -1};
+  contact.input_of<ObstacleInput>().normal = {0, 0, -1};
   EXPECT_EQ(refusal([&] { FetiProblem(mass, contact, FetiSetupSettings{}); }).find("normal points into"), std::string::npos);
   const std::string message = refusal([&] { FetiProblem(stepped, contact, FetiSetupSettings{}); });
   EXPECT_NE(message.find("obstacle: its normal points into the bodies"), std::string::npos) << message;
@@ -192,21 +195,21 @@ std::array<int, 9> face_of(int a, int b, int c) {
 TEST(SurfaceChecks, MortarRefusesP2SubTriangles) {
   // Slave faces on top of body 0 (normal +z), the master a P1 triangle of body 1 above (-z).
   ContactInput contact;
-  contact.master_faces = {{}, {face_of(0, 2, 1)}};
-  contact.slave_faces = {{face_of(0, 3, 5), face_of(3, 1, 4), face_of(5, 4, 2), face_of(3, 4, 5)}, {}};
+  contact.input_of<NodeToFaceInput>().faces = {{}, {face_of(0, 2, 1)}};
+  contact.input_of<MortarInput>().slave_faces = {{face_of(0, 3, 5), face_of(3, 1, 4), face_of(5, 4, 2), face_of(3, 4, 5)}, {}};
   const std::vector<SubdomainInput> p2 = {triangle_nodes(0, 0, true), triangle_nodes(0.001, 1, false)};
   const std::string message = refusal([&] { validate_input(p2, contact); });
   EXPECT_NE(message.find("contactSlaveFaces[0]"), std::string::npos) << message;
   EXPECT_NE(message.find("P1 faces only"), std::string::npos) << message;
   // The same nodes as P1 faces (the midpoints' nodes not coupled to the vertices as one
   // element's): accepted.
-  contact.slave_faces = {{face_of(0, 1, 2)}, {}};
+  contact.input_of<MortarInput>().slave_faces = {{face_of(0, 1, 2)}, {}};
   const std::vector<SubdomainInput> p1 = {triangle_nodes(0, 0, false), triangle_nodes(0.001, 1, false)};
   EXPECT_EQ(refusal([&] { validate_input(p1, contact); }), "");
   // Node to face takes P2 faces as sub-triangles (the reference says so): no refusal there.
   ContactInput faces;
   faces.slave_dofs = {{}, {0, 1, 2}};
-  faces.master_faces = {{face_of(0, 3, 5), face_of(3, 1, 4), face_of(5, 4, 2), face_of(3, 4, 5)}, {}};
+  faces.input_of<NodeToFaceInput>().faces = {{face_of(0, 3, 5), face_of(3, 1, 4), face_of(5, 4, 2), face_of(3, 4, 5)}, {}};
   EXPECT_EQ(refusal([&] { validate_input(p2, faces); }), "");
 }
 

@@ -3,6 +3,8 @@
 #include "base/errors.h"
 #include "constraints/constraints.h"
 #include "constraints/contact/contact_linearization.h"
+#include "constraints/contact/node_to_face.h"
+#include "constraints/contact/mortar.h"
 #include "feti/kernel.h"
 #include "solid_block.h"
 
@@ -107,8 +109,8 @@ TEST(ThreeDimensions, MortarRowsSeeTheNearestMasterLayerOnly) {
                                             vector_nodes3({{-1, -1, 1}, {3, -1, 1}, {-1, 3, 1}}, 1),
                                             vector_nodes3({{-1, -1, -2}, {3, -1, -2}, {-1, 3, -2}}, 2)};
   ContactInput contact;
-  contact.slave_faces = {{{0, 1, 2, 3, 4, 5, 6, 7, 8}}, {}, {}};  // (b - a) x (c - a) = -z: out of body 0
-  contact.master_faces = {{}, {{0, 1, 2, 3, 4, 5, 6, 7, 8}}, {{0, 1, 2, 3, 4, 5, 6, 7, 8}}};
+  contact.input_of<MortarInput>().slave_faces = {{{0, 1, 2, 3, 4, 5, 6, 7, 8}}, {}, {}};  // (b - a) x (c - a) = -z: out of body 0
+  contact.input_of<NodeToFaceInput>().faces = {{}, {{0, 1, 2, 3, 4, 5, 6, 7, 8}}, {{0, 1, 2, 3, 4, 5, 6, 7, 8}}};
   const Constraints c = build_constraints(subs, contact, FetiVariant::tfeti);
   ASSERT_EQ(c.count(RowKind::contact), 3);
   for (int row = 0; row < c.rows(); ++row) {
@@ -129,7 +131,7 @@ TEST(ThreeDimensions, NodeToFaceSlaveOutOfReachGetsNoRow) {
                                             vector_nodes3({{0.5, 0.5, 0.1}, {5, 5, 0.1}}, 1)};
   ContactInput contact;
   contact.slave_dofs = {{}, {0, 1, 2, 3, 4, 5}};
-  contact.master_faces = {{{0, 1, 2, 3, 4, 5, 6, 7, 8}}, {}};
+  contact.input_of<NodeToFaceInput>().faces = {{{0, 1, 2, 3, 4, 5, 6, 7, 8}}, {}};
   const Constraints all = build_constraints(subs, contact, FetiVariant::tfeti);
   ASSERT_EQ(all.count(RowKind::contact), 2);  // no reach given: every slave has a row
   contact.search_distance = 1;

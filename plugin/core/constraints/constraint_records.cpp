@@ -1,6 +1,7 @@
 #include "constraints/constraint_records.h"
 
 #include "base/parallel_for.h"
+#include "constraints/contact/contact_discretization.h"
 
 #include <algorithm>
 #include <array>
@@ -142,11 +143,8 @@ std::vector<DofRecord> constraint_candidates(const std::vector<SubdomainInput>& 
     }
     if (!local_contact.slave_dofs.empty())
       for (int dof : local_contact.slave_dofs[k]) slave[static_cast<size_t>(dof)] = 1;
-    if (!local_contact.slave_faces.empty())  // mortar: the slave nodes are the slave faces' corners
-      for (const auto& face : local_contact.slave_faces[k])
-        for (int dof : face) slave[static_cast<size_t>(dof)] = 1;
-    if (!local_contact.master_dofs.empty())
-      for (int dof : local_contact.master_dofs[k]) master[static_cast<size_t>(dof)] = 1;
+    // The list kinds' slaves and masters (mortar's slave faces' corners, node to node's masters).
+    for (const ContactDiscretization* unit : kinds_with_lists()) unit->flag_dofs(local_contact, k, slave, master);
     const std::vector<char> partner = local_contact.has_friction() ? node_partners(sub, slave, master, snap)
                                                                    : std::vector<char>(n, 0);
     for (size_t i = 0; i < n; ++i) {
@@ -175,7 +173,7 @@ std::vector<double> pack(const std::vector<DofRecord>& records) {
   for (const DofRecord& r : records) {
     const double flags = (r.fixed ? 1 : 0) + (r.slave ? 2 : 0) + (r.master ? 4 : 0);
     packed.insert(packed.end(), {double(r.subdomain), double(r.dof), double(r.body), double(r.component),
-                                 r.x, r.y, r.z, flags, r.value, r.gap, r.friction});
+                                 r.x, r.y, r.z, flags, r.value, r.gap, r.law_value});
   }
   return packed;
 }
@@ -202,13 +200,19 @@ std::vector<DofRecord> unpack(const std::vector<double>& packed) {
 std::vector<SegmentRecord> segment_records(const std::vector<SubdomainInput>& local,
                                            const std::vector<int>& global_ids, const ContactInput& local_contact) {
   std::vector<SegmentRecord> segments;
-  for (size_t k = 0; k < local_contact.master_segments.size(); ++k)
-    for (const auto& dofs : local_contact.master_segments[k]) {
+  for (const ContactDiscretization* unit : kinds_with_lists()) unit->add_segments(local, global_ids, local_contact, segments);
+  return segments;
+}
+
+void add_segment_records(const std::vector<std::vector<std::array<int, 4>>>& lists,
+                         const std::vector<SubdomainInput>& local, const std::vector<int>& global_ids,
+                         std::vector<SegmentRecord>& segments) {
+  for (size_t k = 0; k < lists.size(); ++k)
+    for (const auto& dofs : lists[k]) {
       const SubdomainInput& sub = local[k];
       const auto a = static_cast<size_t>(dofs[0]), b = static_cast<size_t>(dofs[2]);
       segments.push_back({global_ids[k], sub.body, dofs, sub.x[a], sub.y[a], sub.x[b], sub.y[b]});
     }
-  return segments;
 }
 
 std::vector<double> pack(const std::vector<SegmentRecord>& segments) {
@@ -232,20 +236,25 @@ std::vector<SegmentRecord> unpack_segments(const std::vector<double>& packed) {
 std::vector<FaceRecord> face_records(const std::vector<SubdomainInput>& local, const std::vector<int>& global_ids,
                                      const ContactInput& local_contact) {
   std::vector<FaceRecord> faces;
-  for (const bool slave : {false, true}) {
-    const auto& lists = slave ? local_contact.slave_faces : local_contact.master_faces;
-    for (size_t k = 0; k < lists.size(); ++k)
-      for (const auto& dofs : lists[k]) {
-        const SubdomainInput& sub = local[k];
-        FaceRecord face{global_ids[k], sub.body, dofs, {}, slave};
-        for (size_t corner = 0; corner < 3; ++corner) {
-          const auto d = static_cast<size_t>(dofs[3 * corner]);
-          face.corners[corner] = {sub.x[d], sub.y[d], sub.z[d]};
-        }
-        faces.push_back(face);
-      }
-  }
+  for (const ContactDiscretization* unit : kinds_with_lists()) unit->add_faces(local, global_ids, local_contact, faces);
+  // The master faces first, each kind's in its order (the faces' grid and mortar's surface read them so).
+  std::stable_partition(faces.begin(), faces.end(), [](const FaceRecord& face) { return !face.slave; });
   return faces;
+}
+
+void add_face_records(const std::vector<std::vector<std::array<int, 9>>>& lists, bool slave,
+                      const std::vector<SubdomainInput>& local, const std::vector<int>& global_ids,
+                      std::vector<FaceRecord>& faces) {
+  for (size_t k = 0; k < lists.size(); ++k)
+    for (const auto& dofs : lists[k]) {
+      const SubdomainInput& sub = local[k];
+      FaceRecord face{global_ids[k], sub.body, dofs, {}, slave};
+      for (size_t corner = 0; corner < 3; ++corner) {
+        const auto d = static_cast<size_t>(dofs[3 * corner]);
+        face.corners[corner] = {sub.x[d], sub.y[d], sub.z[d]};
+      }
+      faces.push_back(face);
+    }
 }
 
 std::vector<double> pack(const std::vector<FaceRecord>& faces) {

@@ -20,7 +20,7 @@ struct DofRecord {
   bool fixed, slave, master;
   double value;  // Dirichlet value where fixed
   double gap;    // ContactInput::gap_field's entry (0 without one)
-  double friction;  // Coulomb's coefficient at this dof (friction_field's entry, else friction), or Tresca's bound (slip_bound_field, slip_bound)
+  double law_value;  // the friction law's value at this dof: Coulomb's mu (friction_field's entry, else friction) or Tresca's g (slip_bound_field, slip_bound)
 };
 
 /// A master segment of the node-to-segment contact: its dofs (a_x, a_y, b_x, b_y) and ends.
@@ -39,15 +39,25 @@ struct FaceRecord {
   bool slave = false;
 };
 
-/// The master and slave faces of the local subdomains (global subdomain indices).
+/// The master and slave faces of the local subdomains (global subdomain indices): each list
+/// kind's (ContactDiscretization::add_faces), the master faces first.
 std::vector<FaceRecord> face_records(const std::vector<SubdomainInput>& local, const std::vector<int>& global_ids,
                                      const ContactInput& local_contact);
+/// Appends the records of `lists` (per local subdomain, its triangles' 9 dofs), master or slave faces.
+void add_face_records(const std::vector<std::vector<std::array<int, 9>>>& lists, bool slave,
+                      const std::vector<SubdomainInput>& local, const std::vector<int>& global_ids,
+                      std::vector<FaceRecord>& faces);
 std::vector<double> pack(const std::vector<FaceRecord>& faces);
 std::vector<FaceRecord> unpack_faces(const std::vector<double>& packed);
 
-/// The master segments of the local subdomains (global subdomain indices).
+/// The master segments of the local subdomains (global subdomain indices): each list kind's
+/// (ContactDiscretization::add_segments).
 std::vector<SegmentRecord> segment_records(const std::vector<SubdomainInput>& local,
                                            const std::vector<int>& global_ids, const ContactInput& local_contact);
+/// Appends the records of `lists` (per local subdomain, its segments' 4 dofs).
+void add_segment_records(const std::vector<std::vector<std::array<int, 4>>>& lists,
+                         const std::vector<SubdomainInput>& local, const std::vector<int>& global_ids,
+                         std::vector<SegmentRecord>& segments);
 std::vector<double> pack(const std::vector<SegmentRecord>& segments);
 std::vector<SegmentRecord> unpack_segments(const std::vector<double>& packed);
 

@@ -186,10 +186,10 @@ void add_friction_rows(const std::vector<DofRecord>& records, std::vector<Row>& 
     // A zero coefficient or bound holds nothing: no row, so that mu = 0 is the frictionless
     // problem, which refuses a body nothing else holds (a row pinned at 0 would let it pass
     // the coarse space's check and float along the tangent).
-    if (rows[i].kind != RowKind::contact || !(rows[i].friction > 0)) continue;
+    if (rows[i].kind != RowKind::contact || !(rows[i].law_value > 0)) continue;
     std::vector<Row> pair;
     for (const RowAt& slip : rows[i].geometry->slip_rows()) {
-      Row row{{}, 0.0, RowKind::friction, false, rows[i].geometry, static_cast<int>(i), rows[i].friction};
+      Row row{{}, 0.0, RowKind::friction, false, rows[i].geometry, static_cast<int>(i), rows[i].law_value};
       for (size_t k = 0; k < slip.dofs.size(); ++k) {
         if (slip.coefficients[k] == 0) continue;
         const auto& [subdomain, dof] = slip.dofs[k];

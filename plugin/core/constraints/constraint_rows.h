@@ -20,7 +20,7 @@ struct Row {
   bool equality = true;
   std::shared_ptr<const ContactRowGeometry> geometry{};
   int normal_row = -1;  ///< a friction row's contact row
-  double friction = 0;  ///< a contact or friction row's Coulomb coefficient or Tresca bound (its slave node's)
+  double law_value = 0;  ///< a contact or friction row's friction law value (its slave node's): Coulomb's mu or Tresca's g, the problem's one law
   /// A slave node left without a row by contactRadius, over a master of another body: its
   /// row against that master, kept out of B and checked for penetration after the solve.
   bool beyond_reach = false;

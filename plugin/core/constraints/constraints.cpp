@@ -68,7 +68,7 @@ Constraints build_constraints(std::vector<DofRecord> records, const std::vector<
     if (row.kind == RowKind::contact) result.geometry.push_back(row.geometry);
     if (row.kind == RowKind::friction) {
       result.normal_row.push_back(row.normal_row);
-      (contact.slip_bound >= 0 ? result.slip_bound : result.coulomb_coefficient).push_back(row.friction);
+      (contact.slip_bound >= 0 ? result.slip_bound : result.coulomb_coefficient).push_back(row.law_value);
       ++result.friction_rows;
     }
   }

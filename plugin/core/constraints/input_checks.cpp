@@ -2,6 +2,7 @@
 
 #include "constraints/capabilities.h"
 #include "constraints/contact/contact_discretization.h"
+#include "constraints/contact/obstacle.h"
 #include "constraints/surface_checks.h"
 
 #include "base/errors.h"
@@ -207,7 +208,7 @@ void check_kind_inputs(const ContactInput& contact, int dimension) {
     if (!unit.input()) throw InputError(std::string(unit.capabilities().name) + " contact takes no parameters");
     unit.check_input(values, dimension);
     const auto list = std::find_if(units.begin(), units.end(), [&](const auto& u) { return u->list_given(contact); });
-    const char* other = contact.obstacle        ? "obstacle"
+    const char* other = contact.input_of<ObstacleInput>().given ? "obstacle"
                         : list != units.end() ? (*list)->list_input()->argument
                         : contact.kind_parameters.size() > 1
                             ? units.at(static_cast<size_t>(contact.kind_parameters.begin()->first))->input()->argument
@@ -254,7 +255,6 @@ void validate_input(const std::vector<SubdomainInput>& subdomains, const Contact
   for (const auto& unit : contact_discretizations()) unit->check_against(subdomains, ids, contact, dimension);
   for (const auto& unit : contact_discretizations()) unit->check_combination(contact);
   if (!(contact.search_distance > 0)) throw InputError("contactRadius: must be > 0");
-  if (!std::isfinite(contact.gap)) throw InputError("gap: must be finite");
   validate_contact_gaps(contact.gap_field, subdomains, global_ids);
   for (const auto& [name, value] : {std::pair<const char*, double>{"friction", contact.friction},
                                     std::pair<const char*, double>{"slipBound", contact.slip_bound}})

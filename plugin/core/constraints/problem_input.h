@@ -4,10 +4,12 @@
 #include "base/linear_algebra.h"
 #include "constraints/capabilities.h"
 
+#include <any>
 #include <array>
 #include <map>
 #include <memory>
 #include <string>
+#include <typeindex>
 #include <vector>
 
 namespace ffeti {
@@ -57,11 +59,6 @@ struct SubdomainInput {
   std::vector<double> dirichlet_values; ///< their values (empty: all zero)
 };
 
-/// Whose normal a node-to-face row takes (contactNormal=): the master face's (the default),
-/// the slave surface's at the slave node (the area-weighted normals of the slave body's
-/// faces in contactFaces around it), or the two averaged (docs/reference.md, "contactNormal").
-enum class ContactNormal { master, slave, average };
-
 /// Contact conditions, linearized for small displacements; one row per physical slave node
 /// (its copies in other subdomains are glued to it). Each contact kind is a unit of
 /// constraints/contact/ that reads, checks and uses its own input: the fields below are
@@ -70,47 +67,33 @@ struct ContactInput {
   /// Shared: the slave dofs of every kind but mortar, per subdomain (may be empty).
   std::vector<std::vector<int>> slave_dofs;
 
-  // ---- each list kind's own per-subdomain list (ListInput: read by its read_list, checked
-  // by its check_against; fetiSetup's argument and ffeti-solve's key in its unit) ----
-  /// Node to node (contactMaster; matching meshes): each slave dof pairs with the master
-  /// dof of another body at the same position and component: u_slave - u_master <= gap.
-  /// (For the seed's membranes, u1(1,y) <= u2(1,y): slaves on body 1, masters on body 2.)
-  std::vector<std::vector<int>> master_dofs;
-  double gap = 0;  ///< node to node's gap
-  /// Node to segment (contactSegments; 2D vector fields): per subdomain (a_x, a_y, b_x, b_y).
-  /// Each slave node (both its dofs in slave_dofs) is projected on the nearest master segment
-  /// of another body within search_distance; with p = (1 - xi) a + xi b and n the segment's
-  /// outward normal, n.(u_p - u_slave) <= n.(x_slave - p). Segments run with their body on the
-  /// left (FreeFEM's orientation of a counter-clockwise border), so n = (b - a) rotated clockwise.
-  std::vector<std::vector<std::array<int, 4>>> master_segments;
-  /// Node to face (contactFaces; three dimensions; mortar's master faces too): per subdomain
-  /// the master triangles, each the x, y, z dofs of its corners a, b, c, ordered so that
-  /// (b - a) x (c - a) points out of its body. Each slave node (its three dofs in slave_dofs)
-  /// is projected on the nearest face of another body within search_distance, p its closest
-  /// point, n the face's unit normal: n.(u_p - u_slave) <= n.(x_slave - p), u_p interpolated
-  /// linearly on the face.
-  std::vector<std::vector<std::array<int, 9>>> master_faces;
-  ContactNormal normal = ContactNormal::master;  ///< node to face's row normal (contactNormal=)
-  /// Mortar (contactSlaveFaces; three dimensions): per subdomain the slave triangles, ordered
-  /// like the master faces (outward normal). Their corners are the slave nodes (slave_dofs then
-  /// stays empty), each with one row: the normal gap weighted by its shape function phi_j and
-  /// integrated over the overlap of its slave faces with the master faces of another body
-  /// facing them (each slave face projected on a master face's plane along that face's
-  /// normal n, within search_distance and the nearest master's distance plus two edges):
-  /// sum over the pairs of int phi_j n.(u_m - u_s) <= int phi_j n.(x_s - x_m), divided by
-  /// int phi_j so that the multiplier is a force as in the other rows. A uniform pressure
-  /// passes exactly (docs/algorithms.md, "Mortar").
-  std::vector<std::vector<std::array<int, 9>>> slave_faces;
+  // ---- each list kind's own input, and the plane's: its unit's struct (NodeToNodeInput,
+  // NodeToSegmentInput, NodeToFaceInput, MortarInput, ObstacleInput, ...: its per-subdomain
+  // list, e.g. node to face's master triangles, and its scalar arguments), stored by its
+  // read_list, read_option or read_input, checked by its check_against; a new kind declares
+  // its own and adds nothing here ----
+  /// `Input` to fill in: made at first use with its unit's defaults.
+  template <class Input>
+  Input& input_of() {
+    std::any& held = list_inputs[std::type_index(typeid(Input))];
+    if (!held.has_value()) held = Input{};
+    return std::any_cast<Input&>(held);
+  }
+  /// `Input` as given: its unit's defaults where it was not.
+  template <class Input>
+  const Input& input_of() const {
+    static const Input defaults{};
+    const auto held = list_inputs.find(std::type_index(typeid(Input)));
+    return held == list_inputs.end() ? defaults : std::any_cast<const Input&>(held->second);
+  }
+  std::map<std::type_index, std::any> list_inputs;  ///< by the input's type (read through input_of)
+
   /// The kinds that search masters (node to segment, node to face, mortar): farther slaves get no row.
   double search_distance = 1e300;
 
   // ---- the kinds that own an array of parameters (KindInput) ----
-  /// The plane obstacle (obstacle=, read by contact/obstacle.cpp): a line (a plane in 3D)
-  /// through obstacle_point with outward normal obstacle_normal (pointing away from the
-  /// obstacle): -n.u_slave <= n.(x_slave - point).
-  bool obstacle = false;
-  std::array<double, 3> obstacle_point{0, 0, 0}, obstacle_normal{0, 1, 0};  ///< z entries: 3D only
-  /// The other kinds that own their input (the ball, the cylinder, ...): per kind the entries
+  /// The kinds that own their input (the ball, the cylinder, ...; the plane keeps its own
+  /// ObstacleInput in list_inputs): per kind the entries
   /// of its fetiSetup argument (or of its problem-file key's fields), read and checked by its
   /// unit. A kind given here takes the slave nodes of contactSlave.
   std::map<ContactKind, std::vector<double>> kind_parameters;

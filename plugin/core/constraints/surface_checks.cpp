@@ -1,5 +1,6 @@
 #include "constraints/surface_checks.h"
 
+#include "constraints/contact/obstacle.h"
 #include "base/errors.h"
 
 #include <algorithm>
@@ -142,8 +143,9 @@ void refuse_higher_order_faces(const std::vector<std::vector<std::array<int, 9>>
 
 ObstacleFacing obstacle_facing(const std::vector<SubdomainInput>& subdomains, const ContactInput& contact) {
   ObstacleFacing out;
-  if (!contact.obstacle) return out;
-  const auto& normal = contact.obstacle_normal;
+  const ObstacleInput& plane = contact.input_of<ObstacleInput>();
+  if (!plane.given) return out;
+  const auto& normal = plane.normal;
   const double norm = std::hypot(normal[0], normal[1], normal[2]);
   if (!(norm > 0)) return out;  // refused with the rows
   double magnitude = 0;

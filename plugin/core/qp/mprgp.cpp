@@ -101,6 +101,7 @@ void MprgpSettings::validate() const {
 
 MprgpResult mprgp(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, qp::Budget& budget,
                   const StopTest& stop, const Monitor& monitor) {
+  settings.validate();
   Vec g;
   double g_unused_error = 0;  // g is not returned: not recomputed at the end either
   return mprgp_with_gradient(problem, settings, x, g, false, budget, stop, monitor, &g_unused_error);
@@ -114,7 +115,6 @@ MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings&
   const qp::ConstraintSet& set = problem.constraints;
   const double a_norm = problem.hessian_norm;
   const LinearOperator& preconditioner = problem.preconditioner;
-  settings.validate();
   MprgpResult result;
   const Eigen::Index n = b.size();
   if (x.size() != n || set.size() != n)

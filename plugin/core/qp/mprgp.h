@@ -58,6 +58,8 @@ MprgpResult mprgp(const qp::Problem& problem, const MprgpSettings& settings, Vec
 /// The same, continued from an iterate whose gradient is known: if `gradient_is_current`,
 /// g on entry must equal Ax - b at the (feasible) x, saving one multiplication (SMALBE's
 /// inner solves after a multiplier update); g = Ax - b at the last iterate on return.
+/// `settings` as validated by its caller (SMALBE checks its inner settings once per call,
+/// not once per inner solve).
 /// With `inexact_gradient` (discs only make it nonzero) g may be off by up to that bound, in
 /// and out: g is recomputed only when the bound exceeds 1e-2 ||gP||, not on every return.
 MprgpResult mprgp_with_gradient(const qp::Problem& problem, const MprgpSettings& settings, Vec& x, Vec& g,

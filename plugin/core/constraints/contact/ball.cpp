@@ -1,5 +1,6 @@
 #include "constraints/contact/ball.h"
 
+#include "constraints/contact/obstacle.h"
 #include "constraints/constraint_rows.h"
 
 #include "base/errors.h"
@@ -31,7 +32,7 @@ const KindInput* Ball::input() const {
 }
 
 void Ball::read_input(const std::vector<double>& values, int dimension, ContactInput& contact) const {
-  if (contact.obstacle) throw InputError("obstacle, obstacleBall: give one obstacle, a plane or a ball");
+  if (contact.input_of<ObstacleInput>().given) throw InputError("obstacle, obstacleBall: give one obstacle, a plane or a ball");
   const size_t n = values.size();
   if (n != 3 && n != 4)
     throw InputError(std::string("obstacleBall: needs ") + input()->layout + ", got " + std::to_string(n) + " entries");
@@ -67,7 +68,7 @@ void Ball::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
                                       contact.three_d ? DofRef{node.z_dof->subdomain, node.z_dof->dof} : DofRef{-1, -1}}};
     const auto geometry = std::make_shared<const BallGeometry>(dofs, s, c, radius, contact.three_d);
     Row row{{}, distance - radius + node.x_dof->gap, RowKind::contact, false, geometry, -1,
-            node.x_dof->friction};
+            node.x_dof->law_value};
     const DofRecord* slave[3] = {node.x_dof, node.y_dof, node.z_dof};
     for (size_t k = 0; k < (contact.three_d ? 3u : 2u); ++k)
       if (s[k] != c[k]) row.entries.push_back({slave[k]->subdomain, slave[k]->dof, -(s[k] - c[k]) / distance});

@@ -63,6 +63,22 @@ struct KindInput {
 /// points out of the body holding it (the lists' convention: contactSegments, contactFaces).
 enum class MeshEntries : std::uint8_t { node_dofs, segments, triangles };
 
+/// A scalar argument a list kind owns beside its list (node to node's gap, node to face's
+/// contactNormal): fetiSetup's named argument and a problem file's key in a contact entry of
+/// the kind, a real number or a word (one of `words`; its value is the word's position).
+struct ListOption {
+  const char* argument;            ///< fetiSetup's: "contactNormal"
+  const char* file_key;            ///< a problem file's: "contact_normal"
+  std::vector<const char*> words;  ///< empty: a real number
+  /// Where the key means something, for a problem file's message "<key>: applies to <applies> only".
+  const char* applies;
+};
+
+/// The position of `word` among the option's words, -1 if none.
+int word_position(const ListOption& option, const std::string& word);
+/// Why `word` is refused: "must be \"master\", \"slave\" or \"average\", got \"<word>\"".
+std::string word_refusal(const ListOption& option, const std::string& word);
+
 /// The per-subdomain list a kind owns: fetiSetup's int[int][int] argument, one array of dofs
 /// per subdomain, `dofs` of them per entry (contactSlave, which several kinds share, stays
 /// the front end's); and where a problem file gives it, the key of a contact entry naming a
@@ -74,6 +90,7 @@ struct ListInput {
   const char* file_key = nullptr;  ///< the problem file's key: "master" (nullptr: none)
   int file_components = 0;         ///< the problem's "components" for which the key makes this kind
   MeshEntries file_entries = MeshEntries::node_dofs;  ///< what the key's group gives
+  std::vector<ListOption> options = {};               ///< its scalar arguments, read by read_option
 };
 
 class ContactDiscretization {
@@ -88,10 +105,17 @@ class ContactDiscretization {
   /// The per-subdomain list it owns (nullptr: none).
   virtual const ListInput* list_input() const { return nullptr; }
   /// Stores list_input()'s lists, one per subdomain of this rank (`ids`: their numbers in
-  /// messages; the dofs already checked against each subdomain's size), into `contact`:
-  /// InputError "<argument>[<id>]: needs <layout>" for a list that is not whole entries.
+  /// messages; the dofs already checked against each subdomain's size), into its own input in
+  /// `contact` (a struct of its unit, ContactInput::input_of): InputError "<argument>[<id>]:
+  /// needs <layout>" for a list that is not whole entries.
   virtual void read_list(const std::vector<std::vector<int>>& /*lists*/, const std::vector<int>& /*ids*/,
                          ContactInput& /*contact*/) const {}
+  /// Whether ffeti-solve reads the slave group of a contact entry into its list too, as it
+  /// reads the master group (node to face with contactNormal slave or average: the slave
+  /// surface's faces give the rows' normal, and get no rows).
+  virtual bool lists_slave_group(const ContactInput& /*contact*/) const { return false; }
+  /// Stores the value of list_input()->options[option] (a word's position) into its own input.
+  virtual void read_option(size_t /*option*/, double /*value*/, ContactInput& /*contact*/) const {}
   /// Checks the entries given to input()'s argument in a problem of `dimension` (2 or 3) and
   /// stores them into `contact`: InputError "<argument>: ..." on bad entries. The default
   /// keeps them as ContactInput::kind_parameters[kind()], checked by check_parameters.
@@ -115,6 +139,17 @@ class ContactDiscretization {
   /// where `contact` gives its lists together with input that would choose another kind
   /// for the same slaves. validate_input asks every unit; the default refuses nothing.
   virtual void check_combination(const ContactInput& /*contact*/) const {}
+  /// Its list's part of the records of a rank's subdomains (constraint_records.h), from the
+  /// input it owns in `local_contact` (the rank's own): the dofs of local subdomain k it makes
+  /// slave or master nodes (one flag per dof), its master segments, its faces (master, or a
+  /// mortar's slave faces), as records of the local subdomains (`global_ids`: their global
+  /// indices; add_segment_records, add_face_records).
+  virtual void flag_dofs(const ContactInput& /*local_contact*/, size_t /*k*/, std::vector<char>& /*slave*/,
+                         std::vector<char>& /*master*/) const {}
+  virtual void add_segments(const std::vector<SubdomainInput>& /*local*/, const std::vector<int>& /*global_ids*/,
+                            const ContactInput& /*local_contact*/, std::vector<SegmentRecord>& /*segments*/) const {}
+  virtual void add_faces(const std::vector<SubdomainInput>& /*local*/, const std::vector<int>& /*global_ids*/,
+                         const ContactInput& /*local_contact*/, std::vector<FaceRecord>& /*faces*/) const {}
   /// Whether the input asks for this kind (on all ranks' records alike).
   virtual bool selected(const ContactRecords& in) const = 0;
   /// Appends one contact row per slave node (or none where no master is within reach).
@@ -126,7 +161,7 @@ class ContactDiscretization {
   virtual const char* master_word() const { return nullptr; }
 };
 
-/// Whether any subdomain's list of one of ContactInput's per-subdomain lists has an entry.
+/// Whether any subdomain's list of a per-subdomain list has an entry.
 template <class Lists>
 bool any_entry(const Lists& lists) {
   return std::any_of(lists.begin(), lists.end(), [](const auto& list) { return !list.empty(); });
@@ -135,11 +170,24 @@ bool any_entry(const Lists& lists) {
 /// Every kind, in the order its rows follow one another in B.
 const std::vector<std::unique_ptr<const ContactDiscretization>>& contact_discretizations();
 
+/// Whether `contact` gives the list of `kind` (its unit's list_given): a kind's rule against
+/// another's input asks it so, without reading that kind's own input.
+bool list_given(ContactKind kind, const ContactInput& contact);
+
 /// The kinds that own their input (input() != nullptr), in the registry's order.
 std::vector<const ContactDiscretization*> kinds_with_input();
 
 /// The kinds that own a per-subdomain list (list_input() != nullptr), in the registry's order.
 std::vector<const ContactDiscretization*> kinds_with_lists();
+
+/// The list kinds' scalar arguments (ListInput::options) in the registry's order, each with
+/// its kind and its position among the kind's (read_option's `option`).
+struct KindOption {
+  const ContactDiscretization* kind;
+  size_t index;
+  const ListOption* option;
+};
+std::vector<KindOption> list_options();
 
 /// The kind whose list a problem file's contact entry gives by its key (ListInput::file_key)
 /// in a problem of `components` field components (nullptr: none).

@@ -95,7 +95,7 @@ void Cylinder::add_rows(const ContactRecords& in, std::vector<Row>& rows) const 
                                       {node.z_dof->subdomain, node.z_dof->dof}}};
     const auto geometry = std::make_shared<const CylinderGeometry>(kind(), dofs, s, shape);
     const Point3 n = geometry->normal();
-    Row row{{}, shape.gap_at(s) + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction};
+    Row row{{}, shape.gap_at(s) + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->law_value};
     const DofRecord* slave[3] = {node.x_dof, node.y_dof, node.z_dof};
     for (size_t k = 0; k < 3; ++k)
       if (n[k] != 0) row.entries.push_back({slave[k]->subdomain, slave[k]->dof, -n[k]});

@@ -5,6 +5,8 @@
 #include "constraints/surface_checks.h"
 #include "constraints/contact/face_grid.h"
 #include "constraints/contact/mortar_integration.h"
+#include "constraints/contact/node_to_face.h"
+#include "constraints/contact/obstacle.h"
 
 #include "base/errors.h"
 
@@ -89,24 +91,25 @@ const ListInput* Mortar::list_input() const {
 
 void Mortar::read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
                        ContactInput& contact) const {
-  contact.slave_faces = list_entries<9>(*list_input(), lists, ids);
+  contact.input_of<MortarInput>().slave_faces = list_entries<9>(*list_input(), lists, ids);
 }
 
 void Mortar::check_against(const std::vector<SubdomainInput>& subdomains, const std::vector<size_t>& ids,
                            const ContactInput& contact, int dimension) const {
-  check_face_list(contact.slave_faces, ids, subdomains, list_input()->argument);
-  if (!any_entry(contact.slave_faces)) return;
+  const auto& slave_faces = contact.input_of<MortarInput>().slave_faces;
+  check_face_list(slave_faces, ids, subdomains, list_input()->argument);
+  if (!any_entry(slave_faces)) return;
   // Its masters too (node to face checks their lists; a face with a dof outside its
   // subdomain is left to that check).
   const char* masters = contact_discretizations().at(static_cast<size_t>(ContactKind::node_to_face))->list_input()->argument;
-  refuse_higher_order_faces(contact.master_faces, ids, subdomains, masters);
-  refuse_higher_order_faces(contact.slave_faces, ids, subdomains, list_input()->argument);
+  refuse_higher_order_faces(contact.input_of<NodeToFaceInput>().faces, ids, subdomains, masters);
+  refuse_higher_order_faces(slave_faces, ids, subdomains, list_input()->argument);
   require(kind(), Feature::rows, dimension, list_input()->argument);
 }
 
 void Mortar::check_combination(const ContactInput& contact) const {
-  if (any_entry(contact.slave_faces) &&
-      (any_entry(contact.slave_dofs) || contact.obstacle || contact.kind_parameters.count(ContactKind::ball)))
+  if (list_given(contact) &&
+      (any_entry(contact.slave_dofs) || contact.input_of<ObstacleInput>().given || contact.kind_parameters.count(ContactKind::ball)))
     throw InputError("contactSlaveFaces: the slave nodes of mortar contact are the corners of these faces; give "
                      "contactSlave (node to face, obstacle) or contactSlaveFaces (mortar), not both");
 }
@@ -325,7 +328,7 @@ void Mortar::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
         std::move(pairs[j]), snap, std::move(jump), pending_row.normal);
     // Divided by int phi_j, so that the multiplier is a force like the other rows'.
     Row row{{}, pending_row.gap / pending_row.weight + node.x_dof->gap, RowKind::contact, false, geometry,
-            -1, node.x_dof->friction};
+            -1, node.x_dof->law_value};
     for (const auto& [dof, coefficient] : pending_row.coefficients)
       if (coefficient != 0) row.entries.push_back({dof.first, dof.second, coefficient / pending_row.weight});
     rows.push_back(std::move(row));

@@ -1,6 +1,6 @@
 // Mortar contact (three dimensions): one row per slave node, its normal gap weighted by its
-// shape function over the slave faces that master faces cover (ContactInput::slave_faces,
-// mortar_integration.h).
+// shape function over the slave faces (contactSlaveFaces, MortarInput) that master faces
+// (node to face's contactFaces) cover (mortar_integration.h).
 #pragma once
 
 #include "constraints/contact/contact_discretization.h"
@@ -12,6 +12,19 @@
 #include <utility>
 
 namespace ffeti {
+
+/// Mortar's own input (ContactInput::input_of): contactSlaveFaces, per subdomain the slave
+/// triangles, ordered like the master faces (outward normal). Their corners are the slave
+/// nodes (contactSlave then stays empty), each with one row: the normal gap weighted by its
+/// shape function phi_j and integrated over the overlap of its slave faces with the master
+/// faces of another body facing them (each slave face projected on a master face's plane
+/// along that face's normal n, within contactRadius and the nearest master's distance plus
+/// two edges): sum over the pairs of int phi_j n.(u_m - u_s) <= int phi_j n.(x_s - x_m),
+/// divided by int phi_j so that the multiplier is a force as in the other rows. A uniform
+/// pressure passes exactly (docs/algorithms.md, "Mortar").
+struct MortarInput {
+  std::vector<std::vector<std::array<int, 9>>> slave_faces;
+};
 
 /// A dof's share of a mortar row's weighted jump: coefficient times its component of u.
 struct JumpEntry {
@@ -88,10 +101,22 @@ class Mortar final : public ContactDiscretization {
   /// faces and their masters (contactFaces) P1 faces only.
   void check_against(const std::vector<SubdomainInput>& subdomains, const std::vector<size_t>& ids,
                      const ContactInput& contact, int dimension) const override;
-  bool list_given(const ContactInput& contact) const override { return any_entry(contact.slave_faces); }
+  bool list_given(const ContactInput& contact) const override { return any_entry(contact.input_of<MortarInput>().slave_faces); }
   void read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
                  ContactInput& contact) const override;
-  /// Any slave face (ContactInput::slave_faces) on any rank.
+  /// The slave faces' corners are the slave nodes.
+  void flag_dofs(const ContactInput& local_contact, size_t k, std::vector<char>& slave,
+                 std::vector<char>& /*master*/) const override {
+    const auto& faces = local_contact.input_of<MortarInput>().slave_faces;
+    if (k < faces.size())
+      for (const auto& face : faces[k])
+        for (int dof : face) slave[static_cast<size_t>(dof)] = 1;
+  }
+  void add_faces(const std::vector<SubdomainInput>& local, const std::vector<int>& global_ids,
+                 const ContactInput& local_contact, std::vector<FaceRecord>& faces) const override {
+    add_face_records(local_contact.input_of<MortarInput>().slave_faces, true, local, global_ids, faces);
+  }
+  /// Any slave face on any rank.
   bool selected(const ContactRecords& in) const override;
   void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;
   const char* searched_argument() const override { return "contactSlaveFaces"; }

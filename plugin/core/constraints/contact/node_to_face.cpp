@@ -91,13 +91,6 @@ std::string where(const Point3& s) {
 
 }  // namespace
 
-ContactNormal contact_normal_named(const std::string& word) {
-  if (word == "master") return ContactNormal::master;
-  if (word == "slave") return ContactNormal::slave;
-  if (word == "average") return ContactNormal::average;
-  throw InputError("contactNormal: must be \"master\", \"slave\" or \"average\", got \"" + word + "\"");
-}
-
 Point3 fan_normal(const SlaveFan& fan, const Point3& s, const std::vector<Point3>& neighbours) {
   Point3 sum{0, 0, 0};
   for (const std::array<int, 3>& f : fan.faces) {
@@ -139,9 +132,10 @@ LinearizedFaceRow FaceGeometry::linearized(const NodeMotion& v, double t, bool c
 }
 
 void NodeToFace::check_combination(const ContactInput& contact) const {
-  if (contact.normal == ContactNormal::master) return;
-  if (!any_entry(contact.master_faces) || any_entry(contact.slave_faces))
-    throw InputError(std::string("contactNormal: \"") + (contact.normal == ContactNormal::slave ? "slave" : "average") +
+  const ContactNormal normal = contact.input_of<NodeToFaceInput>().normal;
+  if (normal == ContactNormal::master) return;
+  if (!list_given(contact) || ffeti::list_given(ContactKind::mortar, contact))
+    throw InputError(std::string("contactNormal: \"") + (normal == ContactNormal::slave ? "slave" : "average") +
                      "\" applies to node-to-face contact (contactSlave with contactFaces, the slave surface's faces "
                      "among them); mortar (contactSlaveFaces) and the other kinds take their master's or obstacle's "
                      "normal");
@@ -149,19 +143,25 @@ void NodeToFace::check_combination(const ContactInput& contact) const {
 
 const ListInput* NodeToFace::list_input() const {
   static const ListInput spec{"contactFaces", 9, "9 dofs per face (a_x, a_y, a_z, b_x, ..., c_z)", "master", 3,
-                              MeshEntries::triangles};
+                              MeshEntries::triangles,
+                              {{"contactNormal", "contact_normal", {"master", "slave", "average"},  // ContactNormal's order
+                                "node-to-face contact (3 components, a master group)"}}};
   return &spec;
+}
+
+void NodeToFace::read_option(size_t /*option*/, double value, ContactInput& contact) const {
+  contact.input_of<NodeToFaceInput>().normal = static_cast<ContactNormal>(static_cast<int>(value));
 }
 
 void NodeToFace::read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
                            ContactInput& contact) const {
-  contact.master_faces = list_entries<9>(*list_input(), lists, ids);
+  contact.input_of<NodeToFaceInput>().faces = list_entries<9>(*list_input(), lists, ids);
 }
 
 void NodeToFace::check_against(const std::vector<SubdomainInput>& subdomains, const std::vector<size_t>& ids,
                                const ContactInput& contact, int dimension) const {
-  check_face_list(contact.master_faces, ids, subdomains, list_input()->argument);
-  if (any_entry(contact.master_faces)) require(kind(), Feature::rows, dimension, list_input()->argument);
+  check_face_list(contact.input_of<NodeToFaceInput>().faces, ids, subdomains, list_input()->argument);
+  if (list_given(contact)) require(kind(), Feature::rows, dimension, list_input()->argument);
 }
 
 RowAt FaceGeometry::row_at(const NodeMotion& v, double t) const {
@@ -235,6 +235,7 @@ bool NodeToFace::selected(const ContactRecords& in) const {
 }
 
 void NodeToFace::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
+  const ContactNormal normal = in.contact.input_of<NodeToFaceInput>().normal;
   const FaceGrid grid(in.faces);
   for (const SlaveNode& node : slave_nodes(in.records, in.snap, 3)) {
     const Point3 s{node.x_dof->x, node.x_dof->y, node.x_dof->z};
@@ -248,13 +249,13 @@ void NodeToFace::add_rows(const ContactRecords& in, std::vector<Row>& rows) cons
     std::array<DofRef, 9> face_dofs;
     for (size_t k = 0; k < 9; ++k) face_dofs[k] = {face->subdomain, face->dofs[k]};
     SlaveFan fan;
-    if (in.contact.normal != ContactNormal::master) {
-      fan = fan_at(s, node.x_dof->body, grid, in.contact.normal);
+    if (normal != ContactNormal::master) {
+      fan = fan_at(s, node.x_dof->body, grid, normal);
       if (fan.faces.empty())
         throw InputError("contactNormal: the slave node at " + where(s) +
                          " has no face of its own body in contactFaces: the slave surface's normal is taken from its "
                          "faces, give them in contactFaces too (a slave pairs with faces of other bodies only)");
-      const Point3 n = row_direction(in.contact.normal, unit_normal(face->corners), fan_normal(fan, s, fan.positions));
+      const Point3 n = row_direction(normal, unit_normal(face->corners), fan_normal(fan, s, fan.positions));
       if (dot(n, unit_normal(face->corners)) < kFacing)
         throw InputError("contactNormal: the slave node at " + where(s) +
                          ": its row's normal lies within 15 degrees of its master face's plane (the two surfaces "
@@ -267,7 +268,7 @@ void NodeToFace::add_rows(const ContactRecords& in, std::vector<Row>& rows) cons
                                {node.z_dof->subdomain, node.z_dof->dof}}},
         s, face_dofs, face->corners, on_bent_edge(s, *face, grid), std::move(fan));
     const LinearizedFaceRow linear = geometry->linearized({}, 0, true);
-    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction, beyond_reach};
+    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->law_value, beyond_reach};
     if (beyond_reach && row.rhs < 0) continue;  // behind the face from the start: not a contact it missed
     const DofRecord* slave[3] = {node.x_dof, node.y_dof, node.z_dof};
     for (size_t i = 0; i < 3; ++i)

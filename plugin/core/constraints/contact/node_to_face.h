@@ -1,5 +1,5 @@
 // Node to face (three dimensions): each slave node against the nearest master triangle of
-// another body within the search distance (ContactInput::master_faces), found through the
+// another body within the search distance (contactFaces, NodeToFaceInput), found through the
 // faces' grid.
 #pragma once
 
@@ -8,6 +8,22 @@
 #include "constraints/contact/contact_row_geometry.h"
 
 namespace ffeti {
+
+/// Whose normal a node-to-face row takes (contactNormal=): the master face's (the default),
+/// the slave surface's at the slave node (the area-weighted normals of the slave body's
+/// faces in contactFaces around it), or the two averaged (docs/reference.md, "contactNormal").
+enum class ContactNormal { master, slave, average };
+
+/// Node to face's own input (ContactInput::input_of): contactFaces, per subdomain the master
+/// triangles (mortar's master faces too), each the x, y, z dofs of its corners a, b, c,
+/// ordered so that (b - a) x (c - a) points out of its body. Each slave node (its three dofs
+/// in contactSlave) is projected on the nearest face of another body within contactRadius, p
+/// its closest point, n the face's unit normal: n.(u_p - u_slave) <= n.(x_slave - p), u_p
+/// interpolated linearly on the face.
+struct NodeToFaceInput {
+  std::vector<std::vector<std::array<int, 9>>> faces;
+  ContactNormal normal = ContactNormal::master;  ///< the rows' normal (contactNormal=)
+};
 
 /// The slave surface around a slave node, whose normal a row takes with contactNormal
 /// slave or average: the slave body's faces in contactFaces that have the node as a corner.
@@ -27,10 +43,6 @@ Point3 fan_normal(const SlaveFan& fan, const Point3& s, const std::vector<Point3
 /// The row's normal n (out of the master, towards the slave) for master face normal m:
 /// m, minus the slave's own normal o, or (m - o)/|m - o|.
 Point3 row_direction(ContactNormal normal, const Point3& m, const Point3& o);
-
-/// contactNormal's word: "master", "slave" or "average"; InputError naming contactNormal
-/// otherwise.
-ContactNormal contact_normal_named(const std::string& word);
 
 /// n.(sum_i w_i u_i - u_s) <= n.(s - p), p the slave's projection on the triangle
 /// (node_to_face_row); with a fan, n from the slave surface (row_direction) and p the point
@@ -85,9 +97,19 @@ class NodeToFace final : public ContactDiscretization {
   /// contactFaces: three dimensions, each face checked (check_face_list).
   void check_against(const std::vector<SubdomainInput>& subdomains, const std::vector<size_t>& ids,
                      const ContactInput& contact, int dimension) const override;
-  bool list_given(const ContactInput& contact) const override { return any_entry(contact.master_faces); }
+  bool list_given(const ContactInput& contact) const override { return any_entry(contact.input_of<NodeToFaceInput>().faces); }
   void read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
                  ContactInput& contact) const override;
+  /// contactNormal= (its word's position in ContactNormal's order).
+  void read_option(size_t option, double value, ContactInput& contact) const override;
+  /// With contactNormal slave or average (the slave surface's faces give the normal).
+  bool lists_slave_group(const ContactInput& contact) const override {
+    return contact.input_of<NodeToFaceInput>().normal != ContactNormal::master;
+  }
+  void add_faces(const std::vector<SubdomainInput>& local, const std::vector<int>& global_ids,
+                 const ContactInput& local_contact, std::vector<FaceRecord>& faces) const override {
+    add_face_records(local_contact.input_of<NodeToFaceInput>().faces, false, local, global_ids, faces);
+  }
   /// contactNormal other than master: only with contactFaces and not mortar's contactSlaveFaces.
   void check_combination(const ContactInput& contact) const override;
   bool selected(const ContactRecords& in) const override;

@@ -1,11 +1,13 @@
 #include "constraints/contact/node_to_node.h"
 
+#include "constraints/contact/obstacle.h"
 #include "constraints/constraint_rows.h"
 #include "constraints/input_checks.h"
 
 #include "base/errors.h"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -39,18 +41,24 @@ std::array<DofRef, 3> node_dofs(const NodeComponents& nodes, const DofRecord& at
 }  // namespace
 
 const ListInput* NodeToNode::list_input() const {
-  static const ListInput spec{"contactMaster", 1, "1 dof per entry", "master", 1, MeshEntries::node_dofs};
+  static const ListInput spec{"contactMaster", 1, "1 dof per entry", "master", 1, MeshEntries::node_dofs,
+                              {{"gap", "gap", {}, "node-to-node contact (1 component)"}}};
   return &spec;
+}
+
+void NodeToNode::read_option(size_t /*option*/, double value, ContactInput& contact) const {
+  contact.input_of<NodeToNodeInput>().gap = value;
 }
 
 void NodeToNode::read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& /*ids*/,
                            ContactInput& contact) const {
-  contact.master_dofs = lists;  // one dof per entry: every list is whole
+  contact.input_of<NodeToNodeInput>().masters = lists;  // one dof per entry: every list is whole
 }
 
 void NodeToNode::check_against(const std::vector<SubdomainInput>& subdomains, const std::vector<size_t>& ids,
                                const ContactInput& contact, int /*dimension*/) const {
-  check_list_dofs(contact.master_dofs, ids, subdomains, list_input()->argument);
+  check_list_dofs(contact.input_of<NodeToNodeInput>().masters, ids, subdomains, list_input()->argument);
+  if (!std::isfinite(contact.input_of<NodeToNodeInput>().gap)) throw InputError("gap: must be finite");
 }
 
 std::vector<RowAt> NodeToNodeGeometry::slip_rows() const {
@@ -70,9 +78,9 @@ std::vector<RowAt> NodeToNodeGeometry::slip_rows() const {
 }
 
 void NodeToNode::check_combination(const ContactInput& contact) const {
-  if (any_entry(contact.master_dofs) &&
-      (any_entry(contact.master_segments) || any_entry(contact.master_faces) || contact.obstacle ||
-       contact.kind_parameters.count(ContactKind::ball)))
+  if (list_given(contact) &&
+      (ffeti::list_given(ContactKind::node_to_segment, contact) || ffeti::list_given(ContactKind::node_to_face, contact) ||
+       contact.input_of<ObstacleInput>().given || contact.kind_parameters.count(ContactKind::ball)))
     throw InputError("contactMaster: node-to-node contact cannot be combined with contactSegments, contactFaces or "
                      "obstacle in one problem (the slave dofs would belong to both)");
 }
@@ -88,7 +96,7 @@ void NodeToNode::add_rows(const ContactRecords& in, std::vector<Row>& rows) cons
   std::optional<NodeComponents> nodes;
   if (in.contact.has_friction()) nodes.emplace(in.records, in.snap);
   for (const auto& [slave, master] : node_to_node_pairs(in.records, in.snap)) {
-    const double gap = in.contact.gap + slave->gap;
+    const double gap = in.contact.input_of<NodeToNodeInput>().gap + slave->gap;
     std::array<DofRef, 3> slave_node{{{-1, -1}, {-1, -1}, {-1, -1}}}, master_node = slave_node;
     if (nodes) slave_node = node_dofs(*nodes, *slave, components), master_node = node_dofs(*nodes, *master, components);
     rows.push_back({{{slave->subdomain, slave->dof, 1.0}, {master->subdomain, master->dof, -1.0}},
@@ -100,7 +108,7 @@ void NodeToNode::add_rows(const ContactRecords& in, std::vector<Row>& rows) cons
                         Point3{slave->x, slave->y, slave->z}, gap, in.contact.three_d, slave->component, slave_node,
                         master_node),
                     -1,
-                    slave->friction});
+                    slave->law_value});
   }
 }
 

@@ -8,6 +8,15 @@
 
 namespace ffeti {
 
+/// Node to node's own input (ContactInput::input_of): contactMaster, per subdomain the master
+/// dofs; each slave dof pairs with the master dof of another body at the same position and
+/// component: u_slave - u_master <= gap. (For the seed's membranes, u1(1,y) <= u2(1,y):
+/// slaves on body 1, masters on body 2.)
+struct NodeToNodeInput {
+  std::vector<std::vector<int>> masters;
+  double gap = 0;  ///< gap=, a problem file's "gap"
+};
+
 /// The row does not depend on positions: its derivative under motion is zero.
 class NodeToNodeGeometry final : public ContactRowGeometry {
  public:
@@ -50,12 +59,20 @@ class NodeToNode final : public ContactDiscretization {
   /// contactMaster pairs the slave dofs: refuses contactSegments, contactFaces or an obstacle beside it.
   void check_combination(const ContactInput& contact) const override;
   const ListInput* list_input() const override;
-  /// contactMaster's dofs within each subdomain.
+  /// contactMaster's dofs within each subdomain, gap finite.
   void check_against(const std::vector<SubdomainInput>& subdomains, const std::vector<size_t>& ids,
                      const ContactInput& contact, int dimension) const override;
-  bool list_given(const ContactInput& contact) const override { return any_entry(contact.master_dofs); }
+  bool list_given(const ContactInput& contact) const override { return any_entry(contact.input_of<NodeToNodeInput>().masters); }
   void read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
                  ContactInput& contact) const override;
+  /// gap=.
+  void read_option(size_t option, double value, ContactInput& contact) const override;
+  void flag_dofs(const ContactInput& local_contact, size_t k, std::vector<char>& /*slave*/,
+                 std::vector<char>& master) const override {
+    const auto& masters = local_contact.input_of<NodeToNodeInput>().masters;
+    if (k < masters.size())
+      for (int dof : masters[k]) master[static_cast<size_t>(dof)] = 1;
+  }
   /// The slaves' default pairing: where no other kind of the registry is selected (so a new
   /// kind needs no word here).
   bool selected(const ContactRecords& in) const override;

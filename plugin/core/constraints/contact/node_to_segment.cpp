@@ -93,13 +93,14 @@ const ListInput* NodeToSegment::list_input() const {
 
 void NodeToSegment::read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
                               ContactInput& contact) const {
-  contact.master_segments = list_entries<4>(*list_input(), lists, ids);
+  contact.input_of<NodeToSegmentInput>().segments = list_entries<4>(*list_input(), lists, ids);
 }
 
 void NodeToSegment::check_against(const std::vector<SubdomainInput>& subdomains, const std::vector<size_t>& ids,
                                   const ContactInput& contact, int dimension) const {
-  if (any_entry(contact.master_segments)) require(kind(), Feature::rows, dimension, list_input()->argument);
-  check_entry_dofs(contact.master_segments, ids, subdomains, list_input()->argument);
+  const auto& segments = contact.input_of<NodeToSegmentInput>().segments;
+  if (any_entry(segments)) require(kind(), Feature::rows, dimension, list_input()->argument);
+  check_entry_dofs(segments, ids, subdomains, list_input()->argument);
 }
 
 RowAt NodeToSegmentGeometry::row_at(const NodeMotion& v, double t) const {
@@ -140,7 +141,7 @@ void NodeToSegment::add_rows(const ContactRecords& in, std::vector<Row>& rows) c
         std::array<DofRef, 2>{{{node.x_dof->subdomain, node.x_dof->dof}, {node.y_dof->subdomain, node.y_dof->dof}}},
         master, Point{sx, sy}, Point{best->ax, best->ay}, Point{best->bx, best->by});
     const LinearizedRow linear = node_to_segment_row(geometry->s, geometry->a, geometry->b);
-    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction, beyond_reach};
+    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->law_value, beyond_reach};
     if (beyond_reach && row.rhs < 0) continue;  // behind the segment from the start
     const std::vector<DofRef> dofs = geometry->dofs();
     for (size_t k = 0; k < 6; ++k)

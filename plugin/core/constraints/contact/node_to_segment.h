@@ -1,5 +1,5 @@
 // Node to segment (plane problems): each slave node against the nearest master segment of
-// another body within the search distance (ContactInput::master_segments).
+// another body within the search distance (contactSegments, NodeToSegmentInput).
 #pragma once
 
 #include "constraints/contact/contact_discretization.h"
@@ -7,6 +7,16 @@
 #include "constraints/contact/contact_row_geometry.h"
 
 namespace ffeti {
+
+/// Node to segment's own input (ContactInput::input_of): contactSegments, per subdomain
+/// (a_x, a_y, b_x, b_y) of each master segment. Each slave node (both its dofs in
+/// contactSlave) is projected on the nearest master segment of another body within
+/// contactRadius; with p = (1 - xi) a + xi b and n the segment's outward normal,
+/// n.(u_p - u_slave) <= n.(x_slave - p). Segments run with their body on the left (FreeFEM's
+/// orientation of a counter-clockwise border), so n = (b - a) rotated clockwise.
+struct NodeToSegmentInput {
+  std::vector<std::vector<std::array<int, 4>>> segments;
+};
 
 /// n.(u_p - u_s) <= n.(s - p), p the slave's projection on segment a-b (node_to_segment_row).
 class NodeToSegmentGeometry final : public ContactRowGeometry {
@@ -44,9 +54,15 @@ class NodeToSegment final : public ContactDiscretization {
   /// contactSegments: plane problems only, its dofs within each subdomain.
   void check_against(const std::vector<SubdomainInput>& subdomains, const std::vector<size_t>& ids,
                      const ContactInput& contact, int dimension) const override;
-  bool list_given(const ContactInput& contact) const override { return any_entry(contact.master_segments); }
+  bool list_given(const ContactInput& contact) const override {
+    return any_entry(contact.input_of<NodeToSegmentInput>().segments);
+  }
   void read_list(const std::vector<std::vector<int>>& lists, const std::vector<int>& ids,
                  ContactInput& contact) const override;
+  void add_segments(const std::vector<SubdomainInput>& local, const std::vector<int>& global_ids,
+                    const ContactInput& local_contact, std::vector<SegmentRecord>& segments) const override {
+    add_segment_records(local_contact.input_of<NodeToSegmentInput>().segments, local, global_ids, segments);
+  }
   bool selected(const ContactRecords& in) const override { return !in.segments.empty(); }
   void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;
   const char* searched_argument() const override { return "contactSegments"; }

@@ -41,21 +41,23 @@ void Obstacle::read_input(const std::vector<double>& values, int dimension, Cont
   if (dimension == 3 && values.size() == 4)
     throw InputError("obstacle: with Z (three dimensions) needs six entries, a plane [px, py, pz, nx, ny, nz]; "
                      "got four (a line of a plane problem)");
-  contact.obstacle = true;
+  ObstacleInput& plane = contact.input_of<ObstacleInput>();
+  plane.given = true;
   if (values.size() == 6) {  // three dimensions: a plane (validate_input refuses z entries without Z)
-    contact.obstacle_point = {values[0], values[1], values[2]};
-    contact.obstacle_normal = {values[3], values[4], values[5]};
+    plane.point = {values[0], values[1], values[2]};
+    plane.normal = {values[3], values[4], values[5]};
   } else {
-    contact.obstacle_point = {values[0], values[1], 0.0};
-    contact.obstacle_normal = {values[2], values[3], 0.0};
+    plane.point = {values[0], values[1], 0.0};
+    plane.normal = {values[2], values[3], 0.0};
   }
 }
 
 void Obstacle::check_against(const std::vector<SubdomainInput>& /*subdomains*/, const std::vector<size_t>& /*ids*/,
                              const ContactInput& contact, int dimension) const {
-  if (!contact.obstacle) return;
-  const auto& point = contact.obstacle_point;
-  const auto& normal = contact.obstacle_normal;
+  const ObstacleInput& plane = contact.input_of<ObstacleInput>();
+  if (!plane.given) return;
+  const auto& point = plane.point;
+  const auto& normal = plane.normal;
   if (dimension == 2 && (point[2] != 0 || normal[2] != 0))
     throw InputError("obstacle: six entries (a plane) need Z (three dimensions); a plane problem takes four");
   for (double v : {point[0], point[1], point[2], normal[0], normal[1], normal[2]})
@@ -64,7 +66,9 @@ void Obstacle::check_against(const std::vector<SubdomainInput>& /*subdomains*/, 
 
 void Obstacle::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
   const ContactInput& contact = in.contact;
-  const auto& normal = contact.obstacle_normal;
+  const ObstacleInput& plane = contact.input_of<ObstacleInput>();
+  const auto& point = plane.point;
+  const auto& normal = plane.normal;
   const double norm = contact.three_d ? std::hypot(normal[0], normal[1], normal[2]) : std::hypot(normal[0], normal[1]);
   if (!(norm > 0)) throw InputError("obstacle: the normal must not be zero");
   const Point3 n{normal[0] / norm, normal[1] / norm, normal[2] / norm};
@@ -75,15 +79,15 @@ void Obstacle::add_rows(const ContactRecords& in, std::vector<Row>& rows) const 
                                       contact.three_d ? DofRef{node.z_dof->subdomain, node.z_dof->dof} : DofRef{-1, -1}}};
     // -n.u_s <= n.(s - point): in the plane the row the sensitivity analysis differentiates,
     // in 3D the same with z.
-    LinearizedRow linear = obstacle_row({node.x_dof->x, node.x_dof->y}, {contact.obstacle_point[0], contact.obstacle_point[1]},
+    LinearizedRow linear = obstacle_row({node.x_dof->x, node.x_dof->y}, {point[0], point[1]},
                                         {n[0], n[1]});
     if (contact.three_d) {
       linear.coefficients[2] = -n[2];
-      linear.gap += n[2] * (node.x_dof->z - contact.obstacle_point[2]);
+      linear.gap += n[2] * (node.x_dof->z - point[2]);
     }
     const auto geometry = std::make_shared<const ObstacleGeometry>(
-        dofs, Point3{node.x_dof->x, node.x_dof->y, node.x_dof->z}, contact.obstacle_point, n, contact.three_d);
-    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->friction};
+        dofs, Point3{node.x_dof->x, node.x_dof->y, node.x_dof->z}, point, n, contact.three_d);
+    Row row{{}, linear.gap + node.x_dof->gap, RowKind::contact, false, geometry, -1, node.x_dof->law_value};
     for (size_t k = 0; k < (contact.three_d ? 3u : 2u); ++k)
       if (linear.coefficients[k] != 0) row.entries.push_back({slave[k]->subdomain, slave[k]->dof, linear.coefficients[k]});
     rows.push_back(std::move(row));

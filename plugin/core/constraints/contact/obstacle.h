@@ -1,4 +1,4 @@
-// A rigid obstacle (ContactInput::obstacle): a line in the plane, a plane in three
+// A rigid obstacle (obstacle=, ObstacleInput): a line in the plane, a plane in three
 // dimensions, with its outward unit normal n; each slave node s gets
 // -n.u_s <= n.(s - point).
 #pragma once
@@ -7,6 +7,14 @@
 #include "constraints/contact/contact_row_geometry.h"
 
 namespace ffeti {
+
+/// The plane obstacle's own input (ContactInput::input_of): a line (a plane in 3D) through
+/// `point` with outward normal `normal` (pointing away from the obstacle):
+/// -n.u_slave <= n.(x_slave - point).
+struct ObstacleInput {
+  bool given = false;
+  std::array<double, 3> point{0, 0, 0}, normal{0, 1, 0};  ///< z entries: 3D only
+};
 
 class ObstacleGeometry final : public ContactRowGeometry {
  public:
@@ -38,12 +46,12 @@ class Obstacle final : public ContactDiscretization {
   }
   /// obstacle = [px, py, nx, ny] (with Z: [px, py, pz, nx, ny, nz]).
   const KindInput* input() const override;
-  /// Into ContactInput::obstacle, obstacle_point and obstacle_normal.
+  /// Into its ObstacleInput.
   void read_input(const std::vector<double>& values, int dimension, ContactInput& contact) const override;
   /// For a caller that fills them itself: z entries only with Z, finite entries.
   void check_against(const std::vector<SubdomainInput>& subdomains, const std::vector<size_t>& ids,
                      const ContactInput& contact, int dimension) const override;
-  bool selected(const ContactRecords& in) const override { return in.contact.obstacle; }
+  bool selected(const ContactRecords& in) const override { return in.contact.input_of<ObstacleInput>().given; }
   void add_rows(const ContactRecords& in, std::vector<Row>& rows) const override;
 };
 

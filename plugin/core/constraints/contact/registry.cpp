@@ -37,6 +37,10 @@ ContactKind ContactDiscretization::kind() const {
   return static_cast<ContactKind>(at - units.begin());
 }
 
+bool list_given(ContactKind kind, const ContactInput& contact) {
+  return contact_discretizations().at(static_cast<size_t>(kind))->list_given(contact);
+}
+
 std::vector<const ContactDiscretization*> kinds_with_input() {
   std::vector<const ContactDiscretization*> kinds;
   for (const auto& unit : contact_discretizations())
@@ -51,10 +55,31 @@ std::vector<const ContactDiscretization*> kinds_with_lists() {
   return kinds;
 }
 
+std::vector<KindOption> list_options() {
+  std::vector<KindOption> options;
+  for (const ContactDiscretization* unit : kinds_with_lists())
+    for (size_t i = 0; i < unit->list_input()->options.size(); ++i)
+      options.push_back({unit, i, &unit->list_input()->options[i]});
+  return options;
+}
+
 const ContactDiscretization* file_list_kind(int components) {
   for (const ContactDiscretization* unit : kinds_with_lists())
     if (unit->list_input()->file_key && unit->list_input()->file_components == components) return unit;
   return nullptr;
+}
+
+int word_position(const ListOption& option, const std::string& word) {
+  for (size_t i = 0; i < option.words.size(); ++i)
+    if (word == option.words[i]) return static_cast<int>(i);
+  return -1;
+}
+
+std::string word_refusal(const ListOption& option, const std::string& word) {
+  std::string choices;
+  for (size_t i = 0; i < option.words.size(); ++i)
+    choices += std::string(i == 0 ? "" : i + 1 == option.words.size() ? " or " : ", ") + "\"" + option.words[i] + "\"";
+  return "must be " + choices + ", got \"" + word + "\"";
 }
 
 void check_whole_entries(const ListInput& spec, const std::vector<std::vector<int>>& lists, const std::vector<int>& ids) {
