@@ -2,6 +2,7 @@
 // what it is for: a floating block held along the floor by Coulomb friction alone, pulled
 // just under mu W, converges in a bounded number of multiplications (SMALBE's plain
 // multiplier update crawled there for thousands, docs/log.md 2026-12-06).
+#include "constraints/contact/obstacle.h"
 #include "constraints/problem_input.h"
 #include "feti/feti_problem.h"
 #include "qp/held_modes.h"
@@ -107,9 +108,10 @@ FetiResult pulled_block(double q, double mu) {
   }
   ContactInput contact;
   contact.slave_dofs = bottom_dofs(blocks);
-  contact.obstacle = true;
-  contact.obstacle_point = {0, 0, -0.001};
-  contact.obstacle_normal = {0, 0, 1};
+  ObstacleInput& floor = contact.input_of<ObstacleInput>();
+  floor.given = true;
+  floor.point = {0, 0, -0.001};
+  floor.normal = {0, 0, 1};
   contact.friction = mu;
   FetiSetupSettings setup;
   setup.variant = FetiVariant::tfeti;
