@@ -133,13 +133,16 @@ def friction_onset_section():
         "Reading: every pull up to 0.999 μW converged and met Coulomb's law; every pull above μW",
         "was reported infeasible without a multiplication, by the law's own statics check",
         "(forces within the friction cones balancing the loads, [algorithms](../algorithms.md#friction)).",
-        f"What this costs is not yet what it should: up to {float(worst['ratio']):.0f} times the",
+        f"What this costs is not yet what it should (aim: at most 5 times the frictionless solve): up to "
+        f"{float(worst['ratio']):.1f} times the",
         f"frictionless solve ({worst['dim']}D, mesh {worst['size']}, q = {worst['q']}); at q ≥ 0.99 from "
-        f"{min(float(r['ratio']) for r in near):.1f} to {max(float(r['ratio']) for r in near):.0f} times.",
-        "Where it goes, traced in an earlier run ([log](../log.md), 2026-12-06): with nearly every",
-        "pair slipping, each Tresca solve's SMALBE outer loop moves the multiplier of the body's",
-        "balance a little per round in an unchanging direction, hundreds of cheap rounds; the",
-        "remedies tried there were not kept.",
+        f"{min(float(r['ratio']) for r in near):.1f} to {max(float(r['ratio']) for r in near):.1f} times.",
+        "Near the onset, with nearly every pair slipping, SMALBE's outer loop used to move the multiplier",
+        "of the body's balance a little per round in an unchanging direction for hundreds of rounds",
+        "(before and after in the [log](../log.md), 2026-12-06, seventeenth session); a step that balances",
+        "the rigid modes only friction holds, safeguarded by the augmented Lagrangian, now cuts that",
+        "crawl ([algorithms](../algorithms.md#friction), held modes). What remains is the Coulomb fixed",
+        "point's own cost: its Tresca solves (the column above), the first two the dearest.",
         "",
     ]
 
