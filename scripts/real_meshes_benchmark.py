@@ -261,7 +261,10 @@ def render():
               f"Parts of about {PART_NODES} nodes; `time_*` the phases of the whole run (gmsh's meshing, METIS with "
               "`fetiConnectParts` and the cut into part meshes, FreeFEM's assembly, the plugin's set-up, the "
               "factorizations, the dual solve); memory: the factors' bytes and the process's peak resident set, per "
-              "unknown; GB/s: the bytes one multiplication reads (every factor once) over its measured time.", ""]
+              "unknown; GB/s: the bytes one multiplication reads (every factor once) over its measured time." +
+              (" Other work shared the machine during this run, so the time columns scatter with its load from "
+               "row to row; the counts and bytes do not depend on it."
+               if max(f(run_row, "load_at_start"), f(run_row, "load_at_end")) >= 0.5 else ""), ""]
     lines += markdown_table(weak, [
         ("h", "h"), ("unknowns", ("unknowns", ",.0f")), ("parts", "subdomains"), ("dual", ("dual", ",.0f")),
         ("active", "active"), ("Hessian", "hessian"), ("outer", "outer"),
