@@ -151,20 +151,16 @@ bool ConstraintSet::holds_tangents(const Vec& x, const Vec& g, double a_norm) co
   return std::any_of(kinds_.begin(), kinds_.end(), [&](const auto& kind) { return kind->holds_tangents(x, g, a_norm); });
 }
 
-namespace {
-bool bounded_kind(const Block& block) { return block.kind == BlockKind::box || block.kind == BlockKind::disc; }
-}  // namespace
-
 double ConstraintSet::linear_minimum(const Vec& y, Vec& x) const {
   double value = 0;
   for (const auto& kind : kinds_)
-    if (bounded_kind(kind->block())) value += kind->linear_minimum(y, x);
+    if (kind->block().compact()) value += kind->linear_minimum(y, x);
   return value;
 }
 
 void ConstraintSet::add_linear_minimizer_change(const Vec& y, const Vec& dy, Vec& dx) const {
   for (const auto& kind : kinds_)
-    if (bounded_kind(kind->block())) kind->add_linear_minimizer_change(y, dy, dx);
+    if (kind->block().compact()) kind->add_linear_minimizer_change(y, dy, dx);
 }
 
 int ConstraintSet::off_bound_count(const Vec& x) const {

@@ -16,20 +16,18 @@ constexpr int kNewtonSteps = 30;
 /// Balanced when ||U'x|| is below this share of the forces that enter it.
 constexpr double kBalanced = 1e-12;
 
-bool bounded(const Block& block) { return block.kind == BlockKind::box || block.kind == BlockKind::disc; }
-
 }  // namespace
 
 HeldModes::HeldModes(const Eigen::MatrixXd& C, const ConstraintSet& set) : set_(set) {
-  if (C.rows() == 0 || C.cols() != set.size()) return;
+  // Nothing to hold without a bounded block: a frictionless solve copies nothing (C is k x n,
+  // dense).
+  const auto& blocks = set.blocks();
+  if (C.rows() == 0 || C.cols() != set.size() ||
+      std::none_of(blocks.begin(), blocks.end(), [](const Block& block) { return block.compact(); }))
+    return;
   Eigen::MatrixXd unbounded_part = C;  // C with the bounded blocks' columns zeroed
-  bool any = false;
-  for (const Block& block : set.blocks()) {
-    if (!bounded(block)) continue;
-    unbounded_part.middleCols(block.first, block.size).setZero();
-    any = true;
-  }
-  if (!any) return;
+  for (const Block& block : blocks)
+    if (block.compact()) unbounded_part.middleCols(block.first, block.size).setZero();
   // a with C_u'a = 0, C_u the unbounded columns: the generalized eigenvectors of
   // (C_u C_u', CC') with eigenvalue 0, normalized a'CC'a = 1, so U = C'a has orthonormal columns.
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(unbounded_part * unbounded_part.transpose(),
@@ -43,7 +41,7 @@ HeldModes::HeldModes(const Eigen::MatrixXd& C, const ConstraintSet& set) : set_(
   for (size_t j = 0; j < held.size(); ++j) A.col(static_cast<Eigen::Index>(j)) = eigen.eigenvectors().col(held[j]);
   U_ = C.transpose() * A;
   for (const Block& block : set.blocks())
-    if (!bounded(block)) U_.middleRows(block.first, block.size).setZero();  // round-off there
+    if (!block.compact()) U_.middleRows(block.first, block.size).setZero();  // round-off there
 }
 
 double HeldModes::exact_step(const Vec& y, const Vec& Up, Vec& x) const {

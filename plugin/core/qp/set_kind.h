@@ -32,6 +32,9 @@ struct Block {
   Eigen::Index first = 0;
   Eigen::Index size = 0;
   BlockKind kind = BlockKind::free;
+  /// A box or a disc: bounded in every direction, so a linear function has a minimum on it
+  /// (SetKind::linear_minimum; ConstraintSet::bounded means some block is not free).
+  bool compact() const { return kind == BlockKind::box || kind == BlockKind::disc; }
 };
 
 class SetKind {
