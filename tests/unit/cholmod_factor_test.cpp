@@ -287,5 +287,27 @@ TEST(CholmodFactor, SupernodalForwardAndBackwardHalvesComposeToTheSolve) {
   EXPECT_NEAR(y.squaredNorm(), b.dot(whole), 1e-10 * std::abs(b.dot(whole)));
 }
 
+TEST(CholmodFactor, FactorizationsOnSeveralThreadsAtOnceGiveTheSerialFactorBitwise) {
+  // Large enough for CHOLMOD to try METIS beside AMD, whose random generator is global:
+  // concurrent analyses drew from one stream and ordered (hence rounded) differently from
+  // run to run.
+  const SparseMatrix K = block(12);
+  const Vec b = Vec::LinSpaced(K.rows(), -1, 2);
+  Vec serial;
+  {
+    CholmodFactor factor(FactorKind::supernodal);
+    ASSERT_LT(factor.factorize(K), 0);
+    factor.solve(b, serial);
+  }
+  constexpr int kFactors = 8;
+  std::vector<Vec> concurrent(kFactors);
+#pragma omp parallel for num_threads(4) schedule(static, 1)
+  for (int k = 0; k < kFactors; ++k) {
+    CholmodFactor factor(FactorKind::supernodal);
+    if (factor.factorize(K) < 0) factor.solve(b, concurrent[static_cast<size_t>(k)]);
+  }
+  for (int k = 0; k < kFactors; ++k) EXPECT_TRUE(concurrent[static_cast<size_t>(k)] == serial) << "factor " << k;
+}
+
 }  // namespace
 }  // namespace ffeti

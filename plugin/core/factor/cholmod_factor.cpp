@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstring>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -96,6 +97,17 @@ class SerialRegionsOnOneThread {
   int previous_ = -1;
 };
 
+/// cholmod_analyze one at a time in the process. Its fill-reducing choice may call METIS,
+/// whose random generator (GKlib's) is global state: two orderings on two threads draw from
+/// one stream in whatever order the threads reach it, so the orderings, hence the factors'
+/// rounding and the iteration counts, changed from run to run (the sphere on the plane at
+/// h 0.07: 158 to 166 Hessian multiplications on two threads, 163 on one).
+cholmod_factor* analyze_alone(cholmod_sparse* A, cholmod_common* common) {
+  static std::mutex one_ordering;
+  const std::lock_guard<std::mutex> lock(one_ordering);
+  return cholmod_analyze(A, common);
+}
+
 }  // namespace
 
 bool interface_ordering_pays(double fill_entries, double saved_entries, double extra_flops) {
@@ -159,7 +171,7 @@ int CholmodFactor::factorize(const SparseMatrix& A, SharedAnalyses* shared, cons
       factor_ = shared->copy(view, common_.supernodal, interface, &common_, &analysis_flops_, &analysis_nonzeros_,
                              &interface_last);
     if (!factor_) {
-      factor_ = cholmod_analyze(&view, &common_);
+      factor_ = analyze_alone(&view, &common_);
       if (!factor_) throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
       analysis_flops_ = common_.fl, analysis_nonzeros_ = common_.lnz;
       if (ordering_ != InterfaceOrdering::fill_reducing && !interface.empty() && !factor_->is_super)
@@ -255,7 +267,7 @@ int CholmodFactor::factorize_with_last(const SparseMatrix& A, const std::vector<
     SparseMatrix block(static_cast<Eigen::Index>(first.size()), static_cast<Eigen::Index>(first.size()));
     block.setFromTriplets(entries.begin(), entries.end());
     cholmod_sparse block_view = view_lower(block);
-    cholmod_factor* analysis = cholmod_analyze(&block_view, &common_);
+    cholmod_factor* analysis = analyze_alone(&block_view, &common_);
     if (!analysis) throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
     const auto* block_order = static_cast<const int*>(analysis->Perm);
     for (size_t k = 0; k < first.size(); ++k) order.push_back(first[static_cast<size_t>(block_order[k])]);
