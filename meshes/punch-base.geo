@@ -22,5 +22,8 @@ Background Field = 1;
 Mesh.MeshSizeExtendFromBoundary = 0;
 Mesh.MeshSizeFromPoints = 0;
 Mesh.MeshSizeFromCurvature = 0;
-Mesh.Algorithm3D = 10;   // HXT, the fastest at millions of tetrahedra (7.8 s against Delaunay's 92 s at hc = 0.25)
-General.NumThreads = 1;  // one thread: the same mesh on every run (HXT on threads gave a different one each time)
+// Delaunay: the same mesh in every process. HXT (Algorithm3D = 10, ten times faster: 3.6 s
+// against 38.7 s at hc = 0.25) gave a mesh that changed with the process's environment even
+// on one thread (another folder, OMP_NUM_THREADS or -nt 1 set: four different meshes at
+// hc = 0.7, 9791 to 9800 nodes), so counts moved between runs by the mesh alone.
+Mesh.Algorithm3D = 1;
