@@ -213,10 +213,30 @@ def undivided_section(weak):
     lines += [""]
     lines += markdown_table(undivided, [
         ("h", "h"), ("unknowns", ("unknowns", ",.0f")), ("active", "active"), ("Hessian", "hessian"),
-        ("outer", "outer"), ("METIS parts: Hessian", lambda r: cut[r["h"]]["hessian"] if r["h"] in cut else "-"),
+        ("outer", "outer"), ("CG / expansion", lambda r: f"{r['cg']} / {r['expansion']}" if r.get("cg") else "-"),
+        ("METIS parts: Hessian", lambda r: cut[r["h"]]["hessian"] if r["h"] in cut else "-"),
         ("parts / undivided",
          lambda r: f"{f(cut[r['h']], 'hessian') / f(r, 'hessian'):.2f}" if r["h"] in cut else "-"),
         ("dual solve [s]", ("time_solve", ".1f"))])
+    return lines
+
+
+def step_kinds_section(weak):
+    """Where the weak table's multiplications go: MPRGP's steps by kind, per outer iteration."""
+    done = [r for r in weak if r["status"] != "stopped" and r.get("cg")]
+    if not done:
+        return []
+    lines = ["", "## Where the multiplications go", "",
+             "The weak table's solves by the kind of step that spent each Hessian multiplication: MPRGP's "
+             "conjugate gradient steps, its expansion steps (a projected step that grows the active set) and "
+             "proportioning steps (one that frees rows), and the rest (SMALBE's updates and the stop tests' "
+             "recomputed gradients); SMALBE's outer iterations and its penalty increases beside them.", ""]
+    lines += markdown_table(done, [
+        ("h", "h"), ("unknowns", ("unknowns", ",.0f")), ("active", "active"), ("Hessian", "hessian"),
+        ("CG", "cg"), ("expansion", "expansion"), ("proportioning", "proportioning"),
+        ("rest", lambda r: f"{f(r, 'hessian') - f(r, 'cg') - f(r, 'expansion') - f(r, 'proportioning'):.0f}"),
+        ("outer", "outer"), ("Hessian per outer", lambda r: f"{f(r, 'hessian') / f(r, 'outer'):.1f}"),
+        ("penalty increases", "penalty_increases")])
     return lines
 
 
@@ -311,6 +331,7 @@ def render():
         ("active FETI / peer", lambda r: f"{r['active']} / {r['active_peer']}"),
         ("PDAS iterations", "pdas_iterations"), ("FETI whole run [s]", lambda r: f"{whole(r):.1f}"),
         ("peer [s]", ("time_peer", ".1f"))])
+    lines += step_kinds_section(weak)
     lines += undivided_section(weak)
     lines += ["", "Tables: `real-meshes-weak.csv`, `real-meshes-parts.csv`, `real-meshes-peer.csv`, "
               "`real-meshes-undivided.csv`, `real-meshes-run.csv`; `scripts/real_meshes_benchmark.py --render` "
