@@ -28,22 +28,26 @@ Eigen::MatrixXd random_matrix(Eigen::Index rows, Eigen::Index cols, unsigned see
 }
 
 TEST(PackedSymmetric, AppliesItsLowerTriangleAsTheSymmetricMatrix) {
-  const Eigen::MatrixXd A = random_matrix(7, 7, 1);
-  const Eigen::MatrixXd S = A + A.transpose();
-  Eigen::MatrixXd with_other_upper = S;
-  with_other_upper.triangularView<Eigen::StrictlyUpper>().setConstant(99);  // not read
-  const PackedSymmetric packed(with_other_upper);
-  EXPECT_DOUBLE_EQ(packed.bytes(), 7 * 8 / 2 * 8.0);
-  EXPECT_DOUBLE_EQ(packed.bytes(), packed_symmetric_bytes(7));
-  EXPECT_LT((packed.full() - S).norm(), 1e-15 * S.norm());
-  const Eigen::VectorXd x = random_matrix(7, 1, 2);
-  Eigen::VectorXd y;
-  packed.apply(x, y);
-  EXPECT_LT((y - S * x).norm(), 1e-14 * (S * x).norm());
-  const Eigen::MatrixXd X = random_matrix(7, 3, 3);
-  Eigen::MatrixXd Y;
-  packed.apply(X, Y);
-  EXPECT_LT((Y - S * X).norm(), 1e-14 * (S * X).norm());
+  // Within one panel, exactly one, and several with a partial last one.
+  const Eigen::Index width = PackedSymmetric::kPanelWidth;
+  for (const Eigen::Index t : {width - 1, width, 2 * width + 3}) {
+    const Eigen::MatrixXd A = random_matrix(t, t, 1);
+    const Eigen::MatrixXd S = A + A.transpose();
+    Eigen::MatrixXd with_other_upper = S;
+    with_other_upper.triangularView<Eigen::StrictlyUpper>().setConstant(99);  // not read
+    const PackedSymmetric packed(with_other_upper);
+    EXPECT_DOUBLE_EQ(packed.bytes(), static_cast<double>(t * (t + 1) / 2 * 8)) << "t = " << t;
+    EXPECT_DOUBLE_EQ(packed.bytes(), packed_symmetric_bytes(t));
+    EXPECT_LT((packed.full() - S).norm(), 1e-15 * S.norm()) << "t = " << t;
+    const Eigen::VectorXd x = random_matrix(t, 1, 2);
+    Eigen::VectorXd y;
+    packed.apply(x, y);
+    EXPECT_LT((y - S * x).norm(), 1e-14 * (S * x).norm()) << "t = " << t;
+    const Eigen::MatrixXd X = random_matrix(t, 3, 3);
+    Eigen::MatrixXd Y;
+    packed.apply(X, Y);
+    EXPECT_LT((Y - S * X).norm(), 1e-14 * (S * X).norm()) << "t = " << t;
+  }
 }
 
 TEST(ExplicitInversePays, WhenTheBlockFormsFromTheInterfaceBlockAndHoldsAtMostOneSolvePass) {

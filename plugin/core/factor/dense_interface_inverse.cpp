@@ -6,40 +6,70 @@ namespace ffeti {
 
 PackedSymmetric::PackedSymmetric(const Eigen::MatrixXd& full) : size_(full.rows()) {
   values_.reserve(static_cast<size_t>(size_ * (size_ + 1) / 2));
-  for (Eigen::Index j = 0; j < size_; ++j)
-    values_.insert(values_.end(), full.col(j).data() + j, full.col(j).data() + size_);
+  for (Eigen::Index p = 0; p < size_; p += kPanelWidth) {
+    const Eigen::Index width = std::min(kPanelWidth, size_ - p);
+    for (Eigen::Index c = 0; c < width; ++c)  // the diagonal block's lower triangle
+      values_.insert(values_.end(), full.col(p + c).data() + p + c, full.col(p + c).data() + p + width);
+    for (Eigen::Index c = 0; c < width; ++c)  // the columns below it
+      values_.insert(values_.end(), full.col(p + c).data() + p + width, full.col(p + c).data() + size_);
+  }
+}
+
+PackedSymmetric::Panel PackedSymmetric::panel(Eigen::Index p, const double*& next) const {
+  const Eigen::Index width = std::min(kPanelWidth, size_ - p), below = size_ - p - width;
+  const double* diagonal = next;
+  next += width * (width + 1) / 2;
+  const Eigen::Map<const Eigen::MatrixXd> A(next, below, width);
+  next += below * width;
+  return {diagonal, width, A};
 }
 
 void PackedSymmetric::apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
   y.setZero(size_);
-  const double* column = values_.data();
-  for (Eigen::Index j = 0; j < size_; ++j) {
-    const Eigen::Index below = size_ - j - 1;
-    const Eigen::Map<const Eigen::VectorXd> lower(column + 1, below);  // rows j+1..t-1 of column j
-    y[j] += column[0] * x[j] + lower.dot(x.tail(below));
-    y.tail(below).noalias() += x[j] * lower;
-    column += below + 1;
+  const double* next = values_.data();
+  for (Eigen::Index p = 0; p < size_; p += kPanelWidth) {
+    const Panel panel_p = panel(p, next);
+    const Eigen::Index width = panel_p.width, below = panel_p.below.rows();
+    const double* d = panel_p.diagonal;
+    double* y_panel = y.data() + p;
+    const double* x_panel = x.data() + p;
+    for (Eigen::Index c = 0; c < width; ++c) {
+      double sum = *d++ * x_panel[c];
+      for (Eigen::Index i = c + 1; i < width; ++i, ++d) y_panel[i] += *d * x_panel[c], sum += *d * x_panel[i];
+      y_panel[c] += sum;
+    }
+    y.tail(below).noalias() += panel_p.below * x.segment(p, width);
+    y.segment(p, width).noalias() += panel_p.below.transpose() * x.tail(below);
   }
 }
 
 void PackedSymmetric::apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
   y.setZero(size_, x.cols());
-  const double* column = values_.data();
-  for (Eigen::Index j = 0; j < size_; ++j) {
-    const Eigen::Index below = size_ - j - 1;
-    const Eigen::Map<const Eigen::VectorXd> lower(column + 1, below);
-    y.row(j).noalias() += column[0] * x.row(j) + lower.transpose() * x.bottomRows(below);
-    y.bottomRows(below).noalias() += lower * x.row(j);
-    column += below + 1;
+  const double* next = values_.data();
+  for (Eigen::Index p = 0; p < size_; p += kPanelWidth) {
+    const Panel panel_p = panel(p, next);
+    const Eigen::Index width = panel_p.width, below = panel_p.below.rows();
+    const double* d = panel_p.diagonal;
+    for (Eigen::Index c = 0; c < width; ++c) {
+      y.row(p + c) += *d++ * x.row(p + c);
+      for (Eigen::Index i = c + 1; i < width; ++i, ++d) y.row(p + i) += *d * x.row(p + c), y.row(p + c) += *d * x.row(p + i);
+    }
+    y.bottomRows(below).noalias() += panel_p.below * x.middleRows(p, width);
+    y.middleRows(p, width).noalias() += panel_p.below.transpose() * x.bottomRows(below);
   }
 }
 
 Eigen::MatrixXd PackedSymmetric::full() const {
   Eigen::MatrixXd S(size_, size_);
-  const double* column = values_.data();
-  for (Eigen::Index j = 0; j < size_; ++j) {
-    for (Eigen::Index i = j; i < size_; ++i) S(i, j) = S(j, i) = column[i - j];
-    column += size_ - j;
+  const double* next = values_.data();
+  for (Eigen::Index p = 0; p < size_; p += kPanelWidth) {
+    const Panel panel_p = panel(p, next);
+    const double* d = panel_p.diagonal;
+    for (Eigen::Index c = 0; c < panel_p.width; ++c)
+      for (Eigen::Index i = c; i < panel_p.width; ++i, ++d) S(p + i, p + c) = S(p + c, p + i) = *d;
+    for (Eigen::Index c = 0; c < panel_p.width; ++c)
+      for (Eigen::Index i = 0; i < panel_p.below.rows(); ++i)
+        S(p + panel_p.width + i, p + c) = S(p + c, p + panel_p.width + i) = panel_p.below(i, c);
   }
   return S;
 }

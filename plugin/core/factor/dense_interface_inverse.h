@@ -1,7 +1,7 @@
 // A factor's inverse restricted to a few of its columns, formed once and held dense: the
 // explicit form of a solve that only ever reads and writes those columns (the FETI dual
 // operator's K_s^+ on a subdomain's interface). Applying it is a dense symmetric
-// matrix-vector product that streams t(t+1)/2 values, where a sparse triangular solve reads
+// matrix-vector product that streams about t(t+1)/2 values, where a sparse triangular solve reads
 // its factor's values and indices twice (L, then L') at a fraction of the memory's rate
 // (docs/results/model-problem.md: 4-6 GB/s against STREAM's 26; docs/results/dual-operator.md).
 #pragma once
@@ -14,10 +14,18 @@
 
 namespace ffeti {
 
-/// A symmetric t x t matrix held as its lower triangle, packed column after column
-/// (column j holds rows j..t-1): half the memory of a full matrix, and what a product reads.
+/// A symmetric t x t matrix held as its lower triangle in panels of kPanelWidth columns:
+/// per panel, its diagonal block's lower triangle packed, then its columns below that block
+/// as one dense column-major block A. A product is two dense GEMVs per panel on Eigen's
+/// vectorized kernels (y below += A x_panel, y_panel += A' x below), so the result's tail is
+/// read and written once per panel, not once per column. t(t+1)/2 values: half the memory
+/// of a full matrix, and what a product reads.
 class PackedSymmetric {
  public:
+  /// Columns per panel: 8 ran 1.3-1.5 times faster than one column at a time at t = 500 to
+  /// 2000 (a probe beside a benchmark, SSE2 as built; 16 no faster; docs/log.md).
+  static constexpr Eigen::Index kPanelWidth = 8;
+
   PackedSymmetric() = default;
   /// The lower triangle of `full` (its upper one is not read).
   explicit PackedSymmetric(const Eigen::MatrixXd& full);
@@ -26,10 +34,7 @@ class PackedSymmetric {
   /// Bytes held, and read by each product: t(t+1)/2 doubles.
   double bytes() const { return static_cast<double>(values_.size() * sizeof(double)); }
 
-  /// y = S x. Per column j, one dot product and one update on the same t - j values, the
-  /// second from L1: on this machine about as fast as Eigen's selfadjointView product on
-  /// full storage (which holds twice the memory), mostly faster than a full GEMV (twice the
-  /// bytes; docs/log.md, 2026-12-06).
+  /// y = S x.
   void apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
   /// Y = S X for a block of columns, in one pass over the values.
   void apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const;
@@ -37,6 +42,14 @@ class PackedSymmetric {
   Eigen::MatrixXd full() const;
 
  private:
+  struct Panel {
+    const double* diagonal;  ///< the diagonal block's lower triangle, column after column
+    Eigen::Index width;
+    Eigen::Map<const Eigen::MatrixXd> below;  ///< rows p + width .. t-1 of its columns
+  };
+  /// The panel starting at column p, whose values begin at `next` (moved past them).
+  Panel panel(Eigen::Index p, const double*& next) const;
+
   Eigen::Index size_ = 0;
   std::vector<double> values_;
 };

@@ -1,6 +1,7 @@
 #include "factor/dense_rate.h"
 
 #include "base/stopwatch.h"
+#include "parallel/process.h"
 
 #include <Eigen/Core>
 
@@ -13,8 +14,11 @@ double measure() {
   constexpr int n = 512;
   const Eigen::MatrixXd A = Eigen::MatrixXd::Random(n, n), B = Eigen::MatrixXd::Random(n, n);
   Eigen::MatrixXd C(n, n);
-  const int previous = Eigen::nbThreads();
-  Eigen::setNbThreads(1);  // the rate of one core: subdomains factorize one per thread
+  // The rate of one core: subdomains factorize one per thread. Through OpenMP's limit, which
+  // Eigen follows, not Eigen::setNbThreads: setting Eigen's own count back to the value read
+  // froze it there, so every later product ignored the ThreadLimit of the factorizations
+  // (their rounding then depended on the thread count: cholmod_factor_test).
+  const ThreadLimit one_thread(1);
   double best = 0;
   for (int run = 0; run < 3; ++run) {
     Stopwatch clock;
@@ -22,7 +26,6 @@ double measure() {
     const double seconds = clock.seconds();
     if (seconds > 0) best = std::max(best, 2.0 * n * n * n / seconds / 1e9);
   }
-  Eigen::setNbThreads(previous);
   return best;
 }
 
