@@ -273,7 +273,10 @@ def render():
              f"went from {first['hessian']} to {largest['hessian']} (SMALBE's outer iterations "
              f"{first['outer']} to {largest['outer']}), the whole run took "
              f"{1e6 * whole(first) / f(first, 'unknowns'):.0f} to {1e6 * whole(largest) / f(largest, 'unknowns'):.0f} µs "
-             f"per unknown, and the process held {f(largest, 'process_peak_mb') * 1048576 / f(largest, 'unknowns') / 1024:.1f} "
+             f"per unknown (gmsh's meshing {per_unknown_us(largest, 'time_gmsh'):.0f} of it at the largest size, "
+             f"the plugin's set-up, factorizations and dual solve "
+             f"{per_unknown_us(largest, 'time_plugin_setup') + per_unknown_us(largest, 'time_factor') + per_unknown_us(largest, 'time_solve'):.0f}), "
+             f"and the process held {f(largest, 'process_peak_mb') * 1048576 / f(largest, 'unknowns') / 1024:.1f} "
              f"KiB per unknown at its peak, of which the factors "
              f"{f(largest, 'bytes_factor_per_unknown') / 1024:.1f} KiB.",
              ""]
