@@ -1,5 +1,7 @@
 #include "factor/dense_interface_inverse.h"
 
+#include "parallel/process.h"
+
 #include <algorithm>
 
 namespace ffeti {
@@ -44,6 +46,9 @@ void PackedSymmetric::apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const 
 }
 
 void PackedSymmetric::apply(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const {
+  // The panels' products are GEMMs of depth up to t: on one thread, as everywhere a product's
+  // rounding must not depend on the thread count (Eigen blocks a threaded GEMM by it).
+  const ThreadLimit one_thread(1);
   y.setZero(size_, x.cols());
   const double* next = values_.data();
   for (Eigen::Index p = 0; p < size_; p += kPanelWidth) {
