@@ -32,6 +32,8 @@ void PackedSymmetric::apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const 
   for (Eigen::Index p = 0; p < size_; p += kPanelWidth) {
     const Panel panel_p = panel(p, next);
     const Eigen::Index width = panel_p.width, below = panel_p.below.rows();
+    // The diagonal block by scalars, each column's sum kept in a register (the block apply
+    // below does it by rows, which would need a row temporary per column here).
     const double* d = panel_p.diagonal;
     double* y_panel = y.data() + p;
     const double* x_panel = x.data() + p;

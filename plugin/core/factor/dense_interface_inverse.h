@@ -1,7 +1,7 @@
 // A factor's inverse restricted to a few of its columns, formed once and held dense: the
 // explicit form of a solve that only ever reads and writes those columns (the FETI dual
 // operator's K_s^+ on a subdomain's interface). Applying it is a dense symmetric
-// matrix-vector product that streams about t(t+1)/2 values, where a sparse triangular solve reads
+// matrix-vector product that streams t(t+1)/2 values, where a sparse triangular solve reads
 // its factor's values and indices twice (L, then L') at a fraction of the memory's rate
 // (docs/results/model-problem.md: 4-6 GB/s against STREAM's 26; docs/results/dual-operator.md).
 #pragma once
@@ -22,8 +22,9 @@ namespace ffeti {
 /// of a full matrix, and what a product reads.
 class PackedSymmetric {
  public:
-  /// Columns per panel: 8 ran 1.3-1.5 times faster than one column at a time at t = 500 to
-  /// 2000 (a probe beside a benchmark, SSE2 as built; 16 no faster; docs/log.md).
+  /// Columns per panel: 8 ran 1.2-1.5 times faster than one column at a time at t = 500 to
+  /// 2000, 1.15 at 200, as fast at 100 and 0.87 at 50 (a probe beside a benchmark, SSE2 as
+  /// built; 16 no faster; docs/log.md).
   static constexpr Eigen::Index kPanelWidth = 8;
 
   PackedSymmetric() = default;
