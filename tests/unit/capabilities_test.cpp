@@ -175,7 +175,7 @@ TEST(Capabilities, TheMarkdownTableHasARowPerKindAndSaysWhereAFeatureWorksInOneD
   EXPECT_EQ(table.rfind("| contact | selected by | plane (2D) | solid (3D) | friction", 0), 0u) << table;
   for (const KindCapabilities& k : capability_table())
     EXPECT_NE(table.find(std::string("\n| ") + k.name + " | "), std::string::npos) << k.name;
-  EXPECT_NE(table.find("| obstacle | `contactSlave, obstacle` | yes | yes | yes | yes | — | yes | yes | plane only |"), std::string::npos) << table;
+  EXPECT_NE(table.find("| node-to-node | `contactSlave, contactMaster` | yes | yes | yes | yes | — | yes | plane only | yes |"), std::string::npos) << table;
 }
 
 }  // namespace

@@ -37,7 +37,7 @@ class Ball final : public ContactDiscretization {
   /// fetiContactStart
   KindCapabilities capabilities() const override {
     return {kind(), "ball", "contactSlave, obstacleBall", kBothDimensions, kBothDimensions, kBothDimensions, kNowhere,
-            kBothDimensions, kNowhere, kPlaneOnly};
+            kBothDimensions, kNowhere, kBothDimensions};
   }
   /// obstacleBall = [cx, cy, radius] (with Z: [cx, cy, cz, radius]).
   const KindInput* input() const override;

@@ -51,7 +51,7 @@ class Cylinder final : public ContactDiscretization {
   /// fetiContactStart
   KindCapabilities capabilities() const override {
     return {kind(), "cylinder", "contactSlave, obstacleCylinder", kSolidOnly, kSolidOnly, kSolidOnly, kNowhere,
-            kSolidOnly, kSolidOnly, kNowhere};
+            kSolidOnly, kSolidOnly, kSolidOnly};
   }
   const KindInput* input() const override;
   /// Three dimensions; finite entries, an axis not zero, a radius > 0, inside 0 or 1.

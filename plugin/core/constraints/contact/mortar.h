@@ -92,7 +92,7 @@ class Mortar final : public ContactDiscretization {
   /// fetiContactStart
   KindCapabilities capabilities() const override {
     return {kind(), "mortar", "contactSlaveFaces, contactFaces", kSolidOnly, kSolidOnly, kSolidOnly, kNowhere, kSolidOnly,
-            kNowhere, kNowhere};
+            kNowhere, kSolidOnly};
   }
   /// The corners of contactSlaveFaces are its slaves: refuses contactSlave or an obstacle beside them.
   void check_combination(const ContactInput& contact) const override;

@@ -90,7 +90,7 @@ class NodeToFace final : public ContactDiscretization {
   /// fetiContactStart
   KindCapabilities capabilities() const override {
     return {kind(), "node-to-face", "contactSlave, contactFaces", kSolidOnly, kSolidOnly, kSolidOnly, kNowhere,
-            kSolidOnly, kSolidOnly, kNowhere};
+            kSolidOnly, kSolidOnly, kSolidOnly};
   }
   /// Master faces without slave faces (those make mortar).
   const ListInput* list_input() const override;

@@ -54,7 +54,7 @@ class NodeToNode final : public ContactDiscretization {
   /// fetiContactStart
   KindCapabilities capabilities() const override {
     return {kind(), "node-to-node", "contactSlave, contactMaster", kBothDimensions, kBothDimensions, kBothDimensions, kNowhere,
-            kBothDimensions, kPlaneOnly, kPlaneOnly};
+            kBothDimensions, kPlaneOnly, kBothDimensions};
   }
   /// contactMaster pairs the slave dofs: refuses contactSegments, contactFaces or an obstacle beside it.
   void check_combination(const ContactInput& contact) const override;

@@ -42,7 +42,7 @@ class Obstacle final : public ContactDiscretization {
   /// fetiContactStart
   KindCapabilities capabilities() const override {
     return {kind(), "obstacle", "contactSlave, obstacle", kBothDimensions, kBothDimensions, kBothDimensions, kNowhere,
-            kBothDimensions, kBothDimensions, kPlaneOnly};
+            kBothDimensions, kBothDimensions, kBothDimensions};
   }
   /// obstacle = [px, py, nx, ny] (with Z: [px, py, pz, nx, ny, nz]).
   const KindInput* input() const override;
