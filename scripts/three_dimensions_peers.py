@@ -11,14 +11,20 @@ FFETI_PEER_TIME_LIMIT_S (1800 s) or FFETI_PEER_MEMORY_LIMIT_GIB (20 GiB): projec
 two largest sizes run so far (a power of the unknowns, FETI's unknowns as the size: known
 before the peer runs), it is not started; else it runs under these limits (killed at the time
 limit; the memory one as an address-space limit) and a run that reaches one stops it too: a
-row with status "stopped", the limit and the projection or the seconds it ran. Table: three-dimensions-peers.csv, one row per
-(problem, size, solver); plot three-dimensions-peers.png (time over unknowns, log-log)."""
+row with status "stopped", the limit and the projection or the seconds it ran. A peer that ends
+without an answer (not converged, or an energy of 0 or not finite) is a row with status
+"failed": it is not the reference and runs no larger size. Table: three-dimensions-peers.csv, one row per
+(problem, size, solver); plot three-dimensions-peers.png (time over unknowns, log-log).
+Progress: each (problem, size) done is appended to three-dimensions-peers-progress.csv (in the
+results folder, removed when the table is written) and a line printed; a run started again
+after an interruption takes the sizes done from it and goes on with the next."""
+import csv
 import math
 import os
 
 import matplotlib.pyplot as plt  # the driver chooses the backend first
 
-from ffeti_bench import OUT, ROOT, OverLimit, end_run, f, markdown_table, read_csv, run, run_machine, write_csv
+from ffeti_bench import OUT, ROOT, OverLimit, csv_path, end_run, f, markdown_table, read_csv, run, run_machine, write_csv
 
 PAGE = "three-dimensions"
 TABLE = "peers"
@@ -72,14 +78,55 @@ def projection(done, unknowns):
     return t2 * (unknowns / x2) ** time_power, m2 * (unknowns / x2) ** memory_power, time_power, memory_power
 
 
-def measure_problem(sizes, solve, feti_options, peer_options):
+PROGRESS = f"{TABLE}-progress"
+
+
+def record_progress(rows):
+    """Appends one (problem, size)'s rows to the progress file, one row per line (each line
+    its own columns: the file is a log read back row by row), and says so."""
+    with open(csv_path(PAGE, PROGRESS), "a", newline="") as file:
+        for row in rows:
+            writer = csv.writer(file)
+            writer.writerow([f"{key}={value!r}" if isinstance(value, float) else f"{key}={value}"
+                             for key, value in row.items() if not isinstance(value, (list, dict))])
+    for row in rows:
+        print(f"peers: {row['problem']} {row['size']} {row['solver']}: {row.get('status', '')}"
+              f" {row.get('time_total', '')}", flush=True)
+
+
+def read_progress():
+    """The progress file's rows as dicts of strings (empty without one)."""
+    if not os.path.exists(csv_path(PAGE, PROGRESS)):
+        return []
+    with open(csv_path(PAGE, PROGRESS), newline="") as file:
+        return [dict(cell.split("=", 1) for cell in line) for line in csv.reader(file) if line]
+
+
+def answered(peer):
+    """True when a peer's run gave an answer: converged and a nonzero finite energy (a zero
+    field, u = 0, is what PDAS returns at once when its solves give nothing)."""
+    energy = float(peer.get("energy") or 0)
+    return peer.get("status") == "converged" and energy != 0 and math.isfinite(energy)
+
+
+def measure_problem(problem, sizes, solve, feti_options, peer_options, earlier):
     """One problem's rows: per size FETI, then each peer alone unless stopped; FETI's energy
-    and contact set compared with the first peer's answer that ran (UMFPACK's, else MUMPS's)."""
+    and contact set compared with the first peer's answer (UMFPACK's, else MUMPS's). The
+    sizes in `earlier` (rows of an interrupted run) are taken from it, not run again."""
     rows, done, stopped = [], {name: [] for name, _ in PEERS}, set()
     for size in sizes:
+        before = [row for row in earlier if row["problem"] == problem and row["size"] == str(size)]
+        if before:
+            rows += before
+            for row in before:
+                if row["solver"] in done and row.get("status") == "converged" and row.get("time_total"):
+                    done[row["solver"]].append((f(row, "feti_unknowns"), f(row, "time_total"), f(row, "process_peak_mb")))
+                elif row["solver"] in done:
+                    stopped.add(row["solver"])
+            continue
         feti = dict(solve(size, **feti_options), solver=FETI)
         unknowns = f(feti, "unknowns")
-        peers = []
+        peers, stops = [], []
         for name, flags in PEERS:
             projected = projection(done[name], unknowns)
             if name in stopped:
@@ -87,7 +134,7 @@ def measure_problem(sizes, solve, feti_options, peer_options):
             stop = dict(problem=feti["problem"], size=str(size), solver=name, status="stopped",
                         feti_unknowns=repr(unknowns))
             if projected and (projected[0] > TIME_LIMIT_S or projected[1] > MEMORY_LIMIT_MB):
-                rows.append(dict(stop, stop="projected", projected_time_s=repr(projected[0]),
+                stops.append(dict(stop, stop="projected", projected_time_s=repr(projected[0]),
                                  projected_memory_mb=repr(projected[1]), time_power=repr(projected[2]),
                                  memory_power=repr(projected[3])))
                 stopped.add(name)
@@ -95,27 +142,36 @@ def measure_problem(sizes, solve, feti_options, peer_options):
             try:
                 peer = dict(solve(size, *flags, **peer_options), solver=name)
             except OverLimit as limit:
-                rows.append(dict(stop, stop=f"{limit.what} limit", ran_s=repr(limit.seconds)))
+                stops.append(dict(stop, stop=f"{limit.what} limit", ran_s=repr(limit.seconds)))
+                stopped.add(name)
+                continue
+            if not answered(peer):
+                peers.append(dict(peer, status="failed", scene_status=peer.get("status", ""), feti_unknowns=repr(unknowns)))
                 stopped.add(name)
                 continue
             done[name].append((unknowns, f(peer, "time_total"), f(peer, "process_peak_mb")))
             peers.append(dict(peer, feti_unknowns=repr(unknowns)))
-        if peers:
-            reference = f(peers[0], "energy")
-            feti.update(energy_error=repr(abs(f(feti, "energy") - reference) / abs(reference)),
-                        same_contact_set=str(int(feti["active"]) == int(peers[0]["active"])),
-                        energy_reference_solver=peers[0]["solver"])
-        rows += [dict(feti, feti_unknowns=repr(unknowns))] + peers
+        reference = next((peer for peer in peers if peer.get("status") != "failed" and "energy" in peer), None)
+        if reference:
+            feti.update(energy_error=repr(abs(f(feti, "energy") - f(reference, "energy")) / abs(f(reference, "energy"))),
+                        same_contact_set=str(int(feti["active"]) == int(reference["active"])),
+                        energy_reference_solver=reference["solver"])
+        size_rows = [dict(feti, feti_unknowns=repr(unknowns))] + peers + stops
+        record_progress(size_rows)
+        rows += size_rows
     return rows
 
 
 def measure(begun):
     """The part's table and its own run row (peers-run)."""
-    rows = measure_problem(CUBES_SIZES, cubes, dict(check=1), dict(feti=0, reference=1))
+    earlier = read_progress()
+    rows = measure_problem("cubes", CUBES_SIZES, cubes, dict(check=1), dict(feti=0, reference=1), earlier)
     for block in (0, 1):
-        rows += measure_problem(SPHERE_SIZES, lambda size, *flags, **options: sphere(block, size, *flags, **options),
-                                {}, dict(feti=0, peers=1))
+        rows += measure_problem("sphere on block" if block else "sphere on plane", SPHERE_SIZES,
+                                lambda size, *flags, **options: sphere(block, size, *flags, **options),
+                                {}, dict(feti=0, peers=1), earlier)
     write_csv(PAGE, TABLE, rows)
+    os.remove(csv_path(PAGE, PROGRESS))
     run_row = end_run(PAGE, begun, f"{TABLE}-run")
     write_csv(PAGE, f"{TABLE}-run", [dict(run_row, time_limit_s=repr(TIME_LIMIT_S), memory_limit_mb=repr(MEMORY_LIMIT_MB))])
 
@@ -126,7 +182,7 @@ def run_limits(run_row):
 
 
 def ran(rows):
-    return [r for r in rows if r.get("status") != "stopped"]
+    return [r for r in rows if r.get("status") not in ("stopped", "failed")]
 
 
 def plot(rows, name):
@@ -154,7 +210,7 @@ def plot(rows, name):
 
 def ratio_rows(rows):
     """Per problem and size, each peer's time and peak memory over FETI's ("stopped" where it
-    did not run to the end)."""
+    did not run to the end, "failed" where it ended without an answer)."""
     table = []
     for problem in PROBLEMS:
         for size in dict.fromkeys(r["size"] for r in rows if r["problem"] == problem):
@@ -164,8 +220,8 @@ def ratio_rows(rows):
                         memory=f"{f(feti, 'process_peak_mb'):.0f}")
             for name, _ in PEERS:
                 peer = here.get(name)
-                if peer is None or peer.get("status") == "stopped":
-                    line[f"{name} time"] = line[f"{name} memory"] = "stopped" if peer else "-"
+                if peer is None or peer.get("status") in ("stopped", "failed"):
+                    line[f"{name} time"] = line[f"{name} memory"] = peer["status"] if peer else "-"
                 else:
                     line[f"{name} time"] = f"{f(peer, 'time_total') / f(feti, 'time_total'):.1f}"
                     line[f"{name} memory"] = f"{f(peer, 'process_peak_mb') / f(feti, 'process_peak_mb'):.1f}"
@@ -178,9 +234,13 @@ def stops(rows, limits):
     time_limit_s, memory_limit_mb = limits
     lines = []
     for r in rows:
-        if r.get("status") != "stopped":
+        if r.get("status") not in ("stopped", "failed"):
             continue
         label = f"{r['problem']}, {'n' if r['problem'] == 'cubes' else 'h'} = {r['size']}"
+        if r["status"] == "failed":
+            lines.append(f"- {label}: {r['solver']} ended after {f(r, 'time_total') / 60:.0f} min without an answer "
+                         f"(its status {r.get('scene_status') or '-'}, energy {r.get('energy') or '-'}); nor larger sizes.")
+            continue
         if r["stop"] == "projected":
             lines.append(f"- {label}: {r['solver']} not run: over its two largest sizes run it grew as unknowns^"
                          f"{f(r, 'time_power'):.2f} in time and ^{f(r, 'memory_power'):.2f} in peak memory, which "
