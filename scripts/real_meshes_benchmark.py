@@ -5,10 +5,10 @@ non-matching meshes, Total FETI with default options).
 
 Four runs, each a CSV under docs/results/ and a table of the page (the weak one also a table
 of the kinds of MPRGP's steps):
-- weak: mesh sizes -h from FFETI_REAL_SIZES (default 0.7 0.5 0.35 0.25 0.2 0.16) at parts of
+- weak: mesh sizes -h from FFETI_REAL_SIZES (default 0.7 0.5 0.35 0.25 0.2 0.155, the page's run) at parts of
   FFETI_REAL_PART_NODES nodes (default 1000: the part-size table's best count), one after the other,
   each under FFETI_REAL_TIME_LIMIT_S (default 2400 s) and FFETI_REAL_MEMORY_LIMIT_GIB (default
-  21 GiB of address space); the first size that reaches a limit ends the table with a row
+  23 GiB of address space); the first size that reaches a limit ends the table with a row
   saying which limit and when (a larger size would not fit either);
 - parts: the part size -partNodes 500 ... 3500 at -h 0.5 (counts, memory, times);
 - peer: FETI against the direct peer (-peer 1: the primal-dual active set method on the
@@ -34,7 +34,7 @@ from ffeti_bench import (OUT, OverLimit, begin_run, csv_path, end_run, f, machin
                          read_csv, run, save_page, write_csv)
 
 PAGE = "real-meshes"
-SIZES = [float(h) for h in os.environ.get("FFETI_REAL_SIZES", "0.7 0.5 0.35 0.25 0.2 0.16").split()]
+SIZES = [float(h) for h in os.environ.get("FFETI_REAL_SIZES", "0.7 0.5 0.35 0.25 0.2 0.155").split()]
 PART_NODES = int(os.environ.get("FFETI_REAL_PART_NODES", "1000"))
 PART_SWEEP = [500, 1000, 2000, 3500]
 PART_SWEEP_H = 0.5
@@ -42,7 +42,7 @@ PEER_SIZES = [float(h) for h in os.environ.get("FFETI_REAL_PEER_SIZES", "0.7 0.5
 UNDIVIDED_SIZES = [float(h) for h in os.environ.get("FFETI_REAL_UNDIVIDED_SIZES", "0.7 0.5 0.35").split()]
 ONE_PART_PER_BODY = 10 ** 9  # -partNodes above any body's node count: ffetiMetis3 makes one part
 TIME_LIMIT_S = float(os.environ.get("FFETI_REAL_TIME_LIMIT_S", "2400"))
-MEMORY_LIMIT_MB = 1024 * float(os.environ.get("FFETI_REAL_MEMORY_LIMIT_GIB", "21"))
+MEMORY_LIMIT_MB = 1024 * float(os.environ.get("FFETI_REAL_MEMORY_LIMIT_GIB", "23"))
 SCENE = "crowned-punch-3d.edp"
 
 

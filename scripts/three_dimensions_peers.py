@@ -85,8 +85,8 @@ def record_progress(rows):
     """Appends one (problem, size)'s rows to the progress file, one row per line (each line
     its own columns: the file is a log read back row by row), and says so."""
     with open(csv_path(PAGE, PROGRESS), "a", newline="") as file:
+        writer = csv.writer(file)
         for row in rows:
-            writer = csv.writer(file)
             writer.writerow([f"{key}={value!r}" if isinstance(value, float) else f"{key}={value}"
                              for key, value in row.items() if not isinstance(value, (list, dict))])
     for row in rows:
@@ -103,8 +103,9 @@ def read_progress():
 
 
 def answered(peer):
-    """True when a peer's run gave an answer: converged and a nonzero finite energy (a zero
-    field, u = 0, is what PDAS returns at once when its solves give nothing)."""
+    """True when a peer's run gave an answer: converged (ffetiActiveSetStatus, which says
+    solve_failed where a sparse solve gave nothing) and a nonzero finite energy (the 2026-12-07
+    run's UMFPACK peer ended with energy 0 before that check existed)."""
     energy = float(peer.get("energy") or 0)
     return peer.get("status") == "converged" and energy != 0 and math.isfinite(energy)
 
