@@ -62,6 +62,8 @@ def answer_change(before, after):
     if not after.get("normal_force") or not before.get("normal_force"):
         return ""
     scale = abs(f(before, "normal_force"))
+    if scale == 0:  # no answer to compare with (a scene with no equilibrium reports zero forces)
+        return ""
     return format(max(abs(f(after, k) - f(before, k)) for k in ("normal_force", "friction_force")) / scale, ".0e")
 
 
