@@ -220,7 +220,7 @@ COURANT_COLUMNS = [("c dt / h", "courant"), ("projector", "projector"), ("steps"
 SLIDE_COLUMNS = [("dim", "dim"), ("law", "law"), ("block", "material"), ("steps to stop", lambda r: str(round(float(r["stop_time_exact"]) / float(r["dt"])))),
                  ("stop time error", lambda r: f"{relative(r, 'stop_time', 'stop_time_exact'):.1e}" if float(r["stop_time"]) > 0 else "-"),
                  ("deceleration error", lambda r: f"{relative(r, 'deceleration', 'deceleration_exact'):.1e}" if float(r["stop_time"]) > 0 else "-"),
-                 ("distance error", lambda r: f"{relative(r, 'final_distance', 'stop_distance_exact'):.1e}" if r["status"] != "max_iterations" else "-"),
+                 ("distance error", lambda r: f"{relative(r, 'final_distance', 'stop_distance_exact'):.1e}" if r["status"] == "converged" else "-"),
                  ("Hessian per step (max)", "hessian_per_step_max"), ("Hessian total", "hessian_total"),
                  ("stagnated solves", "stagnated_solves"), ("status", "status")]
 
