@@ -14,11 +14,13 @@ of the kinds of MPRGP's steps):
 - peer: FETI against the direct peer (-peer 1: the primal-dual active set method on the
   undivided bodies, MUMPS) at the sizes FFETI_REAL_PEER_SIZES (default 0.7 0.5);
 - undivided: each body one subdomain (no METIS cut) at FFETI_REAL_UNDIVIDED_SIZES (default
-  0.7 0.5 0.35): the multiplications the contact alone takes, against the weak table's.
+  0.7 0.5 0.35): the multiplications the contact alone takes, against the weak table's;
+- scaling: the preconditioner's weights, multiplicity (the default) against stiffness
+  (fetiSetup's scaling=), at FFETI_REAL_SCALING_SIZES (default 0.7 0.5 0.35 0.25), parts as weak.
 Times are wall clock on the machine as it was (its load is in the run's row); counts
 (Hessian multiplications, outer iterations) and bytes do not depend on the machine.
-Usage: scripts/real_meshes_benchmark.py [--render | --only undivided] (--render: the page
-from the CSVs alone; --only undivided: that table alone, with its own run row).
+Usage: scripts/real_meshes_benchmark.py [--render | --only undivided | --only scaling] (--render:
+the page from the CSVs alone; --only undivided or scaling: that table alone, with its own run row).
 FFETI_RUN_DIR=build/edp-tests runs the build's plugin."""
 import math
 import os
@@ -40,6 +42,8 @@ PART_SWEEP = [500, 1000, 2000, 3500]
 PART_SWEEP_H = 0.5
 PEER_SIZES = [float(h) for h in os.environ.get("FFETI_REAL_PEER_SIZES", "0.7 0.5").split()]
 UNDIVIDED_SIZES = [float(h) for h in os.environ.get("FFETI_REAL_UNDIVIDED_SIZES", "0.7 0.5 0.35").split()]
+SCALING_SIZES = [float(h) for h in os.environ.get("FFETI_REAL_SCALING_SIZES", "0.7 0.5 0.35 0.25").split()]
+SCALINGS = ["multiplicity", "stiffness"]
 ONE_PART_PER_BODY = 10 ** 9  # -partNodes above any body's node count: ffetiMetis3 makes one part
 TIME_LIMIT_S = float(os.environ.get("FFETI_REAL_TIME_LIMIT_S", "2400"))
 MEMORY_LIMIT_MB = 1024 * float(os.environ.get("FFETI_REAL_MEMORY_LIMIT_GIB", "23"))
@@ -69,8 +73,10 @@ def measure():
     write_csv(PAGE, "parts", [scene(PART_SWEEP_H, nodes) for nodes in PART_SWEEP])
     write_csv(PAGE, "peer", [scene(h, PART_NODES, "-peer", 1, "-DwithMUMPS=1") for h in PEER_SIZES])
     measure_undivided_table()
-    if os.path.exists(csv_path(PAGE, "undivided-run")):
-        os.remove(csv_path(PAGE, "undivided-run"))  # the table is this run's now
+    measure_scaling_table()
+    for table in ("undivided-run", "scaling-run"):
+        if os.path.exists(csv_path(PAGE, table)):
+            os.remove(csv_path(PAGE, table))  # the table is this run's now
     end_run(PAGE, begun)
 
 
@@ -83,6 +89,17 @@ def measure_undivided():
     begun = begin_run()
     measure_undivided_table()
     end_run(PAGE, begun, table="undivided-run")
+
+
+def measure_scaling_table():
+    write_csv(PAGE, "scaling", [scene(h, PART_NODES, "-scaling", scaling) for h in SCALING_SIZES for scaling in SCALINGS])
+
+
+def measure_scaling():
+    """The scaling table alone (--only scaling), with its own run row."""
+    begun = begin_run()
+    measure_scaling_table()
+    end_run(PAGE, begun, table="scaling-run")
 
 
 MEMORY_PHASES = [("meshes read", "mb_meshes"), ("parts cut", "mb_parts"), ("assembled", "mb_assembly"),
@@ -222,6 +239,50 @@ def undivided_section(weak):
     return lines
 
 
+def scaling_section():
+    """Multiplicity against stiffness scaling at each mesh size, side by side from one run."""
+    if not os.path.exists(csv_path(PAGE, "scaling")):
+        return []
+    rows = read_csv(PAGE, "scaling")
+    by = {(r["h"], r["scaling"]): r for r in rows}
+    sizes = sorted({r["h"] for r in rows}, key=lambda h: -float(h))
+    lines = ["", "## The preconditioner's weights", "",
+             "`fetiSetup`'s `scaling`: the lumped preconditioner weighs the two sides of each row by multiplicity "
+             "(the default, A = (BB')⁻¹) or by stiffness (A = (B D⁻¹ B')⁻¹, D the diagonal of each K_s: Rixen and "
+             "Farhat's k-scaling; [algorithms](../algorithms.md)), at parts of about "
+             f"{PART_NODES} nodes, everything else the defaults; both in one run, one after the other at each size."]
+    if os.path.exists(csv_path(PAGE, "scaling-run")):
+        lines += ["This table was measured on its own (`--only scaling`): " + machine_line(read_csv(PAGE, "scaling-run")[0])]
+    lines += [""]
+    table = []
+    for h in sizes:
+        m, k = by.get((h, "multiplicity")), by.get((h, "stiffness"))
+        if not (m and k):
+            continue
+        table.append(dict(h=h, unknowns=m["unknowns"], parts=m["subdomains"],
+                          hm=f"{m['hessian']} ({m['outer']})", hk=f"{k['hessian']} ({k['outer']})",
+                          ratio=f"{f(k, 'hessian') / f(m, 'hessian'):.2f}",
+                          tm=f"{f(m, 'time_solve'):.1f}", tk=f"{f(k, 'time_solve'):.1f}",
+                          energy=f"{abs(f(k, 'energy') - f(m, 'energy')) / abs(f(m, 'energy')):.1e}",
+                          status=f"{m['status']} / {k['status']}"))
+    lines += markdown_table(table, [
+        ("h", "h"), ("unknowns", ("unknowns", ",.0f")), ("parts", "parts"),
+        ("multiplicity: Hessian (outer)", "hm"), ("stiffness: Hessian (outer)", "hk"), ("stiffness / multiplicity", "ratio"),
+        ("dual solve [s]: multiplicity", "tm"), ("stiffness", "tk"), ("energies' relative difference", "energy"),
+        ("status", "status")])
+    ratios = [float(r["ratio"]) for r in table]
+    growth = [f(by[(sizes[-1], s)], "hessian") / f(by[(sizes[0], s)], "hessian") for s in SCALINGS
+              if (sizes[-1], s) in by and (sizes[0], s) in by]
+    if ratios:
+        lines += ["", f"Reading: stiffness scaling took {min(ratios):.2f} to {max(ratios):.2f} times the multiplications "
+                  f"of multiplicity scaling here; from -h {sizes[0]} to -h {sizes[-1]} the count grew "
+                  + (f"{growth[0]:.2f} times with multiplicity and {growth[1]:.2f} times with stiffness scaling"
+                     if len(growth) == 2 else "-")
+                  + ". The default stays multiplicity until the other pages have measured the choice on their scenes "
+                  "(on regular grids, whose sides are equally stiff, the two are the same)."]
+    return lines
+
+
 def step_kinds_section(weak):
     """Where the weak table's multiplications go: MPRGP's steps by kind, per outer iteration."""
     done = [r for r in weak if r["status"] != "stopped" and r.get("cg")]
@@ -358,11 +419,12 @@ def render():
         ("peer [s]", ("time_peer", ".1f"))])
     lines += step_kinds_section(weak)
     lines += undivided_section(weak)
+    lines += scaling_section()
     lines += ["", "Tables: `real-meshes-weak.csv`, `real-meshes-parts.csv`, `real-meshes-peer.csv`, "
-              "`real-meshes-undivided.csv`, `real-meshes-run.csv`; `scripts/real_meshes_benchmark.py --render` "
-              "redraws the page from them.", ""]
+              "`real-meshes-undivided.csv`, `real-meshes-scaling.csv`, `real-meshes-run.csv`; "
+              "`scripts/real_meshes_benchmark.py --render` redraws the page from them.", ""]
     save_page(f"{PAGE}.md", lines)
 
 
 if __name__ == "__main__":
-    measure_and_render(__doc__, measure, render, parts={"undivided": measure_undivided})
+    measure_and_render(__doc__, measure, render, parts={"undivided": measure_undivided, "scaling": measure_scaling})

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Three dimensions in one process and on 2 and 3 ranks: the seed's model problem
 # (edp/model-problem-3d.edp, node to node), the Hertz sphere on a block
-# (edp/hertz-sphere.edp -block 1, mortar contact) and the elasticity cubes
+# (edp/hertz-sphere.edp -block 1, mortar contact; again with scaling = "stiffness", whose
+# weights each rank finds for its subdomains and gathers) and the elasticity cubes
 # (edp/cubes-elasticity-3d.edp, one stiffness matrix shared by every box through
 # stiffnessOf=, each rank holding its boxes' loads): the same dimensions and counts, the
 # energy to 1e-10.
@@ -23,14 +24,16 @@ for ranks in 2 3; do
 done
 
 sphere="$source_dir/edp/hertz-sphere.edp"
-sphere_args=(-h 0.2 -block 1 -meshes "$source_dir/meshes")
-serial=$(FreeFem++-nw -v 0 "$sphere" "${sphere_args[@]}" | result)
-[ -n "$serial" ] || { echo "no RESULT line from the serial sphere run"; exit 1; }
-for ranks in 2 3; do
-  parallel=$(mpirun --oversubscribe -np "$ranks" FreeFem++-mpi -v 0 "$sphere" "${sphere_args[@]}" | result)
-  [ -n "$parallel" ] || { echo "no RESULT line from the sphere with $ranks ranks"; exit 1; }
-  same_keys "sphere, $ranks ranks" "$serial" "$parallel" status subdomains unknowns couples active hessian
-  close_keys "sphere, $ranks ranks" "$serial" "$parallel" 1e-10 energy a p0
+for scaling in multiplicity stiffness; do
+  sphere_args=(-h 0.2 -block 1 -meshes "$source_dir/meshes" -scaling "$scaling")
+  serial=$(FreeFem++-nw -v 0 "$sphere" "${sphere_args[@]}" | result)
+  [ -n "$serial" ] || { echo "no RESULT line from the serial sphere run ($scaling)"; exit 1; }
+  for ranks in 2 3; do
+    parallel=$(mpirun --oversubscribe -np "$ranks" FreeFem++-mpi -v 0 "$sphere" "${sphere_args[@]}" | result)
+    [ -n "$parallel" ] || { echo "no RESULT line from the sphere with $ranks ranks ($scaling)"; exit 1; }
+    same_keys "sphere ($scaling), $ranks ranks" "$serial" "$parallel" status subdomains unknowns couples active hessian
+    close_keys "sphere ($scaling), $ranks ranks" "$serial" "$parallel" 1e-10 energy a p0
+  done
 done
 cubes="$source_dir/edp/cubes-elasticity-3d.edp"
 serial=$(FreeFem++-nw -v 0 "$cubes" -n 16 | result)

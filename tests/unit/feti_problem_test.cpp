@@ -116,6 +116,37 @@ TEST(FetiProblem, PreconditionersInFaceKeepTheContactSolution) {
   }
 }
 
+TEST(FetiProblem, StiffnessScalingIsMultiplicityWhereTheSidesAreEquallyStiff) {
+  // Regular membranes, 4 x 4 subdomains per body with cross points: every row's sides are
+  // equally stiff, and the stiffness weights reduce to the multiplicity ones, bit for bit
+  // in the counts. Body 0 graded towards the contact line (its cells 1000 times narrower
+  // there: the sides of its rows differ): the same solution either way, in fewer than half
+  // the multiplications with the stiffness weights (114 against 287 when written).
+  for (bool graded : {false, true}) {
+    test::MembraneOptions o = test::membrane_options(64, graded ? 2 : 4);
+    if (graded) {
+      const double a = std::log(1000.0) * 64.0 / 63.0;
+      o.x_map = [a](double x) { return 1.0 - (std::exp(a * (1.0 - x)) - 1.0) / (std::exp(a) - 1.0); };
+    }
+    DualSolveSettings settings;
+    settings.tolerance = 1e-10;
+    const FetiResult m = membrane_problem(o, FetiVariant::feti1, 0, DualPreconditioner::lumped).solve(settings);
+    const FetiResult k = membrane_problem(o, FetiVariant::feti1, 0, DualPreconditioner::lumped,
+                                          InterfaceScaling::stiffness).solve(settings);
+    ASSERT_EQ(m.status, SolveStatus::converged);
+    ASSERT_EQ(k.status, SolveStatus::converged);
+    EXPECT_NEAR(k.energy, m.energy, 1e-9 * std::abs(m.energy));
+    EXPECT_EQ(k.active_contact, m.active_contact);
+    EXPECT_LT(k.kkt.max(), 1e-9);
+    if (!graded) {
+      EXPECT_EQ(k.counts.hessian, m.counts.hessian);
+    } else {
+      EXPECT_LT(2 * k.counts.hessian, m.counts.hessian) << "multiplicity " << m.counts.hessian << ", stiffness "
+                                                    << k.counts.hessian;
+    }
+  }
+}
+
 TEST(FetiProblem, FreeRowsAndPenaltyGiveTheSameSolution) {
   // The coarse constraints met by the free multipliers (T, SMALBE-M on the floating
   // membrane's one mode) against all of G penalized: the same QP two ways, FETI-1 (the left

@@ -187,13 +187,14 @@ ReferenceSolution membrane_reference(int n) {
 }
 
 FetiProblem membrane_problem(const MembraneOptions& o, FetiVariant variant, int threads,
-                             DualPreconditioner preconditioner) {
+                             DualPreconditioner preconditioner, InterfaceScaling scaling) {
   auto subs = membrane_subdomains(o);
   ContactInput contact = o.with_contact ? membrane_contact(subs) : ContactInput{};
   FetiSetupSettings setup;
   setup.variant = variant;
   setup.threads = threads;
   setup.preconditioner = preconditioner;
+  setup.scaling = scaling;
   return FetiProblem(std::move(subs), contact, setup);
 }
 

@@ -58,6 +58,7 @@ ReferenceSolution membrane_reference(int n);
 
 /// The membranes of `o` (with their contact when o.with_contact) as one FetiProblem.
 FetiProblem membrane_problem(const MembraneOptions& o, FetiVariant variant, int threads = 0,
-                             DualPreconditioner preconditioner = DualPreconditioner::none);
+                             DualPreconditioner preconditioner = DualPreconditioner::none,
+                             InterfaceScaling scaling = InterfaceScaling::multiplicity);
 
 }  // namespace ffeti::test

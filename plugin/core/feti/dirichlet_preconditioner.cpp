@@ -6,6 +6,8 @@
 #include "base/parallel_for.h"
 #include "base/stopwatch.h"
 
+#include <exception>
+#include <map>
 #include <string>
 
 namespace ffeti {
@@ -30,8 +32,9 @@ SparseMatrix submatrix(const SparseMatrix& K, const std::vector<int>& rows, cons
   return block;
 }
 
-/// B B' over all rows (entries of the same (subdomain, dof) are the same column of B).
-SparseMatrix row_gram(const Constraints& c) {
+/// B W B' over all rows (entries of the same (subdomain, dof) are the same column of B), W
+/// the diagonal of `weight` per entry (all ones: B B').
+SparseMatrix row_gram(const Constraints& c, const std::vector<double>& weight) {
   // Columns numbered in order of first appearance, looked up per subdomain in a table over
   // its dofs (a map of a million (subdomain, dof) keys took 0.3 s).
   std::vector<std::vector<int>> column;  // [subdomain][dof] -> column of B, -1: none yet
@@ -41,20 +44,55 @@ SparseMatrix row_gram(const Constraints& c) {
     if (entry.dof >= static_cast<int>(of_subdomain.size())) of_subdomain.resize(static_cast<size_t>(entry.dof) + 1, -1);
   }
   int columns = 0;
+  std::vector<double> column_weight;
   std::vector<Eigen::Triplet<double, int>> entries;
   entries.reserve(c.entries.size());
   for (int r = 0; r < c.rows(); ++r)
     for (int e = c.row_start[static_cast<size_t>(r)]; e < c.row_start[static_cast<size_t>(r) + 1]; ++e) {
       const ConstraintEntry& entry = c.entries[static_cast<size_t>(e)];
       int& at = column[static_cast<size_t>(entry.subdomain)][static_cast<size_t>(entry.dof)];
-      if (at < 0) at = columns++;
+      if (at < 0) {
+        at = columns++;
+        column_weight.push_back(weight[static_cast<size_t>(e)]);
+      }
       entries.emplace_back(r, at, entry.coefficient);
     }
   SparseMatrix B(c.rows(), columns);
   B.setFromTriplets(entries.begin(), entries.end());
-  SparseMatrix gram = B * SparseMatrix(B.transpose());
+  const Vec w = Eigen::Map<const Vec>(column_weight.data(), columns);
+  SparseMatrix gram = B * w.asDiagonal() * SparseMatrix(B.transpose());
   gram.makeCompressed();
   return gram;
+}
+
+/// The weight of each constraint entry: 1, or with stiffness scaling 1 / K_s(dof, dof) of
+/// its subdomain, found on the rank that holds it and gathered (every rank builds B D^-1 B').
+std::vector<double> entry_weights(const std::vector<const SparseMatrix*>& operator_matrices,
+                                  const std::vector<int>& global_ids, const Constraints& c,
+                                  const Communicator& comm, InterfaceScaling scaling) {
+  std::vector<double> weight(c.entries.size(), 1.0);
+  if (scaling == InterfaceScaling::multiplicity) return weight;
+  std::map<int, size_t> local_of;
+  for (size_t k = 0; k < global_ids.size(); ++k) local_of[global_ids[k]] = k;
+  std::vector<double> mine;  // (entry, weight) pairs of this rank's subdomains
+  std::exception_ptr failure;  // thrown on every rank before the gather, none left waiting in it
+  try {
+    for (size_t e = 0; e < c.entries.size(); ++e) {
+      const auto at = local_of.find(c.entries[e].subdomain);
+      if (at == local_of.end()) continue;
+      const double diagonal = operator_matrices[at->second]->coeff(c.entries[e].dof, c.entries[e].dof);
+      if (!(diagonal > 0))
+        throw InputError("K[" + std::to_string(c.entries[e].subdomain) + "]: diagonal entry " +
+                         std::to_string(c.entries[e].dof) + " is not positive (scaling = \"stiffness\")");
+      mine.insert(mine.end(), {static_cast<double>(e), 1.0 / diagonal});
+    }
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  rethrow_on_every_rank(comm, failure);
+  const std::vector<double> all = comm.allgather(mine);
+  for (size_t t = 0; t + 1 < all.size(); t += 2) weight[static_cast<size_t>(all[t])] = all[t + 1];
+  return weight;
 }
 
 }  // namespace
@@ -65,6 +103,7 @@ struct DirichletPreconditioner::Block {
   SparseMatrix Kbb, Kib;
   std::shared_ptr<const CholmodFactor> Kii;  // shared by subdomains of equal K_ii
   mutable CholmodSolveWorkspace workspace;   // this subdomain's solves of Kii
+  Vec weight;                                 // D^{-1} on the boundary dofs (empty: multiplicity scaling)
   mutable Vec gathered, xb, t, ti, yb, full;  // buffers of apply()
 };
 
@@ -72,11 +111,13 @@ DirichletPreconditioner::DirichletPreconditioner(const std::vector<const SparseM
                                                  const std::vector<LocalConstraints>& local,
                                                  const std::vector<int>& global_ids, const Constraints& constraints,
                                                  const SubdomainSum& sum, int threads, bool lumped,
-                                                 bool share_factors)
+                                                 bool share_factors, InterfaceScaling scaling)
     : local_(local), sum_(sum), threads_(resolve_thread_count(threads)) {
-  // B has full row rank, so B B' is positive definite (block diagonal: rows meet only at
-  // the nodes they share).
-  if (constraints.rows() > 0 && (row_gram_.compute(row_gram(constraints)), row_gram_.info() != Eigen::Success))
+  // B has full row rank, so B D^-1 B' is positive definite (block diagonal: rows meet only
+  // at the nodes they share).
+  const std::vector<double> weight =
+      entry_weights(operator_matrices, global_ids, constraints, sum.communicator(), scaling);
+  if (constraints.rows() > 0 && (row_gram_.compute(row_gram(constraints, weight)), row_gram_.info() != Eigen::Success))
     throw InputError("constraints: B B' is not positive definite (Dirichlet preconditioner)");
   blocks_.resize(local.size());
   results_.resize(local.size());
@@ -92,6 +133,10 @@ DirichletPreconditioner::DirichletPreconditioner(const std::vector<const SparseM
       if (SparseMatrix::InnerIterator(local[k].B, j)) constrained[static_cast<size_t>(j)] = 1;
     for (int i = 0; i < K.rows(); ++i) (constrained[static_cast<size_t>(i)] ? block->boundary : block->interior).push_back(i);
     block->Kbb = submatrix(K, block->boundary, block->boundary);
+    if (scaling == InterfaceScaling::stiffness) {  // positive: entry_weights checked it
+      block->weight = Vec::Ones(K.rows());
+      for (int i : block->boundary) block->weight[i] = 1.0 / K.coeff(i, i);
+    }
     if (lumped) block->interior.clear();  // S_s ~ K_bb: the K_ii correction is what it leaves out
     block->Kib = submatrix(K, block->interior, block->boundary);
     // K_ii is K with every constrained dof fixed: regular whenever some dof is constrained.
@@ -131,6 +176,7 @@ void DirichletPreconditioner::apply(const Vec& x, Vec& y) const {
     b.gathered.resize(static_cast<Eigen::Index>(L.rows.size()));
     for (size_t r = 0; r < L.rows.size(); ++r) b.gathered[static_cast<Eigen::Index>(r)] = scaled_[L.rows[r]];
     b.full.noalias() = L.B.transpose() * b.gathered;
+    if (b.weight.size()) b.full.array() *= b.weight.array();
     b.xb.resize(static_cast<Eigen::Index>(b.boundary.size()));
     for (size_t i = 0; i < b.boundary.size(); ++i) b.xb[static_cast<Eigen::Index>(i)] = b.full[b.boundary[i]];
     b.yb.noalias() = b.Kbb * b.xb;  // S x_b = K_bb x_b - K_bi K_ii^{-1} K_ib x_b
@@ -141,6 +187,7 @@ void DirichletPreconditioner::apply(const Vec& x, Vec& y) const {
     }
     b.full.setZero();
     for (size_t i = 0; i < b.boundary.size(); ++i) b.full[b.boundary[i]] = b.yb[static_cast<Eigen::Index>(i)];
+    if (b.weight.size()) b.full.array() *= b.weight.array();
     results_[k].noalias() = L.B * b.full;
   });
   flat_.clear();

@@ -10,6 +10,13 @@
 // set of identical ones) and per application one K_ii solve per subdomain, as much as an
 // application of F.
 // The lumped variant keeps S_s ~ K_bb: no factorization, a sparse product per application.
+// Stiffness scaling (Rixen, Farhat: "k-scaling") weighs each subdomain's side of a row by the
+// stiffness of the others there: with D the diagonal of K_s at each column of B,
+//   M^{-1} = A B D^{-1} S D^{-1} B' A,  A = (B D^{-1} B')^{-1},
+// which is the multiplicity scaling where the sides are equally stiff (a regular grid's
+// straight interfaces) and, for one row between two one-dof subdomains, the exact inverse
+// of F. On unstructured METIS parts, whose sides differ, it took fewer multiplications
+// (docs/results/real-meshes.md).
 #pragma once
 
 #include "factor/cholmod_factor.h"
@@ -25,6 +32,8 @@ namespace ffeti {
 
 /// The preconditioner of the dual problem a set-up asks for (fetiSetup's `preconditioner`).
 enum class DualPreconditioner { none, lumped, dirichlet };
+/// How it weighs the sides of a row (fetiSetup's `scaling`): A = (BB')^{-1}, or by stiffness.
+enum class InterfaceScaling { multiplicity, stiffness };
 
 class DirichletPreconditioner {
  public:
@@ -33,11 +42,12 @@ class DirichletPreconditioner {
   /// `constraints` all rows (every rank's copy); `sum` the
   /// ordered sum over subdomains of F; `lumped`: S_s replaced by K_bb (no K_ii);
   /// `share_factors`: subdomains whose K_ii are bitwise equal factorize it once
-  /// (SharedFactors). Keeps references to `local` and `sum`.
+  /// (SharedFactors); `scaling`: the weights of the rows' sides. Keeps references to `local`
+  /// and `sum`. Collective (stiffness scaling gathers every rank's weights).
   DirichletPreconditioner(const std::vector<const SparseMatrix*>& operator_matrices,
                           const std::vector<LocalConstraints>& local, const std::vector<int>& global_ids,
                           const Constraints& constraints, const SubdomainSum& sum, int threads, bool lumped,
-                          bool share_factors);
+                          bool share_factors, InterfaceScaling scaling = InterfaceScaling::multiplicity);
   ~DirichletPreconditioner();
 
   /// y = M^{-1} x. Collective.

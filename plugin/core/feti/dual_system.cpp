@@ -70,14 +70,14 @@ void DualSystem::replace_right_hand_side(Constraints rebuilt) {
 }
 
 void DualSystem::use_preconditioner(DualPreconditioner kind, const std::vector<const SparseMatrix*>& operator_matrices,
-                                    int threads, bool share_factors) {
+                                    int threads, bool share_factors, InterfaceScaling scaling) {
   preconditioner_kind_ = kind;
   if (kind == DualPreconditioner::none) {
     preconditioner_.reset();
     return;
   }
   preconditioner_ = std::make_unique<DirichletPreconditioner>(operator_matrices, local_, global_ids_, constraints_, *sum_, threads,
-                                                              kind == DualPreconditioner::lumped, share_factors);
+                                                              kind == DualPreconditioner::lumped, share_factors, scaling);
 }
 
 LinearOperator DualSystem::preconditioner_operator() const {

@@ -62,7 +62,7 @@ class DualSystem {
   /// more factorization per subdomain (subdomains with identical interior blocks share one
   /// where `share_factors`), the lumped one none. Collective.
   void use_preconditioner(DualPreconditioner kind, const std::vector<const SparseMatrix*>& operator_matrices,
-                          int threads, bool share_factors);
+                          int threads, bool share_factors, InterfaceScaling scaling = InterfaceScaling::multiplicity);
   bool preconditioned() const { return preconditioner_ != nullptr; }
   DualPreconditioner preconditioner_kind() const { return preconditioner_kind_; }
 

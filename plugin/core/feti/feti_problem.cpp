@@ -209,7 +209,7 @@ void FetiProblem::precondition(DualSystem& system, DualPreconditioner kind) cons
   }
   // A rank's failure (a K_ii not positive definite) fails every rank: none waits on it later.
   collectively(*comm_, [&] {
-    system.use_preconditioner(kind, operator_matrices, settings_.threads, settings_.share_factors);
+    system.use_preconditioner(kind, operator_matrices, settings_.threads, settings_.share_factors, settings_.scaling);
   });
 }
 

@@ -32,6 +32,8 @@ struct FetiSetupSettings {
   /// in h and in the number of subdomains, one more factorization per subdomain) or lumped
   /// (no factorization); projected CG directly, MPRGP in face (docs/results/scalability.md).
   DualPreconditioner preconditioner = DualPreconditioner::lumped;
+  /// How the preconditioner weighs each row's sides (DirichletPreconditioner): a speed option.
+  InterfaceScaling scaling = InterfaceScaling::multiplicity;
   /// How the coarse problem's Gram matrices over fewer columns (G_F G_F', G_S G_S') are
   /// factorized (coarse_gram.h): a speed option, the same answers to round-off.
   GramLayout coarse_gram = GramLayout::automatic;
