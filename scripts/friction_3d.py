@@ -306,6 +306,8 @@ def sides_section(sides, finest, finest_09):
              for a, b in zip(rows("sphere", "node", "average"), rows("block", "node", "average"))]
     flat_pairs = [abs(f(a, "stick_ratio") - f(b, "stick_ratio")) / f(a, "stick_ratio")
                   for a, b in zip(rows("sphere", "node", "master"), rows("block", "node", "slave"))]
+    if len(finest) != len(FLAT_SIDES):
+        raise SystemExit(f"friction-3d-finest.csv: {len(finest)} rows, not one per side of {FLAT_SIDES}")
     finest_errors = [f(r, "stick_ratio_error") for r in finest]
     finest_pair = abs(f(finest[0], "stick_ratio") - f(finest[1], "stick_ratio")) / f(finest[0], "stick_ratio")
     at_09 = [f(r, "stick_ratio_error") for r in rows("sphere", "node", "master", fine) + rows("block", "node", "slave", fine)

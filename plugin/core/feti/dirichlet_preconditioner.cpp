@@ -118,7 +118,8 @@ DirichletPreconditioner::DirichletPreconditioner(const std::vector<const SparseM
   const std::vector<double> weight =
       entry_weights(operator_matrices, global_ids, constraints, sum.communicator(), scaling);
   if (constraints.rows() > 0 && (row_gram_.compute(row_gram(constraints, weight)), row_gram_.info() != Eigen::Success))
-    throw InputError("constraints: B B' is not positive definite (Dirichlet preconditioner)");
+    throw InputError("constraints: B D^-1 B' is not positive definite (Dirichlet preconditioner; D = I but with "
+                     "scaling = \"stiffness\")");
   blocks_.resize(local.size());
   results_.resize(local.size());
   const int count = static_cast<int>(local.size());
@@ -166,7 +167,7 @@ DirichletPreconditioner::~DirichletPreconditioner() = default;
 
 void DirichletPreconditioner::apply(const Vec& x, Vec& y) const {
   Stopwatch clock;
-  scaled_ = row_gram_.solve(x);  // (B B')^{-1} x
+  scaled_ = row_gram_.solve(x);  // A x, A = (B D^-1 B')^{-1} (D = I: multiplicity scaling)
   // A failure (a K_ii solve out of memory) reaches every rank before the sum below.
   parallel_for_each_on_every_rank(sum_.communicator(), static_cast<int>(local_.size()), threads_, [&](int s) {
     const auto k = static_cast<size_t>(s);

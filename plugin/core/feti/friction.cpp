@@ -45,8 +45,9 @@ Vec start_on_new_bounds(const Constraints& c, Vec lambda, const Vec& old_bound, 
 /// solving for them to tol is wasted. Measured against 1e-3 and the user's tol on every
 /// friction scene ([log](docs/log.md), 2026-11-27).
 constexpr double kFirstSolveTolerance = 1e-2;
-/// ... looser still where the bounds are the last load step's (mu lambda_n of another load):
-/// the first solve only has to move the forces towards the new load's. 0.3 against 1e-2 on
+/// ... looser still where the bounds come from a start (mu lambda_n of the last load step's
+/// multipliers, or of a given start): the first solve only has to move the forces towards
+/// the new load's. 0.3 against 1e-2 on
 /// the friction onset's 24 pulls: 2919 multiplications instead of 3605; on every second step
 /// of the friction page's scenes as many or fewer (the 3D sheared block 97 -> 82 at 1e-8).
 /// From g = infinity (no earlier step) 0.3 cost more (the 3D slope: 51 -> 73): 1e-2 stays
@@ -123,6 +124,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
       if (widened != g) {
         g = widened;
         if (feasible_lambda.size()) settings.start = feasible_lambda;
+        else settings.tolerance = std::max(tol, kFirstSolveTolerance);  // from g = infinity: a cold first solve
         continue;
       }
     }
