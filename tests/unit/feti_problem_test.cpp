@@ -127,10 +127,7 @@ TEST(FetiProblem, StiffnessScalingIsMultiplicityWhereTheSidesAreEquallyStiff) {
   for (DualPreconditioner kind : {DualPreconditioner::lumped, DualPreconditioner::dirichlet})
   for (bool graded : {false, true}) {
     test::MembraneOptions o = test::membrane_options(64, graded ? 2 : 4);
-    if (graded) {
-      const double a = std::log(1000.0) * 64.0 / 63.0;
-      o.x_map = [a](double x) { return 1.0 - (std::exp(a * (1.0 - x)) - 1.0) / (std::exp(a) - 1.0); };
-    }
+    if (graded) o.x_map = test::graded_towards_contact(64, 1000.0);
     DualSolveSettings settings;
     settings.tolerance = 1e-10;
     const FetiResult m = membrane_problem(o, FetiVariant::feti1, 0, kind).solve(settings);

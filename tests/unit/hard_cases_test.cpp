@@ -258,8 +258,7 @@ TEST(HardCases, MeshGradedOneToOneThousand) {
   // than at x = 0 (x -> 1 - (e^{a(1-x)} - 1) / (e^a - 1)), 2 x 2 subdomains per body; both
   // FETI variants must agree.
   test::MembraneOptions o = test::membrane_options(64, 2);
-  const double a = std::log(1000.0) * 64.0 / 63.0;  // 63 cell widths between the first and last
-  o.x_map = [a](double x) { return 1.0 - (std::exp(a * (1.0 - x)) - 1.0) / (std::exp(a) - 1.0); };
+  o.x_map = test::graded_towards_contact(64, 1000.0);
   const std::vector<SubdomainInput> subs = test::membrane_subdomains(o);
   double smallest = 1, largest = 0;
   for (const SubdomainInput& s : subs)

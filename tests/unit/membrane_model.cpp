@@ -83,6 +83,11 @@ MembraneOptions membrane_options(int n, int N) {
   return o;
 }
 
+std::function<double(double)> graded_towards_contact(int n, double ratio) {
+  const double a = std::log(ratio) * n / (n - 1.0);  // n - 1 cell widths between the first and last
+  return [a](double x) { return 1.0 - (std::exp(a * (1.0 - x)) - 1.0) / (std::exp(a) - 1.0); };
+}
+
 std::vector<SubdomainInput> membrane_subdomains(const MembraneOptions& o) {
   const auto load = [](double x, double y) {
     if (x < 1) return y > 0.75 ? -3.0 : 0.0;

@@ -41,6 +41,10 @@ struct MembraneOptions {
 /// Options with n cells per unit length and N x N subdomains per body, the rest default.
 MembraneOptions membrane_options(int n, int N);
 
+/// An x_map for n cells that grades body 0 towards the contact line, its cells `ratio` times
+/// narrower there than at x = 0: x -> 1 - (e^{a(1-x)} - 1) / (e^a - 1).
+std::function<double(double)> graded_towards_contact(int n, double ratio);
+
 /// Body 0 = (0,1)^2 with u = 0 at x = 0, body 1 = (1,2)x(0,1); energy as the seed prints it
 /// (int |grad u|^2 - int f u, so K = 2 x Laplacian), f = -3 on y > 0.75 in body 0 and
 /// f = -1 on y < 0.25 in body 1.

@@ -103,7 +103,7 @@ struct DirichletPreconditioner::Block {
   SparseMatrix Kbb, Kib;
   std::shared_ptr<const CholmodFactor> Kii;  // shared by subdomains of equal K_ii
   mutable CholmodSolveWorkspace workspace;   // this subdomain's solves of Kii
-  Vec weight;                                 // D^{-1} on the boundary dofs (empty: multiplicity scaling)
+  Vec weight;                                 // D^{-1} per boundary dof (empty: multiplicity scaling)
   mutable Vec gathered, xb, t, ti, yb, full;  // buffers of apply()
 };
 
@@ -135,8 +135,9 @@ DirichletPreconditioner::DirichletPreconditioner(const std::vector<const SparseM
     for (int i = 0; i < K.rows(); ++i) (constrained[static_cast<size_t>(i)] ? block->boundary : block->interior).push_back(i);
     block->Kbb = submatrix(K, block->boundary, block->boundary);
     if (scaling == InterfaceScaling::stiffness) {  // positive: entry_weights checked it
-      block->weight = Vec::Ones(K.rows());
-      for (int i : block->boundary) block->weight[i] = 1.0 / K.coeff(i, i);
+      block->weight.resize(static_cast<Eigen::Index>(block->boundary.size()));
+      for (size_t i = 0; i < block->boundary.size(); ++i)
+        block->weight[static_cast<Eigen::Index>(i)] = 1.0 / K.coeff(block->boundary[i], block->boundary[i]);
     }
     if (lumped) block->interior.clear();  // S_s ~ K_bb: the K_ii correction is what it leaves out
     block->Kib = submatrix(K, block->interior, block->boundary);
@@ -177,18 +178,18 @@ void DirichletPreconditioner::apply(const Vec& x, Vec& y) const {
     b.gathered.resize(static_cast<Eigen::Index>(L.rows.size()));
     for (size_t r = 0; r < L.rows.size(); ++r) b.gathered[static_cast<Eigen::Index>(r)] = scaled_[L.rows[r]];
     b.full.noalias() = L.B.transpose() * b.gathered;
-    if (b.weight.size()) b.full.array() *= b.weight.array();
     b.xb.resize(static_cast<Eigen::Index>(b.boundary.size()));
     for (size_t i = 0; i < b.boundary.size(); ++i) b.xb[static_cast<Eigen::Index>(i)] = b.full[b.boundary[i]];
+    if (b.weight.size()) b.xb.array() *= b.weight.array();  // D^-1 on both sides of S
     b.yb.noalias() = b.Kbb * b.xb;  // S x_b = K_bb x_b - K_bi K_ii^{-1} K_ib x_b
     if (!b.interior.empty()) {
       b.t.noalias() = b.Kib * b.xb;
       b.Kii->solve(b.t, b.ti, b.workspace);
       b.yb.noalias() -= b.Kib.transpose() * b.ti;
     }
+    if (b.weight.size()) b.yb.array() *= b.weight.array();
     b.full.setZero();
     for (size_t i = 0; i < b.boundary.size(); ++i) b.full[b.boundary[i]] = b.yb[static_cast<Eigen::Index>(i)];
-    if (b.weight.size()) b.full.array() *= b.weight.array();
     results_[k].noalias() = L.B * b.full;
   });
   flat_.clear();

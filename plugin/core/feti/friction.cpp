@@ -47,11 +47,10 @@ Vec start_on_new_bounds(const Constraints& c, Vec lambda, const Vec& old_bound, 
 constexpr double kFirstSolveTolerance = 1e-2;
 /// ... looser still where the bounds come from a start (mu lambda_n of the last load step's
 /// multipliers, or of a given start): the first solve only has to move the forces towards
-/// the new load's. 0.3 against 1e-2 on
-/// the friction onset's 24 pulls: 2919 multiplications instead of 3605; on every second step
-/// of the friction page's scenes as many or fewer (the 3D sheared block 97 -> 82 at 1e-8).
-/// From g = infinity (no earlier step) 0.3 cost more (the 3D slope: 51 -> 73): 1e-2 stays
-/// there ([log](docs/log.md), 2026-12-07).
+/// the new load's. 0.3 against 1e-2 on the friction onset's 24 pulls: 2919 multiplications
+/// instead of 3605; on every second step of the friction page's scenes as many or fewer (the
+/// 3D sheared block 97 -> 82 at 1e-8). From g = infinity (no earlier step) 0.3 cost more (the
+/// 3D slope: 51 -> 73): 1e-2 stays there ([log](docs/log.md), 2026-12-07).
 constexpr double kWarmFirstSolveTolerance = 0.3;
 /// Each later solve stops at max(tol, min(the last solve's tolerance, kBoundFollowing times
 /// the last relative change of the bounds)): as exact as the fixed point's progress can use.
