@@ -52,6 +52,13 @@ constexpr double kFirstSolveTolerance = 1e-2;
 /// 3D sheared block 97 -> 82 at 1e-8). From g = infinity (no earlier step) 0.3 cost more (the
 /// 3D slope: 51 -> 73): 1e-2 stays there ([log](docs/log.md), 2026-12-07).
 constexpr double kWarmFirstSolveTolerance = 0.3;
+/// The first solve settles its start (the last load step's multipliers) in at most this many
+/// face solves, not settle='s default 2: each settles the face gradient to 1e-2 of its start,
+/// more than a solve that stops at kWarmFirstSolveTolerance can use (the friction onset's
+/// 3D block, mesh 2, q 0.5: 9 of the first solve's 12 multiplications settling). On the 24
+/// pulls 2735 multiplications against 2893 with 2 and 2964 with none; the friction page's
+/// cost scenes as many or fewer ([log](docs/log.md), 2026-12-07, twenty-first session).
+constexpr int kFirstSolveSettleRounds = 1;
 /// Each later solve stops at max(tol, min(the last solve's tolerance, kBoundFollowing times
 /// the last relative change of the bounds)): as exact as the fixed point's progress can use.
 /// 0.1 left solves that stopped at once, their bounds crawling towards the fixed point.
@@ -79,6 +86,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
   const double tol = settings.tolerance;
   if (law.coulomb())
     settings.tolerance = std::max(tol, std::isfinite(g.sum()) ? kWarmFirstSolveTolerance : kFirstSolveTolerance);
+  if (law.coulomb()) settings.settle = std::min(settings.settle, kFirstSolveSettleRounds);
   if (settings.feasibility_tolerance == 0) settings.feasibility_tolerance = tol;  // each solve's check at the user's
   if (law.coulomb()) {
     const double resolution = std::max(tol, kFeasibilityResolution);
