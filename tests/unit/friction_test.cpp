@@ -308,6 +308,21 @@ TEST_P(Tresca, AnUnsettledFixedPointIsReportedAsSuch) {
   EXPECT_GT(r.friction_bound_change, 1e-3);
 }
 
+TEST_P(Tresca, CoulombBelowRoundOffEndsStagnatedWithTheLawsResidual) {
+  // tol 1e-17 lies below what the data allow: Tresca solves stagnate. The fixed point goes on
+  // to bounds within the residual reached, and reports it: status stagnated, the residual
+  // at least the bounds' last change (once the first stagnated solve ended it, reporting its
+  // KKT residual while the bounds still moved by more).
+  const auto problem = dragged_coulomb(GetParam());
+  const FetiProblem& p = *problem;
+  DualSolveSettings below = tight();
+  below.tolerance = 1e-17;
+  const FetiResult r = p.solve(below);
+  EXPECT_EQ(r.status, SolveStatus::stagnated);
+  EXPECT_GE(r.violation, r.friction_bound_change);
+  EXPECT_LT(r.violation, 1e-9);
+}
+
 TEST_P(Tresca, MaxitBoundsTheWholeFixedPoint) {
   // maxit holds over all Tresca solves of the fixed point: with the multiplications of the
   // first two solves as the budget, the third finds none left and the status says so.
