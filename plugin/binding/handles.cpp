@@ -3,6 +3,7 @@
 #include "base/errors.h"
 #include "parallel/mpi_communicator.h"
 
+#include <cstdio>
 #include <mpi.h>
 
 #include <map>
@@ -45,6 +46,14 @@ std::shared_ptr<const Communicator> communicator(void* script_comm) {
     return std::make_shared<SerialCommunicator>();
   }
   return std::make_shared<MpiCommunicator>(script_comm ? *static_cast<MPI_Comm*>(script_comm) : MPI_COMM_WORLD);
+}
+
+void say_stagnated(const Handle& h, const char* function, int hessian, double reached, double tol) {
+  if (h.problem->communicator().rank() != 0) return;
+  std::printf("ffeti: %s: stagnated at round-off after %d Hessian multiplications: KKT residual %.2e, above tol "
+              "%.1e, is the best accuracy this problem's data allow (status 2, the answer returned)\n",
+              function, hessian, reached, tol);
+  std::fflush(stdout);
 }
 
 }  // namespace ffeti::binding

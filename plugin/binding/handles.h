@@ -38,6 +38,10 @@ void free_handle(long id);
 /// initializes MPI.
 std::shared_ptr<const Communicator> communicator(void* script_comm);
 
+/// Said whatever the verbosity (rank 0): `function`'s solve stopped at round-off (status 2)
+/// after `hessian` multiplications, `reached` (its KKT residual) above `tol`.
+void say_stagnated(const Handle& h, const char* function, int hessian, double reached, double tol);
+
 /// Runs `body`, turning every core exception into a FreeFEM error the script can catch.
 template <class F>
 auto guarded(const char* function, F&& body) -> decltype(body()) {

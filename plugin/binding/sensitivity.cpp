@@ -154,6 +154,8 @@ class FetiSensitivity : public WithNamedArguments {
       for (size_t j = 0; j < r.size(); ++j) {
         for (size_t k = 0; k < r[j].z.size(); ++k) copy_to(r[j].z[k], z[static_cast<long>(j) * count + ids[k]]);
         if (worst == SolveStatus::converged) worst = r[j].status;
+        if (r[j].status == SolveStatus::stagnated)
+          say_stagnated(h, "fetiSensitivity", r[j].counts.hessian, r[j].kkt.max(), call.settings.tolerance);
       }
       return static_cast<long>(status_code(worst));
     }));
@@ -207,6 +209,8 @@ class FetiAdjoint : public WithNamedArguments {
                     sens.classification().weak.size());
         std::fflush(stdout);
       }
+      if (r.status == SolveStatus::stagnated)
+        say_stagnated(h, "fetiAdjoint", r.counts.hessian, r.kkt.max(), call.settings.tolerance);
       if (auto* w = optional_pointer<KN<KN<double>>>(nargs[kW], stack)) {
         const std::vector<int>& ids = h.problem->global_ids();
         w->resize(h.problem->subdomain_count());

@@ -73,10 +73,7 @@ class FetiSolve : public WithNamedArguments {
                   "body %d, which would slide away (status 4, distance from equilibrium %.2e of the loads)\n",
                   r.sliding_body, r.equality_reference > 0 ? r.equality_norm / r.equality_reference : 0.0);
     // Whatever the verbosity: a tol below what round-off allows is said, with what was reached.
-    if (h.problem->communicator().rank() == 0 && r.status == SolveStatus::stagnated)
-      std::printf("ffeti: fetiSolve: stagnated at round-off after %d Hessian multiplications: KKT residual %.2e, "
-                  "above tol %.1e, is the best accuracy this problem's data allow (status 2, the answer returned)\n",
-                  r.counts.hessian, r.violation, h.tolerance);
+    if (r.status == SolveStatus::stagnated) say_stagnated(h, "fetiSolve", r.counts.hessian, r.violation, h.tolerance);
     // Whatever the verbosity: an answer whose slaves pass through the master is not silent.
     if (h.problem->communicator().rank() == 0 && r.beyond_reach.penetrating > 0)
       std::printf("ffeti: WARNING fetiSolve: %s\n", r.beyond_reach.warning().c_str());

@@ -26,7 +26,9 @@ using CgResult = QpResult;
 /// Convergence is declared only on the true gradient H x - b (recomputed once the updated
 /// one passes the test: one more multiplication); if it fails the test, CG restarts from it,
 /// and after `settings.residual_replacements` such restarts returns `stagnated`: the
-/// tolerance asked for lies below what round-off lets the data reach.
+/// tolerance asked for lies below what round-off lets the data reach. An updated gradient
+/// that stalls or grows far below the first one (round-off, not the test) is checked the
+/// same way.
 /// With `problem.preconditioner` M (symmetric positive definite on the iteration's subspace)
 /// this is preconditioned CG: directions from M g instead of g; the stop test still
 /// receives ||g||_2. Multiplies at most budget.remaining() times and charges the budget.

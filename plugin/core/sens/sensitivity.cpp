@@ -317,7 +317,8 @@ AdjointResult SensitivityProblem::adjoint(const std::vector<Vec>& dJdu, const Du
   result.kkt = kkt_residuals(inputs, dJdu, rhs, true, system_->local(), system_->F(), system_->constraints(),
                              problem_.variant() == FetiVariant::feti1, s.u, s.lambda, problem_.communicator());
   result.status = checked_status(result.status, result.kkt, settings.tolerance);
-  if (result.status == SolveStatus::converged) adjoint_ = std::move(s);
+  // Stopped at round-off (stagnated): as accurate as the data allow, and usable like the state.
+  if (result.status == SolveStatus::converged || result.status == SolveStatus::stagnated) adjoint_ = std::move(s);
   result.seconds = problem_.communicator().max(clock.seconds());
   counters_.adjoint_solves += 1;
   counters_.adjoint = result;
@@ -325,7 +326,7 @@ AdjointResult SensitivityProblem::adjoint(const std::vector<Vec>& dJdu, const Du
 }
 
 double SensitivityProblem::adjoint_gradient(const DesignDerivative& direction) {
-  if (!adjoint_) throw InputError("P: no converged adjoint solution (call fetiAdjoint first)");
+  if (!adjoint_) throw InputError("P: no adjoint solution (call fetiAdjoint first; its solve must converge or stop at round-off)");
   const ThreadLimit limit(problem_.settings().threads);
   Stopwatch clock;
   const DirectionData d = direction_data(direction);
