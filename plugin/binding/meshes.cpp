@@ -13,6 +13,7 @@
 #include "AFunction_ext.hpp"  // OneOperator5_
 
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -174,6 +175,9 @@ long feti_split_mesh(KN<const MeshType*>* const& Th, const long& first, const Me
     if (part->N() != body->nt)
       throw InputError("part: has " + std::to_string(part->N()) + " entries for the " + std::to_string(body->nt) + " " +
                        elements + " of ThBody (one part number per " + element + ")");
+    if (interface_label < std::numeric_limits<int>::min() || interface_label > std::numeric_limits<int>::max())
+      throw InputError("interfaceLabel: " + std::to_string(interface_label) +
+                       " is no mesh label (labels are int: narrowed, it would label the cuts with another number)");
     const std::vector<long> parts = part_numbers(*part);
     long count = 0;
     for (const long p : parts) count = std::max(count, p + 1);
