@@ -214,7 +214,7 @@ std::vector<Option> make_options() {
        "start's contact set with the bounds ignored, then projected onto them, each kept if it lowers the cost; "
        "[algorithms](algorithms.md), measured in [large contact](results/large-contact.md)); 0: MPRGP from the "
        "start as given. Ignored without a start, and by the second and later Tresca solves of Coulomb friction's "
-       "fixed point (each starts from the last one's multipliers as they are)",
+       "fixed point (each starts from the last one's multipliers as they are); its first solve takes at most one",
        [](SolverSettings& s, const OptionValue& v) { s.solve.settle = integer(v); }},
       {"frictionit", S::solve, K::integer, {}, 1, kIntMax, false, false, "50",
        "with Coulomb friction: Tresca solves the fixed point may take; beyond them, or once they have spent `maxit` "
