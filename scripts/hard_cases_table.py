@@ -145,8 +145,8 @@ def friction_onset_section():
         "crawl ([algorithms](../algorithms.md#friction), held modes). What remains is the Coulomb fixed",
         f"point's own cost: {span([int(r['fixed_point_iterations']) for r in feasible])} Tresca solves per pull "
         "(the column above), each beginning with the body's balance broken by its new bounds. The first",
-        "solve of a pull, from the weight's bounds, stops at 0.3 ([algorithms](../algorithms.md#friction);",
-        "what it cost before: [log](../log.md), 2026-12-07).",
+        "solve of a pull, from the weight's bounds, stops at 0.3 and settles its start in one face solve",
+        "([algorithms](../algorithms.md#friction); what each cost before: [log](../log.md), 2026-12-07).",
         "",
     ]
 
