@@ -3,6 +3,7 @@
 // and the dense rate the factorizations' rate is read against (factor/dense_rate).
 #include "factor/dense_rate.h"
 #include "feti/held_bytes.h"
+#include "membrane_model.h"
 
 #include <gtest/gtest.h>
 
@@ -53,6 +54,34 @@ TEST(HeldBytes, ConstraintsCountTheirRowsEntriesRightHandSidesAndKinds) {
   c.kind = {RowKind::gluing, RowKind::contact};
   const double expected = 3 * sizeof(ConstraintEntry) + 3 * sizeof(int) + 2 * sizeof(double) + 2 * sizeof(RowKind);
   EXPECT_DOUBLE_EQ(constraint_bytes(c), expected);
+}
+
+TEST(HeldBytes, TheDualSystemCountsItsRowsCoarseProblemAndPreconditioner) {
+  // The seed's membranes (2 x 2 subdomains per body, Total FETI: every subdomain floats).
+  // The rows hold at least the blocks B_s; the lumped preconditioner at least each K_bb (K
+  // on the dofs the rows touch), and nothing without one; the coarse problem at least G's
+  // values (one row per rigid mode, an entry per row it meets).
+  const test::MembraneOptions o = test::membrane_options(16, 2);
+  const FetiProblem none = test::membrane_problem(o, FetiVariant::tfeti);
+  const FetiProblem lumped = test::membrane_problem(o, FetiVariant::tfeti, 0, DualPreconditioner::lumped);
+  double blocks = 0, boundary_blocks = 0;
+  for (size_t k = 0; k < lumped.inputs().size(); ++k) {
+    const SparseMatrix& B = lumped.dual().local()[k].B;
+    blocks += sparse_bytes(B);
+    const std::vector<int> touched = touched_dofs(B);
+    const SparseMatrix& K = lumped.inputs()[k].K;
+    for (int i : touched)
+      for (int j : touched)
+        if (K.coeff(i, j) != 0) boundary_blocks += sizeof(double) + sizeof(SparseMatrix::StorageIndex);
+  }
+  EXPECT_GE(lumped.dual_bytes().rows, blocks);
+  EXPECT_GE(lumped.dual_bytes().preconditioner, boundary_blocks);
+  EXPECT_GT(boundary_blocks, 0);
+  EXPECT_EQ(none.dual_bytes().preconditioner, 0);
+  EXPECT_EQ(none.dual_bytes().rows, lumped.dual_bytes().rows);
+  ASSERT_NE(lumped.dual().coarse(), nullptr);
+  EXPECT_GE(lumped.dual_bytes().coarse, sparse_bytes(lumped.dual().coarse()->G()));
+  EXPECT_GT(sparse_bytes(lumped.dual().coarse()->G()), 0);
 }
 
 // The yardstick of the factorizations' rate: a measured rate a core can reach (between a

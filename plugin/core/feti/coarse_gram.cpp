@@ -2,6 +2,7 @@
 
 #include "factor/semidefinite_kernel.h"
 #include "factor/upper_gram.h"
+#include "feti/held_bytes.h"
 
 #include <stdexcept>
 #include <utility>
@@ -167,6 +168,10 @@ std::unique_ptr<PartialGram> CoarseGram::over_columns(const Vec& kept, RankDecis
     S -= Eigen::MatrixXd(U * U.transpose());
   }
   return std::make_unique<SchurGram>(*this, std::move(S), rank);
+}
+
+double CoarseGram::held_bytes() const {
+  return factor_.factor_bytes() + dense_bytes(trailing_) + dense_bytes(schur_) + vector_bytes(contact_modes_);
 }
 
 }  // namespace ffeti

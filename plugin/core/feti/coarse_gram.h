@@ -74,6 +74,8 @@ class CoarseGram {
 
   /// True when GG' is factored with the contact modes last (over_columns works on S_X).
   bool contact_last() const { return contact_last_; }
+  /// Bytes held: GG''s factor and the contact modes' dense blocks.
+  double held_bytes() const;
 
  private:
   friend class SchurGram;

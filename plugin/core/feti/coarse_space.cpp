@@ -1,4 +1,6 @@
 #include "feti/coarse_space.h"
+
+#include "feti/held_bytes.h"
 #include "factor/upper_gram.h"
 
 #include "base/errors.h"
@@ -237,6 +239,11 @@ double CoarseSpace::feasibility_residual(const Vec& e, const qp::ConstraintSet& 
     return distance <= enough || gp <= stop_at;
   });
   return r.status == SolveStatus::converged ? distance : -1.0;
+}
+
+double CoarseSpace::held_bytes() const {
+  return sparse_bytes(G_) + vector_bytes(owner_) + vector_bytes(local_rows_) + dense_bytes(coarse_rhs_) +
+         dense_bytes(coarse_solution_) + (gram_ ? gram_->held_bytes() : 0.0);
 }
 
 }  // namespace ffeti

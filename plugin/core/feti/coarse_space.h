@@ -31,6 +31,8 @@ class CoarseSpace {
   const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& G() const { return G_; }
   /// GG' and the Gram matrices over fewer columns (G_F G_F', G_S G_S'). Precondition: !empty().
   const CoarseGram& gram() const { return *gram_; }
+  /// Bytes held: G, its row maps and GG''s factor (CoarseGram::held_bytes).
+  double held_bytes() const;
   /// Global subdomain and kernel column behind each row of G (ascending subdomain).
   const std::vector<std::pair<int, int>>& row_owner() const { return owner_; }
   /// Number of floating subdomains over all ranks.

@@ -1,6 +1,7 @@
 #include "feti/dirichlet_preconditioner.h"
 
 #include "feti/dual_operator.h"
+#include "feti/held_bytes.h"
 #include "factor/shared_factors.h"
 #include "base/errors.h"
 #include "base/parallel_for.h"
@@ -9,6 +10,7 @@
 #include <exception>
 #include <map>
 #include <string>
+#include <unordered_set>
 
 namespace ffeti {
 namespace {
@@ -198,6 +200,19 @@ void DirichletPreconditioner::apply(const Vec& x, Vec& y) const {
   sum_.sum(flat_, summed_);
   y = row_gram_.solve(summed_);
   application_seconds_ += clock.seconds();
+}
+
+double DirichletPreconditioner::held_bytes() const {
+  double bytes = sparse_bytes(SparseMatrix(row_gram_.matrixL())) + dense_bytes(scaled_) + dense_bytes(summed_) +
+                 vector_bytes(flat_);
+  for (const Vec& r : results_) bytes += dense_bytes(r);
+  std::unordered_set<const CholmodFactor*> counted;
+  for (const auto& b : blocks_) {
+    bytes += vector_bytes(b->boundary) + vector_bytes(b->interior) + sparse_bytes(b->Kbb) + sparse_bytes(b->Kib);
+    for (const Vec* v : {&b->weight, &b->gathered, &b->xb, &b->t, &b->ti, &b->yb, &b->full}) bytes += dense_bytes(*v);
+    if (b->Kii && counted.insert(b->Kii.get()).second) bytes += b->Kii->factor_bytes();
+  }
+  return bytes;
 }
 
 }  // namespace ffeti

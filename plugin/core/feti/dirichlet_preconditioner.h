@@ -55,6 +55,9 @@ class DirichletPreconditioner {
   void apply(const Vec& x, Vec& y) const;
   /// Wall-clock seconds spent in apply so far.
   double application_seconds() const { return application_seconds_; }
+  /// Bytes held on this rank: each subdomain's K_bb, K_ib, weights and buffers, the K_ii
+  /// factors (one per set of identical ones), B B''s factor.
+  double held_bytes() const;
 
  private:
   struct Block;

@@ -1,6 +1,7 @@
 #include "feti/dual_operator.h"
 
 #include "base/stopwatch.h"
+#include "feti/held_bytes.h"
 
 #include <algorithm>
 
@@ -196,6 +197,16 @@ void DualOperator::sum_local_results(Vec& y) const {
   for (size_t s = 0; s < subdomains_.size(); ++s)
     flat_.insert(flat_.end(), local_result_[s].data(), local_result_[s].data() + local_result_[s].size());
   sum_.sum(flat_, y);
+}
+
+double DualOperator::held_bytes() const {
+  double bytes = dense_bytes(column_);
+  for (const SparseMatrix& B : interface_B_) bytes += sparse_bytes(B);
+  for (const auto* vectors : {&gathered_, &local_rhs_, &local_solution_, &local_result_, &interface_rhs_, &interface_solution_})
+    for (const Vec& v : *vectors) bytes += dense_bytes(v);
+  for (const auto* blocks : {&block_gathered_, &block_rhs_, &block_solution_, &block_result_})
+    for (const Eigen::MatrixXd& m : *blocks) bytes += dense_bytes(m);
+  return bytes;
 }
 
 }  // namespace ffeti

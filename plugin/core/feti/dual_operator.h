@@ -57,6 +57,10 @@ class DualOperator {
   /// application is B_s', B_s and the sum over subdomains.
   double solve_seconds() const { return solve_seconds_; }
 
+  /// Bytes held on this rank: the B_s renumbered to their interfaces and the buffers of
+  /// the applications so far.
+  double held_bytes() const;
+
   /// sum_s ||B_s' x||^2 over this rank's subdomains (callers sum over the ranks).
   double local_transpose_squared_norm(const Vec& x) const;
 

@@ -1,6 +1,7 @@
 #include "feti/dual_system.h"
 
 #include "base/errors.h"
+#include "feti/held_bytes.h"
 #include "feti/primal.h"
 #include "base/stopwatch.h"
 #include "qp/cone_distance.h"
@@ -329,6 +330,15 @@ void DualSystem::use_conjugate_projector(const std::vector<Eigen::MatrixXd>& mod
   for (size_t t = 0; t + 2 < all.size(); t += 3)
     C(static_cast<Eigen::Index>(all[t]), static_cast<Eigen::Index>(all[t + 1])) += all[t + 2];
   conjugate_ = std::make_unique<ConjugateProjector>(std::move(C), *F_);
+}
+
+DualSystem::HeldBytes DualSystem::held_bytes() const {
+  HeldBytes bytes;
+  bytes.rows = F_->held_bytes();
+  for (const LocalConstraints& block : local_) bytes.rows += sparse_bytes(block.B) + vector_bytes(block.rows);
+  if (coarse_) bytes.coarse = coarse_->held_bytes();
+  if (preconditioner_) bytes.preconditioner = preconditioner_->held_bytes();
+  return bytes;
 }
 
 }  // namespace ffeti

@@ -47,6 +47,13 @@ class DualSystem {
   const std::vector<LocalConstraints>& local() const { return local_; }
   const DualOperator& F() const { return *F_; }
   const CoarseSpace* coarse() const { return coarse_.get(); }
+  /// Bytes this rank holds beside the factors and the input copies, by part.
+  struct HeldBytes {
+    double rows = 0;            ///< the blocks B_s (twice: by rows, and renumbered to the interfaces) and buffers
+    double coarse = 0;          ///< G and GG''s factor
+    double preconditioner = 0;  ///< the lumped or Dirichlet preconditioner's blocks and factors
+  };
+  HeldBytes held_bytes() const;
   /// Where nothing floats (the MPRGP path): the conjugate projector onto the rigid modes of
   /// the subdomains on the equality rows, `modes[k]` local subdomain k's (n_k x r, the same r
   /// on every subdomain; candidate_kernel), used by every later solve. Collective.

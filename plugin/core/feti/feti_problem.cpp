@@ -184,6 +184,8 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   primal_dimension_ = static_cast<long>(comm.sum(static_cast<double>(local_primal)));
   input_bytes_ = comm.sum(ffeti::input_bytes(inputs_));
   kernel_bytes_ = comm.sum(ffeti::kernel_bytes(subdomains_));
+  const DualSystem::HeldBytes dual_bytes = dual_->held_bytes();
+  dual_bytes_ = {comm.sum(dual_bytes.rows), comm.sum(dual_bytes.coarse), comm.sum(dual_bytes.preconditioner)};
   factor_nonzeros_ = comm.sum(local_nonzeros);
   factor_bytes_ = comm.sum(local_bytes);
   operator_bytes_ = comm.sum(local_operator_bytes);

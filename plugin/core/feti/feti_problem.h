@@ -187,6 +187,8 @@ class FetiProblem {
   /// distinct factor's analysis), summed over the ranks: over time_factor, their rate.
   double factor_flops() const { return factor_flops_; }
   double kernel_bytes() const { return kernel_bytes_; }
+  /// The dual system's bytes over all ranks as set up (DualSystem::held_bytes).
+  const DualSystem::HeldBytes& dual_bytes() const { return dual_bytes_; }
   /// The solver path the data call for (ALGORITHMS.md section 6).
   DualPath path() const { return dual_->path(); }
 
@@ -233,6 +235,7 @@ class FetiProblem {
   Vec step_start_;                      // friction: multipliers of the last load step (empty: none)
   long primal_dimension_ = 0;
   long factorizations_ = 0, shared_factors_ = 0, supernodal_factors_ = 0, interface_factors_ = 0, symbolic_analyses_ = 0;
+  DualSystem::HeldBytes dual_bytes_;
   double factor_nonzeros_ = 0, factor_bytes_ = 0, operator_bytes_ = 0, input_bytes_ = 0, kernel_bytes_ = 0, factor_flops_ = 0;
   mutable std::vector<RankStatistics> rank_statistics_;
   PhaseTimes setup_times_;

@@ -3,26 +3,12 @@
 #include <unordered_set>
 
 namespace ffeti {
-namespace {
-
-template <class T>
-double vector_bytes(const std::vector<T>& v) {
-  return static_cast<double>(v.size() * sizeof(T));
-}
-
-double matrix_bytes(const SparseMatrix& K) {
-  using Index = SparseMatrix::StorageIndex;
-  return static_cast<double>(K.nonZeros()) * static_cast<double>(sizeof(double) + sizeof(Index)) +
-         static_cast<double>(K.outerSize() + 1) * static_cast<double>(sizeof(Index));
-}
-
-}  // namespace
 
 double input_bytes(const std::vector<SubdomainInput>& inputs) {
   double bytes = 0;
   std::unordered_set<const SparseMatrix*> counted;
   for (const SubdomainInput& in : inputs) {
-    if (counted.insert(&in.K.get()).second) bytes += matrix_bytes(in.K);
+    if (counted.insert(&in.K.get()).second) bytes += sparse_bytes(in.K.get());
     bytes += static_cast<double>(in.f.size()) * sizeof(double);
     bytes += vector_bytes(in.x) + vector_bytes(in.y) + vector_bytes(in.z) + vector_bytes(in.component);
     bytes += vector_bytes(in.dirichlet_dofs) + vector_bytes(in.dirichlet_values);

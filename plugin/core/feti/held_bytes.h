@@ -11,6 +11,26 @@
 
 namespace ffeti {
 
+/// Bytes of a vector's elements (its size, not its capacity).
+template <class T>
+double vector_bytes(const std::vector<T>& v) {
+  return static_cast<double>(v.size() * sizeof(T));
+}
+
+/// Bytes of a dense vector or matrix's entries.
+template <class Dense>
+double dense_bytes(const Dense& m) {
+  return static_cast<double>(m.size()) * sizeof(typename Dense::Scalar);
+}
+
+/// Bytes of a compressed sparse matrix: values, inner indices and outer starts.
+template <class Sparse>
+double sparse_bytes(const Sparse& K) {
+  using Index = typename Sparse::StorageIndex;
+  return static_cast<double>(K.nonZeros()) * static_cast<double>(sizeof(typename Sparse::Scalar) + sizeof(Index)) +
+         static_cast<double>(K.outerSize() + 1) * static_cast<double>(sizeof(Index));
+}
+
 /// The plugin's copies of the subdomains' input: K_s (a matrix shared by identical
 /// subdomains counted once), f_s, coordinates, components and Dirichlet lists.
 double input_bytes(const std::vector<SubdomainInput>& inputs);

@@ -32,6 +32,9 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
       {"input_bytes", problem.input_bytes()},
       {"kernel_bytes", problem.kernel_bytes()},
       {"constraint_bytes", constraint_bytes(c)},  // this rank's rows
+      {"dual_rows_bytes", problem.dual_bytes().rows},
+      {"coarse_bytes", problem.dual_bytes().coarse},
+      {"preconditioner_bytes", problem.dual_bytes().preconditioner},
       {"factorizations", static_cast<double>(problem.factorizations())},
       {"shared_factors", static_cast<double>(problem.shared_factors())},
       {"supernodal_factors", static_cast<double>(problem.supernodal_factors())},
