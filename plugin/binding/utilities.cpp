@@ -8,7 +8,7 @@
 #include "factor/cholmod_factor.h"
 #include "factor/dense_rate.h"
 #include "service/statistics.h"
-#include "mesh/tetrahedron_quality.h"
+#include "mesh/element_quality.h"
 #include "parallel/process.h"
 
 #include <mpi.h>
@@ -84,6 +84,8 @@ double feti_dense_gflops() { return dense_gflops_one_thread(); }
 /// The bound below which |volume| / (longest edge)^3 marks a tetrahedron as flat, the
 /// core's (ffeti-solve applies the same): ffeti.idp's ffetiFlatTetrahedron starts from it.
 double feti_flat_tetrahedron() { return kFlatTetrahedron; }
+/// The same for |area| / (longest edge)^2 of a triangle: ffeti.idp's ffetiFlatTriangle.
+double feti_flat_triangle() { return kFlatTriangle; }
 
 /// The name of a status code that fetiSolve, fetiSensitivity or fetiAdjoint returned
 /// ("converged", "max_iterations", ..., "infeasible"): scripts print it instead of a number.
@@ -111,6 +113,7 @@ void add_utility_functions() {
   Global.Add("fetiPeakMb", "(", new OneOperator0<double>(feti_peak_mb));
   Global.Add("fetiDenseGflops", "(", new OneOperator0<double>(feti_dense_gflops));
   Global.Add("fetiFlatTetrahedron", "(", new OneOperator0<double>(feti_flat_tetrahedron));
+  Global.Add("fetiFlatTriangle", "(", new OneOperator0<double>(feti_flat_triangle));
   Global.Add("fetiFactorizations", "(", new OneOperator0<long>(feti_factorizations));
 }
 

@@ -1,7 +1,7 @@
 #include "native/gmsh_mesh.h"
 
 #include "base/errors.h"
-#include "mesh/tetrahedron_quality.h"
+#include "mesh/element_quality.h"
 
 #include <gmsh.h>
 
@@ -119,23 +119,33 @@ std::vector<Element> GmshMesh::elements(int dim, int group, int partition, int t
 }
 
 std::vector<Element> GmshMesh::cells(int dim, int group, int partition) const {
-  if (dim == 2) return elements(2, group, partition, kTriangle3, 3);
-  std::vector<Element> tetrahedra = elements(3, group, partition, kTetrahedron4, 4);
-  check_tetrahedra(group, tetrahedra);
-  return tetrahedra;
+  std::vector<Element> cells =
+      dim == 2 ? elements(2, group, partition, kTriangle3, 3) : elements(3, group, partition, kTetrahedron4, 4);
+  check_cells(dim, group, cells);
+  return cells;
 }
 
-void GmshMesh::check_tetrahedra(int group, const std::vector<Element>& tetrahedra) const {
-  for (const Element& t : tetrahedra) {
-    std::array<std::array<double, 3>, 4> p;
-    for (size_t i = 0; i < 4; ++i) p[i] = position(t.nodes[i]);
-    const double ratio = tetrahedron_flatness(p);
-    if (!(ratio >= kFlatTetrahedron)) {
+void GmshMesh::check_cells(int dim, int group, const std::vector<Element>& cells) const {
+  for (const Element& t : cells) {
+    double ratio = 0;
+    if (dim == 2) {
+      std::array<std::array<double, 3>, 3> p;
+      for (size_t i = 0; i < 3; ++i) p[i] = position(t.nodes[i]);
+      ratio = triangle_flatness(p);
+    } else {
+      std::array<std::array<double, 3>, 4> p;
+      for (size_t i = 0; i < 4; ++i) p[i] = position(t.nodes[i]);
+      ratio = tetrahedron_flatness(p);
+    }
+    const double bound = dim == 2 ? kFlatTriangle : kFlatTetrahedron;
+    if (!(ratio >= bound)) {
       std::ostringstream message;
-      message << path_ << ": physical volume " << group << ": tetrahedron " << t.tag << " (nodes " << t.nodes[0] << ", "
-              << t.nodes[1] << ", " << t.nodes[2] << ", " << t.nodes[3] << ") is flat or degenerate: |volume| / "
-              << "(longest edge)^3 = " << ratio << ", below " << kFlatTetrahedron
-              << " (a regular tetrahedron has 0.118): remesh or remove it";
+      message << path_ << ": physical " << (dim == 2 ? "surface " : "volume ") << group << ": "
+              << (dim == 2 ? "triangle " : "tetrahedron ") << t.tag << " (nodes";
+      for (size_t i = 0; i < t.nodes.size(); ++i) message << (i ? ", " : " ") << t.nodes[i];
+      message << ") is flat or degenerate: |" << (dim == 2 ? "area| / (longest edge)^2" : "volume| / (longest edge)^3")
+              << " = " << ratio << ", below " << bound << " (a regular "
+              << (dim == 2 ? "triangle has 0.433" : "tetrahedron has 0.118") << "): remesh or remove it";
       throw InputError(message.str());
     }
   }

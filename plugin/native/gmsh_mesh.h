@@ -54,7 +54,9 @@ class GmshMesh {
   void require_group(int dim, int group) const;
   /// The elements of `group` whose gmsh type must be `type` (`nodes` per element).
   std::vector<Element> elements(int dim, int group, int partition, int type, int nodes) const;
-  void check_tetrahedra(int group, const std::vector<Element>& tetrahedra) const;
+  /// InputError naming the file, the group and the element unless every cell (tetrahedra, or
+  /// triangles in the plane) is above its flatness bound (mesh/element_quality.h).
+  void check_cells(int dim, int group, const std::vector<Element>& cells) const;
 
   std::string path_, model_;
   int dimension_ = 0;

@@ -156,6 +156,21 @@ expect "a broken Matrix Market entry" "broken.mtx: not a valid Matrix Market fil
 # A pattern Matrix Market file (no values) is refused.
 sed '1s/real/pattern/; 3,$s/ [^ ]*$//' K0.mtx > pattern.mtx
 expect "pattern Matrix Market" "pattern.mtx: needs real values" "p = json.load(open('market.json')); p['subdomains'][0]['matrix'] = 'pattern.mtx'"
+# A triangle of surface 101 made flat (its third node moved onto the line of the other two):
+# refused by name, at the same bound as ffeti.idp's ffetiCheckMesh (fetiFlatTriangle()).
+python3 - <<'PY'
+lines = open("hertz.msh").read().split("\n")
+nodes_at = lines.index("$Nodes") + 2
+elements_at = lines.index("$Elements") + 2
+node_line = {int(lines[i].split()[0]): i for i in range(nodes_at, lines.index("$EndNodes"))}
+tri = next(l.split() for l in lines[elements_at:] if len(l.split()) > 4 and l.split()[1] == "2" and l.split()[3] == "101")
+a, b, c = (int(t) for t in tri[-3:])
+p = {n: [float(v) for v in lines[node_line[n]].split()[1:4]] for n in (a, b)}
+lines[node_line[c]] = f"{c} " + " ".join(repr((p[a][k] + p[b][k]) / 2) for k in range(3))
+open("flat.msh", "w").write("\n".join(lines))
+PY
+expect "a flat triangle" "flat.msh: physical surface 101: triangle [0-9]* (nodes .*) is flat or degenerate: |area| / (longest edge)^2 = .*, below 1e-06" \
+  "p['mesh'] = 'flat.msh'"
 # Not converged (one Hessian multiplication allowed): exit status 1 and a RESULT line.
 python3 -c "
 import json

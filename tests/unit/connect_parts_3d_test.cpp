@@ -2,7 +2,7 @@
 // not an edge or a vertex), and METIS-like partitions with parts in pieces made connected.
 #include "base/errors.h"
 #include "mesh/connect_parts.h"
-#include "mesh/tetrahedron_quality.h"
+#include "mesh/element_quality.h"
 #include "mesh/facet_neighbours.h"
 #include "kuhn_box.h"
 
@@ -152,6 +152,17 @@ TEST(TetrahedronQuality, FlatnessIsVolumeOverTheCubeOfTheLongestEdge) {
   EXPECT_LT(flat, kFlatTetrahedron);
   EXPECT_GT(flat, 0);
   EXPECT_EQ(tetrahedron_flatness({{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}}}), 0);
+}
+
+TEST(TriangleQuality, FlatnessIsAreaOverTheSquareOfTheLongestEdge) {
+  // square()'s halves: area 1/2, longest edge sqrt 2: 1/4; a regular one sqrt(3)/4, in any plane.
+  EXPECT_NEAR(triangle_flatness({{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}), 0.25, 1e-15);
+  EXPECT_NEAR(triangle_flatness({{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}), std::sqrt(3.0) / 4, 1e-15);
+  // tests/edp/flat-triangle.idp's flat one: its third vertex 1e-7 off the hypotenuse: 2.5e-8.
+  const double flat = triangle_flatness({{{1, 0, 0}, {0.5, 0.5000001, 0}, {0, 1, 0}}});
+  EXPECT_NEAR(flat, 2.5e-8, 1e-12);
+  EXPECT_LT(flat, kFlatTriangle);
+  EXPECT_EQ(triangle_flatness({{{0, 0, 0}, {1, 1, 0}, {2, 2, 0}}}), 0);
 }
 
 }  // namespace
