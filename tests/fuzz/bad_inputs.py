@@ -18,7 +18,7 @@ class of bad input gets its own test in tests/edp/bad-input.edp or tests/getdp/b
 
 Usage: bad_inputs.py SOURCE_DIR FFETI_SOLVE [--cases N] [--seed S] [--report FILE]
 (run where freefem++.pref points at the build; N cases per front end, default 40, N/4 for the
-3D problem file; "macros": the grid macros of ffeti.idp with one bad argument each, as many;
+3D problem file; "macros": the grid macros of ffeti.idp and ffetiLame with one bad argument each, as many;
 --report writes the run's counts and failures as a Markdown page)."""
 import argparse
 import collections
@@ -241,15 +241,20 @@ SCRIPT3_MUTATIONS = [
 ]
 
 
-# The installed grid macros: one argument of one call replaced by a bad value. The macro must
-# stop with an "ffeti: <macro>: <argument> ..." line (an assert), or build boxes the set-up
-# takes; an empty mesh array reaching the next macro crashed FreeFEM.
+# The installed macros that take numbers (the grid macros, ffetiLame): one argument of one
+# call replaced by a bad value. The macro must stop with an "ffeti: <macro>: <argument> ..."
+# line (an assert), or build boxes the set-up takes; an empty mesh array reaching the next
+# macro crashed FreeFEM, nu = 0.5 gave lambda = inf. The 3D grid is built by one of
+# ffetiGrid3Where, ffetiGrid3 and ffetiGrid3Owned (@GRID3@), chosen per case.
 MACRO_SCRIPT = r"""
 include "ffeti.idp"
+include "elasticity.idp"
 int S = 8;
 mesh3[int] Th(S);
 mesh[int] T2(4);
-ffetiGrid3Where(Th, @first@, @x0@, 0., 0., @Lx@, 1., 1., @Nx@, 2, 2, @m@, @keep@)
+real lameLambda, lameMu;
+ffetiLame(@E@, @nu@, false, lameLambda, lameMu)
+@GRID3@
 ffetiGrid(T2, 0, @x0@, 0., @Lx@, 1., @Nx@, 2, @m@)
 matrix[int] K(S);
 real[int][int] F(S), X(S), Y(S), Z(S), U(S);
@@ -265,10 +270,13 @@ for (int s = 0; s < S; ++s) {
 int P = fetiSetup(K, F, X, Y, body, Z = Z);
 cout << "RESULT status=" << fetiSolve(P, U) << endl;
 """
-MACRO_ARGUMENTS = {"first": "0", "x0": "0.", "Lx": "1.", "Nx": "2", "m": "2", "keep": "1"}
-MACRO_BAD_VALUES = {"first": ["-1"], "x0": ["sqrt(-1.)", "1e308 * 10"],
-                    "Lx": ["0.", "-1.", "sqrt(-1.)", "1e308 * 10"], "Nx": ["0", "-3"], "m": ["0", "-1"],
-                    "keep": ["0", "ffS > 100"]}
+MACRO_ARGUMENTS = {"first": "0", "x0": "0.", "y0": "0.", "z0": "0.", "Lx": "1.", "Ly": "1.", "Lz": "1.", "Nx": "2",
+                   "Ny": "2", "Nz": "2", "m": "2", "keep": "1", "E": "1.", "nu": "0.3"}
+MACRO_BAD_VALUES = {"first": ["-1"], "x0": ["sqrt(-1.)", "1e308 * 10"], "y0": ["sqrt(-1.)"], "z0": ["1e308 * 10"],
+                    "Lx": ["0.", "-1.", "sqrt(-1.)", "1e308 * 10"], "Ly": ["0.", "sqrt(-1.)"], "Lz": ["-1."],
+                    "Nx": ["0", "-3"], "Ny": ["0"], "Nz": ["-1"], "m": ["0", "-1"], "keep": ["0", "ffS > 100"],
+                    "E": ["0.", "-1.", "sqrt(-1.)", "1e308 * 10"], "nu": ["0.5", "-1.", "0.7", "sqrt(-1.)"]}
+GRID3 = "(Th, @first@, @x0@, @y0@, @z0@, @Lx@, @Ly@, @Lz@, @Nx@, @Ny@, @Nz@, @m@"
 
 
 def run_case(front, case, what, path, work, refused, verdicts, failures):
@@ -294,21 +302,22 @@ def run_case(front, case, what, path, work, refused, verdicts, failures):
 
 
 def macro_cases(count, rng, work, verdicts, front="macros"):
-    """The grid macros with one bad argument; returns the failures."""
+    """The macros with one bad argument; returns the failures."""
     failures = []
     for case in range(count):
         name = rng.choice(sorted(MACRO_BAD_VALUES))
         value = rng.choice(MACRO_BAD_VALUES[name])
-        text = MACRO_SCRIPT
+        grid = "ffetiGrid3Where" if name == "keep" else rng.choice(["ffetiGrid3Where", "ffetiGrid3", "ffetiGrid3Owned"])
+        text = MACRO_SCRIPT.replace("@GRID3@", grid + GRID3 + (", @keep@)" if grid == "ffetiGrid3Where" else ")"))
         for argument, good in MACRO_ARGUMENTS.items():
             text = text.replace(f"@{argument}@", value if argument == name else good)
         path = os.path.join(work, f"macro{case}.edp")
         with open(path, "w") as file:
             file.write(text)
-        what = f"{name} = {value}"
+        what = f"{name} = {value}" + ("" if name in ("E", "nu") else f" ({grid})")
 
         def refused(output):
-            refusal = re.search(r"ffeti: (ffetiGrid3?): (\w+)[ =(].*", output)
+            refusal = re.search(r"ffeti: (ffetiGrid3?|ffetiLame): (\w+)[ =(].*", output)
             return refusal.group(0) if refusal and refusal.group(2) == name and "exec assert" in output else None
         run_case(front, case, what, path, work, refused, verdicts, failures)
     return failures
