@@ -356,7 +356,7 @@ def write_report(args, verdicts, failures):
              "generator's docstring says which). Every case must be refused with a message naming",
              "the argument (or file and key), or run to a RESULT line; a crash, a hang, an",
              "uncaught exception or an unclear refusal is a failure. The default test command runs",
-             "40 cases per front end, 10 for the 3D problem file and 10 for the grid macros (`ctest -R fuzz`).", "",
+             "40 cases per front end, 10 for the 3D problem file and 10 for the macros (the grids, ffetiLame; `ctest -R fuzz`).", "",
              "| front end | refused clearly | ran to a RESULT line (exit 0) | ran, not converged (exit 1) | failures |",
              "|---|---|---|---|---|"]
     for front in ("plugin", "plugin 3D", "ffeti-solve", "ffeti-solve 3D", "macros"):
