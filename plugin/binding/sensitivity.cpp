@@ -153,7 +153,9 @@ class FetiSensitivity : public WithNamedArguments {
       SolveStatus worst = SolveStatus::converged;
       for (size_t j = 0; j < r.size(); ++j) {
         for (size_t k = 0; k < r[j].z.size(); ++k) copy_to(r[j].z[k], z[static_cast<long>(j) * count + ids[k]]);
-        if (worst == SolveStatus::converged) worst = r[j].status;
+        // Any failure outranks a stop at round-off, which outranks converged.
+        if (worst == SolveStatus::converged || (worst == SolveStatus::stagnated && r[j].status != SolveStatus::converged))
+          worst = r[j].status;
         if (r[j].status == SolveStatus::stagnated)
           say_stagnated(h, "fetiSensitivity", r[j].counts.hessian, r[j].kkt.max(), call.settings.tolerance);
       }

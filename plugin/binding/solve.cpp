@@ -73,7 +73,8 @@ class FetiSolve : public WithNamedArguments {
                   "body %d, which would slide away (status 4, distance from equilibrium %.2e of the loads)\n",
                   r.sliding_body, r.equality_reference > 0 ? r.equality_norm / r.equality_reference : 0.0);
     // Whatever the verbosity: a tol below what round-off allows is said, with what was reached.
-    if (r.status == SolveStatus::stagnated) say_stagnated(h, "fetiSolve", r.counts.hessian, r.violation, h.tolerance);
+    if (r.status == SolveStatus::stagnated)  // violation: the stop test's measure (-1 where none ran, e.g. stop="seed")
+      say_stagnated(h, "fetiSolve", r.counts.hessian, r.violation >= 0 ? r.violation : r.kkt.max(), h.tolerance);
     // Whatever the verbosity: an answer whose slaves pass through the master is not silent.
     if (h.problem->communicator().rank() == 0 && r.beyond_reach.penetrating > 0)
       std::printf("ffeti: WARNING fetiSolve: %s\n", r.beyond_reach.warning().c_str());

@@ -321,6 +321,12 @@ TEST_P(Tresca, CoulombBelowRoundOffEndsStagnatedWithTheLawsResidual) {
   EXPECT_EQ(r.status, SolveStatus::stagnated);
   EXPECT_GE(r.violation, r.friction_bound_change);
   EXPECT_LT(r.violation, 1e-9);
+  // The law from the answer itself: no friction force beyond mu lambda_n by more than the
+  // residual reported.
+  double scale = 0, excess = 0;
+  for (const auto& row : per_node(p, r)) scale = std::max(scale, 0.3 * row[0]);
+  for (const auto& row : per_node(p, r)) excess = std::max(excess, std::abs(row[1]) - 0.3 * row[0]);
+  EXPECT_LE(excess, r.violation * scale + 1e-15 * scale);
 }
 
 TEST_P(Tresca, MaxitBoundsTheWholeFixedPoint) {

@@ -203,7 +203,8 @@ void DirichletPreconditioner::apply(const Vec& x, Vec& y) const {
 }
 
 double DirichletPreconditioner::held_bytes() const {
-  double bytes = sparse_bytes(row_gram_.matrixL().nestedExpression()) + dense_bytes(scaled_) + dense_bytes(summed_) +
+  double bytes = (row_gram_.rows() > 0 ? sparse_bytes(row_gram_.matrixL().nestedExpression()) : 0.0) +  // factored
+                 dense_bytes(scaled_) + dense_bytes(summed_) +
                  vector_bytes(flat_);
   for (const Vec& r : results_) bytes += dense_bytes(r);
   std::unordered_set<const CholmodFactor*> counted;

@@ -47,7 +47,8 @@ class DualSystem {
   const std::vector<LocalConstraints>& local() const { return local_; }
   const DualOperator& F() const { return *F_; }
   const CoarseSpace* coarse() const { return coarse_.get(); }
-  /// Bytes this rank holds beside the factors and the input copies, by part.
+  /// Bytes this rank holds beside the subdomains' factors and the input copies, by part (the
+  /// conjugate projector's C and FC, an option of transient scenes, are not counted).
   struct HeldBytes {
     double rows = 0;            ///< the blocks B_s (twice: by rows, and renumbered to the interfaces) and buffers
     double coarse = 0;          ///< G and GG''s factor

@@ -153,7 +153,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
     out.bound_change = scale > 0 ? change / scale : change;
     // Done only when a solve to tol itself gave bounds within tol of the ones it solved with.
     if (settings.tolerance <= reachable && out.bound_change <= reachable) {
-      if (reachable > tol) {  // the law holds to what round-off allowed, not to tol: said so
+      if (std::max(out.dual.violation, out.bound_change) > tol) {  // the law holds to what round-off allowed: said so
         out.dual.status = SolveStatus::stagnated;
         out.dual.violation = std::max(out.dual.violation, out.bound_change);
       }

@@ -20,10 +20,6 @@ namespace {
 /// iterate itself stands still (node to face at tol 1e-12: ||gP|| 1.56e-14 and the residual
 /// 1.29e-12 for 3,000 multiplications).
 constexpr int kChecksWithoutProgress = 3;
-/// ... a verdict kept for residuals this small: above, a residual that stands still is a
-/// solve that has not found its active set yet (or a recovery that misreads it), which more
-/// iterations may mend, and maxit ends it.
-constexpr double kRoundOffCeiling = 1e-6;
 /// A failed check is repeated, whatever the gradient, once the solver has been called this
 /// many times since (and half as many times as before it): a gradient that stalls at
 /// round-off halves no more, and would run to maxit without another check.

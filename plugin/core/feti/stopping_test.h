@@ -41,6 +41,11 @@ struct PrimalCheck {
 /// halving, not one per iteration). A call with the iterate that last passed passes again
 /// without a check (CG confirms its stop with the true gradient). One to five checks per
 /// solve on the scenes of the repository.
+/// Stagnation at round-off is a verdict kept for residuals this small (relative KKT): above,
+/// a residual that stands still is a solve that has not found its active set yet (or a
+/// recovery that misreads it), which more iterations may mend, and maxit ends it.
+constexpr double kRoundOffCeiling = 1e-6;
+
 class RelativeKktStop {
  public:
   /// The shifted multipliers mu of the solver's iterate, formed only for a check (the free

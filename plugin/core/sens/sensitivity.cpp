@@ -2,6 +2,7 @@
 
 #include "base/errors.h"
 #include "base/stopwatch.h"
+#include "feti/stopping_test.h"
 #include "parallel/process.h"
 
 #include <algorithm>
@@ -31,12 +32,15 @@ double ordered_sum(const std::vector<double>& local, size_t width, const Communi
 /// whose KKT residuals, recomputed in primal form, meet the
 /// tolerance is right, whatever the dual stop test said: at a weakly active point the seed's
 /// test also asks ||G mu|| <= tol ||e||, which round-off can keep out of reach (a right answer
-/// once came back as not_positive_definite after 2866 multiplications).
+/// once came back as not_positive_definite after 2866 multiplications). One that CG called
+/// stagnated with residuals above the round-off ceiling did not stop at round-off: max_iterations.
 SolveStatus checked_status(SolveStatus dual_status, const KktResiduals& kkt, double tolerance) {
   if (!kkt.finite()) return SolveStatus::overflow;
   if (dual_status == SolveStatus::max_iterations || dual_status == SolveStatus::stagnated ||
-      dual_status == SolveStatus::not_positive_definite)
-    return kkt.max() <= tolerance ? SolveStatus::converged : dual_status;
+      dual_status == SolveStatus::not_positive_definite) {
+    if (kkt.max() <= tolerance) return SolveStatus::converged;
+    if (dual_status == SolveStatus::stagnated && kkt.max() > kRoundOffCeiling) return SolveStatus::max_iterations;
+  }
   return dual_status;
 }
 
@@ -317,7 +321,8 @@ AdjointResult SensitivityProblem::adjoint(const std::vector<Vec>& dJdu, const Du
   result.kkt = kkt_residuals(inputs, dJdu, rhs, true, system_->local(), system_->F(), system_->constraints(),
                              problem_.variant() == FetiVariant::feti1, s.u, s.lambda, problem_.communicator());
   result.status = checked_status(result.status, result.kkt, settings.tolerance);
-  // Stopped at round-off (stagnated): as accurate as the data allow, and usable like the state.
+  // Stopped at round-off (stagnated: checked_status keeps that verdict only within the
+  // round-off ceiling): as accurate as the data allow, and usable like the state.
   if (result.status == SolveStatus::converged || result.status == SolveStatus::stagnated) adjoint_ = std::move(s);
   result.seconds = problem_.communicator().max(clock.seconds());
   counters_.adjoint_solves += 1;
