@@ -1,5 +1,6 @@
-// Mesh functions for the scripts' partitions: parts made connected (fetiConnectParts) and a
-// mesh or mesh3 cut into its part meshes in one pass (fetiSplitMesh, fetiSplitMesh3). The mesh work itself is the
+// Mesh functions for the scripts' partitions: parts made connected (fetiConnectParts), a
+// mesh or mesh3 cut into its part meshes in one pass (fetiSplitMesh, fetiSplitMesh3), and its
+// flattest element (fetiFlattestElement). The mesh work itself is the
 // core's (mesh/connect_parts, mesh/split_parts); here only FreeFEM's mesh types.
 #include "binding/convert.h"
 #include "binding/functions.h"
@@ -7,12 +8,14 @@
 
 #include "base/errors.h"
 #include "mesh/connect_parts.h"
+#include "mesh/element_quality.h"
 #include "mesh/facet_neighbours.h"
 #include "mesh/split_parts.h"
 
 #include "AFunction_ext.hpp"  // OneOperator5_
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <string>
 #include <type_traits>
@@ -195,9 +198,45 @@ long feti_split_mesh(KN<const MeshType*>* const& Th, const long& first, const Me
   });
 }
 
+/// The flattest element of a mesh or mesh3 (mesh/element_quality.h): returns its flatness
+/// (|area| / longest edge^2, |volume| / longest edge^3; +inf for an empty mesh) and puts its
+/// number in *index (-1 if none). ffeti.idp's ffetiCheckMesh and ffetiCheckMesh3 ask it:
+/// in a script, `area` and `volume` are whatever variables of those names it declared.
+template <class MeshType>
+double feti_flattest_element(const MeshType* const& mesh, long* const& index) {
+  constexpr bool solid = std::is_same<MeshType, Mesh3>::value;
+  return guarded("fetiFlattestElement", [&] {
+    const MeshType& Th = *mesh;
+    double worst = std::numeric_limits<double>::infinity();
+    *index = -1;
+    for (int k = 0; k < Th.nt; ++k) {
+      double ratio = 0;
+      if constexpr (solid) {
+        std::array<std::array<double, 3>, 4> p;
+        for (int j = 0; j < 4; ++j) {
+          const auto& v = Th(Th(k, j));
+          p[static_cast<size_t>(j)] = {v.x, v.y, v.z};
+        }
+        ratio = tetrahedron_flatness(p);
+      } else {
+        std::array<std::array<double, 3>, 3> p;
+        for (int j = 0; j < 3; ++j) {
+          const auto& v = Th(Th(k, j));
+          p[static_cast<size_t>(j)] = {v.x, v.y, 0.0};
+        }
+        ratio = triangle_flatness(p);
+      }
+      if (ratio < worst) worst = ratio, *index = k;
+    }
+    return worst;
+  });
+}
+
 }  // namespace
 
 void add_mesh_functions() {
+  Global.Add("fetiFlattestElement", "(", new OneOperator2_<double, pmesh, long*>(feti_flattest_element<Mesh>));
+  Global.Add("fetiFlattestElement", "(", new OneOperator2_<double, pmesh3, long*>(feti_flattest_element<Mesh3>));
   Global.Add("fetiConnectParts", "(", new OneOperator2_<long, pmesh, KN<long>*>(feti_connect_parts<Mesh, 3>));
   Global.Add("fetiConnectParts", "(", new OneOperator2_<long, pmesh3, KN<long>*>(feti_connect_parts<Mesh3, 4>));
   Global.Add("fetiSplitMesh", "(",
