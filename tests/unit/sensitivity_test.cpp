@@ -219,6 +219,23 @@ TEST(Sensitivity, WeaklyActiveRowsOfALoadedStateAreFoundAtEveryTolerance) {
       sub.f *= 1e6;
     }
   const FetiProblem problem = membrane_problem(base, FetiVariant::feti1);
+  // The closing direction (every free row's gap shrinking: dgap = -1; the rows of the held
+  // nodes at y = 0, 1 keep theirs) against a forward difference of re-solves with those gaps
+  // at -h: one-sided, and exact to round-off, the contact set staying all closed. Classified
+  // inactive, the rows once gave z = 0 here (1.4e-3 by the differences).
+  DesignDerivative closing;
+  ContactInput closed = test::membrane_contact(base);
+  for (const SubdomainInput& sub : base) {
+    closing.dgap.emplace_back(sub.x.size(), 0.0);
+    closed.gap_field.emplace_back(sub.x.size(), 0.0);
+    for (size_t i = 0; i < sub.y.size(); ++i)
+      if (sub.y[i] > 1e-12 && sub.y[i] < 1 - 1e-12) closing.dgap.back()[i] = -1.0, closed.gap_field.back()[i] = -1e-4;
+  }
+  DualSolveSettings near = tight();
+  near.tolerance = 1e-10;  // the differences' error 1e-10 / h, far below the check; 1e-12 took seconds here
+  const FetiResult shifted = FetiProblem(base, closed, {}).solve(near), at_rest = problem.solve(near);
+  ASSERT_TRUE(shifted.status == SolveStatus::converged || shifted.status == SolveStatus::stagnated);
+  ASSERT_TRUE(at_rest.status == SolveStatus::converged || at_rest.status == SolveStatus::stagnated);
   for (const double tol : {1e-6, 1e-9, 1e-12}) {
     DualSolveSettings settings = tight();
     settings.tolerance = tol;
@@ -227,6 +244,15 @@ TEST(Sensitivity, WeaklyActiveRowsOfALoadedStateAreFoundAtEveryTolerance) {
     SensitivityProblem sensitivity(problem, state, default_classification_threshold(tol));
     EXPECT_EQ(sensitivity.classification().weak.size(), 11u) << "tol " << tol;  // 13 nodes, 2 held by y = 0, 1
     EXPECT_TRUE(sensitivity.classification().strong.empty()) << "tol " << tol;
+    const SensitivityResult z = sensitivity.direct(closing, near);
+    double error = 0, scale = 0;
+    for (size_t k = 0; k < z.z.size(); ++k) {
+      const Vec fd = (shifted.u[k] - at_rest.u[k]) / 1e-4;
+      error = std::max(error, (fd - z.z[k]).cwiseAbs().maxCoeff());
+      scale = std::max(scale, fd.cwiseAbs().maxCoeff());
+    }
+    EXPECT_GT(scale, 0) << "tol " << tol;
+    EXPECT_LT(error, 1e-4 * scale) << "tol " << tol << ": the closing derivative against the differences";
   }
 }
 
