@@ -5,23 +5,26 @@ itself confirmed by an independent method (an active set solution of the unsplit
 Hertz's formulas, the force balance of the contact interfaces); then the same sweep of a
 design gradient (the gap design's -sweep 1, edp/scenes/gap-design.idp: its reference checked
 against central differences of the cost) and design loops run whole at several tols (their
-final designs solved again at tol = 1e-12, against the loop at 1e-12 and the known optimum).
-Writes the raw data of one run (docs/results/accuracy-and-time-references.csv,
+final designs solved again at tol = 1e-12, against the loop at 1e-12 and the known optimum),
+and transient runs whole at several tols (their answer against the run at 1e-10 and the exact
+one). Writes the raw data of one run (docs/results/accuracy-and-time-references.csv,
 accuracy-and-time-sweeps.csv, accuracy-and-time-gradients.csv,
-accuracy-and-time-design-loops.csv) and renders docs/results/accuracy-and-time.md and its
-plots from it (--render: again from the CSVs)."""
+accuracy-and-time-design-loops.csv, accuracy-and-time-transient.csv) and renders
+docs/results/accuracy-and-time.md and its plots from it (--render: again from the CSVs;
+--only transient: that part alone, recorded as such on the page)."""
 import argparse
 import math
 import os
 import subprocess
 import tempfile
+import time
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, machine_line, markdown_table, read_csv, run,  # noqa: E402
+from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, machine_line, markdown_table, own_run_words, read_csv, run,  # noqa: E402
                          save_page, write_csv)
 
 # (label, script, arguments, kind of independent check)
@@ -66,6 +69,15 @@ DESIGN_TOLS = [1e-3, 1e-4, 1e-5, 1e-7, 1e-9]
 DESIGN_REFERENCE = 1e-12
 DESIGN_CAP = 2000
 UNIFORM_PRESSURE = 100.0  # q of edp/uniform-pressure.edp [MPa]: the known optimum's pressure
+# Transient contact (edp/dynamics.idp): each scene run whole at each tol of TRANSIENT_TOLS and
+# at TRANSIENT_REFERENCE (every time step's solve at that tol; 1e-12 stagnates at round-off
+# in every step of the stiff rubber and cost 30,000 multiplications in 3D): (label, script,
+# arguments, the RESULT key of its answer, the key of the exact value).
+TRANSIENT = [("block sliding to rest, 2D Coulomb", "sliding-block.edp", ["-dim", 2], "stop_distance", "stop_distance_exact"),
+             ("block sliding to rest, 3D Coulomb", "sliding-block.edp", ["-dim", 3], "stop_distance", "stop_distance_exact")]
+TRANSIENT_TOLS = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8]
+TRANSIENT_REFERENCE = 1e-10
+TRANSIENT_RUN = "transient-run"  # the record of the transient part run on its own (--only transient)
 # The accuracies the first screen's table answers for: the largest tol whose solution error
 # ||u - u_ref||_inf / ||u_ref||_inf is at most each.
 TARGETS = [1e-2, 1e-4, 1e-6, 1e-8]
@@ -149,10 +161,30 @@ BALANCE = [("Σλ vs load", ("balance_error", ".1e"))]
 STATUS = [("status", lambda r: "converged" if r["status"] == "0" else f"status {r['status']}")]
 
 
+def transient_runs():
+    """Each transient scene run whole at the reference tol and at each of TRANSIENT_TOLS: one
+    row per scene and tol (status 0: every step converged)."""
+    rows = []
+    for label, script, args, key, exact in TRANSIENT:
+        for reference, tol in [(1, TRANSIENT_REFERENCE)] + [(0, t) for t in TRANSIENT_TOLS]:
+            started = time.time()
+            result = run(script, *args, "-tol", tol)["RESULT"][0]
+            rows.append(dict(scene=label, tol=tol, reference=reference, value=result[key], exact=result[exact],
+                             hessian_total=result["hessian_total"], seconds=repr(time.time() - started),
+                             status="0" if result["status"] == "converged" else result["status"]))
+    return rows
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--render", action="store_true", help="re-render the page from its CSVs, no run")
-    if not parser.parse_args().render:
+    parser.add_argument("--only", choices=["transient"], help="run this part alone, the rest of the page as it was")
+    options = parser.parse_args()
+    if options.only == "transient":
+        begun = begin_run()
+        write_csv(PAGE, "transient", transient_runs())
+        end_run(PAGE, begun, TRANSIENT_RUN)
+    elif not options.render:
         begun = begin_run()
         references, sweeps = [], []
         for label, script, args, kind in SCENES:
@@ -168,8 +200,50 @@ def main():
             gradients += [dict(scene=label, **r) for r in [reference] + rows]
         write_csv(PAGE, "gradients", gradients)
         write_csv(PAGE, "design-loops", design_loops())
+        write_csv(PAGE, "transient", transient_runs())
+        forget(TRANSIENT_RUN)
         end_run(PAGE, begun)
     render()
+
+
+def forget(table):
+    """The page's full run measures every part itself: an older run of a part alone no longer applies."""
+    if os.path.exists(os.path.join(OUT, f"{PAGE}-{table}.csv")):
+        os.remove(os.path.join(OUT, f"{PAGE}-{table}.csv"))
+
+
+def transient_error(reference):
+    """|d - d_ref| / |d_ref| against the run at the reference tol."""
+    return lambda r: abs(f(r, "value") - f(reference, "value")) / abs(f(reference, "value"))
+
+
+def transient_reading(transients):
+    """What a whole transient run's answer asks of tol, as a sentence from its rows."""
+    loosest = [(label, max(rows, key=lambda r: f(r, "tol")), transient_error(reference))
+               for label, reference, rows in transients]
+    worst = ", ".join(f"{error(r):.0%} ({label.split(', ')[-1]})" for label, r, error in loosest)
+    at_1e4 = max(transient_error(reference)(r) for _, reference, rows in transients for r in rows if f(r, "tol") == 1e-4)
+    return (f"A transient run accumulates its steps' errors: at tol = {tol_text(f(loosest[0][1], 'tol'))} the block's "
+            f"stop distance was off by {worst}: a loose tol is no cheap approximation here. At tol = 1e-4 it was "
+            f"within {at_1e4:.1e}; for a tighter accuracy the table above gives the tol, beside the time step's "
+            "own error (the last column of each transient table).")
+
+
+def transient_section(transients):
+    lines = ["## Transient contact: a whole run at each tol", "",
+             f"`sliding-block.edp -dim 2|3 -tol TOL`: a rubber block started at v0 on a rigid floor and stopped by "
+             f"Coulomb friction (μ = 0.3, stabilized Newmark, [dynamics](dynamics.md)); every time step's solve at "
+             f"tol; the stop distance against the run at tol = {tol_text(TRANSIENT_REFERENCE)} (the reference) and "
+             "against the exact v0²/(2μg) (the time discretization's error beside the solves'). Hessian "
+             f"multiplications over all steps. From {own_run_words(PAGE, TRANSIENT_RUN, 'the page’s run')}. "
+             f"Raw data: [{PAGE}-transient.csv]({PAGE}-transient.csv).", ""]
+    for label, reference, rows in transients:
+        error = transient_error(reference)
+        shown = [dict(r, error=("-" if r["reference"] == "1" else f"{error(r):.1e}"),
+                      exact_error=f"{abs(f(r, 'value') - f(r, 'exact')) / f(r, 'exact'):.1e}")
+                 for r in [reference] + rows]
+        lines += [f"### {label}", "", *markdown_table(shown, TRANSIENT_COLUMNS), ""]
+    return lines
 
 
 def design_loops():
@@ -337,6 +411,10 @@ def loop_outcome(r):
 
 
 GRADIENT_PICK_COLUMNS = [("scene", "scene"), ("quantity", "quantity")] + PICK_COLUMNS[1:]
+TRANSIENT_COLUMNS = [("tol", ("tol", ".0e")), ("Hessian mult. (all steps)", "hessian_total"),
+                     ("time [s]", ("seconds", ".1f")), ("stop distance [m]", "value"), ("error", "error"),
+                     ("error against the exact stop", "exact_error"),
+                     ("status", lambda r: "converged" if r["status"] == "0" else r["status"])]
 GRADIENT_SWEEP = [("tol", ("tol", ".0e")), ("state mult.", "hessian"), ("adjoint mult.", "hessian_adjoint"),
                   ("fell back to direct", lambda r: "yes" if r["fallback"] == "1" else "no"),
                   ("direct mult. (all directions)", "hessian_direct"),
@@ -403,6 +481,10 @@ def loops_section(loops):
 def render():
     references, sweeps, run_row = read_csv(PAGE, "references"), read_csv(PAGE, "sweeps"), read_csv(PAGE, "run")[0]
     gradient_rows, loop_rows = read_csv(PAGE, "gradients"), read_csv(PAGE, "design-loops")
+    transient_rows = read_csv(PAGE, "transient")
+    transients = [(label, [r for r in transient_rows if r["scene"] == label and r["reference"] == "1"][0],
+                   [r for r in transient_rows if r["scene"] == label and r["reference"] == "0"])
+                  for label in dict.fromkeys(r["scene"] for r in transient_rows)]
     data = [(r, [s for s in sweeps if s["scene"] == r["scene"]]) for r in references]
     gradients = [(label, [r for r in gradient_rows if r["scene"] == label and r["reference"] == "1"][0],
                   [r for r in gradient_rows if r["scene"] == label and r["reference"] == "0"])
@@ -419,7 +501,10 @@ def render():
                for label, _, rows in gradients]
               + [dict(scene=f"design loop: {label}", quantity="final design's cost",
                       **safe_picks(rows, loop_error(reference), lambda r: f"{int(f(r, 'hessian_total')):,}"))
-                 for label, reference, rows in loops])
+                 for label, reference, rows in loops]
+              + [dict(scene=f"transient: {label}", quantity="stop distance",
+                      **safe_picks(rows, transient_error(reference), lambda r: f"{int(f(r, 'hessian_total')):,}"))
+                 for label, reference, rows in transients])
     lines = [
         "# What accuracy costs in time, on every scene",
         "",
@@ -446,14 +531,18 @@ def render():
         *markdown_table([dict(scene=r["scene"], **pick) for r, rows in data for pick in [picks(rows)]], PICK_COLUMNS),
         "",
         "The same for a design gradient (its error max_j |g_j - g_ref,j| / max_j |g_ref,j| against the gradient at",
-        "tol = 1e-12; multiplications of the state and adjoint solves) and for a design loop (its final design's cost",
-        "against the loop's at tol = 1e-12, both solved again at 1e-12; multiplications of the whole loop). Here the",
+        "tol = 1e-12; multiplications of the state and adjoint solves), for a design loop (its final design's cost",
+        "against the loop's at tol = 1e-12, both solved again at 1e-12; multiplications of the whole loop) and for a",
+        f"transient run (its answer against the run at tol = {tol_text(TRANSIENT_REFERENCE)}; multiplications of all its",
+        "steps, [below](#transient-contact-a-whole-run-at-each-tol)). Here the",
         "largest tol from which on every tighter tol of the sweep reaches the target: a loop may reach it at one tol",
         "and miss it at the next tighter one.",
         "",
         *markdown_table(second, GRADIENT_PICK_COLUMNS),
         "",
         pick_reading(data, gradients, loops),
+        "",
+        transient_reading(transients),
         "",
         "![KKT residual against tol](accuracy-tolerance.png)",
         "",
@@ -476,6 +565,7 @@ def render():
     for label, reference, rows in gradients:
         lines += gradient_section(label, reference, rows)
     lines += loops_section(loops)
+    lines += transient_section(transients)
     save_page(f"{PAGE}.md", lines)
 
 
