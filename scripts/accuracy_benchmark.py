@@ -24,8 +24,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, machine_line, markdown_table, own_run_words, read_csv, run,  # noqa: E402
-                         save_page, write_csv)
+from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, forget_run, machine_line, markdown_table,  # noqa: E402
+                         own_run_words, read_csv, run, save_page, write_csv)
 
 # (label, script, arguments, kind of independent check)
 SCENES = [
@@ -201,15 +201,9 @@ def main():
         write_csv(PAGE, "gradients", gradients)
         write_csv(PAGE, "design-loops", design_loops())
         write_csv(PAGE, "transient", transient_runs())
-        forget(TRANSIENT_RUN)
+        forget_run(PAGE, TRANSIENT_RUN)
         end_run(PAGE, begun)
     render()
-
-
-def forget(table):
-    """The page's full run measures every part itself: an older run of a part alone no longer applies."""
-    if os.path.exists(os.path.join(OUT, f"{PAGE}-{table}.csv")):
-        os.remove(os.path.join(OUT, f"{PAGE}-{table}.csv"))
 
 
 def transient_error(reference):

@@ -183,6 +183,13 @@ def own_run_words(page, table, otherwise):
             f"load average {float(own['load_at_start']):.1f} as it started), after the page's run")
 
 
+def forget_run(page, table):
+    """A page's full run measures every part itself: the record of an earlier run of a part on
+    its own (end_run with that table) no longer applies, and goes."""
+    if os.path.exists(csv_path(page, table)):
+        os.remove(csv_path(page, table))
+
+
 def csv_path(page, table):
     return os.path.join(OUT, f"{page}-{table}.csv")
 

@@ -17,8 +17,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 import friction_3d  # noqa: E402
 import friction_cost  # noqa: E402
-from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, listing, machine_line, markdown_table, read_csv,  # noqa: E402
-                         run, save_page, span, write_csv)
+from ffeti_bench import (OUT, ROOT, begin_run, end_run, f, forget_run, listing, machine_line,  # noqa: E402
+                         markdown_table, read_csv, run, save_page, span, write_csv)
 
 PAGE = "friction"
 RATIOS = [0.3, 0.6, 0.9]
@@ -84,7 +84,7 @@ def main():
         write_csv(PAGE, "refinement", refinement)
         write_csv(PAGE, "slope", slope)
         write_csv(PAGE, "cost", friction_cost.measure())
-        friction_cost.forget_own_run()
+        forget_run(PAGE, friction_cost.OWN_RUN)
         end_run(PAGE, begun)
     render()
 

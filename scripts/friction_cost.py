@@ -13,7 +13,7 @@ runs a build tree's plugin instead of the installed one)."""
 import argparse
 import os
 
-from ffeti_bench import OUT, ROOT, begin_run, end_run, f, markdown_table, own_run_words, read_csv, run, span, write_csv
+from ffeti_bench import ROOT, begin_run, end_run, f, markdown_table, own_run_words, read_csv, run, span, write_csv
 
 PAGE = "friction"
 MESHES = os.path.join(ROOT, "meshes")
@@ -138,13 +138,6 @@ def section():
 
 
 OWN_RUN = "cost-run"  # the record of the table's last run on its own (main with --save cost)
-
-
-def forget_own_run():
-    """The page's full run measures the table itself: an older own run no longer applies."""
-    path = os.path.join(OUT, f"{PAGE}-{OWN_RUN}.csv")
-    if os.path.exists(path):
-        os.remove(path)
 
 
 def main():

@@ -32,8 +32,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after the backend)
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from ffeti_bench import (OUT, OverLimit, begin_run, csv_path, end_run, f, machine_line, markdown_table, measure_and_render,  # noqa: E402
-                         read_csv, run, save_page, write_csv)
+from ffeti_bench import (OUT, OverLimit, begin_run, csv_path, end_run, f, forget_run, machine_line,  # noqa: E402
+                         markdown_table, measure_and_render, read_csv, run, save_page, write_csv)
 
 PAGE = "real-meshes"
 SIZES = [float(h) for h in os.environ.get("FFETI_REAL_SIZES", "0.7 0.5 0.35 0.25 0.2 0.155").split()]
@@ -75,8 +75,7 @@ def measure():
     measure_undivided_table()
     measure_scaling_table()
     for table in ("undivided-run", "scaling-run"):
-        if os.path.exists(csv_path(PAGE, table)):
-            os.remove(csv_path(PAGE, table))  # the table is this run's now
+        forget_run(PAGE, table)  # the table is this run's now
     end_run(PAGE, begun)
 
 

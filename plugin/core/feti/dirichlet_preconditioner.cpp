@@ -203,9 +203,8 @@ void DirichletPreconditioner::apply(const Vec& x, Vec& y) const {
 }
 
 double DirichletPreconditioner::held_bytes() const {
-  double bytes = (row_gram_.rows() > 0 ? sparse_bytes(row_gram_.matrixL().nestedExpression()) : 0.0) +  // factored
-                 dense_bytes(scaled_) + dense_bytes(summed_) +
-                 vector_bytes(flat_);
+  double bytes = dense_bytes(scaled_) + dense_bytes(summed_) + vector_bytes(flat_);
+  if (row_gram_.rows() > 0) bytes += sparse_bytes(row_gram_.matrixL().nestedExpression());  // factored only with rows
   for (const Vec& r : results_) bytes += dense_bytes(r);
   std::unordered_set<const CholmodFactor*> counted;
   for (const auto& b : blocks_) {

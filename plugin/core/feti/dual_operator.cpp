@@ -202,7 +202,8 @@ void DualOperator::sum_local_results(Vec& y) const {
 double DualOperator::held_bytes() const {
   double bytes = dense_bytes(column_);
   for (const SparseMatrix& B : interface_B_) bytes += sparse_bytes(B);
-  for (const auto* vectors : {&gathered_, &local_rhs_, &local_solution_, &local_result_, &interface_rhs_, &interface_solution_})
+  for (const auto* vectors :
+       {&gathered_, &local_rhs_, &local_solution_, &local_result_, &interface_rhs_, &interface_solution_})
     for (const Vec& v : *vectors) bytes += dense_bytes(v);
   for (const auto* blocks : {&block_gathered_, &block_rhs_, &block_solution_, &block_result_})
     for (const Eigen::MatrixXd& m : *blocks) bytes += dense_bytes(m);

@@ -84,9 +84,10 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
   // maxit holds over the whole fixed point: each Tresca solve gets what the ones before left.
   qp::Budget budget = settings.validate();  // the call's one check, charged by every Tresca solve
   const double tol = settings.tolerance;
-  if (law.coulomb())
+  if (law.coulomb()) {
     settings.tolerance = std::max(tol, std::isfinite(g.sum()) ? kWarmFirstSolveTolerance : kFirstSolveTolerance);
-  if (law.coulomb()) settings.settle = std::min(settings.settle, kFirstSolveSettleRounds);
+    settings.settle = std::min(settings.settle, kFirstSolveSettleRounds);
+  }
   if (settings.feasibility_tolerance == 0) settings.feasibility_tolerance = tol;  // each solve's check at the user's
   if (law.coulomb()) {
     const double resolution = std::max(tol, kFeasibilityResolution);
@@ -153,7 +154,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
     out.bound_change = scale > 0 ? change / scale : change;
     // Done only when a solve to tol itself gave bounds within tol of the ones it solved with.
     if (settings.tolerance <= reachable && out.bound_change <= reachable) {
-      if (std::max(out.dual.violation, out.bound_change) > tol) {  // the law holds to what round-off allowed: said so
+      if (std::max(out.dual.violation, out.bound_change) > tol) {  // the law holds only to what round-off allowed
         out.dual.status = SolveStatus::stagnated;
         out.dual.violation = std::max(out.dual.violation, out.bound_change);
       }

@@ -20,11 +20,13 @@ struct FrictionLaw {
 /// The Coulomb fixed point stops when a Tresca solve to the user's tol gives
 /// ||g_new - g||_inf <= tol ||g_new||_inf: its answer meets the stopping test and the law to
 /// tol. Earlier solves stop looser (the first at max(tol, 1e-2), or 0.3 from the bounds of a
-/// start, the last load step's multipliers; each later one at max(tol, 0.01 times the last
-/// relative change of the bounds)), and start from the last one's multipliers without
-/// settling them (in a plane problem a slipping row's force moved onto its new bound). Beyond DualSolveSettings::friction_iterations Tresca solves, or once their Hessian
-/// multiplications together reach DualSolveSettings::max_hessian (maxit holds over the
-/// whole solve), it reports max_iterations.
+/// start, the last load step's multipliers, settled in at most one face solve; each later one
+/// at max(tol, 0.01 times the last relative change of the bounds)), and start from the last
+/// one's multipliers without settling them (in a plane problem a slipping row's force moved
+/// onto its new bound). Beyond DualSolveSettings::friction_iterations Tresca solves, or once
+/// their Hessian multiplications together reach DualSolveSettings::max_hessian (maxit holds
+/// over the whole solve), it reports max_iterations; a Tresca solve stopped at round-off
+/// raises the target to the residual it reached, and the fixed point ends stagnated there.
 
 /// A solve with friction: the last Tresca solve (its lambda, u and status; counts and times
 /// summed over all of them) and what the fixed point adds.

@@ -331,7 +331,8 @@ AdjointResult SensitivityProblem::adjoint(const std::vector<Vec>& dJdu, const Du
 }
 
 double SensitivityProblem::adjoint_gradient(const DesignDerivative& direction) {
-  if (!adjoint_) throw InputError("P: no adjoint solution (call fetiAdjoint first; its solve must converge or stop at round-off)");
+  if (!adjoint_)
+    throw InputError("P: no adjoint solution (call fetiAdjoint first; its solve must converge or stop at round-off)");
   const ThreadLimit limit(problem_.settings().threads);
   Stopwatch clock;
   const DirectionData d = direction_data(direction);
