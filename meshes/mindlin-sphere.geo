@@ -2,14 +2,17 @@
 // half of a sphere of radius R centred at (0, 0, R), touching the block's top z = 0 at the
 // origin, and the block [-W, W] x [-W, W] x [-D, 0] under it. half = 1: only y >= 0 (the
 // symmetry plane y = 0 contains the tangential load's direction x), half = 0: the whole.
-// Mesh size hc within `zone` of the origin, growing with the distance to R/4; the block's
-// 0.9 hc, so that its faces and the sphere's nodes do not match.
+// Mesh size hc within `depth` of the contact plane z = 0 and within `zone` of the
+// axis (a flat disc, not a ball: the stick/slip boundary lies on the surface and needs the
+// fine size there, the elastic field below varies over the contact radius), growing with the
+// distance to that disc to R/4; the block's 0.9 hc, so that its faces and the sphere's nodes
+// do not match.
 // Physical surfaces: 2 the plane y = 0 (half models), 3 the sphere's cut z = R (driven and
 // loaded), 4 the sphere's curved surface (the contact), 5 the block's top (the contact),
 // 6 its bottom (held), 7 its other sides; volume 1. Every boundary triangle is in a physical
 // group (FreeFEM's gmshload3 needs the whole boundary).
 SetFactory("OpenCASCADE");
-DefineConstant[ body = 0, half = 1, R = 10, W = 20, D = 20, hc = 0.2, zone = 2.5 ];
+DefineConstant[ body = 0, half = 1, R = 10, W = 20, D = 20, hc = 0.2, zone = 2.5, depth = 0.5 ];
 e = 1e-6;
 y0 = half ? 0 : -W;
 If (body == 0)
@@ -50,7 +53,8 @@ Else
   size = 0.9 * hc;
 EndIf
 Field[1] = MathEval;
-Field[1].F = Sprintf("Min(%g, %g + 0.5 * Max(0, Sqrt(x * x + y * y + z * z) - %g))", R / 4, size, zone);
+Field[1].F = Sprintf("Min(%g, %g + 0.5 * Sqrt(Max(0, Sqrt(x * x + y * y) - %g)^2 + Max(0, Abs(z) - %g)^2))",
+                      R / 4, size, zone, depth);
 Background Field = 1;
 Mesh.MeshSizeExtendFromBoundary = 0;
 Mesh.MeshSizeFromPoints = 0;
