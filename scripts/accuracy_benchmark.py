@@ -11,7 +11,7 @@ one). Writes the raw data of one run (docs/results/accuracy-and-time-references.
 accuracy-and-time-sweeps.csv, accuracy-and-time-gradients.csv,
 accuracy-and-time-design-loops.csv, accuracy-and-time-transient.csv) and renders
 docs/results/accuracy-and-time.md and its plots from it (--render: again from the CSVs;
---only transient: that part alone, recorded as such on the page)."""
+--only transient|design-loops: that part alone, recorded as such on the page)."""
 import argparse
 import math
 import os
@@ -60,15 +60,18 @@ GRADIENTS = [
     ("3D square punch, energy", "uniform-pressure-3d.edp", ["-cost", "energy"]),
     ("3D square punch, pressure P-mean", "uniform-pressure-3d.edp", ["-cost", "pressure"]),
 ]
-# The design loops (edp/uniform-pressure.edp, IPOPT with adjoint gradients) run whole at each
-# tol of DESIGN_TOLS and at DESIGN_REFERENCE; each stopped after DESIGN_CAP designs (-stopafter:
-# the reference loops take tens to hundreds; a count, not a time, so that a loaded machine
-# stops the same loops).
-DESIGN_LOOPS = [("2D punch, energy", ["-cost", "energy"]), ("2D punch, pressure P-mean", ["-cost", "pressure"])]
+# The design loops of the known optimum (edp/uniform-pressure.edp, uniform-pressure-3d.edp: IPOPT
+# with adjoint gradients) run whole at each tol of DESIGN_TOLS and at DESIGN_REFERENCE; each
+# stopped after DESIGN_CAP designs (-stopafter: the reference loops take tens to hundreds; a
+# count, not a time, so that a loaded machine stops the same loops). (label, script, arguments)
+DESIGN_LOOPS = [("2D punch, energy", "uniform-pressure.edp", ["-cost", "energy"]),
+                ("2D punch, pressure P-mean", "uniform-pressure.edp", ["-cost", "pressure"]),
+                ("3D square punch, energy", "uniform-pressure-3d.edp", ["-cost", "energy"]),
+                ("3D square punch, pressure P-mean", "uniform-pressure-3d.edp", ["-cost", "pressure"])]
 DESIGN_TOLS = [1e-3, 1e-4, 1e-5, 1e-7, 1e-9]
 DESIGN_REFERENCE = 1e-12
 DESIGN_CAP = 2000
-UNIFORM_PRESSURE = 100.0  # q of edp/uniform-pressure.edp [MPa]: the known optimum's pressure
+UNIFORM_PRESSURE = 100.0  # q of edp/uniform-pressure.edp and uniform-pressure-3d.edp [MPa]: the known optimum's pressure
 # Transient contact (edp/dynamics.idp): each scene run whole at each tol of TRANSIENT_TOLS and
 # at TRANSIENT_REFERENCE (every time step's solve at that tol; 1e-12 stagnates at round-off
 # in every step of the stiff rubber and cost 30,000 multiplications in 3D): (label, script,
@@ -77,7 +80,9 @@ TRANSIENT = [("block sliding to rest, 2D Coulomb", "sliding-block.edp", ["-dim",
              ("block sliding to rest, 3D Coulomb", "sliding-block.edp", ["-dim", 3], "stop_distance", "stop_distance_exact")]
 TRANSIENT_TOLS = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8]
 TRANSIENT_REFERENCE = 1e-10
-TRANSIENT_RUN = "transient-run"  # the record of the transient part run on its own (--only transient)
+# The records of a part run on its own (--only transient, --only design-loops).
+TRANSIENT_RUN = "transient-run"
+DESIGN_RUN = "design-loops-run"
 # The accuracies the first screen's table answers for: the largest tol whose solution error
 # ||u - u_ref||_inf / ||u_ref||_inf is at most each.
 TARGETS = [1e-2, 1e-4, 1e-6, 1e-8]
@@ -178,12 +183,17 @@ def transient_runs():
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--render", action="store_true", help="re-render the page from its CSVs, no run")
-    parser.add_argument("--only", choices=["transient"], help="run this part alone, the rest of the page as it was")
+    parser.add_argument("--only", choices=["transient", "design-loops"],
+                        help="run this part alone, the rest of the page as it was")
     options = parser.parse_args()
     if options.only == "transient":
         begun = begin_run()
         write_csv(PAGE, "transient", transient_runs())
         end_run(PAGE, begun, TRANSIENT_RUN)
+    elif options.only == "design-loops":
+        begun = begin_run()
+        write_csv(PAGE, "design-loops", design_loops())
+        end_run(PAGE, begun, DESIGN_RUN)
     elif not options.render:
         begun = begin_run()
         references, sweeps = [], []
@@ -202,6 +212,7 @@ def main():
         write_csv(PAGE, "design-loops", design_loops())
         write_csv(PAGE, "transient", transient_runs())
         forget_run(PAGE, TRANSIENT_RUN)
+        forget_run(PAGE, DESIGN_RUN)
         end_run(PAGE, begun)
     render()
 
@@ -246,12 +257,12 @@ def design_loops():
     designs is a row with status 'design cap'."""
     rows = []
     with tempfile.TemporaryDirectory() as folder:
-        for label, args in DESIGN_LOOPS:
+        for label, script, args in DESIGN_LOOPS:
             for tol in [DESIGN_REFERENCE] + DESIGN_TOLS:
-                common = dict(loop=label, tol=repr(tol), reference=int(tol == DESIGN_REFERENCE))
+                common = dict(loop=label, script=script, tol=repr(tol), reference=int(tol == DESIGN_REFERENCE))
                 history = os.path.join(folder, f"loop-{len(rows)}.history")
                 try:
-                    result = run("uniform-pressure.edp", *args, "-tol", tol, "-finaltol", DESIGN_REFERENCE,
+                    result = run(script, *args, "-tol", tol, "-finaltol", DESIGN_REFERENCE,
                                  "-history", history, "-stopafter", DESIGN_CAP)["RESULT"][0]
                     rows.append(dict(common, **result))
                 except subprocess.CalledProcessError:
@@ -387,9 +398,9 @@ def pick_reading(data, gradients, loops):
                      f"{int(f(cheapest, 'hessian_total')):,} multiplications")
         if failed:
             text += "; " + ", ".join(f"tol = {tol_text(f(r, 'tol'))} {loop_outcome(r)}"
-                                     + (f", its final design's cost {error(r):.1e} off the reference's, the largest "
-                                        f"pressure {f(r, 'final_pressure_max'):.1f} MPa against "
-                                        f"q = {UNIFORM_PRESSURE:g}"
+                                     + (f", its final design's cost {error(r):.1e} off the reference's, the pressure's "
+                                        f"cv {f(r, 'final_pressure_cv'):.1e} (the reference's "
+                                        f"{f(reference, 'final_pressure_cv'):.1e})"
                                         if error(r) < math.inf else "") for r in failed)
         text += "."
     return text
@@ -448,25 +459,30 @@ def gradient_section(label, reference, rows):
 
 
 def loops_section(loops):
-    reference = loops[0][1]
     final = tol_text(DESIGN_REFERENCE)
-    lines = ["## Design loops: the known optimum (2D punch)", "",
-             f"`uniform-pressure.edp -cost energy|pressure -tol TOL -finaltol {final}` (m = {reference['m']}, "
-             f"{reference['k']} variables, IPOPT with adjoint gradients, one set-up for the loop): the whole loop at "
+    scenes = []
+    for script in dict.fromkeys(reference["script"] for _, reference, _ in loops):
+        reference = [r for _, r, _ in loops if r["script"] == script][0]
+        scenes.append(f"`{script} -cost energy|pressure -tol TOL -finaltol {final}` ({design_words(reference)})")
+    lines = ["## Design loops: the known optimum (2D and 3D punch)", "",
+             f"{' and '.join(scenes)}, IPOPT with adjoint gradients, one set-up for the loop: the whole loop at "
              f"each tol, its gradients' solves at the same tol, each loop stopped after {DESIGN_CAP} designs. Its "
              f"final design solved again at tol = {final}: final cost and its error against the loop at tol = {final} "
-             "(the reference), the true maximum pressure beside the P-mean, the pressure's coefficient of variation "
+             "(the reference), the largest pressure beside the P-mean (in 3D over every node, the punch's edges "
+             "and corner included, where the pressure stays singular: [shape optimization]"
+             "(shape-optimization.md#in-three-dimensions-a-square-punch)), the pressure's coefficient of variation "
              "cv. The known optimum ([shape optimization](shape-optimization.md)): a uniform pressure "
              f"q = {UNIFORM_PRESSURE:g} MPa, the energy's material bound active with its multiplier equal to q. "
              "Designs: the analyses IPOPT asked for; Hessian multiplications: every state solve and gradient of the "
              "loop (the norm estimate, once, not counted); status 0: every solve converged and the final design is "
-             f"stationary. Raw data: [{PAGE}-design-loops.csv]({PAGE}-design-loops.csv).", ""]
+             f"stationary. From {own_run_words(PAGE, DESIGN_RUN, 'the page’s run')}. "
+             f"Raw data: [{PAGE}-design-loops.csv]({PAGE}-design-loops.csv).", ""]
     for label, reference, rows in loops:
         error = loop_error(reference)
         shown = [dict(r, cost_error=("-" if r["reference"] == "1" else
                                      f"{error(r):.1e}" if error(r) < math.inf else "-"),
-                      multiplier=(f"{f(r, 'area_multiplier'):.4f}"
-                                  if r.get("area_multiplier") and r.get("cost_name") == "energy" else "-"))
+                      multiplier=(f"{f(r, 'area_multiplier' if r.get('area_multiplier') else 'multiplier'):.4f}"
+                                  if r.get("cost_name") == "energy" and r.get("status") != "design cap" else "-"))
                  for r in [reference] + rows]
         lines += [f"### {label}", "", *markdown_table(shown, LOOP_COLUMNS), ""]
     return lines
@@ -578,10 +594,12 @@ def plot_gradients(gradients, loops):
     for k, (label, reference, rows) in enumerate(loops):
         error = loop_error(reference)
         done = [r for r in rows if error(r) < math.inf]
-        axes[1].loglog([f(r, "tol") for r in done], [max(error(r), 1e-16) for r in done], "o-", label=label, ms=4)
-        for r in done:  # the loops' labels above and below their points, apart where the points meet
+        line, = axes[1].loglog([f(r, "tol") for r in done], [max(error(r), 1e-16) for r in done], "o-", label=label,
+                               ms=4)
+        for r in done:  # each loop's labels in its colour, one row lower per loop: apart where the points meet
             axes[1].annotate(f"{r['steps']} / {int(f(r, 'hessian_total')):,}", (f(r, "tol"), max(error(r), 1e-16)),
-                             fontsize=7, xytext=(3, 4 - 14 * (k % 2)), textcoords="offset points")
+                             fontsize=7, xytext=(3, 4 - 9 * k), textcoords="offset points", color=line.get_color())
+    axes[1].set_ylim(bottom=1e-18)  # room for the labels of the loops that reached every digit
     axes[1].set_xlabel("tol of the whole loop")
     axes[1].set_ylabel("final design's cost error (1e-16: the same digits)")
     axes[1].set_title("Design loops against the loop at 1e-12 (designs / multiplications)")
