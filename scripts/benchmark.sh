@@ -15,7 +15,7 @@
 #                                          against an active set reference (~4 min)
 #   ./scripts/benchmark.sh hard-cases      the hard-case suite as a table (~1 min)
 #   ./scripts/benchmark.sh accuracy        what accuracy costs in time, every scene, tol 1e-2 .. 1e-10, and a
-#                                          design gradient's and design loops' accuracy against tol (~8 min,
+#                                          design gradient's and design loops' accuracy against tol (~13 min,
 #                                          the 3D cubes near a million unknowns about 4 of them; 2.5 GB)
 #   ./scripts/benchmark.sh real-meshes     a real mesh (gmsh, METIS parts, node to face) weak scaling to 4.5 million
 #                                          unknowns (22 GB, 72 min on a loaded machine), part sizes, the MUMPS peer
@@ -26,8 +26,8 @@
 #   ./scripts/benchmark.sh busy-machine    scenes idle and beside busy neighbour processes, threads (~2 min)
 #   ./scripts/benchmark.sh friction        Cattaneo-Mindlin and a block on a slope: tractions, stick/slip,
 #                                          the Coulomb fixed point's cost against frictionless, and
-#                                          the sphere in 3D (~1 min; the sphere took 36 min more on a
-#                                          loaded machine, load average 10 on 2 cores)
+#                                          the sphere in 3D (~11 min, 1.6 GB: the sphere's default mesh
+#                                          of 147k unknowns nine times)
 #   ./scripts/benchmark.sh three-dimensions  3D elasticity contact (two cubes) at H/h = 8 up to 17.9 million
 #                                          unknowns (16 GB, ~8 min alone): phases, the dual solve's parts, memory, the coarse problem, preconditioners,
 #                                          factor kinds; the direct peers (active set method with UMFPACK and

@@ -17,7 +17,7 @@ PAGE = "friction"
 SCENE = "cattaneo-mindlin-3d.edp"
 RATIOS = [0.3, 0.6, 0.9]
 MESH = 0.08      # mm: the scene's default mesh size at the contact, the first table's
-COARSE = 0.5     # mm: the isotropy pair's (and the tests') mesh
+COARSE = 0.5     # mm: the isotropy pair's mesh (tests/edp/friction-isotropy-3d.sh's too)
 ANGLE = 30       # degrees: the isotropy pair's turn about the normal
 REFINE = [0.4, 0.2, 0.12]  # mm: coarser meshes for Q/(mu P) = 0.6 and 0.9 (MESH's runs complete the series)
 BAND = 1.0       # the line through the centre: rows within BAND h of it
@@ -59,12 +59,12 @@ def measure(meshes):
 
 def measure_sides(meshes):
     """The slave-side table: friction-3d-sides.csv, and the block as slave with the flat normal on
-    the default mesh: friction-3d-finest.csv."""
+    the default mesh: friction-3d-block-slave.csv."""
     def side(q, h, slave, contact, normal):
         return run(SCENE, "-q", q, "-h", h, "-slave", slave, "-contact", contact, "-normal", normal,
                    "-meshes", meshes)["RESULT"][0]
     write_csv(PAGE, "3d-sides", [side(q, h, *kind) for h in SIDE_MESHES for kind in SIDES for q in RATIOS])
-    write_csv(PAGE, "3d-finest", [side(q, MESH, *FLAT_SIDES[1]) for q in RATIOS])
+    write_csv(PAGE, "3d-block-slave", [side(q, MESH, *FLAT_SIDES[1]) for q in RATIOS])
 
 
 def mindlin_ratio(q):
@@ -181,8 +181,8 @@ def agreement(first, second, key):
 
 def section():
     """Draws the pictures from friction-3d-*.csv and returns the section's Markdown lines."""
-    results, rows, refinement, isotropy, sides, finest = (
-        read_csv(PAGE, t) for t in ("3d-mindlin", "3d-rows", "3d-refinement", "3d-isotropy", "3d-sides", "3d-finest"))
+    results, rows, refinement, isotropy, sides, block_slave = (
+        read_csv(PAGE, t) for t in ("3d-mindlin", "3d-rows", "3d-refinement", "3d-isotropy", "3d-sides", "3d-block-slave"))
     series = sorted(refinement + [r for r in results if round(f(r, "q_ratio"), 1) in (0.6, 0.9)],
                     key=lambda r: (round(f(r, "q_ratio"), 1), -f(r, "h")))
     plot_stick_radius(results, refinement)
@@ -194,7 +194,8 @@ def section():
     for r in series:  # coarse to fine per ratio
         errors.setdefault(round(f(r, "q_ratio"), 1), []).append(f(r, "stick_ratio_error"))
     scatter = [pressure_scatter(r, [row for row in rows if float(row["q"]) == q]) for q, r in zip(RATIOS, results)]
-    falls = all(all(a > b for a, b in zip(e, e[1:])) for e in errors.values())
+    steady = {q: all(a > b for a, b in zip(e, e[1:])) for q, e in errors.items()}
+    falls = all(steady.values())
     turned = isotropy[1]
     return [
         "## Cattaneo–Mindlin in three dimensions: a sphere on a block",
@@ -250,10 +251,12 @@ def section():
         *markdown_table(series, REFINEMENT),
         "",
         "Reading: " + ("the error of c/a falls as h does" if falls else
-                       "from the coarsest mesh to the finest the error of c/a falls ("
+                       "from the coarsest mesh to the finest the error of c/a went "
                        + ", ".join(f"{e[0]:.1%} to {e[-1]:.1%} at {q}" for q, e in errors.items())
-                       + ") but not steadily: where c spans a few rows, one row more or less in the stick zone"
-                       " moves it by a node's share")
+                       + ", falling steadily at " + (", ".join(str(q) for q in steady if steady[q]) or "none")
+                       + " but not at " + ", ".join(str(q) for q in steady if not steady[q])
+                       + ": where c spans a few rows, one row more or less in the stick zone moves it by a node's"
+                       " share")
         + (", and the stick zone stays smaller than Mindlin's on every mesh." if all(
             f(r, "stick_ratio") < f(r, "stick_ratio_analytic") for r in series) else "."),
         "",
@@ -271,7 +274,7 @@ def section():
         "sum along the turned Q; the Hessian counts differ, the solver's path not being invariant",
         "(`tests/edp/friction-isotropy-3d.sh` checks this pair).",
         "",
-        *sides_section(sides, results + finest),
+        *sides_section(sides, results + block_slave),
     ]
 
 
@@ -311,10 +314,12 @@ def sides_section(sides, flat_default):
              for a, b in zip(rows("sphere", "node", "average"), rows("block", "node", "average"))]
     flat_pairs = [abs(f(a, "stick_ratio") - f(b, "stick_ratio")) / f(a, "stick_ratio")
                   for a, b in zip(rows("sphere", "node", "master"), rows("block", "node", "slave"))]
-    by_side = [[r for r in flat_default if (r["slave"], r["contact"], r["normal"]) == kind] for kind in FLAT_SIDES]
-    if any(len(side) != len(RATIOS) for side in by_side):
-        raise SystemExit(f"friction-3d-mindlin.csv, friction-3d-finest.csv: not one row per ratio for each of {FLAT_SIDES}")
-    default_errors = [f(r, "stick_ratio_error") for r in flat_default]
+    by_side = [sorted((r for r in flat_default if (r["slave"], r["contact"], r["normal"]) == kind and f(r, "h") == MESH),
+                      key=lambda r: f(r, "q_ratio")) for kind in FLAT_SIDES]
+    if any([round(f(r, "q_ratio"), 1) for r in side] != RATIOS for side in by_side):
+        raise SystemExit("friction-3d-mindlin.csv, friction-3d-block-slave.csv: not one row per ratio on "
+                         f"h = {MESH} for each of {FLAT_SIDES}")
+    default_errors = [f(r, "stick_ratio_error") for side in by_side for r in side]
     default_pairs = [abs(f(a, "stick_ratio") - f(b, "stick_ratio")) / f(a, "stick_ratio") for a, b in zip(*by_side)]
     at_09 = [f(r, "stick_ratio_error") for r in rows("sphere", "node", "master", fine) + rows("block", "node", "slave", fine)
              if round(f(r, "q_ratio"), 1) == 0.9]
@@ -347,7 +352,8 @@ def sides_section(sides, flat_default):
         "when it is the master, `\"slave\"` when it is the slave ([reference](../reference.md), `contactNormal`);",
         "the default stays `\"master\"` (no choice is better on every scene). At Q/(μP) = 0.9 the aim of 5 %",
         f"needs a finer mesh than h = {fine} mm on either side ({span(at_09, '.1%')}). On the scene's default mesh",
-        f"(h = {MESH} mm; the sphere as slave is the first table's run, the block as slave run beside it):",
+        f"(h = {MESH} mm; the sphere as slave is the first table's run, the block as slave from "
+        f"{own_run_words(PAGE, SIDES_RUN, PAGE_RUN)}):",
         "",
         "| slave | contactNormal | Q/(μP) | unknowns | c/a | Mindlin | c/a error | Hessian: step 1, 2 | solve step 2 [s] | status |",
         "|---|---|---|---|---|---|---|---|---|---|",
@@ -358,7 +364,7 @@ def sides_section(sides, flat_default):
         f"Reading: with the rows on the flat normal, c/a is {span(default_errors, '.1%')} off Mindlin's on the default "
         f"mesh, {'within' if max(default_errors) <= 0.05 else 'not yet within'} the aim of 5 % at every ratio on either "
         f"side; the two sides' c/a within {max(default_pairs):.1%} of each other. Raw data: "
-        "[friction-3d-finest.csv](friction-3d-finest.csv) (the block as slave).",
+        "[friction-3d-block-slave.csv](friction-3d-block-slave.csv) (the block as slave).",
         "",
     ]
 
