@@ -110,6 +110,12 @@ def per_unknown_kib(key):
     return lambda r: f"{f(r, key) * 1024 / f(r, 'unknowns'):.2f}"
 
 
+def reported_kib(key):
+    """A table cell: the bytes per unknown the plugin reports in `key` as KiB, "-" where the run
+    did not report it."""
+    return lambda r: f"{kib(r, key):.2f}" if r.get(key) else "-"
+
+
 def nearest(rows, unknowns):
     """The row whose size is closest to `unknowns` (by ratio)."""
     return min(rows, key=lambda r: abs(math.log(f(r, "unknowns") / unknowns)))
@@ -207,6 +213,13 @@ def memory_reading(largest, parts):
         text += (f", the plugin's copies of K_s, f_s and coordinates {kib(largest, 'bytes_input_per_unknown'):.2f} "
                  f"(K_s in full storage), its constraint rows {kib(largest, 'bytes_constraint_per_unknown'):.2f} "
                  f"and kernels {kib(largest, 'bytes_kernel_per_unknown'):.2f}")
+    dual = ["bytes_dual_rows_per_unknown", "bytes_coarse_per_unknown", "bytes_preconditioner_per_unknown"]
+    if all(largest.get(key) for key in dual):
+        counted = sum(kib(largest, key) for key in ["bytes_factor_per_unknown", "bytes_input_per_unknown",
+                                                    "bytes_constraint_per_unknown", "bytes_kernel_per_unknown", *dual])
+        text += (f", the dual system's rows, coarse problem and preconditioner "
+                 f"{', '.join(f'{kib(largest, key):.2f}' for key in dual)}: the plugin counts {counted:.2f} KiB per "
+                 f"unknown of the peak's {f(largest, 'process_peak_mb') * 1024 / f(largest, 'unknowns'):.2f}")
     smallest = min(parts, key=lambda r: int(r["part_nodes"]))
     text += (f"; parts of {smallest['part_nodes']} nodes hold factors of {kib(smallest, 'bytes_factor_per_unknown'):.2f} "
              f"KiB per unknown and peak at {f(smallest, 'process_peak_mb') * 1024 / f(smallest, 'unknowns'):.2f} "
@@ -389,15 +402,18 @@ def render():
               "condition lists), `fetiSetup` done (the plugin's copies of K_s and f_s, constraint rows, coarse "
               "problem and factors; the scene passes `releaseK = true`, so the script's K_s are emptied as the "
               "plugin copies them), the solve done; then what the plugin reports it holds (`fetiInfo`: factors, "
-              "its copies of K_s, f_s and coordinates, constraint rows).", ""]
+              "its copies of K_s, f_s and coordinates, constraint rows, kernels, and the dual system: its rows, "
+              "coarse problem and preconditioner; [reference](../reference.md), `fetiInfo`).", ""]
     lines += markdown_table(done, [
         ("unknowns", ("unknowns", ",.0f")),
         *[(label, per_unknown_kib(key)) for label, key in MEMORY_PHASES],
-        ("of which factors", lambda r: f"{f(r, 'bytes_factor_per_unknown') / 1024:.2f}"),
-        ("plugin's K_s, f_s, coordinates",
-         lambda r: f"{kib(r, 'bytes_input_per_unknown'):.2f}" if r.get("bytes_input_per_unknown") else "-"),
-        ("constraint rows",
-         lambda r: f"{kib(r, 'bytes_constraint_per_unknown'):.2f}" if r.get("bytes_constraint_per_unknown") else "-"),
+        ("of which factors", reported_kib("bytes_factor_per_unknown")),
+        ("plugin's K_s, f_s, coordinates", reported_kib("bytes_input_per_unknown")),
+        ("constraint rows", reported_kib("bytes_constraint_per_unknown")),
+        ("kernels", reported_kib("bytes_kernel_per_unknown")),
+        ("dual rows", reported_kib("bytes_dual_rows_per_unknown")),
+        ("coarse problem", reported_kib("bytes_coarse_per_unknown")),
+        ("preconditioner", reported_kib("bytes_preconditioner_per_unknown")),
         ("peak", lambda r: f"{f(r, 'process_peak_mb') * 1024 / f(r, 'unknowns'):.2f}")])
     lines += ["", "## Part size", "",
               f"The same scene at -h {PART_SWEEP_H} cut into parts of 500 to 3500 nodes: smaller parts hold "
