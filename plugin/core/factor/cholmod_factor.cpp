@@ -1,5 +1,6 @@
 #include "factor/cholmod_factor.h"
 
+#include "factor/cholmod_analysis.h"
 #include "factor/supernodal_factorize.h"
 #include "factor/supernodal_solve.h"
 #include "parallel/process.h"
@@ -97,33 +98,11 @@ class SerialRegionsOnOneThread {
   int previous_ = -1;
 };
 
-/// cholmod_analyze one at a time in the process. Its fill-reducing choice may call METIS,
-/// whose random generator (GKlib's) is global state: two orderings on two threads draw from
-/// one stream in whatever order the threads reach it, so the orderings, hence the factors'
-/// rounding and the iteration counts, changed from run to run (the sphere on the plane at
-/// h 0.07: 158 to 166 Hessian multiplications on two threads, 163 on one).
-cholmod_factor* analyze_alone(cholmod_sparse* A, cholmod_common* common) {
-  static std::mutex one_ordering;
-  const std::lock_guard<std::mutex> lock(one_ordering);
-  return cholmod_analyze(A, common);
-}
-
 }  // namespace
 
 bool interface_ordering_pays(double fill_entries, double saved_entries, double extra_flops) {
   return saved_entries > 0 && saved_entries >= kLeastSavedShare * fill_entries &&
          extra_flops <= kExtraFlopsPerSavedEntry * saved_entries;
-}
-
-double supernodal_switch() {
-  // scripts/factor_kinds.py on this machine (loaded; docs/log.md, 2026-11-27), one thread,
-  // under the reference BLAS and OpenMP OpenBLAS: simplicial faster at 41 (2D scalar, 4225
-  // dofs) and 64 flops per nonzero (3D elasticity, 375 dofs); at 82 (2D elasticity, 8450
-  // dofs) supernodal won 1.4 to 3.6 times under OpenBLAS but tied under the reference BLAS
-  // in one of two runs, and its solves (one per Hessian multiplication) were up to 2 times
-  // slower; from 137 (3D elasticity, 1029 dofs) up supernodal won under both. CHOLMOD's
-  // own default is 40.
-  return 120;
 }
 
 CholmodFactor::CholmodFactor(FactorKind kind, InterfaceOrdering ordering, FactorOf of) : ordering_(ordering), of_(of) {
@@ -133,7 +112,7 @@ CholmodFactor::CholmodFactor(FactorKind kind, InterfaceOrdering ordering, Factor
   common_.supernodal = kind == FactorKind::simplicial   ? CHOLMOD_SIMPLICIAL
                        : kind == FactorKind::supernodal ? CHOLMOD_SUPERNODAL
                                                         : CHOLMOD_AUTO;
-  common_.supernodal_switch = supernodal_switch();  // read by CHOLMOD_AUTO only
+  set_analysis_choices(common_);
 }
 
 CholmodFactor::~CholmodFactor() {
@@ -171,7 +150,7 @@ int CholmodFactor::factorize(const SparseMatrix& A, SharedAnalyses* shared, cons
       factor_ = shared->copy(view, common_.supernodal, interface, &common_, &analysis_flops_, &analysis_nonzeros_,
                              &interface_last);
     if (!factor_) {
-      factor_ = analyze_alone(&view, &common_);
+      factor_ = analyze_fewest_entries(&view, &common_);
       if (!factor_) throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
       analysis_flops_ = common_.fl, analysis_nonzeros_ = common_.lnz;
       if (ordering_ != InterfaceOrdering::fill_reducing && !interface.empty() && !factor_->is_super)

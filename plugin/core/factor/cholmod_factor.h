@@ -4,6 +4,7 @@
 #pragma once
 
 #include "base/linear_algebra.h"
+#include "factor/cholmod_analysis.h"
 #include "factor/shared_analyses.h"
 
 #include <cholmod.h>
@@ -40,10 +41,6 @@ enum class FactorOf { subdomain, coarse_problem };
 /// per entry it reads, measured on the large contact zone's subdomains) and cost at most 300
 /// extra flops each (docs/algorithms.md).
 bool interface_ordering_pays(double fill_entries, double saved_entries, double extra_flops);
-
-/// Flops per nonzero of L from which an automatic factor is supernodal (measured by
-/// scripts/factor_kinds.py; docs/algorithms.md).
-double supernodal_switch();
 
 /// What a solve writes besides its result: CHOLMOD's dense workspaces, its own
 /// cholmod_common (CHOLMOD's solves use the common's scratch space) and the interface

@@ -1,0 +1,24 @@
+// The choices behind a CHOLMOD analysis: the fill-reducing ordering, supernodes, and the
+// switch between simplicial and supernodal factors.
+#pragma once
+
+#include <cholmod.h>
+
+namespace ffeti {
+
+/// Flops per nonzero of L from which an automatic factor is supernodal (measured by
+/// scripts/factor_kinds.py; docs/algorithms.md).
+double supernodal_switch();
+
+/// The project's settings on a fresh cholmod_common: the supernodal switch above, and
+/// supernodes that hold no explicit zeros but CHOLMOD's always-merged smallest ones.
+void set_analysis_choices(cholmod_common& common);
+
+/// cholmod_analyze, one call at a time in the process (METIS's random state is global).
+cholmod_factor* analyze_alone(cholmod_sparse* A, cholmod_common* common);
+
+/// The analysis of A whose factor holds the fewest values: CHOLMOD's own choice and, for a
+/// supernodal factor, METIS's nested dissection beside it. Null if CHOLMOD's analysis failed.
+cholmod_factor* analyze_fewest_entries(cholmod_sparse* A, cholmod_common* common);
+
+}  // namespace ffeti

@@ -1,0 +1,68 @@
+// The analysis choices of factor/cholmod_analysis: the ordering that stores the fewest
+// values, and supernodes without the padding of relaxed amalgamation.
+#include "factor/cholmod_analysis.h"
+#include "factor/cholmod_factor.h"
+#include "feti/dirichlet.h"
+#include "solid_block.h"
+
+#include <Eigen/CholmodSupport>
+#include <gtest/gtest.h>
+
+namespace ffeti {
+namespace {
+
+/// A 3D elastic block of cells^3 cubes, its top face's dofs eliminated: supernodal under
+/// the automatic switch from 8 cells up.
+SparseMatrix block(int cells) {
+  const SubdomainInput s = solid_block(0, {1, 1, 1}, {cells, cells, cells}, {0, 0, 0});
+  SparseMatrix K = eliminate_dirichlet(s.K, s.dirichlet_dofs);
+  K.makeCompressed();
+  return K;
+}
+
+/// Values a supernodal analysis of A stores, under CHOLMOD's defaults or the project's
+/// choices, with CHOLMOD's ordering or the one given.
+double stored_values(const SparseMatrix& A, bool project_choices, int ordering = -1) {
+  cholmod_common common;
+  cholmod_start(&common);
+  common.print = 0;
+  common.supernodal = CHOLMOD_SUPERNODAL;
+  if (project_choices) set_analysis_choices(common);
+  if (ordering >= 0) common.nmethods = 1, common.method[0].ordering = ordering;
+  const SparseMatrix& stored = A;
+  cholmod_sparse view = Eigen::viewAsCholmod(stored.selfadjointView<Eigen::Lower>());
+  cholmod_factor* L = cholmod_analyze(&view, &common);
+  const double values = L ? static_cast<double>(L->xsize) : -1;
+  cholmod_free_factor(&L, &common);
+  cholmod_finish(&common);
+  return values;
+}
+
+TEST(CholmodAnalysis, SupernodesHoldFewerValuesThanUnderCholmodsDefaults) {
+  const SparseMatrix K = block(10);
+  const double defaults = stored_values(K, false, CHOLMOD_AMD), ours = stored_values(K, true, CHOLMOD_AMD);
+  ASSERT_GT(ours, 0);
+  EXPECT_LT(ours, 0.97 * defaults) << "the relaxed amalgamation's padding is gone";
+}
+
+TEST(CholmodAnalysis, ASupernodalFactorTakesTheOrderingThatStoresFewerValues) {
+  const SparseMatrix K = block(10);
+  const double amd = stored_values(K, true, CHOLMOD_AMD), metis = stored_values(K, true, CHOLMOD_METIS);
+  ASSERT_GT(amd, 0);
+  ASSERT_GT(metis, 0);
+  ASSERT_NE(amd, metis) << "the block tells the orderings apart";
+  CholmodFactor factor(FactorKind::supernodal);
+  ASSERT_LT(factor.factorize(K), 0);
+  ASSERT_TRUE(factor.supernodal());
+  EXPECT_EQ(static_cast<double>(factor.cholmod()->xsize), std::min(amd, metis));
+  const Vec b = Vec::LinSpaced(K.rows(), -1, 2);
+  Vec x;
+  factor.solve(b, x);
+  EXPECT_LT((K * x - b).norm(), 1e-10 * b.norm());
+  // CHOLMOD's statistics are those of the analysis kept: its flops, not the other one's.
+  EXPECT_GT(factor.analysis_flops(), 0);
+  EXPECT_LE(factor.analysis_nonzeros(), std::min(amd, metis));
+}
+
+}  // namespace
+}  // namespace ffeti
