@@ -1,5 +1,6 @@
 // CHOLMOD factors: the automatic kind follows the measured switch, and an analysis shared
 // between matrices of one pattern gives bitwise the factor of their own analyses.
+#include "factor/cholmod_analysis.h"
 #include "factor/cholmod_factor.h"
 #include "feti/dirichlet.h"
 #include "factor/shared_analyses.h"

@@ -49,26 +49,28 @@ constexpr double kLeastFlopsPerColumnForMetis = 10000;
 
 }  // namespace
 
-// CHOLMOD's default tries AMD and calls METIS only where AMD's flops per entry pass 500; 3D
-// parts stay below that although METIS's nested dissection stores fewer values on them: 14 %
-// fewer on the real mesh's parts of 1000 nodes (crowned-punch-3d.edp -h 0.5; docs/log.md,
-// 2026-12-07). Only for supernodal factors with enough flops per column (above).
+// CHOLMOD's default tries AMD and calls METIS only where AMD's flops per entry pass 500 and
+// its factor holds 5 times A's entries; 3D parts stay below that although METIS's nested
+// dissection stores fewer values on them: 14 % fewer on the real mesh's parts of 1000 nodes
+// (crowned-punch-3d.edp -h 0.5; docs/log.md, 2026-12-07).
 cholmod_factor* analyze_fewest_entries(cholmod_sparse* A, cholmod_common* common) {
   cholmod_factor* chosen = analyze_alone(A, common);
-  if (!chosen || !chosen->is_super || common->fl < kLeastFlopsPerColumnForMetis * static_cast<double>(A->ncol))
+  if (!chosen || !chosen->is_super || common->called_nd ||
+      common->fl < kLeastFlopsPerColumnForMetis * static_cast<double>(A->ncol))
     return chosen;
   const double flops = common->fl, nonzeros = common->lnz;
-  const int methods = common->nmethods, ordering = common->method[0].ordering;
-  common->nmethods = 1, common->method[0].ordering = CHOLMOD_METIS;
-  cholmod_factor* dissected = analyze_alone(A, common);
-  common->nmethods = methods, common->method[0].ordering = ordering;
+  const int status = common->status;
+  cholmod_factor* dissected = nullptr;
+  {
+    const OneOrdering metis(*common, CHOLMOD_METIS);
+    dissected = analyze_alone(A, common);
+  }
   if (dissected && dissected->is_super && dissected->xsize < chosen->xsize) {
     cholmod_free_factor(&chosen, common);
     return dissected;
   }
   cholmod_free_factor(&dissected, common);
-  common->fl = flops, common->lnz = nonzeros;  // the kept analysis's statistics
-  common->status = CHOLMOD_OK;                 // a failed METIS try leaves AMD's analysis good
+  common->fl = flops, common->lnz = nonzeros, common->status = status;  // the kept analysis's
   return chosen;
 }
 

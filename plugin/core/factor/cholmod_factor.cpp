@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cstring>
-#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -254,15 +253,14 @@ int CholmodFactor::factorize_with_last(const SparseMatrix& A, const std::vector<
   }
   order.insert(order.end(), last.begin(), last.end());
   cholmod_sparse view = view_lower(A);
-  const int methods = common_.nmethods, ordering = common_.method[0].ordering, supernodal = common_.supernodal;
-  const int postorder = common_.postorder;
-  common_.nmethods = 1, common_.method[0].ordering = CHOLMOD_GIVEN, common_.postorder = 0;
-  common_.supernodal = CHOLMOD_SUPERNODAL;  // LL': trailing_block reads L's last columns
   cholmod_free_factor(&factor_, &common_);
   cholmod_free_sparse(&interface_set_, &common_);
-  factor_ = cholmod_analyze_p(&view, order.data(), nullptr, 0, &common_);
-  common_.nmethods = methods, common_.method[0].ordering = ordering, common_.supernodal = supernodal;
-  common_.postorder = postorder;
+  {
+    const OneOrdering given(common_, CHOLMOD_GIVEN);
+    common_.postorder = 0;
+    common_.supernodal = CHOLMOD_SUPERNODAL;  // LL': trailing_block reads L's last columns
+    factor_ = cholmod_analyze_p(&view, order.data(), nullptr, 0, &common_);
+  }
   if (!factor_) throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
   if (!std::equal(order.begin(), order.end(), static_cast<const int*>(factor_->Perm)))
     throw std::logic_error("CholmodFactor::factorize_with_last: CHOLMOD did not keep the given order");
@@ -337,11 +335,12 @@ cholmod_factor* CholmodFactor::analyze_interface_last(cholmod_sparse& A, const s
   for (int column : interface) member[static_cast<size_t>(column)] = 1;
   if (!cholmod_camd(&A, nullptr, 0, member.data(), order.data(), &common_))
     throw std::runtime_error("CHOLMOD's CAMD ordering failed (out of memory?)");
-  const int methods = common_.nmethods, ordering = common_.method[0].ordering, supernodal = common_.supernodal;
-  common_.nmethods = 1, common_.method[0].ordering = CHOLMOD_GIVEN;
-  common_.supernodal = CHOLMOD_SIMPLICIAL;  // CHOLMOD solves on a subset of columns of simplicial factors only
-  cholmod_factor* constrained = cholmod_analyze_p(&A, order.data(), nullptr, 0, &common_);
-  common_.nmethods = methods, common_.method[0].ordering = ordering, common_.supernodal = supernodal;
+  cholmod_factor* constrained = nullptr;
+  {
+    const OneOrdering given(common_, CHOLMOD_GIVEN);
+    common_.supernodal = CHOLMOD_SIMPLICIAL;  // CHOLMOD solves on a subset of columns of simplicial factors only
+    constrained = cholmod_analyze_p(&A, order.data(), nullptr, 0, &common_);
+  }
   if (!constrained) throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
   // The interface columns are closed under the elimination tree's ancestors (they come last
   // and postordering keeps ancestors), so a solve on them reads exactly their columns of L.

@@ -4,7 +4,6 @@
 #pragma once
 
 #include "base/linear_algebra.h"
-#include "factor/cholmod_analysis.h"
 #include "factor/shared_analyses.h"
 
 #include <cholmod.h>
