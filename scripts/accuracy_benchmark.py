@@ -591,15 +591,16 @@ def plot_gradients(gradients, loops):
     axes[0].set_xlabel("tol")
     axes[0].set_ylabel("gradient error max|g - g_ref| / max|g_ref|")
     axes[0].set_title("Design gradient against tol")
-    for k, (label, reference, rows) in enumerate(loops):
+    labels = []
+    for label, reference, rows in loops:
         error = loop_error(reference)
         done = [r for r in rows if error(r) < math.inf]
         line, = axes[1].loglog([f(r, "tol") for r in done], [max(error(r), 1e-16) for r in done], "o-", label=label,
                                ms=4)
-        for r in done:  # each loop's labels in its colour, one row lower per loop: apart where the points meet
-            axes[1].annotate(f"{r['steps']} / {int(f(r, 'hessian_total')):,}", (f(r, "tol"), max(error(r), 1e-16)),
-                             fontsize=7, xytext=(3, 4 - 9 * k), textcoords="offset points", color=line.get_color())
+        labels += [(f(r, "tol"), max(error(r), 1e-16), f"{r['steps']} / {int(f(r, 'hessian_total')):,}",
+                    line.get_color()) for r in done]
     axes[1].set_ylim(bottom=1e-18)  # room for the labels of the loops that reached every digit
+    annotate_apart(axes[1], labels)
     axes[1].set_xlabel("tol of the whole loop")
     axes[1].set_ylabel("final design's cost error (1e-16: the same digits)")
     axes[1].set_title("Design loops against the loop at 1e-12 (designs / multiplications)")
@@ -609,6 +610,22 @@ def plot_gradients(gradients, loops):
     fig.tight_layout()
     fig.savefig(os.path.join(OUT, "accuracy-gradients.png"), dpi=110)
     plt.close(fig)
+
+
+def annotate_apart(ax, labels, gap_points=9):
+    """Each (x, y, text, colour) written beside its point, moved down where it would overlap
+    a label already written at the same x (points of different loops meet or nearly meet)."""
+    ax.figure.canvas.draw()  # fixes the axes' limits, hence where each point lands
+    to_points = 72 / ax.figure.dpi
+    taken = {}
+    for x, y, text, colour in sorted(labels, key=lambda item: -item[1]):
+        at = ax.transData.transform((x, y))[1] * to_points + 4
+        for other in sorted(taken.get(x, []), reverse=True):
+            if abs(at - other) < gap_points:
+                at = other - gap_points
+        taken.setdefault(x, []).append(at)
+        offset = at - ax.transData.transform((x, y))[1] * to_points
+        ax.annotate(text, (x, y), fontsize=7, xytext=(3, offset), textcoords="offset points", color=colour)
 
 
 def style(k):
