@@ -2,7 +2,6 @@
 // values, and supernodes without the padding of relaxed amalgamation.
 #include "factor/cholmod_analysis.h"
 #include "factor/cholmod_factor.h"
-#include "feti/dirichlet.h"
 #include "solid_block.h"
 
 #include <Eigen/CholmodSupport>
@@ -10,15 +9,6 @@
 
 namespace ffeti {
 namespace {
-
-/// A 3D elastic block of cells^3 cubes, its top face's dofs eliminated: supernodal under
-/// the automatic switch from 8 cells up.
-SparseMatrix block(int cells) {
-  const SubdomainInput s = solid_block(0, {1, 1, 1}, {cells, cells, cells}, {0, 0, 0});
-  SparseMatrix K = eliminate_dirichlet(s.K, s.dirichlet_dofs);
-  K.makeCompressed();
-  return K;
-}
 
 /// What a supernodal analysis of A stores and counts, under CHOLMOD's defaults or the
 /// project's choices, with CHOLMOD's ordering or the one given.
@@ -45,14 +35,14 @@ double stored_values(const SparseMatrix& A, bool project_choices, int ordering =
 }
 
 TEST(CholmodAnalysis, SupernodesHoldFewerValuesThanUnderCholmodsDefaults) {
-  const SparseMatrix K = block(10);
+  const SparseMatrix K = clamped_block_stiffness(10);
   const double defaults = stored_values(K, false, CHOLMOD_AMD), ours = stored_values(K, true, CHOLMOD_AMD);
   ASSERT_GT(ours, 0);
   EXPECT_LT(ours, 0.97 * defaults) << "the relaxed amalgamation's padding is gone";
 }
 
 TEST(CholmodAnalysis, ASupernodalFactorTakesTheOrderingThatStoresFewerValues) {
-  const SparseMatrix K = block(10);
+  const SparseMatrix K = clamped_block_stiffness(10);
   const Analysis amd = analysis_of(K, true, CHOLMOD_AMD), metis = analysis_of(K, true, CHOLMOD_METIS);
   ASSERT_GT(amd.values, 0);
   ASSERT_LT(metis.values, amd.values) << "METIS must win here, or the test cannot tell that it was tried";
@@ -78,8 +68,8 @@ SparseMatrix grid_laplacian(int cells) {
   for (int i = 0; i < cells; ++i)
     for (int j = 0; j < cells; ++j) {
       entries.emplace_back(id(i, j), id(i, j), 5.0);
-      if (i + 1 < cells) entries.emplace_back(id(i, j), id(i + 1, j), -1.0), entries.emplace_back(id(i + 1, j), id(i, j), -1.0);
-      if (j + 1 < cells) entries.emplace_back(id(i, j), id(i, j + 1), -1.0), entries.emplace_back(id(i, j + 1), id(i, j), -1.0);
+      for (const int neighbour : {i + 1 < cells ? id(i + 1, j) : -1, j + 1 < cells ? id(i, j + 1) : -1})
+        if (neighbour >= 0) entries.emplace_back(id(i, j), neighbour, -1.0), entries.emplace_back(neighbour, id(i, j), -1.0);
     }
   SparseMatrix A(cells * cells, cells * cells);
   A.setFromTriplets(entries.begin(), entries.end());

@@ -2,7 +2,6 @@
 // between matrices of one pattern gives bitwise the factor of their own analyses.
 #include "factor/cholmod_analysis.h"
 #include "factor/cholmod_factor.h"
-#include "feti/dirichlet.h"
 #include "factor/shared_analyses.h"
 #include "solid_block.h"
 
@@ -11,18 +10,10 @@
 namespace ffeti {
 namespace {
 
-/// A regular 3D elastic block (its top face's dofs eliminated) of cells^3 cubes at x0.
-SparseMatrix block(int cells, double x0 = 0) {
-  const SubdomainInput s = solid_block(x0, {1, 1, 1}, {cells, cells, cells}, {0, 0, 0});
-  SparseMatrix K = eliminate_dirichlet(s.K, s.dirichlet_dofs);
-  K.makeCompressed();
-  return K;
-}
-
 TEST(CholmodFactor, AutomaticKindFollowsTheSwitchOnFlopsPerFactorNonzero) {
   int supernodal = 0, simplicial = 0;
   for (int cells : {2, 4, 8}) {
-    const SparseMatrix K = block(cells);
+    const SparseMatrix K = clamped_block_stiffness(cells);
     CholmodFactor factor(FactorKind::automatic);
     ASSERT_LT(factor.factorize(K), 0);
     const double density = factor.analysis_flops() / factor.analysis_nonzeros();
@@ -39,7 +30,8 @@ TEST(CholmodFactor, AutomaticKindFollowsTheSwitchOnFlopsPerFactorNonzero) {
 }
 
 TEST(CholmodFactor, SharedAnalysisGivesBitwiseTheSameFactor) {
-  const SparseMatrix first = block(4), translated = block(4, 5.0), finer = block(5);
+  const SparseMatrix first = clamped_block_stiffness(4), translated = clamped_block_stiffness(4, 5.0);
+  const SparseMatrix finer = clamped_block_stiffness(5);
   const Vec b = Vec::LinSpaced(first.rows(), -1, 2);
   for (FactorKind kind : {FactorKind::simplicial, FactorKind::supernodal}) {
     SharedAnalyses shared;
@@ -128,7 +120,7 @@ TEST(CholmodFactor, AutomaticKeepsTheFillReducingOrderingWhereTheInterfaceBlockI
   // A 3D elastic block with its lateral faces as interface: their dense block would be more
   // than half of the fill-reducing factor.
   const int cells = 4;
-  const SparseMatrix K = block(cells);
+  const SparseMatrix K = clamped_block_stiffness(cells);
   const std::vector<int> faces = block_faces(K, cells);
   CholmodFactor automatic(FactorKind::simplicial, InterfaceOrdering::automatic);
   ASSERT_LT(automatic.factorize(K, nullptr, faces), 0);
@@ -211,7 +203,7 @@ TEST(CholmodFactor, SupernodalSolvesMatchTheSimplicialFactorsSolves) {
   // The supernodal factor (supernodal_factorize.cpp) and its triangles (supernodal_solve.cpp)
   // run through Eigen, the simplicial one through CHOLMOD: two factorizations and two solve
   // codes of one matrix.
-  const SparseMatrix K = block(6);
+  const SparseMatrix K = clamped_block_stiffness(6);
   CholmodFactor supernodal(FactorKind::supernodal), simplicial(FactorKind::simplicial);
   ASSERT_LT(supernodal.factorize(K), 0);
   ASSERT_LT(simplicial.factorize(K), 0);
@@ -238,7 +230,7 @@ TEST(CholmodFactor, SupernodalSolvesMatchTheSimplicialFactorsSolves) {
 TEST(CholmodFactor, SupernodalFactorizationRefusesAnIndefiniteMatrixAndRefactorizesAfterwards) {
   // The supernodal values come from supernodal_factorize.cpp; an indefinite block there hands
   // the matrix to CHOLMOD's own factorization, which names the column.
-  const SparseMatrix K = block(6);
+  const SparseMatrix K = clamped_block_stiffness(6);
   SparseMatrix indefinite = K;
   const int middle = static_cast<int>(K.rows() / 2);
   indefinite.coeffRef(middle, middle) = -indefinite.coeff(middle, middle);
@@ -253,7 +245,7 @@ TEST(CholmodFactor, SupernodalFactorizationRefusesAnIndefiniteMatrixAndRefactori
 }
 
 TEST(CholmodFactor, SupernodalSolvesFromSeveralThreadsAtOnceWithDistinctWorkspaces) {
-  const SparseMatrix K = block(6);
+  const SparseMatrix K = clamped_block_stiffness(6);
   CholmodFactor factor(FactorKind::supernodal);
   ASSERT_LT(factor.factorize(K), 0);
   ASSERT_TRUE(factor.supernodal());
@@ -274,7 +266,7 @@ TEST(CholmodFactor, SupernodalSolvesFromSeveralThreadsAtOnceWithDistinctWorkspac
 }
 
 TEST(CholmodFactor, SupernodalForwardAndBackwardHalvesComposeToTheSolve) {
-  const SparseMatrix K = block(6);
+  const SparseMatrix K = clamped_block_stiffness(6);
   CholmodFactor factor(FactorKind::supernodal);
   ASSERT_LT(factor.factorize(K), 0);
   ASSERT_TRUE(factor.supernodal());
@@ -292,7 +284,7 @@ TEST(CholmodFactor, FactorizationsOnSeveralThreadsAtOnceGiveTheSerialFactorBitwi
   // Large enough for CHOLMOD to try METIS beside AMD, whose random generator is global:
   // concurrent analyses drew from one stream and ordered (hence rounded) differently from
   // run to run.
-  const SparseMatrix K = block(12);
+  const SparseMatrix K = clamped_block_stiffness(12);
   const Vec b = Vec::LinSpaced(K.rows(), -1, 2);
   Vec serial;
   {

@@ -1,5 +1,7 @@
 #include "solid_block.h"
 
+#include "feti/dirichlet.h"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -97,6 +99,13 @@ std::vector<std::vector<int>> bottom_dofs(const std::vector<SubdomainInput>& sub
       if (s.z[static_cast<size_t>(k)] == 0) out.back().push_back(k);
   }
   return out;
+}
+
+SparseMatrix clamped_block_stiffness(int cells, double x0) {
+  const SubdomainInput s = solid_block(x0, {1, 1, 1}, {cells, cells, cells}, {0, 0, 0});
+  SparseMatrix K = eliminate_dirichlet(s.K, s.dirichlet_dofs);
+  K.makeCompressed();
+  return K;
 }
 
 }  // namespace ffeti

@@ -23,6 +23,10 @@ Eigen::MatrixXd tetrahedron_stiffness(const std::array<Eigen::Vector3d, 4>& p, d
 SubdomainInput solid_block(double x0, const std::array<double, 3>& size, const std::array<int, 3>& cells,
                            const std::array<double, 3>& top, double turn = 0);
 
+/// The stiffness of the unit cube solid_block(x0, ...) of cells^3 cubes with its top face's
+/// dofs eliminated, compressed: a positive definite 3D elasticity matrix for factor tests.
+SparseMatrix clamped_block_stiffness(int cells, double x0 = 0);
+
 /// Per subdomain every dof of the nodes on the face z = 0 (contact slaves).
 std::vector<std::vector<int>> bottom_dofs(const std::vector<SubdomainInput>& subdomains);
 
