@@ -224,8 +224,7 @@ def memory_reading(largest, parts):
     text += (f"; parts of {smallest['part_nodes']} nodes hold factors of {kib(smallest, 'bytes_factor_per_unknown'):.2f} "
              f"KiB per unknown and peak at {f(smallest, 'process_peak_mb') * 1024 / f(smallest, 'unknowns'):.2f} "
              "('Part size'). The factors' analysis keeps METIS's ordering where it stores fewer values and pads no "
-             "supernodes: 20 % fewer factor bytes than CHOLMOD's default analysis on these parts (docs/log.md, "
-             "2026-12-07). Two KiB would take factors of about one KiB (parts of a few hundred nodes, a larger dual) "
+             "supernodes (what that saved against CHOLMOD's default analysis: docs/log.md, 2026-12-07). Two KiB would take factors of about one KiB (parts of a few hundred nodes, a larger dual) "
              "and no plugin copy of K_s (its products from the factors), neither built; where the rest sits is the "
              "table 'Memory by phase' below.")
     return text

@@ -37,22 +37,14 @@ cholmod_factor* analyze_alone(cholmod_sparse* A, cholmod_common* common) {
   return cholmod_analyze(A, common);
 }
 
-namespace {
-
-/// The least flops per column of CHOLMOD's own factorization at which METIS is tried too.
-/// The METIS call took 2.5-3.3 us per column on 2D and 3D patterns alike; 3D parts (the real
-/// mesh's of 500 to 3500 nodes, the boxes) factor at 19,000 to 250,000 flops per column and
-/// METIS stored up to 22 % fewer values; 2D subdomains stay near 5,000 (H/h = 256: 66k
-/// columns), where METIS stored 1 % more and its call added 2 s to a 1 s factorization phase
-/// (docs/log.md, 2026-12-07).
-constexpr double kLeastFlopsPerColumnForMetis = 10000;
-
-}  // namespace
-
 // CHOLMOD's default tries AMD and calls METIS only where AMD's flops per entry pass 500 and
 // its factor holds 5 times A's entries; 3D parts stay below that although METIS's nested
 // dissection stores fewer values on them: 14 % fewer on the real mesh's parts of 1000 nodes
-// (crowned-punch-3d.edp -h 0.5; docs/log.md, 2026-12-07).
+// (crowned-punch-3d.edp -h 0.5; docs/log.md, 2026-12-07). The threshold on flops per column:
+// the METIS call took 2.5-3.3 us per column on 2D and 3D patterns alike; 3D parts (the real
+// mesh's of 500 to 3500 nodes, the boxes) factor at 19,000 to 250,000 flops per column and
+// METIS stored up to 22 % fewer values; 2D subdomains stay near 5,000 (H/h = 256: 66k
+// columns), where METIS stored 1 % more and its call added 2 s to a 1 s factorization phase.
 cholmod_factor* analyze_fewest_entries(cholmod_sparse* A, cholmod_common* common) {
   cholmod_factor* chosen = analyze_alone(A, common);
   if (!chosen || !chosen->is_super || common->called_nd ||

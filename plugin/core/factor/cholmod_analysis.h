@@ -17,9 +17,14 @@ void set_analysis_choices(cholmod_common& common);
 /// cholmod_analyze, one call at a time in the process (METIS's random state is global).
 cholmod_factor* analyze_alone(cholmod_sparse* A, cholmod_common* common);
 
+/// The least flops per column of CHOLMOD's own factorization at which analyze_fewest_entries
+/// tries METIS too (measured: cholmod_analysis.cpp).
+constexpr double kLeastFlopsPerColumnForMetis = 10000;
+
 /// The analysis of A whose factor holds the fewest values: CHOLMOD's own choice and, for a
-/// supernodal factor of at least 10,000 flops per column where CHOLMOD did not call METIS
-/// itself, METIS's nested dissection beside it. Null if CHOLMOD's analysis failed.
+/// supernodal factor of at least kLeastFlopsPerColumnForMetis flops per column where CHOLMOD
+/// did not call METIS itself, METIS's nested dissection beside it. Null if CHOLMOD's analysis
+/// failed.
 cholmod_factor* analyze_fewest_entries(cholmod_sparse* A, cholmod_common* common);
 
 /// For the scope's cholmod_analyze calls: one ordering method, `ordering`; the factor kind
