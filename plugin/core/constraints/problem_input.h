@@ -49,7 +49,9 @@ class SharedMatrix {
 /// field component in several subdomains of one body are recognised by equal coordinates
 /// and glued; dofs of different bodies are never glued.
 struct SubdomainInput {
-  SharedMatrix K;                 ///< stiffness, symmetric, full (not half) storage
+  /// Stiffness, symmetric, full (not half) storage: the input checks walk whole columns.
+  /// FetiProblem keeps only its lower triangle once they are done.
+  SharedMatrix K;
   Vec f;                          ///< load
   std::vector<double> x, y;       ///< coordinates of each dof's node
   std::vector<double> z;          ///< third coordinate (empty: a plane problem; every subdomain alike)

@@ -27,7 +27,7 @@ Vec eliminated_load(const SparseMatrix& K, const Vec& f, const std::vector<int>&
                     const std::vector<double>& values) {
   Vec g = Vec::Zero(K.rows());
   for (size_t k = 0; k < dofs.size(); ++k) g[dofs[k]] = values.empty() ? 0.0 : values[k];
-  Vec result = f - K * g;  // move the known values to the right-hand side
+  Vec result = f - K.selfadjointView<Eigen::Lower>() * g;  // move the known values to the right-hand side
   for (int dof : dofs) result[dof] = K.coeff(dof, dof) * g[dof];
   return result;
 }

@@ -2,6 +2,7 @@
 
 #include "feti/dual_operator.h"
 #include "feti/held_bytes.h"
+#include "factor/lower_triangle.h"
 #include "factor/shared_factors.h"
 #include "base/errors.h"
 #include "base/parallel_for.h"
@@ -15,19 +16,24 @@
 namespace ffeti {
 namespace {
 
-/// The rows and columns `rows` x `cols` of K.
-SparseMatrix submatrix(const SparseMatrix& K, const std::vector<int>& rows, const std::vector<int>& cols) {
+/// The rows `rows` x the columns `cols` of the symmetric K, from its lower triangle (an entry
+/// below the diagonal stands for its mirror above it too; the upper triangle, where K is
+/// given in full, is skipped).
+SparseMatrix symmetric_block(const SparseMatrix& K, const std::vector<int>& rows, const std::vector<int>& cols) {
   std::vector<int> row_position(static_cast<size_t>(K.rows()), -1), column_position(static_cast<size_t>(K.cols()), -1);
   for (size_t k = 0; k < rows.size(); ++k) row_position[static_cast<size_t>(rows[k])] = static_cast<int>(k);
   for (size_t k = 0; k < cols.size(); ++k) column_position[static_cast<size_t>(cols[k])] = static_cast<int>(k);
   std::vector<Eigen::Triplet<double, int>> entries;
-  for (int j = 0; j < K.outerSize(); ++j) {
-    if (column_position[static_cast<size_t>(j)] < 0) continue;
-    for (SparseMatrix::InnerIterator it(K, j); it; ++it)
-      if (row_position[static_cast<size_t>(it.row())] >= 0)
-        entries.emplace_back(row_position[static_cast<size_t>(it.row())], column_position[static_cast<size_t>(j)],
-                             it.value());
-  }
+  const auto add = [&](int row, int column, double value) {
+    if (row_position[static_cast<size_t>(row)] >= 0 && column_position[static_cast<size_t>(column)] >= 0)
+      entries.emplace_back(row_position[static_cast<size_t>(row)], column_position[static_cast<size_t>(column)], value);
+  };
+  for (int j = 0; j < K.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(K, j); it; ++it) {
+      if (it.row() < j) continue;
+      add(it.row(), j, it.value());
+      if (it.row() != j) add(j, it.row(), it.value());
+    }
   SparseMatrix block(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(cols.size()));
   block.setFromTriplets(entries.begin(), entries.end());
   block.makeCompressed();
@@ -102,7 +108,7 @@ std::vector<double> entry_weights(const std::vector<const SparseMatrix*>& operat
 /// S_s of one subdomain on its constrained dofs.
 struct DirichletPreconditioner::Block {
   std::vector<int> boundary, interior;
-  SparseMatrix Kbb, Kib;
+  SparseMatrix Kbb, Kib;  // K_bb: its lower triangle
   std::shared_ptr<const CholmodFactor> Kii;  // shared by subdomains of equal K_ii
   mutable CholmodSolveWorkspace workspace;   // this subdomain's solves of Kii
   Vec weight;                                 // D^{-1} per boundary dof (empty: multiplicity scaling)
@@ -135,17 +141,17 @@ DirichletPreconditioner::DirichletPreconditioner(const std::vector<const SparseM
     for (int j = 0; j < local[k].B.outerSize(); ++j)
       if (SparseMatrix::InnerIterator(local[k].B, j)) constrained[static_cast<size_t>(j)] = 1;
     for (int i = 0; i < K.rows(); ++i) (constrained[static_cast<size_t>(i)] ? block->boundary : block->interior).push_back(i);
-    block->Kbb = submatrix(K, block->boundary, block->boundary);
+    block->Kbb = lower_block(K, block->boundary);
     if (scaling == InterfaceScaling::stiffness) {  // positive: entry_weights checked it
       block->weight.resize(static_cast<Eigen::Index>(block->boundary.size()));
       for (size_t i = 0; i < block->boundary.size(); ++i)
         block->weight[static_cast<Eigen::Index>(i)] = 1.0 / K.coeff(block->boundary[i], block->boundary[i]);
     }
     if (lumped) block->interior.clear();  // S_s ~ K_bb: the K_ii correction is what it leaves out
-    block->Kib = submatrix(K, block->interior, block->boundary);
+    block->Kib = symmetric_block(K, block->interior, block->boundary);
     // K_ii is K with every constrained dof fixed: regular whenever some dof is constrained.
     if (!block->interior.empty()) {
-      interior_blocks[k] = submatrix(K, block->interior, block->interior);
+      interior_blocks[k] = lower_block(K, block->interior);
       bool built = false;
       const auto build = [&] {
         built = true;
@@ -183,7 +189,7 @@ void DirichletPreconditioner::apply(const Vec& x, Vec& y) const {
     b.xb.resize(static_cast<Eigen::Index>(b.boundary.size()));
     for (size_t i = 0; i < b.boundary.size(); ++i) b.xb[static_cast<Eigen::Index>(i)] = b.full[b.boundary[i]];
     if (b.weight.size()) b.xb.array() *= b.weight.array();  // D^-1 on both sides of S
-    b.yb.noalias() = b.Kbb * b.xb;  // S x_b = K_bb x_b - K_bi K_ii^{-1} K_ib x_b
+    b.yb.noalias() = b.Kbb.selfadjointView<Eigen::Lower>() * b.xb;  // S x_b = K_bb x_b - K_bi K_ii^{-1} K_ib x_b
     if (!b.interior.empty()) {
       b.t.noalias() = b.Kib * b.xb;
       b.Kii->solve(b.t, b.ti, b.workspace);

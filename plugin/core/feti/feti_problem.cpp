@@ -5,6 +5,7 @@
 #include "constraints/surface_checks.h"
 
 #include "factor/blas_library.h"
+#include "factor/lower_triangle.h"
 #include "feti/dirichlet.h"
 #include "base/errors.h"
 #include "base/parallel_for.h"
@@ -17,9 +18,25 @@
 #include <cmath>
 #include <iterator>
 #include <stdexcept>
+#include <unordered_map>
 #include <unordered_set>
 
 namespace ffeti {
+namespace {
+
+/// Each distinct K_s replaced by its lower triangle, once for the subdomains that share it:
+/// past the input checks (which walk full columns) every reader takes K_s's lower triangle,
+/// and the full copy, the plugin's largest after the factors, goes before they come.
+void keep_lower_triangles(std::vector<SubdomainInput>& inputs) {
+  std::unordered_map<const SparseMatrix*, SharedMatrix> lower;  // by the full matrix, still held while looked up
+  for (SubdomainInput& in : inputs) {
+    const auto [at, first] = lower.try_emplace(&in.K.get());
+    if (first) at->second = SharedMatrix(lower_triangle(in.K), in.K.name());
+    in.K = at->second;
+  }
+}
+
+}  // namespace
 
 FetiProblem::FetiProblem(std::vector<SubdomainInput> subdomains, const ContactInput& contact,
                          const FetiSetupSettings& settings)
@@ -76,6 +93,7 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   if (obstacle_points_into_bodies({comm.sum(facing.toward), comm.sum(facing.total)}))
     throw InputError("obstacle: its normal points into the bodies (the slave nodes' bodies lie on the side it points "
                      "to, read from K): give the normal pointing away from the obstacle, toward the bodies");
+  keep_lower_triangles(inputs_);
 
   // Who holds what: boxes, bodies and owners of all subdomains on every rank.
   std::vector<double> mine;

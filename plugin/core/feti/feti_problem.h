@@ -155,7 +155,8 @@ class FetiProblem {
   const DualSystem& dual() const { return *dual_; }
   /// This rank's factorized subdomains (kernels, generalized inverses).
   const SubdomainList& subdomains() const { return subdomains_; }
-  /// The input as given (original K_s and current loads f_s).
+  /// The input as given (original K_s and current loads f_s), but each K_s held as its
+  /// lower triangle once checked (read it as K.get().selfadjointView<Eigen::Lower>()).
   const std::vector<SubdomainInput>& inputs() const { return inputs_; }
   /// Position and multiplier of every contact row's slave dof (gathered: the same on all
   /// ranks; every contact row, in row order).
@@ -215,7 +216,7 @@ class FetiProblem {
 
   FetiSetupSettings settings_;
   std::shared_ptr<const Communicator> comm_;
-  std::vector<SubdomainInput> inputs_;  // this rank's: original K_s, f_s (energy, KKT)
+  std::vector<SubdomainInput> inputs_;  // this rank's: original K_s (lower triangle), f_s (energy, KKT)
   std::vector<int> global_ids_;
   int global_count_ = 0;
   std::vector<int> owner_, bodies_;     // of every global subdomain

@@ -38,7 +38,7 @@ Eigen::MatrixXd kernel_in_span(const SparseMatrix& K, const Eigen::MatrixXd& can
   const Eigen::HouseholderQR<Eigen::MatrixXd> qr(candidates);
   const Eigen::MatrixXd Q =
       qr.householderQ() * Eigen::MatrixXd::Identity(candidates.rows(), candidates.cols());
-  const Eigen::MatrixXd KQ = K * Q;
+  const Eigen::MatrixXd KQ = K.selfadjointView<Eigen::Lower>() * Q;
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(KQ, Eigen::ComputeThinV);
   // Rounding leaves ||K q|| ~ eps ||K|| sqrt(n) for a true kernel vector, while a constrained
   // mode has ||K q|| of the order of a diagonal entry: the threshold separates the two.

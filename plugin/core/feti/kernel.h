@@ -19,6 +19,7 @@ Eigen::MatrixXd candidate_kernel(const std::vector<double>& x, const std::vector
 /// The true kernel inside span(candidates): the orthonormal basis of
 /// {R c : ||K R c|| <= tol ||K||}, from the SVD of K R. A subdomain with Dirichlet dofs
 /// eliminated gets an empty basis, a symmetry condition on one component a smaller one.
+/// Reads K's lower triangle only.
 Eigen::MatrixXd kernel_in_span(const SparseMatrix& K, const Eigen::MatrixXd& candidates);
 
 /// r dofs where the kernel basis R (n x r) restricted to them is best conditioned

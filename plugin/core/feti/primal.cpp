@@ -145,7 +145,7 @@ KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs, const std:
       for (size_t k = 0; k < local[s].rows.size(); ++k) lambda_s[static_cast<Eigen::Index>(k)] = lambda[local[s].rows[k]];
       reaction = local[s].B.transpose() * lambda_s;
     }
-    Vec residual = inputs[s].K.get() * u[s] - f[s] + reaction;
+    Vec residual = inputs[s].K.get().selfadjointView<Eigen::Lower>() * u[s] - f[s] + reaction;
     for (size_t k = 0; k < inputs[s].dirichlet_dofs.size(); ++k) {
       const int dof = inputs[s].dirichlet_dofs[k];
       const double g = homogeneous_dirichlet || inputs[s].dirichlet_values.empty() ? 0.0 : inputs[s].dirichlet_values[k];
@@ -187,7 +187,7 @@ KktResiduals kkt_residuals(const std::vector<SubdomainInput>& inputs, const std:
 double energy(const std::vector<SubdomainInput>& inputs, const std::vector<Vec>& u, const Communicator& comm) {
   double value = 0;
   for (size_t s = 0; s < inputs.size(); ++s)
-    value += 0.5 * u[s].dot(inputs[s].K.get() * u[s]) - inputs[s].f.dot(u[s]);
+    value += 0.5 * u[s].dot(inputs[s].K.get().selfadjointView<Eigen::Lower>() * u[s]) - inputs[s].f.dot(u[s]);
   return comm.sum(value);
 }
 

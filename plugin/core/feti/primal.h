@@ -49,7 +49,7 @@ double friction_force_scale(double lambda_scale, const Vec& slip_bound);
 bool holds_with_equality(const Constraints& constraints, const Vec& lambda, const Vec& slip_bound, int row);
 
 /// KKT conditions of  min 1/2 u'Ku - f'u  s.t.  B_E u = c_E, B_I u <= c_I, recomputed in
-/// primal form from the original (not eliminated) K_s of `inputs`, the loads `f` (this
+/// primal form from the original (not eliminated) K_s of `inputs` (their lower triangles), the loads `f` (this
 /// rank's) and the right-hand side `c` of `constraints`; the Dirichlet values are the
 /// inputs' or, if `homogeneous_dirichlet`, zero (a sensitivity problem). All relative:
 ///   equilibrium     = ||K u - f + B'lambda||_2 / max(||f||_2, ||B'lambda||_2)

@@ -3,6 +3,7 @@
 #include "base/errors.h"
 #include "base/parallel_for.h"
 #include "base/stopwatch.h"
+#include "factor/lower_triangle.h"
 #include "feti/kernel.h"
 
 #include <algorithm>
@@ -31,26 +32,6 @@ std::vector<int> kept_dofs(Eigen::Index n, const std::vector<int>& removed) {
   return kept;
 }
 
-/// K restricted to the rows and columns `kept` (sorted), compressed: column by column, the
-/// entries of kept rows renumbered (the order within a column stays sorted).
-SparseMatrix restrict_to(const SparseMatrix& K, const std::vector<int>& kept) {
-  std::vector<int> full_to_kept(static_cast<size_t>(K.rows()), -1);
-  for (size_t k = 0; k < kept.size(); ++k) full_to_kept[static_cast<size_t>(kept[k])] = static_cast<int>(k);
-  const auto m = static_cast<Eigen::Index>(kept.size());
-  SparseMatrix reduced(m, m);
-  reduced.reserve(K.nonZeros());
-  for (Eigen::Index j = 0; j < m; ++j) {
-    reduced.startVec(j);
-    for (SparseMatrix::InnerIterator it(K, kept[static_cast<size_t>(j)]); it; ++it) {
-      const int row = full_to_kept[static_cast<size_t>(it.row())];
-      if (row >= 0) reduced.insertBack(row, j) = it.value();
-    }
-  }
-  reduced.finalize();
-  reduced.makeCompressed();  // CHOLMOD reads compressed columns
-  return reduced;
-}
-
 }  // namespace
 
 Subdomain::Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& kernel_candidates,
@@ -77,7 +58,7 @@ Subdomain::Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& ke
   const auto build = [&] {  // run by the first subdomain of each set of identical ones
     auto factor = std::make_shared<CholmodFactor>(factor_kind, ordering);
     FactorOutcome outcome;
-    outcome.failed = factor->factorize(restrict_to(K, reduced_to_full_), shared, reduced_interface);
+    outcome.failed = factor->factorize(lower_block(K, reduced_to_full_), shared, reduced_interface);
     // A singular block may factor with a tiny positive pivot instead of failing outright.
     outcome.reciprocal_condition = outcome.failed < 0 ? factor->reciprocal_condition() : 0.0;
     factor_ = factor;
@@ -183,11 +164,11 @@ double Subdomain::pseudo_inverse_residual(const SparseMatrix& K) const {
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   Vec v(K.rows());
   for (Eigen::Index i = 0; i < v.size(); ++i) v[i] = uniform(generator);
-  const Vec Kv = K * v;
+  const Vec Kv = K.selfadjointView<Eigen::Lower>() * v;
   Vec z;
   apply_pseudo_inverse(Kv, z);
   const double denominator = Kv.norm();
-  return denominator > 0 ? (K * z - Kv).norm() / denominator : 0.0;
+  return denominator > 0 ? (K.selfadjointView<Eigen::Lower>() * z - Kv).norm() / denominator : 0.0;
 }
 
 ExplicitBlocks form_explicit_blocks(SubdomainList& subdomains, DualOperatorForm form, int threads) {

@@ -27,7 +27,8 @@ class Subdomain {
   /// the generalized inverse does not verify. The object keeps the factor and the kernel.
   /// With `shared`, subdomains whose factorized block has one pattern share its analysis.
   /// `interface` (sorted dofs): where the constraint rows B_s touch the subdomain; the factor
-  /// may order them last so that the dual operator solves on them alone.
+  /// may order them last so that the dual operator solves on them alone. Only K's lower
+  /// triangle is read (full storage reads the same).
   /// With `shared_factors`, subdomains of bitwise equal K, fixing dofs and interface share
   /// one factor (and the checks of its generalized inverse).
   Subdomain(int index, const SparseMatrix& K, const Eigen::MatrixXd& kernel_candidates, FactorKind factor_kind,
