@@ -3,6 +3,7 @@
 #include "feti/kernel.h"
 #include "feti/subdomain.h"
 #include "membrane_model.h"
+#include "solid_block.h"
 
 #include <gtest/gtest.h>
 
@@ -24,6 +25,19 @@ TEST(Kernel, FloatingScalarSubdomainHasTheConstants) {
   EXPECT_LT((s.K.get() * R).norm(), 1e-12);
   EXPECT_NEAR(R.norm(), 1.0, 1e-12);
   EXPECT_NEAR(std::abs(R(0, 0)), 1.0 / std::sqrt(R.rows()), 1e-12);
+}
+
+TEST(Kernel, AFloatingBodysBasisIsTheCandidatesOwnNotTurnedByRounding) {
+  // Every candidate a rigid motion of the floating block: K Q is rounding alone, and its
+  // singular vectors would turn the basis by a rotation only that rounding decides.
+  const SubdomainInput block = solid_block(0, {1, 1, 1}, {2, 2, 2}, {0, 0, 0});
+  const Eigen::MatrixXd candidates = candidate_kernel(block.x, block.y, block.component, block.z);
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(candidates);
+  const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(candidates.rows(), candidates.cols());
+  const Eigen::MatrixXd R = kernel_in_span(block.K, candidates);
+  ASSERT_EQ(R.cols(), 6);
+  EXPECT_EQ(R, Q);  // bit for bit
+  EXPECT_LT((block.K.get() * R).norm(), 1e-10 * block.K.get().norm());
 }
 
 TEST(Kernel, DirichletEliminationLeavesNoKernel) {

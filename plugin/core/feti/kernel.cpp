@@ -47,6 +47,11 @@ Eigen::MatrixXd kernel_in_span(const SparseMatrix& K, const Eigen::MatrixXd& can
   std::vector<Eigen::Index> null_columns;
   for (Eigen::Index j = 0; j < svd.singularValues().size(); ++j)
     if (svd.singularValues()[j] <= threshold) null_columns.push_back(j);
+  // The whole span a kernel (every floating subdomain of Total FETI): Q itself. The singular
+  // vectors of K Q, all of whose values are then rounding, would turn it by a rotation that
+  // only the rounding decides, and with it every later round-off (the friction onset's 24
+  // pulls took 2735 to 3007 multiplications with round-off alone: docs/log.md, 2026-12-07).
+  if (static_cast<Eigen::Index>(null_columns.size()) == Q.cols()) return Q;
   Eigen::MatrixXd R(Q.rows(), static_cast<Eigen::Index>(null_columns.size()));
   for (size_t k = 0; k < null_columns.size(); ++k)
     R.col(static_cast<Eigen::Index>(k)) = Q * svd.matrixV().col(null_columns[k]);
