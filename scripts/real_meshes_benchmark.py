@@ -211,7 +211,7 @@ def memory_reading(largest, parts):
     text = f"The factors alone hold {kib(largest, 'bytes_factor_per_unknown'):.2f} KiB per unknown"
     if largest.get("bytes_input_per_unknown"):
         text += (f", the plugin's copies of K_s, f_s and coordinates {kib(largest, 'bytes_input_per_unknown'):.2f} "
-                 f"(K_s in full storage), its constraint rows {kib(largest, 'bytes_constraint_per_unknown'):.2f} "
+                 f"(K_s as its lower triangle), its constraint rows {kib(largest, 'bytes_constraint_per_unknown'):.2f} "
                  f"and kernels {kib(largest, 'bytes_kernel_per_unknown'):.2f}")
     dual = ["bytes_dual_rows_per_unknown", "bytes_coarse_per_unknown", "bytes_preconditioner_per_unknown"]
     if all(largest.get(key) for key in dual):
@@ -224,9 +224,10 @@ def memory_reading(largest, parts):
     text += (f"; parts of {smallest['part_nodes']} nodes hold factors of {kib(smallest, 'bytes_factor_per_unknown'):.2f} "
              f"KiB per unknown and peak at {f(smallest, 'process_peak_mb') * 1024 / f(smallest, 'unknowns'):.2f} "
              "('Part size'). The factors' analysis keeps METIS's ordering where it stores fewer values and pads no "
-             "supernodes (what that saved against CHOLMOD's default analysis: docs/log.md, 2026-12-07). Two KiB would take factors of about one KiB (parts of a few hundred nodes, a larger dual) "
-             "and no plugin copy of K_s (its products from the factors), neither built; where the rest sits is the "
-             "table 'Memory by phase' below.")
+             "supernodes, and the plugin's K_s is its lower triangle (what each saved: docs/log.md, 2026-12-07). "
+             "Two KiB would take factors of about one KiB (smaller parts, a larger dual; not measured at this size) and "
+             "less of what the process holds beside the plugin (FreeFEM's meshes and vectors, the allocator's "
+             "free pages: docs/log.md, 2026-12-07); where the rest sits is the table 'Memory by phase' below.")
     return text
 
 
