@@ -20,6 +20,8 @@ namespace {
 /// below the diagonal stands for its mirror above it too; the upper triangle, where K is
 /// given in full, is skipped).
 SparseMatrix symmetric_block(const SparseMatrix& K, const std::vector<int>& rows, const std::vector<int>& cols) {
+  SparseMatrix block(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(cols.size()));
+  if (rows.empty() || cols.empty()) return block;  // the lumped preconditioner's K_ib: no pass over K
   std::vector<int> row_position(static_cast<size_t>(K.rows()), -1), column_position(static_cast<size_t>(K.cols()), -1);
   for (size_t k = 0; k < rows.size(); ++k) row_position[static_cast<size_t>(rows[k])] = static_cast<int>(k);
   for (size_t k = 0; k < cols.size(); ++k) column_position[static_cast<size_t>(cols[k])] = static_cast<int>(k);
@@ -34,7 +36,6 @@ SparseMatrix symmetric_block(const SparseMatrix& K, const std::vector<int>& rows
       add(it.row(), j, it.value());
       if (it.row() != j) add(j, it.row(), it.value());
     }
-  SparseMatrix block(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(cols.size()));
   block.setFromTriplets(entries.begin(), entries.end());
   block.makeCompressed();
   return block;

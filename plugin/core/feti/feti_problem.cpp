@@ -93,7 +93,7 @@ void FetiProblem::set_up(const ContactInput& local_contact) {
   if (obstacle_points_into_bodies({comm.sum(facing.toward), comm.sum(facing.total)}))
     throw InputError("obstacle: its normal points into the bodies (the slave nodes' bodies lie on the side it points "
                      "to, read from K): give the normal pointing away from the obstacle, toward the bodies");
-  keep_lower_triangles(inputs_);
+  collectively(comm, [&] { keep_lower_triangles(inputs_); });  // out of memory on one rank fails every rank
 
   // Who holds what: boxes, bodies and owners of all subdomains on every rank.
   std::vector<double> mine;
