@@ -15,16 +15,15 @@
 namespace ffeti {
 
 /// A symmetric t x t matrix held as its lower triangle in panels of kPanelWidth columns:
-/// per panel, its diagonal block's lower triangle packed, then its columns below that block
-/// as one dense column-major block A. A product is two dense GEMVs per panel on Eigen's
-/// vectorized kernels (y below += A x_panel, y_panel += A' x below), so the result's tail is
-/// read and written once per panel, not once per column. t(t+1)/2 values: half the memory
+/// per panel, its diagonal block's lower triangle packed, then its rows below that block,
+/// each row's kPanelWidth values together. A product reads each such row once for both of
+/// its uses (the row's dot with the panel's x, and the row times its x added to the panel's
+/// sum), so the values stream through once per product. t(t+1)/2 values: half the memory
 /// of a full matrix, and what a product reads.
 class PackedSymmetric {
  public:
-  /// Columns per panel: 8 ran 1.2-1.5 times faster than one column at a time at t = 500 to
-  /// 2000, 1.15 at 200, as fast at 100 and 0.87 at 50 (a probe beside a benchmark, SSE2 as
-  /// built; 16 no faster; docs/log.md).
+  /// Columns per panel: one row of a panel is a cache line, and the panel's x and its sum
+  /// stay in registers (8 against 4 and 16: docs/log.md, 2026-12-07).
   static constexpr Eigen::Index kPanelWidth = 8;
 
   PackedSymmetric() = default;
@@ -43,10 +42,11 @@ class PackedSymmetric {
   Eigen::MatrixXd full() const;
 
  private:
+  using RowMajorBlock = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   struct Panel {
     const double* diagonal;  ///< the diagonal block's lower triangle, column after column
     Eigen::Index width;
-    Eigen::Map<const Eigen::MatrixXd> below;  ///< rows p + width .. t-1 of its columns
+    Eigen::Map<const RowMajorBlock> below;  ///< rows p + width .. t-1 of its columns
   };
   /// The panel starting at column p, whose values begin at `next` (moved past them).
   Panel panel(Eigen::Index p, const double*& next) const;
