@@ -398,6 +398,18 @@ TEST_P(Tresca, LoadStepsMeasureTheSlipFromTheLastStep) {
 INSTANTIATE_TEST_SUITE_P(Variants, Tresca, ::testing::Values(FetiVariant::feti1, FetiVariant::tfeti),
                          [](const auto& info) { return info.param == FetiVariant::feti1 ? "feti1" : "tfeti"; });
 
+TEST(CoulombSchedule, NextToleranceFollowsTheBoundsTightensAtMostTenfoldAndLandsOnTol) {
+  // 0.1 times 1e-5 rounds to one ulp above 1e-6: the next solve is at tol itself, so that one
+  // solve to tol can end the fixed point (before, a further one-multiplication solve did).
+  EXPECT_NE(0.1 * 1e-5, 1e-6);
+  EXPECT_EQ(next_tresca_tolerance(1e-5, 1e-9, 1e-6), 1e-6);
+  EXPECT_EQ(next_tresca_tolerance(1e-2, 1.0, 1e-6), 1e-2);      // the bounds moved a lot: as loose as before
+  EXPECT_DOUBLE_EQ(next_tresca_tolerance(1e-2, 0.5, 1e-6), 5e-3);  // 0.01 times the bounds' change
+  EXPECT_DOUBLE_EQ(next_tresca_tolerance(1e-2, 1e-6, 1e-6), 1e-3);  // at most ten times tighter
+  EXPECT_EQ(next_tresca_tolerance(1e-6, 1e-9, 1e-6), 1e-6);       // never below what is reachable
+  EXPECT_DOUBLE_EQ(next_tresca_tolerance(1e-4, 5e-3, 1e-8), 5e-5);  // 0.01 times the change, within tenfold
+}
+
 TEST(FrictionInput, BadLawsAreRefusedByName) {
   const auto with = [](const std::function<void(ContactInput&)>& change) {
     ContactInput contact = on_plane(two_subdomains(kDrag));

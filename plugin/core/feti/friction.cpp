@@ -69,8 +69,18 @@ constexpr double kBoundFollowing = 1e-2;
 /// to tol at once (the 2D block forced to slide: 9e-3 -> 1e-6, after which the bounds still
 /// moved by 19 %). Measured against 0.03, 0.05, 0.2 and none ([log](docs/log.md), 2026-11-28).
 constexpr double kLargestTightening = 0.1;
+/// Tolerances whose relative difference is below this are one (products rounded apart).
+constexpr double kToleranceRounding = 1e-12;
 
 }  // namespace
+
+double next_tresca_tolerance(double last, double bound_change, double reachable) {
+  const double next =
+      std::max({reachable, std::min(last, kBoundFollowing * bound_change), kLargestTightening * last});
+  // 0.1 times 1e-5 is one ulp above 1e-6: a tolerance within rounding of the reachable one is
+  // that one, or the fixed point pays one more solve (of one multiplication) to find it met.
+  return next <= reachable * (1 + kToleranceRounding) ? reachable : next;
+}
 
 FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, const FrictionLaw& law,
                                      DualSolveSettings settings, const Vec& start, const std::vector<int>& bodies) {
@@ -164,8 +174,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
       out.dual.status = SolveStatus::max_iterations;
       break;
     }
-    settings.tolerance = std::max({reachable, std::min(settings.tolerance, kBoundFollowing * out.bound_change),
-                                   kLargestTightening * settings.tolerance});
+    settings.tolerance = next_tresca_tolerance(settings.tolerance, out.bound_change, reachable);
     settings.start = start_on_new_bounds(c, out.dual.lambda, g, next);  // from the last one's multipliers
     g = next;
     // ... not settled: settling it on its contact set (settle=, tuned for a start from another

@@ -50,6 +50,13 @@ struct FrictionSolution {
 FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, const FrictionLaw& law,
                                      DualSolveSettings settings, const Vec& start, const std::vector<int>& bodies);
 
+/// The tolerance of the fixed point's next Tresca solve after one that stopped at `last`
+/// and moved the bounds by `bound_change` (relative): kBoundFollowing (0.01) times that
+/// change, no looser than `last`, at most kLargestTightening (0.1) times tighter, never below
+/// `reachable` (the user's tol, or the residual a stagnated solve reached); within rounding
+/// of `reachable`, exactly `reachable`, which ends the fixed point once the bounds hold.
+double next_tresca_tolerance(double last, double bound_change, double reachable);
+
 /// The contact state of each contact row (fetiContact; docs/algorithms.md, "Friction"):
 /// open: no force at all (lambda_n = 0 and no friction force); stick: a force, its friction
 /// force inside its bound (||lambda_t|| < g, or no friction row); slip: at its bound
