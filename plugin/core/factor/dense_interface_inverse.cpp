@@ -31,7 +31,7 @@ namespace {
 /// A full panel's rows below its diagonal block, each read once: y_below(i) += row_i . x_panel
 /// and y_panel += sum over i of row_i x_below(i), the sum in registers (fixed size, so Eigen
 /// vectorizes both). Two GEMVs read every value twice and the result's rows once per column
-/// pass: 8-20 against 14-20 GB/s at t = 128 to 512 (docs/log.md, 2026-12-07).
+/// pass: 7-12 against 15-20 GB/s at t = 128 to 512 on one thread (docs/log.md, 2026-12-07).
 void apply_full_panel_below(const double* rows, Eigen::Index below, const double* x_panel, const double* x_below,
                             double* y_panel, double* y_below) {
   using Row = Eigen::Matrix<double, PackedSymmetric::kPanelWidth, 1>;
