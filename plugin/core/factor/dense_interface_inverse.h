@@ -22,8 +22,9 @@ namespace ffeti {
 /// of a full matrix, and what a product reads.
 class PackedSymmetric {
  public:
-  /// Columns per panel: one row of a panel is a cache line, and the panel's x and its sum
-  /// stay in registers (8 against 4 and 16: docs/log.md, 2026-12-07).
+  /// Columns per panel: one row of a panel is a cache line's worth (64 bytes, not aligned to
+  /// one), and the panel's x and its sum stay in registers (8 against 4 and 16: docs/log.md,
+  /// 2026-12-07).
   static constexpr Eigen::Index kPanelWidth = 8;
 
   PackedSymmetric() = default;

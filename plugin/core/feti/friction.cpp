@@ -59,8 +59,9 @@ constexpr double kWarmFirstSolveTolerance = 0.3;
 /// pulls 2735 multiplications against 2893 with 2 and 2964 with none; the friction page's
 /// cost scenes as many or fewer ([log](docs/log.md), 2026-12-07, twenty-first session).
 constexpr int kFirstSolveSettleRounds = 1;
-/// Each later solve stops at max(tol, min(the last solve's tolerance, kBoundFollowing times
-/// the last relative change of the bounds)): as exact as the fixed point's progress can use.
+/// Each later solve stops at max(reachable (tol, or the residual a stagnated solve reached),
+/// min(the last solve's tolerance, kBoundFollowing times the last relative change of the
+/// bounds)): as exact as the fixed point's progress can use.
 /// 0.1 left solves that stopped at once, their bounds crawling towards the fixed point.
 constexpr double kBoundFollowing = 1e-2;
 /// ... but at most this factor tighter than the last solve: a solve whose start already met

@@ -52,7 +52,7 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
 
 /// The tolerance of the fixed point's next Tresca solve after one that stopped at `last`
 /// and moved the bounds by `bound_change` (relative): kBoundFollowing (0.01) times that
-/// change, no looser than `last`, at most kLargestTightening (0.1) times tighter, never below
+/// change, no looser than `last`, at most ten times tighter (kLargestTightening), never below
 /// `reachable` (the user's tol, or the residual a stagnated solve reached); within rounding
 /// of `reachable`, exactly `reachable`, which ends the fixed point once the bounds hold.
 double next_tresca_tolerance(double last, double bound_change, double reachable);
