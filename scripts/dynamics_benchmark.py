@@ -527,7 +527,9 @@ def render():
         "scene sets its steps up with the conjugate projector (c dt / h of 65 to 200 here); one step",
         "stands out, the first of the 3D run in 15 steps "
         f"({max(int(r['hessian_per_step_max']) for r in rubber if r['dim'] == '3' and r['law'] == 'coulomb')} multiplications: the Coulomb fixed point from the",
-        "static state, where every row starts to slip; not understood yet, docs/log.md).",
+        "static state, where every row starts to slip: loose warm Tresca solves of 1 to 3 multiplications",
+        "report bounds nearly settled, and the ten times tighter solve after them moves the bounds by a",
+        "fifth for hundreds of multiplications; traced in docs/log.md, 2026-12-07, twenty-fifth session).",
         "The steel row is what does not work",
         "yet: with steel's stiffness a step is about a hundred times the time a wave takes to cross",
         "an element, Keff is nearly the floating K (the block's rigid sliding held only by its mass",
