@@ -400,7 +400,7 @@ INSTANTIATE_TEST_SUITE_P(Variants, Tresca, ::testing::Values(FetiVariant::feti1,
 
 TEST(CoulombSchedule, NextToleranceFollowsTheBoundsTightensAtMostTenfoldAndLandsOnTol) {
   // 0.1 times 1e-5 rounds to one ulp above 1e-6: the next solve is at tol itself, so that one
-  // solve to tol can end the fixed point (before, a further one-multiplication solve did).
+  // solve to tol can end the fixed point (before, a further solve at tol did).
   EXPECT_NE(0.1 * 1e-5, 1e-6);
   EXPECT_EQ(next_tresca_tolerance(1e-5, 1e-9, 1e-6), 1e-6);
   EXPECT_EQ(next_tresca_tolerance(1e-2, 1.0, 1e-6), 1e-2);      // the bounds moved a lot: as loose as before

@@ -79,7 +79,8 @@ double next_tresca_tolerance(double last, double bound_change, double reachable)
   const double next =
       std::max({reachable, std::min(last, kBoundFollowing * bound_change), kLargestTightening * last});
   // 0.1 times 1e-5 is one ulp above 1e-6: a tolerance within rounding of the reachable one is
-  // that one, or the fixed point pays one more solve (of one multiplication) to find it met.
+  // that one, or the fixed point pays one more solve at tol to find it met (1 to 100
+  // multiplications in the traces: docs/log.md, 2026-12-07, twenty-fifth session).
   return next <= reachable * (1 + kToleranceRounding) ? reachable : next;
 }
 
