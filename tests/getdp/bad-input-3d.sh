@@ -99,7 +99,7 @@ expect "a flat tetrahedron" \
 expect "a nearly flat tetrahedron" "subdomains\[3\].volumes: ./nearly-flat.msh: physical volume 202: tetrahedron [0-9]* .* is flat or degenerate" \
   "p['mesh'] = 'nearly-flat.msh'"
 expect "a contact_normal that is no choice" \
-  'contact\[0\].contact_normal: must be "master", "slave" or "average", got "normal"' \
+  'contact\[0\].contact_normal: must be "master", "slave", "average" or "flatter", got "normal"' \
   "p['contact'][0]['contact_normal'] = 'normal'"
 expect "a contact_normal on an obstacle" "contact\[0\].contact_normal: applies to node-to-face contact" \
   "p['contact'] = [{'slave': 4, 'obstacle': {'point': [0, 0, 0], 'normal': [0, 0, 1]}, 'contact_normal': 'slave'}]"

@@ -121,7 +121,8 @@ TEST(ContactNormal, AWrongWordOrKindIsRefusedByName) {
   unit.read_option(0, word_position(option, "average"), given);
   EXPECT_EQ(given.input_of<NodeToFaceInput>().normal, ContactNormal::average);
   EXPECT_EQ(word_position(option, "slaves"), -1);
-  EXPECT_EQ(word_refusal(option, "slaves"), "must be \"master\", \"slave\" or \"average\", got \"slaves\"");
+  EXPECT_EQ(word_refusal(option, "slaves"),
+            "must be \"master\", \"slave\", \"average\" or \"flatter\", got \"slaves\"");
   ContactInput mortar;
   mortar.input_of<NodeToFaceInput>().normal = ContactNormal::slave;
   mortar.input_of<NodeToFaceInput>().faces = {{{0, 1, 2, 3, 4, 5, 6, 7, 8}}};
@@ -135,6 +136,38 @@ TEST(ContactNormal, AWrongWordOrKindIsRefusedByName) {
   }
   mortar.input_of<NodeToFaceInput>().normal = ContactNormal::master;
   EXPECT_NO_THROW(NodeToFace().check_combination(mortar));
+  // The default resolves itself per problem, and mortar keeps its master's normals.
+  EXPECT_EQ(NodeToFaceInput().normal, ContactNormal::flatter);
+  mortar.input_of<NodeToFaceInput>().normal = ContactNormal::flatter;
+  EXPECT_NO_THROW(NodeToFace().check_combination(mortar));
+}
+
+/// Unit normals round the axis -z or +z, tilted by 0, tilt / 2 and tilt at eight azimuths: a
+/// cap's normals over a contact whose rim tilts by `tilt` (0: a flat face).
+std::vector<Point3> cap(double tilt, double side) {
+  std::vector<Point3> normals;
+  for (double t : {0.0, tilt / 2, tilt})
+    for (int k = 0; k < 8; ++k) {
+      const double p = k * M_PI / 4;
+      normals.push_back({std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), side * std::cos(t)});
+    }
+  return normals;
+}
+
+TEST(ContactNormal, FlatterTakesTheNormalOfTheFlatterSurface) {
+  // A sphere's cap on a flat block, either side the slave (the master's normals point up, the
+  // slave's own outward ones down): the block's normal.
+  EXPECT_EQ(flatter_side(cap(0.2, 1), cap(0, -1)), ContactNormal::slave);
+  EXPECT_EQ(flatter_side(cap(0, 1), cap(0.2, -1)), ContactNormal::master);
+  // A flatter cap against a rounder one: the flatter's, at a share of half the spread.
+  EXPECT_EQ(flatter_side(cap(0.2, 1), cap(0.05, -1)), ContactNormal::slave);
+  EXPECT_EQ(flatter_side(cap(0.05, 1), cap(0.2, -1)), ContactNormal::master);
+  // Curved alike (two equal spheres, or nearly): the average.
+  EXPECT_EQ(flatter_side(cap(0.2, 1), cap(0.2, -1)), ContactNormal::average);
+  EXPECT_EQ(flatter_side(cap(0.2, 1), cap(0.17, -1)), ContactNormal::average);
+  // Flat on flat, or no slave normals (no slave faces given): the master's.
+  EXPECT_EQ(flatter_side(cap(0, 1), cap(0, -1)), ContactNormal::master);
+  EXPECT_EQ(flatter_side(cap(0.2, 1), {}), ContactNormal::master);
 }
 
 }  // namespace

@@ -9,7 +9,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
 #include <string>
+#include <utility>
 
 namespace ffeti {
 namespace {
@@ -85,6 +88,52 @@ SlaveFan fan_at(const Point3& s, int body, const FaceGrid& grid, ContactNormal n
   return fan;
 }
 
+/// How much unit normals spread: 1 - |their mean| (0 where they agree, about theta^2 / 4 for
+/// normals tilted up to theta round a cap's axis).
+double spread(const std::vector<Point3>& normals) {
+  Point3 sum{0, 0, 0};
+  for (const Point3& n : normals)
+    for (size_t i = 0; i < 3; ++i) sum[i] += n[i];
+  return 1 - std::sqrt(dot(sum, sum)) / static_cast<double>(normals.size());
+}
+
+/// A surface counts as the flatter one when its normals spread by less than this share of
+/// the other's; between the two, the surfaces are curved alike and the rows take the
+/// average (two equal spheres: their common plane).
+constexpr double kFlatterShare = 0.5;
+/// Normals that spread less than this on both sides are flat alike: the master's is kept
+/// (the rows of flat contacts then need no slave faces, nor do their derivatives).
+constexpr double kFlat = 1e-12;
+
+/// A couple of bodies in contact: the slave's body and its master face's.
+using BodyPair = std::pair<int, int>;
+
+/// contactNormal="flatter" resolved per couple of bodies over the slave nodes with a master
+/// face within `reach`: flatter_side of the faces' normals and the slave surface's own; the
+/// master's for a couple where any such slave has no face of its own body in contactFaces.
+std::map<BodyPair, ContactNormal> flatter_normals(const std::vector<SlaveNode>& nodes, const FaceGrid& grid,
+                                                  double reach) {
+  std::map<BodyPair, std::pair<std::vector<Point3>, std::vector<Point3>>> normals;  // master's, slave's
+  std::set<BodyPair> fanless;
+  for (const SlaveNode& node : nodes) {
+    const Point3 s{node.x_dof->x, node.x_dof->y, node.x_dof->z};
+    const FaceRecord* face = grid.nearest(s, node.x_dof->body, reach);
+    if (!face) continue;
+    const BodyPair couple{node.x_dof->body, face->body};
+    const SlaveFan fan = fan_at(s, node.x_dof->body, grid, ContactNormal::slave);
+    if (fan.faces.empty()) {
+      fanless.insert(couple);
+      continue;
+    }
+    normals[couple].first.push_back(unit_normal(face->corners));
+    normals[couple].second.push_back(fan_normal(fan, s, fan.positions));
+  }
+  std::map<BodyPair, ContactNormal> chosen;
+  for (const auto& [couple, both] : normals)
+    chosen[couple] = fanless.count(couple) ? ContactNormal::master : flatter_side(both.first, both.second);
+  return chosen;
+}
+
 std::string where(const Point3& s) {
   return "(" + std::to_string(s[0]) + ", " + std::to_string(s[1]) + ", " + std::to_string(s[2]) + ")";
 }
@@ -100,6 +149,13 @@ Point3 fan_normal(const SlaveFan& fan, const Point3& s, const std::vector<Point3
   }
   const double length = std::sqrt(dot(sum, sum));
   return {sum[0] / length, sum[1] / length, sum[2] / length};
+}
+
+ContactNormal flatter_side(const std::vector<Point3>& master_normals, const std::vector<Point3>& slave_normals) {
+  if (master_normals.empty() || slave_normals.empty()) return ContactNormal::master;
+  const double master = spread(master_normals), slave = spread(slave_normals);
+  if (std::max(master, slave) <= kFlat || master <= kFlatterShare * slave) return ContactNormal::master;
+  return slave <= kFlatterShare * master ? ContactNormal::slave : ContactNormal::average;
 }
 
 Point3 row_direction(ContactNormal normal, const Point3& m, const Point3& o) {
@@ -133,7 +189,7 @@ LinearizedFaceRow FaceGeometry::linearized(const NodeMotion& v, double t, bool c
 
 void NodeToFace::check_combination(const ContactInput& contact) const {
   const ContactNormal normal = contact.input_of<NodeToFaceInput>().normal;
-  if (normal == ContactNormal::master) return;
+  if (normal == ContactNormal::master || normal == ContactNormal::flatter) return;
   if (!list_given(contact) || ffeti::list_given(ContactKind::mortar, contact))
     throw InputError(std::string("contactNormal: \"") + (normal == ContactNormal::slave ? "slave" : "average") +
                      "\" applies to node-to-face contact (contactSlave with contactFaces, the slave surface's faces "
@@ -144,7 +200,7 @@ void NodeToFace::check_combination(const ContactInput& contact) const {
 const ListInput* NodeToFace::list_input() const {
   static const ListInput spec{"contactFaces", 9, "9 dofs per face (a_x, a_y, a_z, b_x, ..., c_z)", "master", 3,
                               MeshEntries::triangles,
-                              {{"contactNormal", "contact_normal", {"master", "slave", "average"},  // ContactNormal's order
+                              {{"contactNormal", "contact_normal", {"master", "slave", "average", "flatter"},  // ContactNormal's order
                                 "node-to-face contact (3 components, a master group)"}}};
   return &spec;
 }
@@ -235,9 +291,13 @@ bool NodeToFace::selected(const ContactRecords& in) const {
 }
 
 void NodeToFace::add_rows(const ContactRecords& in, std::vector<Row>& rows) const {
-  const ContactNormal normal = in.contact.input_of<NodeToFaceInput>().normal;
   const FaceGrid grid(in.faces);
-  for (const SlaveNode& node : slave_nodes(in.records, in.snap, 3)) {
+  const std::vector<SlaveNode> nodes = slave_nodes(in.records, in.snap, 3);
+  const ContactNormal asked = in.contact.input_of<NodeToFaceInput>().normal;
+  const std::map<BodyPair, ContactNormal> flatter =
+      asked == ContactNormal::flatter ? flatter_normals(nodes, grid, in.contact.search_distance)
+                                      : std::map<BodyPair, ContactNormal>();
+  for (const SlaveNode& node : nodes) {
     const Point3 s{node.x_dof->x, node.x_dof->y, node.x_dof->z};
     const FaceRecord* face = grid.nearest(s, node.x_dof->body, in.contact.search_distance);
     // No master face within reach: no row, but a slave over a face beyond it, in front of
@@ -248,6 +308,11 @@ void NodeToFace::add_rows(const ContactRecords& in, std::vector<Row>& rows) cons
     if (!face || (beyond_reach && !over_face(s, face->corners))) continue;
     std::array<DofRef, 9> face_dofs;
     for (size_t k = 0; k < 9; ++k) face_dofs[k] = {face->subdomain, face->dofs[k]};
+    ContactNormal normal = asked;
+    if (asked == ContactNormal::flatter) {  // a slave beyond reach is watched along its face's normal
+      const auto couple = flatter.find({node.x_dof->body, face->body});
+      normal = beyond_reach || couple == flatter.end() ? ContactNormal::master : couple->second;
+    }
     SlaveFan fan;
     if (normal != ContactNormal::master) {
       fan = fan_at(s, node.x_dof->body, grid, normal);

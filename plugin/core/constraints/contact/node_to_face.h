@@ -7,12 +7,15 @@
 #include "constraints/contact/contact_linearization.h"
 #include "constraints/contact/contact_row_geometry.h"
 
+#include <vector>
+
 namespace ffeti {
 
-/// Whose normal a node-to-face row takes (contactNormal=): the master face's (the default),
-/// the slave surface's at the slave node (the area-weighted normals of the slave body's
-/// faces in contactFaces around it), or the two averaged (docs/reference.md, "contactNormal").
-enum class ContactNormal { master, slave, average };
+/// Whose normal a node-to-face row takes (contactNormal=): the master face's, the slave
+/// surface's at the slave node (the area-weighted normals of the slave body's faces in
+/// contactFaces around it), the two averaged, or (flatter, the default) the flatter
+/// surface's, chosen per couple of bodies by flatter_side (docs/reference.md, "contactNormal").
+enum class ContactNormal { master, slave, average, flatter };
 
 /// Node to face's own input (ContactInput::input_of): contactFaces, per subdomain the master
 /// triangles (mortar's master faces too), each the x, y, z dofs of its corners a, b, c,
@@ -22,7 +25,7 @@ enum class ContactNormal { master, slave, average };
 /// interpolated linearly on the face.
 struct NodeToFaceInput {
   std::vector<std::vector<std::array<int, 9>>> faces;
-  ContactNormal normal = ContactNormal::master;  ///< the rows' normal (contactNormal=)
+  ContactNormal normal = ContactNormal::flatter;  ///< the rows' normal (contactNormal=)
 };
 
 /// The slave surface around a slave node, whose normal a row takes with contactNormal
@@ -39,6 +42,15 @@ struct SlaveFan {
 /// The unit outward normal of the slave surface at its node s: the fan's faces' (b - a) x
 /// (c - a) summed (area-weighted), `neighbours` the fan's corners' positions.
 Point3 fan_normal(const SlaveFan& fan, const Point3& s, const std::vector<Point3>& neighbours);
+
+/// contactNormal="flatter": the normal of the flatter surface, judged by how much each side's
+/// unit normals over the rows spread (1 - |their mean|): a curved surface tilts by up to a/R
+/// at the rim of a contact of radius a, and a tilted row spends friction under the normal
+/// load alone (docs/results/friction.md, "Which body is the slave"). master where the master
+/// faces spread at most half as much as the slave surface, or both are flat (spread <= 1e-12)
+/// or a side has none; slave where the slave surface spreads at most half as much; average
+/// between (curved alike: two equal spheres, their common plane).
+ContactNormal flatter_side(const std::vector<Point3>& master_normals, const std::vector<Point3>& slave_normals);
 
 /// The row's normal n (out of the master, towards the slave) for master face normal m:
 /// m, minus the slave's own normal o, or (m - o)/|m - o|.
@@ -102,7 +114,8 @@ class NodeToFace final : public ContactDiscretization {
                  ContactInput& contact) const override;
   /// contactNormal= (its word's position in ContactNormal's order).
   void read_option(size_t option, double value, ContactInput& contact) const override;
-  /// With contactNormal slave or average (the slave surface's faces give the normal).
+  /// With contactNormal other than master (the slave surface's faces give its normal; flatter
+  /// compares it with the master's).
   bool lists_slave_group(const ContactInput& contact) const override {
     return contact.input_of<NodeToFaceInput>().normal != ContactNormal::master;
   }
