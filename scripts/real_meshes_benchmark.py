@@ -6,11 +6,12 @@ non-matching meshes, Total FETI with default options).
 Four runs, each a CSV under docs/results/ and a table of the page (the weak one also a table
 of the kinds of MPRGP's steps):
 - weak: mesh sizes -h from FFETI_REAL_SIZES (default 0.7 0.5 0.35 0.25 0.2 0.155, the page's run) at parts of
-  FFETI_REAL_PART_NODES nodes (default 1000: the part-size table's best count), one after the other,
+  FFETI_REAL_PART_NODES nodes (default 250: the fewest bytes per unknown and no more multiplications
+  than larger parts in the part-size table), one after the other,
   each under FFETI_REAL_TIME_LIMIT_S (default 2400 s) and FFETI_REAL_MEMORY_LIMIT_GIB (default
   23 GiB of address space); the first size that reaches a limit ends the table with a row
   saying which limit and when (a larger size would not fit either);
-- parts: the part size -partNodes 500 ... 3500 at -h 0.5 (counts, memory, times);
+- parts: the part size -partNodes 250 ... 2000 at -h 0.5 (counts, memory, times);
 - peer: FETI against the direct peer (-peer 1: the primal-dual active set method on the
   undivided bodies, MUMPS) at the sizes FFETI_REAL_PEER_SIZES (default 0.7 0.5);
 - undivided: each body one subdomain (no METIS cut) at FFETI_REAL_UNDIVIDED_SIZES (default
@@ -37,8 +38,8 @@ from ffeti_bench import (OUT, OverLimit, begin_run, csv_path, end_run, f, forget
 
 PAGE = "real-meshes"
 SIZES = [float(h) for h in os.environ.get("FFETI_REAL_SIZES", "0.7 0.5 0.35 0.25 0.2 0.155").split()]
-PART_NODES = int(os.environ.get("FFETI_REAL_PART_NODES", "1000"))
-PART_SWEEP = [500, 1000, 2000, 3500]
+PART_NODES = int(os.environ.get("FFETI_REAL_PART_NODES", "250"))
+PART_SWEEP = [250, 500, 1000, 2000]
 PART_SWEEP_H = 0.5
 PEER_SIZES = [float(h) for h in os.environ.get("FFETI_REAL_PEER_SIZES", "0.7 0.5").split()]
 UNDIVIDED_SIZES = [float(h) for h in os.environ.get("FFETI_REAL_UNDIVIDED_SIZES", "0.7 0.5 0.35").split()]
@@ -126,6 +127,17 @@ def nearest_boxes(unknowns):
     return nearest(read_csv("three-dimensions", "elasticity-weak"), unknowns)
 
 
+def peak_kib(row, per="unknowns"):
+    """The process's peak resident set in KiB per unknown: per the parts' unknowns (interface
+    nodes once per part) or, with per="body_unknowns", per the undivided bodies' unknowns."""
+    return f(row, "process_peak_mb") * 1024 / f(row, per)
+
+
+def body_peak_kib(row):
+    """A table cell: peak KiB per unknown of the undivided bodies, "-" where the run did not report them."""
+    return f"{peak_kib(row, 'body_unknowns'):.2f}" if row.get("body_unknowns") else "-"
+
+
 def per_unknown_us(row, key):
     return 1e6 * f(row, key) / f(row, "unknowns")
 
@@ -159,7 +171,7 @@ def plot(weak):
     axes[1].set_ylabel("count")
     axes[1].legend(fontsize=8)
     axes[2].semilogx(unknowns, [f(r, "bytes_factor_per_unknown") / 1024 for r in done], "o-", label="factors")
-    axes[2].semilogx(unknowns, [f(r, "process_peak_mb") * 1048576 / f(r, "unknowns") / 1024 for r in done], "s--",
+    axes[2].semilogx(unknowns, [peak_kib(r) for r in done], "s--",
                      label="whole process (peak)")
     axes[2].set_ylim(bottom=0)
     axes[2].set_ylabel("memory per unknown [KiB]")
@@ -207,8 +219,17 @@ def contact_against_boxes(done):
 
 
 def memory_reading(largest, parts):
-    """The aims' reading of the memory: what the plugin holds per unknown, what smaller parts give."""
-    text = f"The factors alone hold {kib(largest, 'bytes_factor_per_unknown'):.2f} KiB per unknown"
+    """The aims' reading of the memory: the peak per unknown (of the parts and of the undivided
+    bodies), what the plugin holds of it, what other part sizes give, what 24 GiB would hold."""
+    peak = peak_kib(largest)
+    met = lambda kib_per_unknown: "met" if kib_per_unknown <= 2 else "not met"
+    text = f"{peak:.2f} KiB per unknown of the divided problem at the peak (aim: at most 2; {met(peak)})"
+    if largest.get("body_unknowns"):
+        body = peak_kib(largest, "body_unknowns")
+        text += (f", {body:.2f} per unknown of the undivided bodies ({met(body)} on that count: the parts hold "
+                 f"{f(largest, 'unknowns') / f(largest, 'body_unknowns'):.2f} times the bodies' unknowns, each "
+                 "interface node once per part)")
+    text += f". The factors alone hold {kib(largest, 'bytes_factor_per_unknown'):.2f} KiB per unknown"
     if largest.get("bytes_input_per_unknown"):
         text += (f", the plugin's copies of K_s, f_s and coordinates {kib(largest, 'bytes_input_per_unknown'):.2f} "
                  f"(K_s as its lower triangle), its constraint rows {kib(largest, 'bytes_constraint_per_unknown'):.2f} "
@@ -219,16 +240,19 @@ def memory_reading(largest, parts):
                                                     "bytes_constraint_per_unknown", "bytes_kernel_per_unknown", *dual])
         text += (f", the dual system's rows, coarse problem and preconditioner "
                  f"{', '.join(f'{kib(largest, key):.2f}' for key in dual)}: the plugin counts {counted:.2f} KiB per "
-                 f"unknown of the peak's {f(largest, 'process_peak_mb') * 1024 / f(largest, 'unknowns'):.2f}")
-    smallest = min(parts, key=lambda r: int(r["part_nodes"]))
-    text += (f"; parts of {smallest['part_nodes']} nodes hold factors of {kib(smallest, 'bytes_factor_per_unknown'):.2f} "
-             f"KiB per unknown and peak at {f(smallest, 'process_peak_mb') * 1024 / f(smallest, 'unknowns'):.2f} "
-             "('Part size'). The factors' analysis keeps METIS's ordering where it stores fewer values and pads no "
-             "supernodes, and the plugin's K_s is its lower triangle (what each saved: docs/log.md, 2026-12-07). "
-             "Two KiB would take factors of about one KiB (smaller parts, a larger dual; not measured at this size) and "
-             "less of what the process holds beside the plugin (FreeFEM's meshes and vectors, the allocator's "
-             "free pages: docs/log.md, 2026-12-07); where the rest sits is the table 'Memory by phase' below.")
-    return text
+                 f"unknown of the peak's {peak:.2f}; the rest is the script's part meshes and vectors and the "
+                 "solve's work vectors (heaptrack: docs/log.md, 2026-12-07)")
+    by_size = sorted(parts, key=lambda r: int(r["part_nodes"]))
+    text += (f". At -h {PART_SWEEP_H} ('Part size') parts of {by_size[0]['part_nodes']} to {by_size[-1]['part_nodes']} "
+             f"nodes peak at {peak_kib(by_size[0]):.2f} to {peak_kib(by_size[-1]):.2f} KiB per unknown")
+    if all(r.get("body_unknowns") for r in by_size):
+        text += (f" ({peak_kib(by_size[0], 'body_unknowns'):.2f} to {peak_kib(by_size[-1], 'body_unknowns'):.2f} per "
+                 "unknown of the undivided bodies)")
+    reach = 24 * 1024 ** 2 / peak  # KiB in 24 GiB over KiB per unknown
+    text += f". At the largest run's peak per unknown, 24 GiB would hold about {reach / 1e6:.1f} million unknowns"
+    if largest.get("body_unknowns"):
+        text += f" of the divided problem, {24 * 1024 ** 2 / peak_kib(largest, 'body_unknowns') / 1e6:.1f} million of the bodies"
+    return text + " (extrapolated, not run)."
 
 
 def undivided_section(weak):
@@ -355,12 +379,13 @@ def render():
              f"per unknown (gmsh's meshing {per_unknown_us(largest, 'time_gmsh'):.0f} of it at the largest size, "
              f"the plugin's set-up, factorizations and dual solve "
              f"{per_unknown_us(largest, 'time_plugin_setup') + per_unknown_us(largest, 'time_factor') + per_unknown_us(largest, 'time_solve'):.0f}), "
-             f"and the process held {f(largest, 'process_peak_mb') * 1048576 / f(largest, 'unknowns') / 1024:.1f} "
+             f"and the process held {peak_kib(largest):.1f} "
              f"KiB per unknown at its peak, of which the factors "
-             f"{f(largest, 'bytes_factor_per_unknown') / 1024:.1f} KiB.",
+             f"{f(largest, 'bytes_factor_per_unknown') / 1024:.1f} KiB"
+             + (f" ({peak_kib(largest, 'body_unknowns'):.1f} KiB per unknown of the undivided bodies, "
+                f"{f(largest, 'body_unknowns'):,.0f} of them)" if largest.get("body_unknowns") else "") + ".",
              ""]
     boxes = nearest_boxes(f(largest, "unknowns"))
-    peak_kib = f(largest, "process_peak_mb") * 1024 / f(largest, "unknowns")
     lines += ["What the aims of the real-mesh issue came to in this run:", "",
               f"- Multiplications at the largest size against the smallest: {largest['hessian']} / {first['hessian']} = "
               f"{f(largest, 'hessian') / f(first, 'hessian'):.2f} (aim: at most 1.5"
@@ -372,7 +397,7 @@ def render():
               f"took {nearest(done, f(boxes, 'unknowns'))['hessian']}, "
               f"{f(nearest(done, f(boxes, 'unknowns')), 'hessian') / f(boxes, 'hessian'):.1f} times (aim: at most 1.5; "
               f"not met). {contact_against_boxes(done)}",
-              f"- Memory: {peak_kib:.1f} KiB per unknown at the peak (aim: at most 2; not met). {memory_reading(largest, parts)}",
+              f"- Memory: {memory_reading(largest, parts)}",
               f"- Size: {f(largest, 'unknowns'):,.0f} unknowns on this 24 GiB machine (aim: 5 million or more).", ""]
     if stopped:
         s = stopped[0]
@@ -394,8 +419,8 @@ def render():
         ("assembly [s]", ("time_assembly", ".1f")), ("set-up [s]", ("time_plugin_setup", ".1f")),
         ("factorization [s]", ("time_factor", ".1f")), ("dual solve [s]", ("time_solve", ".1f")),
         ("factors [KiB/unknown]", lambda r: f"{f(r, 'bytes_factor_per_unknown') / 1024:.2f}" if r.get("unknowns") else "-"),
-        ("peak [KiB/unknown]",
-         lambda r: f"{f(r, 'process_peak_mb') * 1024 / f(r, 'unknowns'):.2f}" if r.get("unknowns") else "-"),
+        ("peak [KiB/unknown]", lambda r: f"{peak_kib(r):.2f}" if r.get("unknowns") else "-"),
+        ("peak [KiB per body unknown]", lambda r: body_peak_kib(r) if r.get("unknowns") else "-"),
         ("GB/s", lambda r: f"{gbytes_per_second(r):.1f}" if r.get("unknowns") else "-"),
         ("status", lambda r: r["status"] if r["status"] != "stopped" else f"stopped ({r['limit']})")])
     lines += ["", "## Memory by phase", "",
@@ -416,9 +441,9 @@ def render():
         ("dual rows", reported_kib("bytes_dual_rows_per_unknown")),
         ("coarse problem", reported_kib("bytes_coarse_per_unknown")),
         ("preconditioner", reported_kib("bytes_preconditioner_per_unknown")),
-        ("peak", lambda r: f"{f(r, 'process_peak_mb') * 1024 / f(r, 'unknowns'):.2f}")])
+        ("peak", lambda r: f"{peak_kib(r):.2f}"), ("peak per body unknown", body_peak_kib)])
     lines += ["", "## Part size", "",
-              f"The same scene at -h {PART_SWEEP_H} cut into parts of 500 to 3500 nodes: smaller parts hold "
+              f"The same scene at -h {PART_SWEEP_H} cut into parts of {PART_SWEEP[0]} to {PART_SWEEP[-1]} nodes: smaller parts hold "
               "sparser factors (less memory per unknown, cheaper solves) against a larger dual and coarse problem.", ""]
     lines += markdown_table(parts, [
         ("nodes per part: asked / mean (interface nodes in each part)", lambda r: f"{r['part_nodes']} / {r['nodes_per_part']}"), ("parts", "subdomains"),
@@ -426,7 +451,7 @@ def render():
         ("factorization [s]", ("time_factor", ".1f")), ("dual solve [s]", ("time_solve", ".1f")),
         ("whole run [s]", lambda r: f"{whole(r):.1f}"),
         ("factors [KiB/unknown]", lambda r: f"{f(r, 'bytes_factor_per_unknown') / 1024:.2f}"),
-        ("peak [KiB/unknown]", lambda r: f"{f(r, 'process_peak_mb') * 1024 / f(r, 'unknowns'):.2f}")])
+        ("peak [KiB/unknown]", lambda r: f"{peak_kib(r):.2f}"), ("peak [KiB per body unknown]", body_peak_kib)])
     lines += ["", "## The direct peer", "",
               "The undivided bodies by the primal-dual active set method with MUMPS on the contact rows the plugin "
               "builds for one subdomain per body: the same discrete problem, a second method.", ""]
