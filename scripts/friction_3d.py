@@ -361,8 +361,11 @@ def sides_section(sides, flat_default):
         f"{span(errors('block', 'mortar', 'master'), '.1%')}). So: take the flatter surface's normal, `\"master\"`",
         "when it is the master, `\"slave\"` when it is the slave ([reference](../reference.md), `contactNormal`).",
         "The default, `\"flatter\"`, makes that choice: it compares how much the two surfaces' normals spread",
-        f"over the rows and took the block's on either side here ({chosen('sphere', 'node')} with the sphere as",
-        f"slave, {chosen('block', 'node')} with the block; the same c/a as those rows). At Q/(μP) = 0.9 the aim of 5 %",
+        "over the rows, " + ("and took the block's with either body as slave here (c/a equal to that of the rows on the "
+                             "block's normal, to 1e-9)." if chosen("sphere", "node") == chosen("block", "node") == "block (chosen)"
+                             else f"and here took: with the sphere as slave {chosen('sphere', 'node')}, with the block "
+                                  f"{chosen('block', 'node')}."),
+        "At Q/(μP) = 0.9 the aim of 5 %",
         f"needs a finer mesh than h = {fine} mm on either side ({span(at_09, '.1%')}). On the scene's default mesh",
         f"(h = {MESH} mm; the sphere as slave is the first table's run, the block as slave from "
         f"{own_run_words(PAGE, SIDES_RUN, PAGE_RUN)}):",
