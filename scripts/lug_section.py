@@ -20,7 +20,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import LineCollection, PolyCollection  # noqa: E402
 
-from ffeti_bench import OUT, f, machine_line, markdown_table, read_csv, run, write_csv  # noqa: E402
+from ffeti_bench import OUT, csv_path, f, machine_line, markdown_table, read_csv, run, write_csv  # noqa: E402
 
 SCRIPT = "lug-opt-3d.edp"
 PAGE, TABLE = "shape-optimization", "lug"
@@ -230,7 +230,8 @@ CHECK_COLUMNS = [("contact", "contact"), ("variables", "variables"), ("unknowns"
 def section():
     rows, history, fields, checks = (read_csv(PAGE, t) for t in (TABLE, f"{TABLE}-history", f"{TABLE}-fields",
                                                                   f"{TABLE}-checks"))
-    run_row = read_csv(PAGE, f"{TABLE}-run")[0]
+    # A run of this section on its own (--only-lug) records its machine; the page's whole run forgets it.
+    own_run = read_csv(PAGE, f"{TABLE}-run")[0] if os.path.exists(csv_path(PAGE, f"{TABLE}-run")) else None
     contour_picture(fields, rows, "shape-optimization-lug-contours.png")
     stress_picture(fields, rows, "shape-optimization-lug-stress.png")
     history_picture(history, rows, "shape-optimization-lug-history.png")
@@ -272,8 +273,9 @@ def section():
         f"Raw data: [{PAGE}-{TABLE}.csv]({PAGE}-{TABLE}.csv) (one row per loop),",
         f"[{PAGE}-{TABLE}-history.csv]({PAGE}-{TABLE}-history.csv) (per design),",
         f"[{PAGE}-{TABLE}-fields.csv]({PAGE}-{TABLE}-fields.csv) (the stresses of the pictures),",
-        f"[{PAGE}-{TABLE}-checks.csv]({PAGE}-{TABLE}-checks.csv). This section's runs were made apart from the",
-        f"rest of the page ([{PAGE}-{TABLE}-run.csv]({PAGE}-{TABLE}-run.csv)): {machine_line(run_row)}",
+        f"[{PAGE}-{TABLE}-checks.csv]({PAGE}-{TABLE}-checks.csv)." +
+        (f" This section's runs were made apart from the rest of the page ([{PAGE}-{TABLE}-run.csv]"
+         f"({PAGE}-{TABLE}-run.csv)): {machine_line(own_run)}" if own_run else " From the page's run."),
         "",
         *markdown_table(rows[:len(LOOPS)], COLUMNS),
         "",
