@@ -106,9 +106,15 @@ MEMORY_PHASES = [("meshes read", "mb_meshes"), ("parts cut", "mb_parts"), ("asse
                  ("set up", "mb_setup"), ("solved", "mb_solve")]
 
 
+def mib_as_kib_per_unknown(row, key, per="unknowns"):
+    """The MiB in `key` as KiB per unknown: per the parts' unknowns (interface nodes once per
+    part) or, with per="body_unknowns", per the undivided bodies' unknowns."""
+    return f(row, key) * 1024 / f(row, per)
+
+
 def per_unknown_kib(key):
     """A table cell: the resident MiB in `key` as KiB per unknown."""
-    return lambda r: f"{f(r, key) * 1024 / f(r, 'unknowns'):.2f}"
+    return lambda r: f"{mib_as_kib_per_unknown(r, key):.2f}"
 
 
 def reported_kib(key):
@@ -128,9 +134,8 @@ def nearest_boxes(unknowns):
 
 
 def peak_kib(row, per="unknowns"):
-    """The process's peak resident set in KiB per unknown: per the parts' unknowns (interface
-    nodes once per part) or, with per="body_unknowns", per the undivided bodies' unknowns."""
-    return f(row, "process_peak_mb") * 1024 / f(row, per)
+    """The process's peak resident set in KiB per unknown (mib_as_kib_per_unknown's `per`)."""
+    return mib_as_kib_per_unknown(row, "process_peak_mb", per)
 
 
 def body_peak_kib(row):

@@ -136,7 +136,7 @@ TEST(ContactNormal, AWrongWordOrKindIsRefusedByName) {
   }
   mortar.input_of<NodeToFaceInput>().normal = ContactNormal::master;
   EXPECT_NO_THROW(NodeToFace().check_combination(mortar));
-  // The default resolves itself per problem, and mortar keeps its master's normals.
+  // The default resolves itself per couple of bodies, and mortar keeps its master's normals.
   EXPECT_EQ(NodeToFaceInput().normal, ContactNormal::flatter);
   mortar.input_of<NodeToFaceInput>().normal = ContactNormal::flatter;
   EXPECT_NO_THROW(NodeToFace().check_combination(mortar));
