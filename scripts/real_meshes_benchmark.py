@@ -17,11 +17,14 @@ of the kinds of MPRGP's steps):
 - undivided: each body one subdomain (no METIS cut) at FFETI_REAL_UNDIVIDED_SIZES (default
   0.7 0.5 0.35): the multiplications the contact alone takes, against the weak table's;
 - scaling: the preconditioner's weights, multiplicity (the default) against stiffness
-  (fetiSetup's scaling=), at FFETI_REAL_SCALING_SIZES (default 0.7 0.5 0.35 0.25), parts as weak.
+  (fetiSetup's scaling=), at FFETI_REAL_SCALING_SIZES (default 0.7 0.5 0.35 0.25 0.2 0.155), parts as weak;
+- preconditioner: lumped (the default) against Dirichlet (fetiSetup's preconditioner=), at
+  FFETI_REAL_PRECONDITIONER_SIZES (default 0.7 0.5 0.35 0.25 0.2), parts as weak.
 Times are wall clock on the machine as it was (its load is in the run's row); counts
 (Hessian multiplications, outer iterations) and bytes do not depend on the machine.
-Usage: scripts/real_meshes_benchmark.py [--render | --only undivided | --only scaling] (--render:
-the page from the CSVs alone; --only undivided or scaling: that table alone, with its own run row).
+Usage: scripts/real_meshes_benchmark.py [--render | --only undivided | --only scaling |
+--only preconditioner] (--render: the page from the CSVs alone; --only PART: that table alone,
+with its own run row).
 FFETI_RUN_DIR=build/edp-tests runs the build's plugin."""
 import math
 import os
@@ -43,8 +46,15 @@ PART_SWEEP = [250, 500, 1000, 2000]
 PART_SWEEP_H = 0.5
 PEER_SIZES = [float(h) for h in os.environ.get("FFETI_REAL_PEER_SIZES", "0.7 0.5").split()]
 UNDIVIDED_SIZES = [float(h) for h in os.environ.get("FFETI_REAL_UNDIVIDED_SIZES", "0.7 0.5 0.35").split()]
-SCALING_SIZES = [float(h) for h in os.environ.get("FFETI_REAL_SCALING_SIZES", "0.7 0.5 0.35 0.25").split()]
-SCALINGS = ["multiplicity", "stiffness"]
+# Tables of one fetiSetup option, its default first, side by side at each size (parts as weak):
+# name -> the scene's flag, the values, the sizes.
+SIDE_BY_SIDE = {
+    "scaling": ("-scaling", ["multiplicity", "stiffness"],
+                [float(h) for h in os.environ.get("FFETI_REAL_SCALING_SIZES", "0.7 0.5 0.35 0.25 0.2 0.155").split()]),
+    "preconditioner": ("-preconditioner", ["lumped", "dirichlet"],
+                       [float(h) for h in os.environ.get("FFETI_REAL_PRECONDITIONER_SIZES",
+                                                         "0.7 0.5 0.35 0.25 0.2").split()]),
+}
 ONE_PART_PER_BODY = 10 ** 9  # -partNodes above any body's node count: ffetiMetis3 makes one part
 TIME_LIMIT_S = float(os.environ.get("FFETI_REAL_TIME_LIMIT_S", "2400"))
 MEMORY_LIMIT_MB = 1024 * float(os.environ.get("FFETI_REAL_MEMORY_LIMIT_GIB", "23"))
@@ -74,8 +84,9 @@ def measure():
     write_csv(PAGE, "parts", [scene(PART_SWEEP_H, nodes) for nodes in PART_SWEEP])
     write_csv(PAGE, "peer", [scene(h, PART_NODES, "-peer", 1, "-DwithMUMPS=1") for h in PEER_SIZES])
     measure_undivided_table()
-    measure_scaling_table()
-    for table in ("undivided-run", "scaling-run"):
+    for name in SIDE_BY_SIDE:
+        measure_side_by_side_table(name)
+    for table in ["undivided-run"] + [f"{name}-run" for name in SIDE_BY_SIDE]:
         forget_run(PAGE, table)  # the table is this run's now
     end_run(PAGE, begun)
 
@@ -91,15 +102,18 @@ def measure_undivided():
     end_run(PAGE, begun, table="undivided-run")
 
 
-def measure_scaling_table():
-    write_csv(PAGE, "scaling", [scene(h, PART_NODES, "-scaling", scaling) for h in SCALING_SIZES for scaling in SCALINGS])
+def measure_side_by_side_table(name):
+    flag, values, sizes = SIDE_BY_SIDE[name]
+    write_csv(PAGE, name, [scene(h, PART_NODES, flag, value) for h in sizes for value in values])
 
 
-def measure_scaling():
-    """The scaling table alone (--only scaling), with its own run row."""
-    begun = begin_run()
-    measure_scaling_table()
-    end_run(PAGE, begun, table="scaling-run")
+def measure_side_by_side(name):
+    """One side-by-side table alone (--only NAME), with its own run row."""
+    def measure_alone():
+        begun = begin_run()
+        measure_side_by_side_table(name)
+        end_run(PAGE, begun, table=f"{name}-run")
+    return measure_alone
 
 
 MEMORY_PHASES = [("meshes read", "mb_meshes"), ("parts cut", "mb_parts"), ("assembled", "mb_assembly"),
@@ -210,6 +224,23 @@ def counts_without_cuts(done):
     return text + "."
 
 
+def growth_by_option():
+    """The aims' reading of the side-by-side tables: each option value's count at its table's
+    first and last size."""
+    parts = []
+    for name, (flag, values, _) in SIDE_BY_SIDE.items():
+        if not os.path.exists(csv_path(PAGE, name)):
+            continue
+        rows = read_csv(PAGE, name)
+        for value in values[1:]:
+            mine = sorted((r for r in rows if r[name] == value), key=lambda r: -float(r["h"]))
+            if len(mine) > 1:
+                low, high = mine[0], mine[-1]
+                parts.append(f"with `{name} = \"{value}\"` {low['hessian']} at -h {low['h']} and {high['hessian']} at "
+                             f"-h {high['h']} ({f(high, 'hessian') / f(low, 'hessian'):.2f} times)")
+    return ("Other options, side by side with the defaults below: " + "; ".join(parts) + ".") if parts else ""
+
+
 def contact_against_boxes(done):
     """The aims' reading: the contact problem alone against the boxes' smallest count, and
     what the cuts add at the same sizes."""
@@ -285,50 +316,93 @@ def undivided_section(weak):
     return lines
 
 
-def scaling_section():
-    """Multiplicity against stiffness scaling at each mesh size, side by side from one run."""
-    if not os.path.exists(csv_path(PAGE, "scaling")):
+def side_by_side_section(name, title, intro, reading):
+    """The option `name`'s values side by side at each size, from one run; `reading(ratio_range,
+    growth_text, growth, largest)` the text after the table: the range of the other value's
+    multiplications over the default's, the growth from the first size to the last (as a
+    sentence, and as the default's and the other's ratios), and the two rows of the last size."""
+    if not os.path.exists(csv_path(PAGE, name)):
         return []
-    rows = read_csv(PAGE, "scaling")
-    by = {(r["h"], r["scaling"]): r for r in rows}
+    _, (default, other), _ = SIDE_BY_SIDE[name]
+    rows = read_csv(PAGE, name)
+    by = {(r["h"], r[name]): r for r in rows}
     sizes = sorted({r["h"] for r in rows}, key=lambda h: -float(h))
-    lines = ["", "## The preconditioner's weights", "",
-             "`fetiSetup`'s `scaling`: the lumped preconditioner weighs the two sides of each row by multiplicity "
-             "(the default, A = (BB')⁻¹) or by stiffness (A = (B D⁻¹ B')⁻¹, D the diagonal of each K_s: Rixen and "
-             "Farhat's k-scaling; [algorithms](../algorithms.md)), at parts of about "
-             f"{PART_NODES} nodes, everything else the defaults; both in one run, one after the other at each size."]
-    if os.path.exists(csv_path(PAGE, "scaling-run")):
-        lines += ["This table was measured on its own (`--only scaling`): " + machine_line(read_csv(PAGE, "scaling-run")[0])]
+    lines = ["", f"## {title}", "", intro]
+    if os.path.exists(csv_path(PAGE, f"{name}-run")):
+        lines += [f"This table was measured on its own (`--only {name}`): " + machine_line(read_csv(PAGE, f"{name}-run")[0])]
     lines += [""]
     table = []
     for h in sizes:
-        m, k = by.get((h, "multiplicity")), by.get((h, "stiffness"))
-        if not (m and k):
+        d, o = by.get((h, default)), by.get((h, other))
+        if not (d and o):
             continue
-        table.append(dict(h=h, unknowns=m["unknowns"], parts=m["subdomains"],
-                          hm=f"{m['hessian']} ({m['outer']})", hk=f"{k['hessian']} ({k['outer']})",
-                          ratio=f"{f(k, 'hessian') / f(m, 'hessian'):.2f}",
-                          tm=f"{f(m, 'time_solve'):.1f}", tk=f"{f(k, 'time_solve'):.1f}",
-                          energy=f"{abs(f(k, 'energy') - f(m, 'energy')) / abs(f(m, 'energy')):.1e}",
-                          status=f"{m['status']} / {k['status']}"))
+        table.append(dict(h=h, unknowns=d["unknowns"], parts=d["subdomains"],
+                          hd=f"{d['hessian']} ({d['outer']}; {d['cg']})", ho=f"{o['hessian']} ({o['outer']}; {o['cg']})",
+                          ratio=f"{f(o, 'hessian') / f(d, 'hessian'):.2f}",
+                          fd=f"{f(d, 'time_factor'):.1f}", fo=f"{f(o, 'time_factor'):.1f}",
+                          td=f"{f(d, 'time_solve'):.1f}", to=f"{f(o, 'time_solve'):.1f}",
+                          pd=f"{peak_kib(d):.2f}", po=f"{peak_kib(o):.2f}",
+                          energy=f"{abs(f(o, 'energy') - f(d, 'energy')) / abs(f(d, 'energy')):.1e}",
+                          status=f"{d['status']} / {o['status']}"))
     lines += markdown_table(table, [
         ("h", "h"), ("unknowns", ("unknowns", ",.0f")), ("parts", "parts"),
-        ("multiplicity: Hessian (outer)", "hm"), ("stiffness: Hessian (outer)", "hk"), ("stiffness / multiplicity", "ratio"),
-        ("dual solve [s]: multiplicity", "tm"), ("stiffness", "tk"), ("energies' relative difference", "energy"),
-        ("status", "status")])
+        (f"{default}: Hessian (outer; CG)", "hd"), (f"{other}: Hessian (outer; CG)", "ho"),
+        (f"{other} / {default}", "ratio"),
+        (f"factorization [s]: {default}", "fd"), (other, "fo"), (f"dual solve [s]: {default}", "td"), (other, "to"),
+        (f"peak [KiB/unknown]: {default}", "pd"), (other, "po"),
+        ("energies' relative difference", "energy"), ("status", "status")])
     ratios = [float(r["ratio"]) for r in table]
-    growth = [f(by[(sizes[-1], s)], "hessian") / f(by[(sizes[0], s)], "hessian") for s in SCALINGS
-              if (sizes[-1], s) in by and (sizes[0], s) in by]
-    if ratios:
-        lines += ["", f"Reading: stiffness scaling took {min(ratios):.2f} to {max(ratios):.2f} times the multiplications "
-                  f"of multiplicity scaling here; from -h {sizes[0]} to -h {sizes[-1]} the count grew "
-                  + (f"{growth[0]:.2f} times with multiplicity and {growth[1]:.2f} times with stiffness scaling"
-                     if len(growth) == 2 else "-")
-                  + ". The default stays multiplicity: over the whole test suite stiffness scaling passed every "
-                  "check but moved the counts the tests pin both ways (the 2D Hertz and several-bodies lessons "
-                  "fewer, the friction, 3D and impact lessons more; [log](../log.md), 2026-12-07, twenty-first "
-                  "session); on regular grids, whose sides are equally stiff, the two are the same."]
+    growth = [f(by[(sizes[-1], v)], "hessian") / f(by[(sizes[0], v)], "hessian") for v in (default, other)
+              if (sizes[-1], v) in by and (sizes[0], v) in by]
+    if ratios and len(growth) == 2:
+        lines += ["", reading(f"{min(ratios):.2f} to {max(ratios):.2f}",
+                              f"from -h {sizes[0]} to -h {sizes[-1]} the count grew {growth[0]:.2f} times with "
+                              f"{default} and {growth[1]:.2f} times with {other}",
+                              growth, (by[(sizes[-1], default)], by[(sizes[-1], other)]))]
     return lines
+
+
+def scaling_section():
+    """Multiplicity against stiffness scaling at each mesh size."""
+    return side_by_side_section(
+        "scaling", "The preconditioner's weights",
+        "`fetiSetup`'s `scaling`: the lumped preconditioner weighs the two sides of each row by multiplicity "
+        "(the default, A = (BB')⁻¹) or by stiffness (A = (B D⁻¹ B')⁻¹, D the diagonal of each K_s: Rixen and "
+        "Farhat's k-scaling; [algorithms](../algorithms.md)), at parts of about "
+        f"{PART_NODES} nodes, everything else the defaults; both in one run, one after the other at each size.",
+        lambda ratios, growth, _, __: (
+            f"Reading: stiffness scaling took {ratios} times the multiplications of multiplicity scaling here; "
+            f"{growth}. The default stays multiplicity: over the whole test suite stiffness scaling passed every "
+            "check but moved the counts the tests pin both ways (the 2D Hertz and several-bodies lessons "
+            "fewer, the friction, 3D and impact lessons more; [log](../log.md), 2026-12-07, twenty-first "
+            "session); on regular grids, whose sides are equally stiff, the two are the same."))
+
+
+def preconditioner_section():
+    """The lumped against the Dirichlet preconditioner at each mesh size."""
+    return side_by_side_section(
+        "preconditioner", "Lumped or Dirichlet preconditioner",
+        "`fetiSetup`'s `preconditioner`: lumped (the default: B_s K_s B_s' per subdomain, no factorization) "
+        "or Dirichlet (K_s's Schur complement on the constrained dofs: one more factorization per part; "
+        "[algorithms](../algorithms.md)), at parts of about "
+        f"{PART_NODES} nodes, everything else the defaults; both in one run, one after the other at each size. "
+        "In brackets SMALBE's outer iterations and MPRGP's conjugate gradient steps.",
+        preconditioner_reading)
+
+
+def preconditioner_reading(ratios, growth_text, growth, largest):
+    lumped, dirichlet = largest
+    flatter = growth[1] < 0.9 * growth[0]
+    return (f"Reading: the Dirichlet preconditioner took {ratios} times the lumped one's multiplications here; "
+            f"{growth_text}. "
+            + ("It flattens the growth: part of what grows on these parts is the lumped preconditioner's. "
+               if flatter else
+               "It does not flatten the growth: what grows on these parts is not the lumped preconditioner's "
+               "(the undivided bodies and the expansions above say where it is). ")
+            + f"At -h {lumped['h']} it took {f(dirichlet, 'time_factor') / f(lumped, 'time_factor'):.2f} times the "
+            f"factorization time, {f(dirichlet, 'time_solve') / f(lumped, 'time_solve'):.2f} times the dual solve's and "
+            f"{peak_kib(dirichlet) / peak_kib(lumped):.2f} times the peak memory. The default stays lumped"
+            + (" (a default changes only with every page re-run under it)." if flatter else "."))
 
 
 def step_kinds_section(weak):
@@ -398,6 +472,7 @@ def render():
               f"- Multiplications at the largest size against the smallest: {largest['hessian']} / {first['hessian']} = "
               f"{f(largest, 'hessian') / f(first, 'hessian'):.2f} (aim: at most 1.5"
               f"{'; not met' if f(largest, 'hessian') > 1.5 * f(first, 'hessian') else ''}). {counts_without_cuts(done)} "
+              f"{growth_by_option()} "
               "What grows is in 'Where the multiplications go' below: the expansions that find the active set, "
               "and the conjugate gradient steps after each.",
               f"- Against the 3D boxes at a similar size (three-dimensions.md, {f(boxes, 'unknowns'):,.0f} unknowns: "
@@ -472,11 +547,13 @@ def render():
     lines += step_kinds_section(weak)
     lines += undivided_section(weak)
     lines += scaling_section()
+    lines += preconditioner_section()
     lines += ["", "Tables: `real-meshes-weak.csv`, `real-meshes-parts.csv`, `real-meshes-peer.csv`, "
-              "`real-meshes-undivided.csv`, `real-meshes-scaling.csv`, `real-meshes-run.csv`; "
+              "`real-meshes-undivided.csv`, `real-meshes-scaling.csv`, `real-meshes-preconditioner.csv`, `real-meshes-run.csv`; "
               "`scripts/real_meshes_benchmark.py --render` redraws the page from them.", ""]
     save_page(f"{PAGE}.md", lines)
 
 
 if __name__ == "__main__":
-    measure_and_render(__doc__, measure, render, parts={"undivided": measure_undivided, "scaling": measure_scaling})
+    measure_and_render(__doc__, measure, render, parts={"undivided": measure_undivided,
+                                                               **{name: measure_side_by_side(name) for name in SIDE_BY_SIDE}})
