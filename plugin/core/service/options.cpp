@@ -129,9 +129,10 @@ std::vector<Option> make_options() {
        "how the lumped and Dirichlet preconditioners weigh the two sides of each row: `\"multiplicity\"` A = (BB')⁻¹ "
        "(at a node on m subdomains 1/m); `\"stiffness\"` by the stiffness of the other sides there, A = "
        "(B D⁻¹ B')⁻¹ with D the diagonal of each K_s, and D⁻¹ on both sides of K_s (Rixen and Farhat's "
-       "k-scaling): the same where the sides are equally stiff (regular grids); with the lumped one fewer "
-       "multiplications on unstructured METIS parts (the crowned punch: 0.79 to 0.95 times, [real "
-       "meshes](results/real-meshes.md#the-preconditioners-weights)), with the Dirichlet one not measured there "
+       "k-scaling): the same where the sides are equally stiff (regular grids); with the lumped one 0.78 to "
+       "1.05 times the multiplications on unstructured METIS parts (the crowned punch up to 6.5 million "
+       "unknowns, [real meshes](results/real-meshes.md#the-preconditioners-weights)), with the Dirichlet one "
+       "not measured there "
        "(more on membranes graded 1:1000, `tests/unit/feti_problem_test.cpp`). "
        "For speed only: the same answers to tol. Ignored with `preconditioner = \"none\"`",
        [](SolverSettings& s, const OptionValue& v) {
