@@ -228,7 +228,7 @@ def growth_by_option():
     """The aims' reading of the side-by-side tables: each option value's count at its table's
     first and last size."""
     parts = []
-    for name, (flag, values, _) in SIDE_BY_SIDE.items():
+    for name, (_, values, __) in SIDE_BY_SIDE.items():
         if not os.path.exists(csv_path(PAGE, name)):
             continue
         rows = read_csv(PAGE, name)
