@@ -224,6 +224,13 @@ def counts_without_cuts(done):
     return text + "."
 
 
+def first_and_last(rows, name, value):
+    """The rows of a side-by-side table where option `name` has `value`, at its coarsest and its
+    finest size (None where fewer than two sizes ran)."""
+    mine = sorted((r for r in rows if r[name] == value), key=lambda r: -float(r["h"]))
+    return (mine[0], mine[-1]) if len(mine) > 1 else None
+
+
 def growth_by_option():
     """The aims' reading of the side-by-side tables: each option value's count at its table's
     first and last size."""
@@ -233,9 +240,9 @@ def growth_by_option():
             continue
         rows = read_csv(PAGE, name)
         for value in values[1:]:
-            mine = sorted((r for r in rows if r[name] == value), key=lambda r: -float(r["h"]))
-            if len(mine) > 1:
-                low, high = mine[0], mine[-1]
+            ends = first_and_last(rows, name, value)
+            if ends:
+                low, high = ends
                 parts.append(f"with `{name} = \"{value}\"` {low['hessian']} at -h {low['h']} and {high['hessian']} at "
                              f"-h {high['h']} ({f(high, 'hessian') / f(low, 'hessian'):.2f} times)")
     return ("Other options, side by side with the defaults below: " + "; ".join(parts) + ".") if parts else ""
@@ -352,13 +359,13 @@ def side_by_side_section(name, title, intro, reading):
         (f"peak [KiB/unknown]: {default}", "pd"), (other, "po"),
         ("energies' relative difference", "energy"), ("status", "status")])
     ratios = [float(r["ratio"]) for r in table]
-    growth = [f(by[(sizes[-1], v)], "hessian") / f(by[(sizes[0], v)], "hessian") for v in (default, other)
-              if (sizes[-1], v) in by and (sizes[0], v) in by]
-    if ratios and len(growth) == 2:
+    ends = [first_and_last(rows, name, v) for v in (default, other)]
+    if ratios and all(ends):
+        growth = [f(high, "hessian") / f(low, "hessian") for low, high in ends]
         lines += ["", reading(f"{min(ratios):.2f} to {max(ratios):.2f}",
-                              f"from -h {sizes[0]} to -h {sizes[-1]} the count grew {growth[0]:.2f} times with "
-                              f"{default} and {growth[1]:.2f} times with {other}",
-                              growth, (by[(sizes[-1], default)], by[(sizes[-1], other)]))]
+                              f"from -h {ends[0][0]['h']} to -h {ends[0][1]['h']} the count grew {growth[0]:.2f} "
+                              f"times with {default} and {growth[1]:.2f} times with {other}",
+                              growth, (ends[0][1], ends[1][1]))]
     return lines
 
 
@@ -402,7 +409,7 @@ def preconditioner_reading(ratios, growth_text, growth, largest):
             + f"At -h {lumped['h']} it took {f(dirichlet, 'time_factor') / f(lumped, 'time_factor'):.2f} times the "
             f"factorization time, {f(dirichlet, 'time_solve') / f(lumped, 'time_solve'):.2f} times the dual solve's and "
             f"{peak_kib(dirichlet) / peak_kib(lumped):.2f} times the peak memory. The default stays lumped"
-            + (" (a default changes only with every page re-run under it)." if flatter else "."))
+            + (" until every page is re-run with the Dirichlet one." if flatter else "."))
 
 
 def step_kinds_section(weak):

@@ -131,8 +131,8 @@ std::vector<Option> make_options() {
        "(B D⁻¹ B')⁻¹ with D the diagonal of each K_s, and D⁻¹ on both sides of K_s (Rixen and Farhat's "
        "k-scaling): the same where the sides are equally stiff (regular grids); with the lumped one 0.78 to "
        "1.05 times the multiplications on unstructured METIS parts (the crowned punch up to 6.5 million "
-       "unknowns, [real meshes](results/real-meshes.md#the-preconditioners-weights)), with the Dirichlet one "
-       "not measured there "
+       "unknowns, [real meshes](results/real-meshes.md#the-preconditioners-weights)); stiffness weights with "
+       "the Dirichlet one not measured there "
        "(more on membranes graded 1:1000, `tests/unit/feti_problem_test.cpp`). "
        "For speed only: the same answers to tol. Ignored with `preconditioner = \"none\"`",
        [](SolverSettings& s, const OptionValue& v) {
