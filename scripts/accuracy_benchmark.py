@@ -649,7 +649,7 @@ def plot(data, tol_range):
     fig.savefig(os.path.join(OUT, "accuracy-tolerance.png"), dpi=110)
     plt.close(fig)
 
-    fig, axes = plt.subplots(1, 2, figsize=(12, 4.6))
+    fig, axes = plt.subplots(1, 2, figsize=(12, 6.2))
     for k, (reference, rows) in enumerate(data):
         error = [max(f(r, "u_error"), 1e-16) for r in rows]
         axes[0].loglog([f(r, "seconds") for r in rows], error, style(k), label=reference["scene"], ms=4)
@@ -659,9 +659,11 @@ def plot(data, tol_range):
     for ax in axes:
         ax.set_ylabel("solution error ||u - u_ref||_inf / ||u_ref||_inf")
         ax.grid(True, which="both", alpha=0.3)
-    axes[1].legend(fontsize=7)
+    # Below both panels: inside one it hid that panel's curves at small errors.
+    handles, labels = axes[1].get_legend_handles_labels()
+    fig.legend(handles, labels, fontsize=7, ncol=3, loc="lower center")
     fig.suptitle(f"Accuracy against cost, tol = {tol_range} (one point per tol)")
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.16, 1, 1))
     fig.savefig(os.path.join(OUT, "accuracy-and-time.png"), dpi=110)
     plt.close(fig)
 
