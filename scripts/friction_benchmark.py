@@ -3,7 +3,7 @@
 against the analytic tractions for three Q/(mu P), the stick/slip map, the Coulomb fixed
 point's iterations and Hessian multiplications against the frictionless solve of the same
 scene, their growth with h at fixed subdomain size, the block on a slope, the cost of
-every friction scene before and after the fixed point's change (scripts/friction_cost.py),
+every friction scene before and after the change of how Coulomb's law is solved (scripts/friction_cost.py),
 and the sphere in three dimensions (scripts/friction_3d.py). Writes docs/results/friction.md
 and its plots from one run on this machine."""
 import argparse
@@ -38,7 +38,7 @@ MINDLIN = [("Q/(μP)", ("q_ratio", ".3f")), ("c/a", ("stick_ratio", ".4f")), ("a
            ("error", ("stick_ratio_error", ".1%")), ("stick zone centre [mm]", ("stick_centre", ".2f")),
            ("a [mm]", ("a", ".3f")), ("a Hertz", ("a_hertz", ".3f")),
            ("Σλ_t vs Q", ("balance_error", ".1e")), ("L2 error p, q", lambda r: f"{r['pressure_l2']:.1%}, {r['shear_l2']:.1%}"), ("stick / slip rows", lambda r: f"{r['sticking']} / {r['slipping']}"),
-           ("fixed point: step 1, 2", lambda r: f"{r['fixed_point_iterations_step1']}, {r['fixed_point_iterations']}"),
+           ("Tresca solves: step 1, 2", lambda r: f"{r['fixed_point_iterations_step1']}, {r['fixed_point_iterations']}"),
            ("Hessian: step 1, 2", lambda r: f"{r['hessian_step1']}, {r['hessian']}"),
            ("frictionless", "hessian_frictionless"),
            ("step 2 / frictionless", lambda r: f"{ratio(r, 'hessian', 'hessian_frictionless'):.2f}"),
@@ -46,7 +46,7 @@ MINDLIN = [("Q/(μP)", ("q_ratio", ".3f")), ("c/a", ("stick_ratio", ".4f")), ("a
 REFINEMENT = [("h [mm]", "h"), ("unknowns", "unknowns"), ("subdomains", "subdomains"), ("couples", "couples"),
               ("c/a", ("stick_ratio", ".4f")), ("c/a error", ("stick_ratio_error", ".2%")),
               ("stick zone centre [mm]", ("stick_centre", ".2f")),
-              ("fixed point: step 1, 2", lambda r: f"{r['fixed_point_iterations_step1']}, {r['fixed_point_iterations']}"),
+              ("Tresca solves: step 1, 2", lambda r: f"{r['fixed_point_iterations_step1']}, {r['fixed_point_iterations']}"),
               ("Hessian: step 1, 2", lambda r: f"{r['hessian_step1']}, {r['hessian']}"),
               ("frictionless", "hessian_frictionless"),
               ("(step 1 + 2) / frictionless",
@@ -58,7 +58,7 @@ SLOPE = [("case", "case"), ("tan θ", ("tan_theta", ".3f")), ("μ or g per row",
          ("friction force / W sin θ", lambda r: f"{ratio(r, 'friction_force', 'weight_tangential'):.4f}"),
          ("normal force / W cos θ", lambda r: f"{ratio(r, 'normal_force', 'weight_normal'):.10f}"),
          ("slipping rows at g (rel. error)", ("at_bound_error", ".0e")),
-         ("fixed point", "fixed_point_iterations"), ("Hessian", "hessian"), ("status", "status")]
+         ("Tresca solves", "fixed_point_iterations"), ("Hessian", "hessian"), ("status", "status")]
 
 
 def main():
@@ -189,15 +189,18 @@ def render():
         "not the mesh; the bodies here are finite (a half cylinder loaded on its cut, a block 100 mm",
         "deep), which is the likely cause, not proven here. The tangential step costs",
         f"{span(step2, '.2f')} times the frictionless solve's Hessian multiplications over all its",
-        f"fixed-point iterations (aim: at most 3), the pressing step {span(step1, '.2f')} times (its first",
-        "Tresca solve sticks everywhere, as a solve without a previous step must).",
+        f"Tresca solves and Newton steps (aim: at most 3), the pressing step {span(step1, '.2f')} times (its first",
+        "Tresca solve sticks everywhere, as a solve without a previous step must; in this plane problem",
+        "Coulomb's law is then solved by Newton steps, checked by one more Tresca solve:",
+        "[algorithms](../algorithms.md#friction)).",
         "",
         f"## The same under refinement, subdomains of about {PART_SIZE} triangles (Q/(μP) = 0.6)",
         "",
         *markdown_table(refinement, REFINEMENT),
         "",
-        f"Reading: the fixed point takes {listing([r['fixed_point_iterations'] for r in refinement])} iterations for the",
-        f"tangential step at h = {listing([r['h'] for r in refinement])} mm"
+        f"Reading: the tangential step takes {listing([r['fixed_point_iterations'] for r in refinement])} Tresca solves"
+        " (Newton steps between the first and the last)",
+        f"at h = {listing([r['h'] for r in refinement])} mm"
         + (": it does not grow with h." if len({r['fixed_point_iterations'] for r in refinement}) == 1 else ".")
         + " Its Hessian",
         f"count grows from {growth[0]:.0f} to {growth[-1]:.0f}, as the frictionless solve's does ({free[0]:.0f} to",

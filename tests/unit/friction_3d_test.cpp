@@ -309,6 +309,23 @@ TEST_P(Tresca3D, CoulombFixedPointMeetsTheLawAndTheReference) {
   expect_same_forces(forces, undivided_dual([&](const std::array<double, 2>& at) { return mu * at_node(forces, at).force[0]; }, 0));
 }
 
+TEST_P(Tresca3D, NewtonGivesTheFixedPointsCoulombAnswer) {
+  // coulomb = "newton" in 3D (its slipping pairs linearized across their direction): the
+  // fixed point's multipliers to the tolerance; automatic keeps the fixed point in 3D.
+  constexpr double mu = 0.1;
+  const auto problem = pressed_block(GetParam(), 0, [](ContactInput& c) { c.friction = mu; });
+  const FetiProblem& p = *problem;
+  DualSolveSettings newton = tight();
+  newton.coulomb = CoulombMethod::newton;
+  const FetiResult a = p.solve(tight()), b = p.solve(newton);
+  ASSERT_EQ(a.status, SolveStatus::converged);
+  ASSERT_EQ(b.status, SolveStatus::converged);
+  EXPECT_EQ(a.newton_steps, 0);
+  EXPECT_GT(b.newton_steps, 0);
+  EXPECT_LE((a.lambda - b.lambda).norm(), 1e-9 * a.lambda.norm());
+  EXPECT_LT(b.kkt.max(), 1e-8);
+}
+
 TEST_P(Tresca3D, AFloatingBlockTheDiscsCannotHoldIsInfeasibleWithoutIterating) {
   // The block free (nothing fixes its top), weighed down and pushed along x by a load on every
   // node: it stands only if the bottom rows' friction discs carry the push. Their least-norm

@@ -295,6 +295,27 @@ TEST_P(Tresca, CoulombFixedPointMeetsTheLawAndTheReference) {
   EXPECT_GT(r.slipping_contact, 0);
 }
 
+TEST_P(Tresca, NewtonAndTheFixedPointGiveTheSameCoulombAnswer) {
+  // coulomb = "newton" (the default in a plane problem) and "fixed-point": the same law, the
+  // same multipliers to the tolerance, Newton's steps counted only where it ran.
+  const auto problem = dragged_coulomb(GetParam());
+  const FetiProblem& p = *problem;
+  DualSolveSettings fixed = tight(), newton = tight(), automatic = tight();
+  fixed.coulomb = CoulombMethod::fixed_point;
+  newton.coulomb = CoulombMethod::newton;
+  const FetiResult a = p.solve(fixed), b = p.solve(newton), c = p.solve(automatic);
+  ASSERT_EQ(a.status, SolveStatus::converged);
+  ASSERT_EQ(b.status, SolveStatus::converged);
+  EXPECT_EQ(a.newton_steps, 0);
+  EXPECT_GT(b.newton_steps, 0);
+  EXPECT_GT(b.newton_hessian, 0);
+  EXPECT_LE(b.newton_hessian, b.counts.hessian);
+  EXPECT_EQ(c.newton_steps, b.newton_steps);  // plane problem: automatic is Newton
+  EXPECT_LE((a.lambda - b.lambda).norm(), 1e-9 * a.lambda.norm());
+  EXPECT_LE(b.friction_bound_change, 1e-12);
+  EXPECT_GT(b.slipping_contact, 0);
+}
+
 TEST_P(Tresca, AnUnsettledFixedPointIsReportedAsSuch) {
   // The same Coulomb problem allowed one Tresca solve (frictionit = 1): the bounds of the
   // first, sticking solve are not the law's, and the status says so.

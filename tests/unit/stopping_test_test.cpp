@@ -1,7 +1,7 @@
 // RelativeKktStop on scripted primal checks: a solve whose primal residual stands still at
 // round-off, just above tol, stops early as stagnated; one that stands still far above
 // round-off is not (maxit ends it); one that reaches tol passes.
-#include "feti/stopping_test.h"
+#include "qp/stopping_test.h"
 
 #include <gtest/gtest.h>
 

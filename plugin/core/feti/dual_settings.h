@@ -3,7 +3,7 @@
 #pragma once
 
 #include "feti/dual_path.h"
-#include "feti/stopping_test.h"
+#include "qp/stopping_test.h"
 #include "qp/norm_estimate.h"
 #include "qp/smalbe.h"
 
@@ -26,6 +26,12 @@ enum class CoarseConstraints {
 /// spanner gave 1.3e-11, depending on the expansion steps), so a smaller tol must not turn
 /// that round-off into "infeasible"; infeasible scenes are off by far more (docs/algorithms.md).
 constexpr double kFeasibilityResolution = 1e-8;
+
+/// How Coulomb's law is solved (feti/friction.h): by the fixed point over Tresca solves, or by
+/// semismooth Newton steps after its first solve (feti/coulomb_newton.h) and the fixed point's
+/// check of their answer; `automatic`: Newton in a plane problem, the fixed point in three
+/// dimensions (where Newton's closed set churns near full slip: docs/log.md, 2026-12-08).
+enum class CoulombMethod { automatic, fixed_point, newton };
 
 struct DualSolveSettings {
   double tolerance = 1e-4;
@@ -55,6 +61,7 @@ struct DualSolveSettings {
   int settle = 2;
   /// Coulomb friction: Tresca solves of the fixed point at most (feti/friction.h).
   int friction_iterations = 50;
+  CoulombMethod coulomb = CoulombMethod::automatic;
   /// Throws InputError naming the setting; returns the budget of `max_hessian` for the
   /// user call (qp/budget.h), made here once and passed down to every solve of the call.
   qp::Budget validate() const;

@@ -72,6 +72,7 @@ class DualSystem {
   void use_preconditioner(DualPreconditioner kind, const std::vector<const SparseMatrix*>& operator_matrices,
                           int threads, bool share_factors, InterfaceScaling scaling = InterfaceScaling::multiplicity);
   bool preconditioned() const { return preconditioner_ != nullptr; }
+  LinearOperator preconditioner_operator() const;  // M^{-1}, or empty without a preconditioner
   DualPreconditioner preconditioner_kind() const { return preconditioner_kind_; }
 
   /// The dual right-hand side for loads `loads` (this rank's) and constraint right-hand
@@ -121,7 +122,6 @@ class DualSystem {
   void apply_PFP(const Vec& x, Vec& y) const;  // the projected dual operator, on reused buffers
   void apply_PFP(const Eigen::MatrixXd& x, Eigen::MatrixXd& y) const;
   DualSolution prepared(const DualData& data, const DualSolveSettings& settings) const;  // path, references
-  LinearOperator preconditioner_operator() const;  // M^{-1}, or empty without a preconditioner
   LinearOperator projected_preconditioner() const;  // P M^{-1} P, or empty without a preconditioner
   void recover(const DualData& data, Vec lambda, DualSolution& result) const;
   const FreeRowProjector& free_rows() const;  // built at first use

@@ -402,6 +402,8 @@ FetiResult FetiProblem::solve(const DualSolveSettings& settings) const {
     result.friction_hessian = std::move(friction.hessian);
     result.friction_bound_change = friction.bound_change;
     result.sliding_body = friction.sliding_body;
+    result.newton_steps = friction.newton_steps;
+    result.newton_hessian = friction.newton_hessian;
     result.slip_bound = std::move(friction.slip_bound);
     Vec Bu;
     dual_->F().apply_B(result.u, Bu);

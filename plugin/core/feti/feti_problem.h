@@ -57,6 +57,8 @@ struct FetiResult : DualSolution {
   std::vector<int> friction_hessian;  ///< Hessian multiplications of each
   double friction_bound_change = 0;   ///< Coulomb: the fixed point's last relative change of g
   int sliding_body = -1;              ///< Coulomb, status infeasible: the body that would slide (-1: none named)
+  int newton_steps = 0;               ///< Coulomb by Newton: its steps (FrictionSolution)
+  int newton_hessian = 0;             ///< ... and their multiplications (in counts.hessian, not friction_hessian)
   Vec slip_bound;                ///< g per friction row of the last Tresca solve
   Vec slip;                      ///< per friction row B u - c: the slip of this load step along its tangent
   int slipping_contact = 0;      ///< contact rows whose friction force is at its bound

@@ -1,6 +1,8 @@
 #include "feti/friction.h"
 
 #include "feti/primal.h"
+#include "feti/coulomb_newton.h"
+#include "base/stopwatch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -125,6 +127,9 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
   // first such solve, the 3D sheared block at tol 1e-13 reported 7.8e-11 while its bounds
   // still moved by 6.4e-10.
   double reachable = tol;
+  const bool use_newton = law.coulomb() && (settings.coulomb == CoulombMethod::newton ||
+                                            (settings.coulomb == CoulombMethod::automatic && c.tangent_directions == 1));
+  bool newton_tried = false;
   DualWarmStart warm;  // SMALBE's multiplier term, carried from solve to solve with the multipliers
   Vec feasible_bound, feasible_lambda;  // of the last converged Tresca solve
   for (;;) {
@@ -175,6 +180,26 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
     if (out.iterations >= settings.friction_iterations || budget.exhausted()) {
       out.dual.status = SolveStatus::max_iterations;
       break;
+    }
+    if (use_newton && !newton_tried && std::isfinite(g.sum())) {
+      // After the first solve with finite bounds: Newton from its multipliers; its answer,
+      // where it converged, is checked by the Tresca solve at tol of the loop (its bounds
+      // must come back within tol), else the fixed point goes on from this solve.
+      newton_tried = true;
+      Stopwatch clock;
+      const CoulombNewtonResult newton = coulomb_newton(dual, data, out.dual.lambda, tol, budget);
+      counts.hessian += newton.hessian;
+      times.solve += clock.seconds();
+      applications += newton.hessian;
+      out.newton_steps = newton.steps;
+      out.newton_hessian = newton.hessian;
+      if (newton.converged) {
+        settings.tolerance = reachable;
+        settings.start = newton.lambda;
+        g = coulomb_bounds(c, newton.lambda);
+        settings.settle = 0;
+        continue;
+      }
     }
     settings.tolerance = next_tresca_tolerance(settings.tolerance, out.bound_change, reachable);
     settings.start = start_on_new_bounds(c, out.dual.lambda, g, next);  // from the last one's multipliers

@@ -37,6 +37,8 @@ struct FrictionSolution {
   std::vector<int> hessian;        ///< Hessian multiplications of each
   double bound_change = 0;         ///< Coulomb: the last ||g_new - g||_inf / ||g_new||_inf
   int sliding_body = -1;           ///< Coulomb, infeasible: the body that would slide away (-1: none named)
+  int newton_steps = 0;            ///< Coulomb by Newton (DualSolveSettings::coulomb): its steps
+  int newton_hessian = 0;          ///< ... and their multiplications (in dual.counts too)
 };
 
 /// Solves with friction from `start` (multipliers of the last load step; empty: none, and
@@ -46,7 +48,10 @@ struct FrictionSolution {
 /// loads on the floating bodies (DualSystem::coulomb_feasibility): if not, the status is infeasible at
 /// once, naming the body. A Tresca solve of the fixed point whose bounds admit no equilibrium
 /// (an iterate's normal forces, not the law's) is then not final: the bounds are widened to
-/// those of the last converged solve where these are smaller (infinite before any). Collective.
+/// those of the last converged solve where these are smaller (infinite before any). With
+/// Newton (DualSolveSettings::coulomb), its steps follow the first solve with finite bounds;
+/// the answer they converge to starts the next Tresca solve, at tol, which must give back its
+/// bounds within tol as in the fixed point (else the fixed point goes on). Collective.
 FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, const FrictionLaw& law,
                                      DualSolveSettings settings, const Vec& start, const std::vector<int>& bodies);
 

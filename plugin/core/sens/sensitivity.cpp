@@ -2,7 +2,7 @@
 
 #include "base/errors.h"
 #include "base/stopwatch.h"
-#include "feti/stopping_test.h"
+#include "qp/stopping_test.h"
 #include "parallel/process.h"
 
 #include <algorithm>

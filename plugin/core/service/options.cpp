@@ -39,6 +39,7 @@ const char* const kFactors[] = {"auto", "simplicial", "supernodal"};
 const char* const kOrderings[] = {"auto", "fill", "interface"};
 const char* const kSharing[] = {"on", "off"};
 const char* const kDualOperators[] = {"auto", "implicit", "explicit"};
+const char* const kCoulombMethods[] = {"auto", "fixed-point", "newton"};
 const char* const kPreconditioners[] = {"lumped", "dirichlet", "none"};
 const char* const kScalings[] = {"multiplicity", "stiffness"};
 const char* const kProjectors[] = {"none", "conjugate"};
@@ -221,6 +222,20 @@ std::vector<Option> make_options() {
        "with Coulomb friction: Tresca solves the fixed point may take; beyond them, or once they have spent `maxit` "
        "multiplications together, the status is `max_iterations` (1), the last iterate returned ([algorithms](algorithms.md#friction)). Without friction: ignored",
        [](SolverSettings& s, const OptionValue& v) { s.solve.friction_iterations = integer(v); }},
+      {"coulomb", S::solve, K::word, {kCoulombMethods[0], kCoulombMethods[1], kCoulombMethods[2]}, 0, 0, false, false,
+       "`\"auto\"`",
+       "with Coulomb friction, how its law is solved: `\"fixed-point\"` by Tresca solves, each with the bounds "
+       "μλ_n of the last; `\"newton\"` by semismooth Newton steps after the first Tresca solve (closed rows, "
+       "sticking and slipping pairs fixed per step, the linear system by GMRES), whose answer the next Tresca solve "
+       "at `tol` must give back (else the fixed point goes on: the same answers and checks either way); `\"auto\"`: "
+       "Newton in plane problems (fewer multiplications on static scenes; `\"fixed-point\"` is faster where each "
+       "load step starts next to its answer, as time steps of a sliding body do, and at tol 1e-2 or looser), the "
+       "fixed point in 3D, where Newton's steps near full slip cost more ([algorithms](algorithms.md#friction), "
+       "[hard cases](results/hard-cases.md)). For speed only. Without friction: ignored",
+       [](SolverSettings& s, const OptionValue& v) {
+         s.solve.coulomb = pick(v, {CoulombMethod::automatic, CoulombMethod::fixed_point, CoulombMethod::newton},
+                                kCoulombMethods);
+       }},
       {"verbosity", S::solve, K::integer, {}, 0, kIntMax, false, false, "0",
        "1: a line per outer iteration (Hessian multiplications so far, `‖gP‖`, `‖Qμ‖` — the part of the iterate "
        "outside the kernel of the constraints left to SMALBE-M, zero iff Gλ = e — and the contact rows with a "

@@ -96,6 +96,8 @@ Statistics statistics(const FetiProblem& problem, const FetiResult* result) {
     const Statistics friction = {
         {"friction_iterations", result->friction_iterations},
         {"friction_bound_change", result->friction_bound_change},
+        {"newton_steps", result->newton_steps},
+        {"newton_hessian", result->newton_hessian},
         {"slipping", result->slipping_contact},
         {"sliding_body", result->sliding_body},
     };

@@ -1,4 +1,4 @@
-#include "feti/stopping_test.h"
+#include "qp/stopping_test.h"
 
 #include <algorithm>
 #include <limits>
