@@ -123,22 +123,32 @@ def onset_pairs(rows):
     return [(by_key[(*k, "fixed-point")], by_key[(*k, "newton")]) for k in pulls]
 
 
+def onset_pull(fixed, newton):
+    """One pull's table row: the fixed point's and Newton's runs, and the default's answer."""
+    chosen = newton if default_method(fixed["dim"]) == "newton" else fixed
+    return {"fixed": fixed, "newton": newton, "chosen": chosen, "converged": chosen["status"] == "converged"}
+
+
+def chosen_number(key):
+    """A cell of the default's answer, '-' where it did not converge."""
+    return lambda p: f"{float(p['chosen'][key]):.1e}" if p["converged"] else "-"
+
+
+ONSET_COLUMNS = [
+    ("dim", lambda p: p["fixed"]["dim"]), ("mesh", lambda p: p["fixed"]["size"]), ("q = Q / (μW)", lambda p: p["fixed"]["q"]),
+    ("status", lambda p: p["chosen"]["status"]), ("frictionless", lambda p: p["fixed"]["frictionless"]),
+    ("fixed point: Hessian (ratio; Tresca solves)",
+     lambda p: f"{p['fixed']['hessian']} ({onset_ratio(p['fixed'])}; {p['fixed']['fixed_point_iterations']})"),
+    ("Newton: Hessian (ratio; steps, Tresca solves)",
+     lambda p: f"{p['newton']['hessian']} ({onset_ratio(p['newton'])}; {p['newton']['newton_steps']}, "
+               f"{p['newton']['fixed_point_iterations']})"),
+    ("default", lambda p: default_method(p["fixed"]["dim"])),
+    ("excess / W", chosen_number("excess")), ("balance", chosen_number("balance")),
+    ("checks", lambda p: "passed" if p["fixed"]["checks"] == p["newton"]["checks"] == "passed" else "failed")]
+
+
 def onset_table(rows):
-    header = ["dim", "mesh", "q = Q / (μW)", "status", "frictionless", "fixed point: Hessian (ratio; Tresca solves)",
-              "Newton: Hessian (ratio; steps, Tresca solves)", "default", "excess / W", "balance", "checks"]
-    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    for fixed, newton in onset_pairs(rows):
-        chosen = newton if default_method(fixed["dim"]) == "newton" else fixed
-        converged = chosen["status"] == "converged"
-        cells = [fixed["dim"], fixed["size"], fixed["q"], chosen["status"], fixed["frictionless"],
-                 f"{fixed['hessian']} ({onset_ratio(fixed)}; {fixed['fixed_point_iterations']})",
-                 f"{newton['hessian']} ({onset_ratio(newton)}; {newton['newton_steps']}, {newton['fixed_point_iterations']})",
-                 default_method(fixed["dim"]),
-                 f"{float(chosen['excess']):.1e}" if converged else "-",
-                 f"{float(chosen['balance']):.1e}" if converged else "-",
-                 "passed" if fixed["checks"] == newton["checks"] == "passed" else "failed"]
-        lines.append("| " + " | ".join(str(c) for c in cells) + " |")
-    return lines
+    return markdown_table([onset_pull(*pair) for pair in onset_pairs(rows)], ONSET_COLUMNS)
 
 
 def friction_onset_section():

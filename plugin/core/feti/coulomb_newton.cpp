@@ -220,10 +220,11 @@ CoulombNewtonResult coulomb_newton(const DualSystem& dual, const DualData& data,
     const auto precondition = [&](const Vec& z) -> Vec {  // Pi W'M W Pi, M the lumped preconditioner
       if (!M) return z;
       M(T.embed(Pi(z), c.rows()), applied);
+      ++result.preconditioner;
       return Pi(T.restrict(applied));
     };
+    Vec Az(m);  // operator_of_step's product, reused by every GMRES iteration
     const LinearOperator operator_of_step = [&](const Vec& z, Vec& out) {  // Pi A Pi M~, right-preconditioned
-      Vec Az(m);
       A(Pi(precondition(z)), Az);
       out = Pi(Az);
     };

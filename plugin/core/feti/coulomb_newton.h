@@ -15,6 +15,7 @@ struct CoulombNewtonResult {
   bool converged = false;  ///< the sets and slip directions repeated with the system solved to tol
   Vec lambda;              ///< the last iterate
   int hessian = 0;         ///< applications of F
+  int preconditioner = 0;  ///< applications of the dual preconditioner (GMRES's)
   int steps = 0;
 };
 

@@ -187,10 +187,16 @@ FrictionSolution solve_with_friction(const DualSystem& dual, DualData data, cons
       // must come back within tol), else the fixed point goes on from this solve.
       newton_tried = true;
       Stopwatch clock;
+      const DualOperator& F = dual.F();  // its running totals, charged as a Tresca solve's are
+      const double operator_seconds = F.application_seconds(), solve_seconds = F.solve_seconds();
+      const long operator_applications = F.applications();
       const CoulombNewtonResult newton = coulomb_newton(dual, data, out.dual.lambda, tol, budget);
       counts.hessian += newton.hessian;
+      counts.preconditioner += newton.preconditioner;
       times.solve += clock.seconds();
-      applications += newton.hessian;
+      times.dual_operator += F.application_seconds() - operator_seconds;
+      times.factor_solves += F.solve_seconds() - solve_seconds;
+      applications += F.applications() - operator_applications;
       out.newton_steps = newton.steps;
       out.newton_hessian = newton.hessian;
       if (newton.converged) {

@@ -31,7 +31,9 @@ GmresResult gmres(const LinearOperator& A, const Vec& b, Vec& x, double tol, int
     if (result.relative_residual <= tol) break;
     const int m = std::min(restart, max_applications - result.applications);
     if (m <= 0) break;
-    std::vector<Vec> V{r / beta};
+    std::vector<Vec> V;  // the Krylov basis of this cycle
+    V.reserve(static_cast<size_t>(m) + 1);
+    V.push_back(r / beta);
     Eigen::MatrixXd H = Eigen::MatrixXd::Zero(m + 1, m);
     Vec cs = Vec::Zero(m), sn = Vec::Zero(m), s = Vec::Zero(m + 1);
     s[0] = beta;
